@@ -1,0 +1,92 @@
+#pragma once
+
+#include <array>
+#include <string>
+#include <vector>
+
+#include "cnc_core/language/Diagnostic.h"
+
+/// Everything that leaves the interpreter goes through this interface (the
+/// "canonical machining functions" idea of LinuxCNC, as an interface): a
+/// recording sink for tests and the CLI, a toolpath sink for the view, the
+/// simulated machine for the panel. Every call carries where it came from.
+namespace mtc::core {
+
+enum class MotionType { Rapid, Linear, ArcCW, ArcCCW };
+
+/// Most axes a process can have (the seeds allow 9 feed axes + 3 spindles).
+inline constexpr int kMaxAxes = 12;
+
+/// One programmed move. Positions are indexed like ProcessConfig::axes (the
+/// machine axis order); rotary axes in degrees. `end` holds every axis
+/// position after the move (programmed position per machine axis). Fixed
+/// arrays, no allocation: a 1,000,000-block run sends a million of these.
+struct Motion {
+    SourceLocation where;
+    MotionType type = MotionType::Linear;
+    int axisCount = 0;
+    std::array<double, kMaxAxes> start{};
+    std::array<double, kMaxAxes> end{};
+    int planeAxis1 = -1, planeAxis2 = -1;  ///< arcs: machine axis indices spanning the plane
+    double center1 = 0.0, center2 = 0.0;   ///< arcs: centre in those two axes
+    double feed = 0.0;                     ///< mm/min (0 for rapid)
+    int transformation = 30;               ///< 30 none, 31 facing, 32 lateral cylinder
+    double effectiveRadius = 0.0;          ///< RI while G32 is active
+};
+
+/// An auxiliary function sent to the SPS (M, Q, S, T, E).
+struct AuxOutput {
+    SourceLocation where;
+    char type = 'M';
+    int spindle = 0;  ///< S: 0 main, 1..3
+    double value = 0;
+};
+
+class MachineSink {
+public:
+    virtual ~MachineSink() = default;
+    virtual void motion(const Motion& motion) = 0;
+    virtual void auxiliary(const AuxOutput& output) = 0;
+    virtual void dwell(const SourceLocation& where, double seconds) = 0;
+    /// A command the interpreter hands to the machine (AXD, MTP, TCH, GAX, ...).
+    virtual void command(const SourceLocation& where, const std::string& keyword,
+                         const std::string& arguments) = 0;
+};
+
+/// Keeps everything in vectors: for tests and the CLI.
+class RecordingSink : public MachineSink {
+public:
+    void motion(const Motion& m) override { motions.push_back(m); }
+    void auxiliary(const AuxOutput& a) override { aux.push_back(a); }
+    void dwell(const SourceLocation& where, double seconds) override {
+        dwells.push_back({where, seconds});
+    }
+    void command(const SourceLocation& where, const std::string& keyword,
+                 const std::string& arguments) override {
+        commands.push_back({where, keyword, arguments});
+    }
+
+    struct Dwell {
+        SourceLocation where;
+        double seconds;
+    };
+    struct Command {
+        SourceLocation where;
+        std::string keyword, arguments;
+    };
+    std::vector<Motion> motions;
+    std::vector<AuxOutput> aux;
+    std::vector<Dwell> dwells;
+    std::vector<Command> commands;
+};
+
+/// Discards everything (computing process, --no-motion).
+class NullSink : public MachineSink {
+public:
+    void motion(const Motion&) override {}
+    void auxiliary(const AuxOutput&) override {}
+    void dwell(const SourceLocation&, double) override {}
+    void command(const SourceLocation&, const std::string&, const std::string&) override {}
+};
+
+}  // namespace mtc::core

@@ -1,0 +1,52 @@
+#include "cnc_core/machine/MachineConfig.h"
+
+#include <algorithm>
+#include <cstdlib>
+
+namespace mtc::core {
+
+const AxisConfig* ProcessConfig::axis(const std::string& axisName) const {
+    for (const auto& a : axes)
+        if (a.name == axisName) return &a;
+    return nullptr;
+}
+
+const ToolConfig* ProcessConfig::tool(int toolNumber) const {
+    for (const auto& t : tools)
+        if (t.number == toolNumber) return &t;
+    return nullptr;
+}
+
+const MGroupConfig* ProcessConfig::mGroupOf(int mFunction) const {
+    for (const auto& g : mGroups)
+        if (std::find(g.functions.begin(), g.functions.end(), mFunction) != g.functions.end())
+            return &g;
+    return nullptr;
+}
+
+bool ProcessConfig::flag(const std::string& key, bool fallback) const {
+    auto it = parameters.find(key);
+    if (it == parameters.end()) return fallback;
+    std::string v = it->second;
+    std::transform(v.begin(), v.end(), v.begin(), [](unsigned char c) { return std::tolower(c); });
+    if (v == "yes" || v == "1" || v == "true") return true;
+    if (v == "no" || v == "0" || v == "false") return false;
+    return fallback;
+}
+
+double ProcessConfig::number(const std::string& key, double fallback) const {
+    auto it = parameters.find(key);
+    if (it == parameters.end()) return fallback;
+    char* end = nullptr;
+    double value = std::strtod(it->second.c_str(), &end);
+    if (end == it->second.c_str() || *end != '\0') return fallback;
+    return value;
+}
+
+const ProcessConfig* MachineConfig::process(int index) const {
+    for (const auto& p : processes)
+        if (p.index == index) return &p;
+    return nullptr;
+}
+
+}  // namespace mtc::core
