@@ -9,8 +9,10 @@ namespace {
 
 std::string trim(std::string_view s) {
     size_t b = 0, e = s.size();
-    while (b < e && (s[b] == ' ' || s[b] == '\t' || s[b] == '\r')) ++b;
-    while (e > b && (s[e - 1] == ' ' || s[e - 1] == '\t' || s[e - 1] == '\r')) --e;
+    while (b < e && (s[b] == ' ' || s[b] == '\t' || s[b] == '\r'))
+        ++b;
+    while (e > b && (s[e - 1] == ' ' || s[e - 1] == '\t' || s[e - 1] == '\r'))
+        --e;
     return std::string(s.substr(b, e - b));
 }
 
@@ -45,7 +47,7 @@ bool parseInt(const std::string& s, int& out) {
 
 /// Reads one configuration text section by section.
 class Reader {
-public:
+  public:
     explicit Reader(MachineConfigReadResult& result) : r_(result) {}
 
     void run(std::string_view text) {
@@ -59,10 +61,11 @@ public:
             handleLine(text.substr(pos, nl - pos));
             pos = nl + 1;
         }
-        if (r_.config.processes.empty()) error("CFG_NO_PROCESS", "the configuration defines no process");
+        if (r_.config.processes.empty())
+            error("CFG_NO_PROCESS", "the configuration defines no process");
     }
 
-private:
+  private:
     void error(const std::string& code, const std::string& message) {
         r_.diagnostics.error(code, {0, "", line_, 0}, message);
     }
@@ -91,7 +94,8 @@ private:
         }
         for (auto& p : r_.config.processes)
             if (p.index == n) return &p;
-        error("CFG_PROCESS", "process " + index + " used before its [process " + index + "] section");
+        error("CFG_PROCESS",
+              "process " + index + " used before its [process " + index + "] section");
         return nullptr;
     }
 
@@ -116,8 +120,10 @@ private:
     }
 
     void cellKey(const std::string& key, const std::string& value) {
-        if (key == "name") r_.config.name = value;
-        else error("CFG_KEY", "unknown key '" + key + "' in [cell]");
+        if (key == "name")
+            r_.config.name = value;
+        else
+            error("CFG_KEY", "unknown key '" + key + "' in [cell]");
     }
 
     void openProcess(const std::string& index) {
@@ -131,11 +137,15 @@ private:
         const size_t slot = r_.config.processes.size() - 1;
         handler_ = [this, slot](const std::string& k, const std::string& v) {
             ProcessConfig& p = r_.config.processes[slot];
-            if (k == "name") p.name = v;
-            else if (k == "tool_places" && parseInt(v, p.toolPlaces)) {}
-            else if (k == "tool_storage" && (v == "magazine" || v == "turret")) p.toolStorage = v;
-            else if (k.size() == 4 && k[0] == 'B') p.parameters[k] = v;
-            else error("CFG_KEY", "unknown key or bad value '" + k + " = " + v + "' in [process]");
+            if (k == "name")
+                p.name = v;
+            else if (k == "tool_places" && parseInt(v, p.toolPlaces)) {
+            } else if (k == "tool_storage" && (v == "magazine" || v == "turret"))
+                p.toolStorage = v;
+            else if (k.size() == 4 && k[0] == 'B')
+                p.parameters[k] = v;
+            else
+                error("CFG_KEY", "unknown key or bad value '" + k + " = " + v + "' in [process]");
         };
     }
 
@@ -161,22 +171,35 @@ private:
     void axisKey(AxisConfig& a, const std::string& k, const std::string& v) {
         bool ok = true;
         if (k == "kind") {
-            if (v == "linear") a.kind = AxisKind::Linear;
-            else if (v == "rotary") a.kind = AxisKind::Rotary;
-            else ok = false;
+            if (v == "linear")
+                a.kind = AxisKind::Linear;
+            else if (v == "rotary")
+                a.kind = AxisKind::Rotary;
+            else
+                ok = false;
         } else if (k == "definition") {
             a.definitions = splitWords(v, ',');
             ok = !a.definitions.empty() && a.definitions.size() <= 4;
-        } else if (k == "designation2") a.designation2 = v;
-        else if (k == "polar_direction") ok = parseInt(v, a.polarDirection) && (a.polarDirection == 0 || a.polarDirection == 1);
-        else if (k == "min") ok = parseDouble(v, a.minPosition);
-        else if (k == "max") ok = parseDouble(v, a.maxPosition);
-        else if (k == "max_velocity") ok = parseDouble(v, a.maxVelocity) && a.maxVelocity > 0;
-        else if (k == "max_acceleration") ok = parseDouble(v, a.maxAcceleration) && a.maxAcceleration > 0;
-        else if (k == "index") ok = parseInt(v, a.spindleIndex) && a.spindleIndex >= 1 && a.spindleIndex <= 3;
-        else if (k == "rotary_axis") a.rotaryAxisName = v;
-        else if (k == "max_speed") ok = parseDouble(v, a.maxSpeed) && a.maxSpeed >= 0;
-        else return error("CFG_KEY", "unknown axis key '" + k + "'");
+        } else if (k == "designation2")
+            a.designation2 = v;
+        else if (k == "polar_direction")
+            ok = parseInt(v, a.polarDirection) && (a.polarDirection == 0 || a.polarDirection == 1);
+        else if (k == "min")
+            ok = parseDouble(v, a.minPosition);
+        else if (k == "max")
+            ok = parseDouble(v, a.maxPosition);
+        else if (k == "max_velocity")
+            ok = parseDouble(v, a.maxVelocity) && a.maxVelocity > 0;
+        else if (k == "max_acceleration")
+            ok = parseDouble(v, a.maxAcceleration) && a.maxAcceleration > 0;
+        else if (k == "index")
+            ok = parseInt(v, a.spindleIndex) && a.spindleIndex >= 1 && a.spindleIndex <= 3;
+        else if (k == "rotary_axis")
+            a.rotaryAxisName = v;
+        else if (k == "max_speed")
+            ok = parseDouble(v, a.maxSpeed) && a.maxSpeed >= 0;
+        else
+            return error("CFG_KEY", "unknown axis key '" + k + "'");
         if (!ok) error("CFG_VALUE", "bad value '" + v + "' for axis key '" + k + "'");
     }
 
@@ -198,8 +221,10 @@ private:
             if (k != "functions") return error("CFG_KEY", "unknown M group key '" + k + "'");
             for (const auto& w : splitWords(v)) {
                 int m = 0;
-                if (!parseInt(w, m) || m < 0 || m > 999) error("CFG_VALUE", "bad M function '" + w + "'");
-                else g.functions.push_back(m);
+                if (!parseInt(w, m) || m < 0 || m > 999)
+                    error("CFG_VALUE", "bad M function '" + w + "'");
+                else
+                    g.functions.push_back(m);
             }
         };
     }
@@ -209,16 +234,22 @@ private:
         handler_ = [this, process](const std::string& k, const std::string& v) {
             ProcessConfig& proc = r_.config.processes[indexOf(process)];
             ToolConfig tool;
-            if (k.size() < 2 || k[0] != 'T' || !parseInt(k.substr(1), tool.number) || tool.number <= 0)
+            if (k.size() < 2 || k[0] != 'T' || !parseInt(k.substr(1), tool.number) ||
+                tool.number <= 0)
                 return error("CFG_TOOL", "tool key must be T<number>, got '" + k + "'");
             auto words = splitWords(v);
             for (size_t i = 0; i + 1 < words.size(); i += 2) {
                 bool ok = true;
-                if (words[i] == "radius") ok = parseDouble(words[i + 1], tool.radius);
-                else if (words[i] == "length") ok = parseDouble(words[i + 1], tool.length);
-                else if (words[i] == "edge") ok = parseInt(words[i + 1], tool.edgeOrientation);
-                else if (words[i] == "name") tool.name = words[i + 1];
-                else ok = false;
+                if (words[i] == "radius")
+                    ok = parseDouble(words[i + 1], tool.radius);
+                else if (words[i] == "length")
+                    ok = parseDouble(words[i + 1], tool.length);
+                else if (words[i] == "edge")
+                    ok = parseInt(words[i + 1], tool.edgeOrientation);
+                else if (words[i] == "name")
+                    tool.name = words[i + 1];
+                else
+                    ok = false;
                 if (!ok) error("CFG_TOOL", "bad tool data '" + words[i] + " " + words[i + 1] + "'");
             }
             if (words.size() % 2 != 0) error("CFG_TOOL", "tool data must be pairs of 'key value'");
@@ -257,8 +288,11 @@ private:
             if (k == "title") return void(pg.title = v);
             UserDataElement e;
             auto fields = splitWords(v, '|');
-            if (k.rfind("element ", 0) != 0 || !parseInt(trim(k.substr(8)), e.number) || fields.size() < 5)
-                return error("CFG_PAGE", "expected 'element N = designation | type | min | max | default [| unit]'");
+            if (k.rfind("element ", 0) != 0 || !parseInt(trim(k.substr(8)), e.number) ||
+                fields.size() < 5)
+                return error(
+                    "CFG_PAGE",
+                    "expected 'element N = designation | type | min | max | default [| unit]'");
             e.designation = fields[0];
             e.type = fields[1];
             if (!parseDouble(fields[2], e.minimum) || !parseDouble(fields[3], e.maximum) ||

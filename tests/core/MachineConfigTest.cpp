@@ -7,7 +7,8 @@ using namespace mtc::core;
 
 TEST(MachineConfig, DemoCellMatchesMachinesContract) {
     auto result = readMachineConfig(mtc::resources::find(mtc::resources::kDemoCellName));
-    for (const auto& d : result.diagnostics.items()) ADD_FAILURE() << formatDiagnostic(d);
+    for (const auto& d : result.diagnostics.items())
+        ADD_FAILURE() << formatDiagnostic(d);
     ASSERT_TRUE(result.ok());
     ASSERT_EQ(result.config.processes.size(), 2u);
     const ProcessConfig& mill = *result.config.process(0);
@@ -42,11 +43,13 @@ TEST(MachineConfig, DemoCellMatchesMachinesContract) {
 }
 
 TEST(MachineConfig, BadInputGivesDiagnosticsWithLines) {
-    auto result = readMachineConfig("[cell]\nname = x\n[process 9]\n[process 0]\nfoo = bar\n"
-                                    "[process 0 axis X]\nmax_velocity = -3\n[nonsense]\nkey\n");
+    auto result = readMachineConfig(
+        "[cell]\nname = x\n[process 9]\n[process 0]\nfoo = bar\n"
+        "[process 0 axis X]\nmax_velocity = -3\n[nonsense]\nkey\n");
     EXPECT_FALSE(result.ok());
     std::vector<int> lines;
-    for (const auto& d : result.diagnostics.items()) lines.push_back(d.where.line);
+    for (const auto& d : result.diagnostics.items())
+        lines.push_back(d.where.line);
     EXPECT_EQ(lines, (std::vector<int>{3, 5, 7, 8, 9}));
 }
 

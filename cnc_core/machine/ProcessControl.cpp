@@ -1,0 +1,130 @@
+#include "cnc_core/machine/ProcessControl.h"
+
+#include <cstdio>
+
+namespace mtc::core {
+
+const char* modeName(OperatingMode mode) {
+    switch (mode) {
+        case OperatingMode::Automatic:
+            return "automatic";
+        case OperatingMode::Manual:
+            return "manual";
+        case OperatingMode::Mdi:
+            return "MDI";
+    }
+    return "?";
+}
+
+const char* keyName(ControlKey key) {
+    switch (key) {
+        case ControlKey::ProgramRestart:
+            return "NC program restart";
+        case ControlKey::Repos:
+            return "REPOS";
+        case ControlKey::Manual:
+            return "Manual";
+        case ControlKey::Automatic:
+            return "Automatic";
+        case ControlKey::Start:
+            return "Start";
+        case ControlKey::Stop:
+            return "Stop";
+        case ControlKey::ControlReset:
+            return "Control reset";
+    }
+    return "?";
+}
+
+ProcessControl::ProcessControl(int process) : process_(process) {
+    signals_.set(signalPrefix() + "SREADY", 1);
+    signals_.set(signalPrefix() + "SAUTO", 1);
+    signals_.clearLog();
+}
+
+std::string ProcessControl::signalPrefix() const {
+    char buffer[8];
+    std::snprintf(buffer, sizeof buffer, "P%02d", process_ % 100);
+    return buffer;
+}
+
+bool ProcessControl::press(ControlKey key) {
+    const std::string p = signalPrefix();
+    switch (key) {
+        case ControlKey::Manual:
+            return setMode(OperatingMode::Manual);
+        case ControlKey::Automatic:
+            return setMode(OperatingMode::Automatic);
+        case ControlKey::Start:
+            return start();
+        case ControlKey::Stop:
+            signals_.set(p + "CSTOP", 1);
+            setProgramActive(false);
+            signals_.set(p + "CSTOP", 0);
+            return true;
+        case ControlKey::ControlReset:
+            signals_.set(p + "CRESET", 1);
+            setProgramActive(false);
+            alarm_.clear();
+            currentBlock_.clear();
+            signals_.set(p + "CRESET", 0);
+            return true;
+        case ControlKey::ProgramRestart:
+            signals_.set("mBPREP", 1 - signals_.get("mBPREP"));
+            return true;
+        case ControlKey::Repos:
+            signals_.set("mREPOS", 1 - signals_.get("mREPOS"));
+            return true;
+    }
+    return false;
+}
+
+bool ProcessControl::setMode(OperatingMode mode) {
+    if (active_ && mode != mode_) {
+        alarm_ = "Mode change refused: a program is active (press Stop first)";
+        return false;
+    }
+    mode_ = mode;
+    const std::string p = signalPrefix();
+    signals_.set(p + "SAUTO", mode == OperatingMode::Automatic ? 1 : 0);
+    signals_.set(p + "SMANU", mode == OperatingMode::Manual ? 1 : 0);
+    return true;
+}
+
+bool ProcessControl::start() {
+    const std::string p = signalPrefix();
+    if (mode_ != OperatingMode::Automatic) {
+        alarm_ = "Start refused: select automatic mode first";
+        return false;
+    }
+    if (selectedProgram_ == 0) {
+        alarm_ = "Start refused: no program selected";
+        return false;
+    }
+    if (active_) return true;
+    signals_.set(p + "CADV", 1);
+    std::string result = startProgram ? startProgram(selectedProgram_)
+                                      : std::string("Start refused: no NC core attached");
+    signals_.set(p + "CADV", 0);
+    if (!result.empty()) {
+        alarm_ = result;
+        return false;
+    }
+    return true;
+}
+
+bool ProcessControl::selectProgram(int number) {
+    if (active_) {
+        alarm_ = "Program selection refused: a program is active";
+        return false;
+    }
+    selectedProgram_ = number;
+    return true;
+}
+
+void ProcessControl::setProgramActive(bool active) {
+    active_ = active;
+    signals_.set(signalPrefix() + "SACTIV", active ? 1 : 0);
+}
+
+}  // namespace mtc::core

@@ -1,0 +1,47 @@
+#include "hmi/KeyMap.h"
+
+namespace mtc::hmi {
+
+using mtc::core::ControlKey;
+
+QVector<ControlKey> machineKeys() {
+    return {ControlKey::ProgramRestart, ControlKey::Repos, ControlKey::Manual,
+            ControlKey::Automatic,      ControlKey::Start, ControlKey::Stop,
+            ControlKey::ControlReset};
+}
+
+QKeySequence machineKeyShortcut(ControlKey key) {
+    switch (key) {
+        case ControlKey::ProgramRestart:
+            return QKeySequence(Qt::SHIFT | Qt::Key_F1);
+        case ControlKey::Repos:
+            return QKeySequence(Qt::SHIFT | Qt::Key_F2);
+        case ControlKey::Manual:
+            return QKeySequence(Qt::SHIFT | Qt::Key_F3);
+        case ControlKey::Automatic:
+            return QKeySequence(Qt::SHIFT | Qt::Key_F4);
+        case ControlKey::Start:
+            return QKeySequence(Qt::SHIFT | Qt::Key_F5);
+        case ControlKey::Stop:
+            return QKeySequence(Qt::SHIFT | Qt::Key_F6);
+        case ControlKey::ControlReset:
+            return QKeySequence(Qt::SHIFT | Qt::Key_F7);
+    }
+    return {};
+}
+
+QVector<KeyAssignment> globalKeyAssignments() {
+    QVector<KeyAssignment> list = {
+        {"F1 … F8", "Soft keys of the current screen (labels in the bar at the bottom)"},
+        {"Esc", "Back to the main menu of the station"},
+        {"Ctrl+PgUp / Ctrl+PgDn", "Previous / next station (process); each keeps its screen"},
+        {"F12", "This help: every key assignment"},
+        {"Tab / Shift+Tab", "Move the focus between fields of a screen"},
+    };
+    for (ControlKey key : machineKeys())
+        list.push_back({machineKeyShortcut(key).toString(QKeySequence::NativeText),
+                        QString("Machine control key '%1'").arg(mtc::core::keyName(key))});
+    return list;
+}
+
+}  // namespace mtc::hmi

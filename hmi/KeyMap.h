@@ -1,0 +1,27 @@
+#pragma once
+
+#include <QKeySequence>
+#include <QString>
+#include <QVector>
+
+#include "cnc_core/machine/ProcessControl.h"
+
+namespace mtc::hmi {
+
+/// One key assignment of the panel, as the help screen lists it.
+struct KeyAssignment {
+    QString keys;
+    QString meaning;
+};
+
+/// Keyboard shortcut of each machine control key (M key).
+QKeySequence machineKeyShortcut(mtc::core::ControlKey key);
+
+/// All machine control keys in bar order.
+QVector<mtc::core::ControlKey> machineKeys();
+
+/// Every global key assignment of the panel (soft keys, M keys, navigation).
+/// The single source for the help screen and the README's key map.
+QVector<KeyAssignment> globalKeyAssignments();
+
+}  // namespace mtc::hmi

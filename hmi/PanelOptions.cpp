@@ -1,0 +1,50 @@
+#include "hmi/PanelOptions.h"
+
+#include <QCommandLineParser>
+
+namespace mtc::hmi {
+
+bool parsePanelOptions(const QStringList& arguments, PanelOptions& options, QString& error,
+                       bool& exitNow) {
+    exitNow = false;
+    QCommandLineParser parser;
+    parser.setApplicationDescription("MTC200 operator panel simulator");
+    auto help = parser.addHelpOption();
+    parser.addOptions({
+        {"machine", "Machine configuration file (default: built-in demo cell).", "FILE"},
+        {"programs", "Program directory with NuxxYzzz.DAT files (default: demo programs).", "DIR"},
+        {"process", "Station (process) shown first.", "N"},
+        {"program", "Program to select: a number or a source file.", "FILE|NUM"},
+        {"screen", "Screen shown first (restart, programs, signals, help, ...).", "NAME"},
+        {"screenshot", "Render the screen once, write a PNG to FILE and exit.", "FILE"},
+    });
+    if (!parser.parse(arguments)) {
+        error = parser.errorText();
+        return false;
+    }
+    if (parser.isSet(help)) {
+        exitNow = true;
+        error = parser.helpText();
+        return true;
+    }
+    if (!parser.positionalArguments().isEmpty()) {
+        error = "unexpected argument: " + parser.positionalArguments().first();
+        return false;
+    }
+    options.machineFile = parser.value("machine");
+    options.programsDir = parser.value("programs");
+    options.program = parser.value("program");
+    options.screen = parser.value("screen");
+    options.screenshot = parser.value("screenshot");
+    if (parser.isSet("process")) {
+        bool ok = false;
+        options.process = parser.value("process").toInt(&ok);
+        if (!ok || options.process < 0) {
+            error = "--process needs a process number >= 0, got '" + parser.value("process") + "'";
+            return false;
+        }
+    }
+    return true;
+}
+
+}  // namespace mtc::hmi

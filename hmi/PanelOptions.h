@@ -1,0 +1,23 @@
+#pragma once
+
+#include <QString>
+#include <QStringList>
+
+namespace mtc::hmi {
+
+/// Command-line options of mtc200-panel.
+struct PanelOptions {
+    QString machineFile;  ///< --machine FILE (empty = built-in demo cell)
+    QString programsDir;  ///< --programs DIR (empty = built-in demo programs)
+    int process = -1;     ///< --process N (-1 = last used / 0)
+    QString program;      ///< --program FILE|NUM
+    QString screen;       ///< --screen NAME
+    QString screenshot;   ///< --screenshot FILE
+};
+
+/// Parses the arguments (argv[0] included). On a usage error returns false
+/// and puts a one-line reason into `error`; --help/--version set `exitNow`.
+bool parsePanelOptions(const QStringList& arguments, PanelOptions& options, QString& error,
+                       bool& exitNow);
+
+}  // namespace mtc::hmi

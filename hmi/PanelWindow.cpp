@@ -1,0 +1,167 @@
+#include "hmi/PanelWindow.h"
+
+#include <QCloseEvent>
+#include <QHBoxLayout>
+#include <QSettings>
+#include <QShortcut>
+#include <QStackedWidget>
+#include <QVBoxLayout>
+
+#include "hmi/CellSession.h"
+#include "hmi/KeyMap.h"
+#include "hmi/MachineKeyBar.h"
+#include "hmi/Screen.h"
+#include "hmi/ScreenRegistry.h"
+#include "hmi/SoftKeyBar.h"
+#include "hmi/StatusHeader.h"
+
+namespace mtc::hmi {
+
+namespace {
+const QString kMenuScreen = "menu";
+const QString kHelpScreen = "help";
+}  // namespace
+
+PanelWindow::PanelWindow(CellSession* session, const ScreenRegistry* registry, QWidget* parent)
+    : QMainWindow(parent), session_(session), registry_(registry) {
+    setObjectName("panelWindow");
+    setWindowTitle("MTC200 panel simulator");
+    auto* central = new QWidget(this);
+    auto* outer = new QVBoxLayout(central);
+    outer->setContentsMargins(4, 4, 4, 4);
+    header_ = new StatusHeader(central);
+    outer->addWidget(header_);
+    auto* middle = new QHBoxLayout;
+    stationStack_ = new QStackedWidget(central);
+    stationStack_->setObjectName("stationStack");
+    middle->addWidget(stationStack_, 1);
+    machineKeys_ = new MachineKeyBar(central);
+    machineKeys_->setObjectName("machineKeyBar");
+    middle->addWidget(machineKeys_);
+    outer->addLayout(middle, 1);
+    softKeys_ = new SoftKeyBar(central);
+    softKeys_->setObjectName("softKeyBar");
+    outer->addWidget(softKeys_);
+    setCentralWidget(central);
+    resize(1024, 720);
+
+    buildStations();
+    installShortcuts();
+    connect(machineKeys_, &MachineKeyBar::keyPressed, this, &PanelWindow::onMachineKey);
+    connect(session_, &CellSession::processChanged, this, [this](int slot) {
+        if (slot == station_) refresh();
+    });
+    showStation(0);
+}
+
+void PanelWindow::buildStations() {
+    for (int slot = 0; slot < session_->processCount(); ++slot) {
+        auto* page = new QStackedWidget(stationStack_);
+        page->setObjectName(QString("station%1").arg(slot));
+        stationStack_->addWidget(page);
+        stationPages_.push_back(page);
+        screens_.push_back({});
+        currentScreen_.push_back(kMenuScreen);
+        ScreenContext context{session_, slot, [this, slot] {
+                                  QVector<Screen*> list;
+                                  for (Screen* s : screens_[slot])
+                                      list.push_back(s);
+                                  return list;
+                              }};
+        for (const auto& entry : registry_->entries()) {
+            Screen* screen = entry.factory(context);
+            screen->setObjectName(entry.name);
+            page->addWidget(screen);
+            screens_[slot].insert(entry.name, screen);
+            connect(screen, &Screen::softKeysChanged, this, [this, screen] {
+                if (screen == currentScreen()) refresh();
+            });
+            connect(screen, &Screen::navigateTo, this,
+                    [this](const QString& name) { showScreen(name); });
+        }
+    }
+}
+
+void PanelWindow::installShortcuts() {
+    for (int i = 0; i < 8; ++i) {
+        auto* shortcut = new QShortcut(QKeySequence(Qt::Key_F1 + i), this);
+        connect(shortcut, &QShortcut::activated, this, [this, i] { softKeys_->trigger(i); });
+    }
+    auto add = [this](const QKeySequence& keys, auto slot) {
+        auto* shortcut = new QShortcut(keys, this);
+        connect(shortcut, &QShortcut::activated, this, slot);
+    };
+    add(QKeySequence(Qt::Key_Escape), [this] { showScreen(kMenuScreen); });
+    add(QKeySequence(Qt::Key_F12), [this] { showScreen(kHelpScreen); });
+    add(QKeySequence(Qt::CTRL | Qt::Key_PageUp), [this] { showStation(station_ - 1); });
+    add(QKeySequence(Qt::CTRL | Qt::Key_PageDown), [this] { showStation(station_ + 1); });
+    for (mtc::core::ControlKey key : machineKeys())
+        add(machineKeyShortcut(key), [this, key] { onMachineKey(key); });
+}
+
+bool PanelWindow::showScreen(const QString& name) {
+    Screen* target = screen(station_, name);
+    if (!target) return false;
+    currentScreen_[station_] = name;
+    stationPages_[station_]->setCurrentWidget(target);
+    target->activated();
+    target->setFocus();
+    refresh();
+    return true;
+}
+
+void PanelWindow::showStation(int slot) {
+    const int count = session_->processCount();
+    if (count == 0) return;
+    station_ = ((slot % count) + count) % count;
+    stationStack_->setCurrentIndex(station_);
+    showScreen(currentScreen_[station_]);
+}
+
+QString PanelWindow::currentScreenName() const {
+    return currentScreen_.value(station_);
+}
+
+Screen* PanelWindow::currentScreen() const {
+    return screen(station_, currentScreenName());
+}
+
+Screen* PanelWindow::screen(int slot, const QString& name) const {
+    if (slot < 0 || slot >= screens_.size()) return nullptr;
+    return screens_[slot].value(name, nullptr);
+}
+
+void PanelWindow::refresh() {
+    Screen* current = currentScreen();
+    header_->show(*session_, station_, current ? current->title() : QString());
+    softKeys_->setKeys(current ? current->softKeys() : SoftKeys{});
+}
+
+void PanelWindow::onMachineKey(mtc::core::ControlKey key) {
+    session_->pressKey(station_, key);
+}
+
+void PanelWindow::restoreSettings() {
+    QSettings settings;
+    restoreGeometry(settings.value("window/geometry").toByteArray());
+    for (int slot = 0; slot < screens_.size(); ++slot) {
+        const QString name = settings.value(QString("station%1/screen").arg(slot)).toString();
+        if (screens_[slot].contains(name)) currentScreen_[slot] = name;
+    }
+    showStation(settings.value("window/station", 0).toInt());
+}
+
+void PanelWindow::saveSettings() const {
+    QSettings settings;
+    settings.setValue("window/geometry", saveGeometry());
+    settings.setValue("window/station", station_);
+    for (int slot = 0; slot < currentScreen_.size(); ++slot)
+        settings.setValue(QString("station%1/screen").arg(slot), currentScreen_[slot]);
+}
+
+void PanelWindow::closeEvent(QCloseEvent* event) {
+    saveSettings();
+    event->accept();
+}
+
+}  // namespace mtc::hmi

@@ -1,0 +1,65 @@
+#pragma once
+
+#include <QMainWindow>
+#include <QMap>
+#include <QVector>
+
+#include "cnc_core/machine/ProcessControl.h"
+
+class QStackedWidget;
+
+namespace mtc::hmi {
+
+class CellSession;
+class MachineKeyBar;
+class Screen;
+class ScreenRegistry;
+class SoftKeyBar;
+class StatusHeader;
+
+/// The panel shell: status header, screen area, soft-key bar F1..F8 and the
+/// machine control key bar. It only navigates and wires: screens render and
+/// act, machine keys go to the CellSession. Each station (process) has its
+/// own instance of every screen, so switching stations keeps screen state.
+class PanelWindow : public QMainWindow {
+    Q_OBJECT
+  public:
+    PanelWindow(CellSession* session, const ScreenRegistry* registry, QWidget* parent = nullptr);
+
+    /// Shows screen `name` on the current station; false if unknown.
+    bool showScreen(const QString& name);
+    /// Switches to station `slot` (wraps around); its last screen reappears.
+    void showStation(int slot);
+    int currentStation() const { return station_; }
+    QString currentScreenName() const;
+    Screen* currentScreen() const;
+    Screen* screen(int slot, const QString& name) const;
+    SoftKeyBar* softKeyBar() const { return softKeys_; }
+
+    /// Restores geometry, station and last screens from QSettings.
+    void restoreSettings();
+    /// Writes geometry, station and last screens to QSettings.
+    void saveSettings() const;
+
+  protected:
+    void closeEvent(QCloseEvent* event) override;
+
+  private:
+    void buildStations();
+    void installShortcuts();
+    void refresh();
+    void onMachineKey(mtc::core::ControlKey key);
+
+    CellSession* session_;
+    const ScreenRegistry* registry_;
+    StatusHeader* header_;
+    QStackedWidget* stationStack_;
+    SoftKeyBar* softKeys_;
+    MachineKeyBar* machineKeys_;
+    QVector<QStackedWidget*> stationPages_;
+    QVector<QMap<QString, Screen*>> screens_;
+    QVector<QString> currentScreen_;
+    int station_ = 0;
+};
+
+}  // namespace mtc::hmi

@@ -1,0 +1,60 @@
+#include "hmi/StatusHeader.h"
+
+#include <QGridLayout>
+#include <QLabel>
+
+#include "hmi/CellSession.h"
+
+namespace mtc::hmi {
+
+namespace {
+QLabel* makeLabel(QWidget* parent, const char* name) {
+    auto* label = new QLabel(parent);
+    label->setObjectName(name);
+    label->setTextInteractionFlags(Qt::NoTextInteraction);
+    return label;
+}
+}  // namespace
+
+StatusHeader::StatusHeader(QWidget* parent) : QWidget(parent) {
+    setObjectName("statusHeader");
+    setAutoFillBackground(true);
+    station_ = makeLabel(this, "headerStation");
+    mode_ = makeLabel(this, "headerMode");
+    program_ = makeLabel(this, "headerProgram");
+    screen_ = makeLabel(this, "headerScreen");
+    alarm_ = makeLabel(this, "headerAlarm");
+    alarm_->setWordWrap(true);
+    auto* grid = new QGridLayout(this);
+    grid->setContentsMargins(6, 3, 6, 3);
+    grid->addWidget(station_, 0, 0);
+    grid->addWidget(mode_, 0, 1);
+    grid->addWidget(program_, 0, 2);
+    grid->addWidget(screen_, 0, 3, Qt::AlignRight);
+    grid->addWidget(alarm_, 1, 0, 1, 4);
+    QFont bold = station_->font();
+    bold.setBold(true);
+    station_->setFont(bold);
+    screen_->setFont(bold);
+}
+
+void StatusHeader::show(const CellSession& session, int slot, const QString& title) {
+    const auto& control = session.control(slot);
+    const auto& process = session.processConfig(slot);
+    station_->setText(
+        QString("Station %1: %2").arg(process.index).arg(QString::fromStdString(process.name)));
+    mode_->setText(QString("Mode: %1").arg(mtc::core::modeName(control.mode())));
+    QString program = control.selectedProgram() == 0
+                          ? QString("Program: none")
+                          : QString("Program: %1").arg(control.selectedProgram());
+    if (!control.currentBlock().empty())
+        program += QString("  Block: %1").arg(QString::fromStdString(control.currentBlock()));
+    if (control.programActive()) program += "  (active)";
+    program_->setText(program);
+    screen_->setText(title);
+    const QString alarm = QString::fromStdString(control.alarm());
+    alarm_->setText(alarm.isEmpty() ? QString("No alarm") : QString("Alarm: %1").arg(alarm));
+    alarm_->setStyleSheet(alarm.isEmpty() ? "" : "color: #b00000; font-weight: bold;");
+}
+
+}  // namespace mtc::hmi

@@ -1,0 +1,48 @@
+#include "screens/programs/ProgramDirectoryModel.h"
+
+#include "hmi/CellSession.h"
+
+namespace mtc::screens {
+
+ProgramDirectoryModel::ProgramDirectoryModel(mtc::hmi::CellSession* session, int slot,
+                                             QObject* parent)
+    : QAbstractListModel(parent), session_(session), slot_(slot) {
+    reload();
+}
+
+void ProgramDirectoryModel::reload() {
+    beginResetModel();
+    numbers_.clear();
+    for (const auto* program : session_->programs(slot_))
+        numbers_.push_back(program->number);
+    endResetModel();
+}
+
+int ProgramDirectoryModel::rowCount(const QModelIndex& parent) const {
+    return parent.isValid() ? 0 : numbers_.size();
+}
+
+QVariant ProgramDirectoryModel::data(const QModelIndex& index, int role) const {
+    if (!index.isValid() || index.row() >= numbers_.size()) return {};
+    const auto* program = session_->program(slot_, numbers_[index.row()]);
+    if (!program) return {};
+    if (role == Qt::DisplayRole) {
+        const bool selected = session_->control(slot_).selectedProgram() == program->number;
+        return QString("%1 %2  %3")
+            .arg(selected ? "→" : " ")
+            .arg(program->number, 3, 10, QChar('0'))
+            .arg(program->fileName);
+    }
+    if (role == Qt::UserRole) return program->number;
+    return {};
+}
+
+int ProgramDirectoryModel::programAt(int row) const {
+    return numbers_.value(row, 0);
+}
+
+int ProgramDirectoryModel::rowOf(int number) const {
+    return numbers_.indexOf(number);
+}
+
+}  // namespace mtc::screens

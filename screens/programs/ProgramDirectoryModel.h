@@ -1,0 +1,31 @@
+#pragma once
+
+#include <QAbstractListModel>
+
+namespace mtc::hmi {
+class CellSession;
+}
+
+namespace mtc::screens {
+
+/// The programs of one station, ordered by number: "001  N1010001.DAT".
+class ProgramDirectoryModel : public QAbstractListModel {
+    Q_OBJECT
+  public:
+    ProgramDirectoryModel(mtc::hmi::CellSession* session, int slot, QObject* parent = nullptr);
+    int rowCount(const QModelIndex& parent = {}) const override;
+    QVariant data(const QModelIndex& index, int role) const override;
+    /// Program number in `row`, 0 if out of range.
+    int programAt(int row) const;
+    /// Row of program `number`, -1 if absent.
+    int rowOf(int number) const;
+    /// Re-reads the session (programs added or replaced).
+    void reload();
+
+  private:
+    mtc::hmi::CellSession* session_;
+    int slot_;
+    QVector<int> numbers_;
+};
+
+}  // namespace mtc::screens

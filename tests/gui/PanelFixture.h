@@ -1,0 +1,43 @@
+#pragma once
+
+#include <QApplication>
+#include <QStandardPaths>
+#include <QTest>
+#include <memory>
+
+#include "hmi/CellSession.h"
+#include "hmi/PanelStartup.h"
+#include "hmi/PanelWindow.h"
+#include "hmi/ScreenRegistry.h"
+#include "screens/ScreenCatalog.h"
+
+/// The real panel on the built-in demo cell, shown and active, for QtTest.
+struct PanelFixture {
+    mtc::hmi::ScreenRegistry registry;
+    std::unique_ptr<mtc::hmi::CellSession> session;
+    std::unique_ptr<mtc::hmi::PanelWindow> window;
+
+    explicit PanelFixture(const mtc::hmi::PanelOptions& options = {}) {
+        QString error;
+        session = mtc::hmi::createSession(options, error);
+        if (!session) qFatal("cannot create the demo cell: %s", qPrintable(error));
+        mtc::screens::registerAllScreens(registry);
+        window = std::make_unique<mtc::hmi::PanelWindow>(session.get(), &registry);
+        window->show();
+        QApplication::setActiveWindow(window.get());
+        if (!QTest::qWaitForWindowActive(window.get())) qWarning("panel window not active");
+    }
+
+    /// Presses a key on whatever has the focus in the panel (as a user would).
+    void press(int key, Qt::KeyboardModifiers modifiers = Qt::NoModifier) {
+        QWidget* target = QApplication::focusWidget();
+        QTest::keyClick(target ? target : window.get(), static_cast<Qt::Key>(key), modifiers);
+    }
+};
+
+/// Settings go to a throw-away location for every test binary.
+inline void useTestSettings() {
+    QStandardPaths::setTestModeEnabled(true);
+    QApplication::setOrganizationName("MTC200SimTest");
+    QApplication::setApplicationName("mtc200-panel-test");
+}

@@ -1,0 +1,133 @@
+// The panel shell driven by keys: soft keys, stations, machine keys, settings.
+#include <QLabel>
+#include <QPushButton>
+#include <QSettings>
+#include <QStackedWidget>
+
+#include "PanelFixture.h"
+#include "hmi/SoftKeyBar.h"
+
+using mtc::core::ControlKey;
+
+class PanelShellTest : public QObject {
+    Q_OBJECT
+  private slots:
+    void initTestCase() {
+        useTestSettings();
+        QSettings().clear();
+    }
+
+    void startsOnTheMainMenuOfStationZero() {
+        PanelFixture panel;
+        QCOMPARE(panel.window->currentStation(), 0);
+        QCOMPARE(panel.window->currentScreenName(), QString("menu"));
+        auto* station = panel.window->findChild<QLabel*>("headerStation");
+        QVERIFY(station);
+        QCOMPARE(station->text(), QString("Station 0: Mill"));
+        QCOMPARE(panel.window->findChild<QLabel*>("headerMode")->text(),
+                 QString("Mode: automatic"));
+    }
+
+    void softKeysFollowTheScreenAndWorkByKeyboardAndMouse() {
+        PanelFixture panel;
+        auto* bar = panel.window->softKeyBar();
+        QCOMPARE(bar->label(0), QString("Program directory"));
+        panel.press(Qt::Key_F1);  // keyboard
+        QCOMPARE(panel.window->currentScreenName(), QString("programs"));
+        QCOMPARE(bar->label(7), QString("Back"));
+        QCOMPARE(panel.window->findChild<QLabel*>("headerScreen")->text(),
+                 QString("Program directory"));
+        auto* f8 = panel.window->findChild<QPushButton*>("softkey8");
+        QVERIFY(f8 && f8->isEnabled());
+        QTest::mouseClick(f8, Qt::LeftButton);  // mouse
+        QCOMPARE(panel.window->currentScreenName(), QString("menu"));
+        panel.press(Qt::Key_F12);
+        QCOMPARE(panel.window->currentScreenName(), QString("help"));
+        panel.press(Qt::Key_Escape);
+        QCOMPARE(panel.window->currentScreenName(), QString("menu"));
+    }
+
+    void blankSoftKeysDoNothing() {
+        PanelFixture panel;
+        panel.press(Qt::Key_F1);
+        QCOMPARE(panel.window->currentScreenName(), QString("programs"));
+        QVERIFY(!panel.window->findChild<QPushButton*>("softkey5")->isEnabled());
+        panel.press(Qt::Key_F5);
+        QCOMPARE(panel.window->currentScreenName(), QString("programs"));
+    }
+
+    void stationsSwitchWithCtrlPageKeysAndKeepTheirScreen() {
+        PanelFixture panel;
+        panel.press(Qt::Key_F2);  // station 0: second menu entry
+        const QString screenOfStation0 = panel.window->currentScreenName();
+        QVERIFY(screenOfStation0 != "menu");
+        panel.press(Qt::Key_PageDown, Qt::ControlModifier);
+        QCOMPARE(panel.window->currentStation(), 1);
+        QCOMPARE(panel.window->currentScreenName(), QString("menu"));
+        QCOMPARE(panel.window->findChild<QLabel*>("headerStation")->text(),
+                 QString("Station 1: Lathe"));
+        panel.press(Qt::Key_F12);
+        QCOMPARE(panel.window->currentScreenName(), QString("help"));
+        panel.press(Qt::Key_PageDown, Qt::ControlModifier);  // wraps to station 0
+        QCOMPARE(panel.window->currentStation(), 0);
+        QCOMPARE(panel.window->currentScreenName(), screenOfStation0);
+        panel.press(Qt::Key_PageUp, Qt::ControlModifier);
+        QCOMPARE(panel.window->currentStation(), 1);
+        QCOMPARE(panel.window->currentScreenName(), QString("help"));
+        QVERIFY(panel.window->screen(0, "help") != panel.window->screen(1, "help"));
+    }
+
+    void machineKeysGoToTheCoreOfTheCurrentStation() {
+        PanelFixture panel;
+        auto& mill = panel.session->control(0);
+        auto& lathe = panel.session->control(1);
+        panel.press(Qt::Key_F3, Qt::ShiftModifier);  // Manual
+        QCOMPARE(mill.mode(), mtc::core::OperatingMode::Manual);
+        QCOMPARE(mill.signalTable().get("P00SMANU"), 1);
+        QCOMPARE(mill.signalTable().get("P00SAUTO"), 0);
+        QCOMPARE(lathe.mode(), mtc::core::OperatingMode::Automatic);
+        QCOMPARE(panel.window->findChild<QLabel*>("headerMode")->text(), QString("Mode: manual"));
+        // Start in manual mode is refused with an alarm in the header.
+        panel.press(Qt::Key_F5, Qt::ShiftModifier);
+        QVERIFY(!mill.alarm().empty());
+        QVERIFY(panel.window->findChild<QLabel*>("headerAlarm")->text().startsWith("Alarm:"));
+        // Control reset (mouse on the M key bar) clears it.
+        auto* reset = panel.window->findChild<QPushButton*>("mkey-7");
+        QCOMPARE(reset->text(), QString("Control reset"));
+        QTest::mouseClick(reset, Qt::LeftButton);
+        QVERIFY(mill.alarm().empty());
+        QCOMPARE(panel.window->findChild<QLabel*>("headerAlarm")->text(), QString("No alarm"));
+        panel.press(Qt::Key_F4, Qt::ShiftModifier);  // Automatic
+        QCOMPARE(mill.mode(), mtc::core::OperatingMode::Automatic);
+        // NC program restart key toggles the M key flag the restart logic reads.
+        panel.press(Qt::Key_F1, Qt::ShiftModifier);
+        QCOMPARE(mill.signalTable().get("mBPREP"), 1);
+        QCOMPARE(lathe.signalTable().get("mBPREP"), 0);
+        // The log keeps the order of the changes.
+        const auto& log = mill.signalTable().log();
+        QVERIFY(log.size() >= 5);
+        QCOMPARE(QString::fromStdString(log.front().name), QString("P00SAUTO"));
+        QCOMPARE(QString::fromStdString(log.back().name), QString("mBPREP"));
+    }
+
+    void settingsKeepScreensStationAndGeometry() {
+        {
+            PanelFixture panel;
+            panel.window->resize(900, 650);
+            panel.press(Qt::Key_F1);
+            panel.press(Qt::Key_PageDown, Qt::ControlModifier);
+            panel.press(Qt::Key_F12);
+            panel.window->close();  // closing saves
+        }
+        PanelFixture again;
+        again.window->restoreSettings();
+        QCOMPARE(again.window->currentStation(), 1);
+        QCOMPARE(again.window->currentScreenName(), QString("help"));
+        QCOMPARE(again.window->size(), QSize(900, 650));
+        again.press(Qt::Key_PageUp, Qt::ControlModifier);
+        QCOMPARE(again.window->currentScreenName(), QString("programs"));
+    }
+};
+
+QTEST_MAIN(PanelShellTest)
+#include "test_panel_shell.moc"
