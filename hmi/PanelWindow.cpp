@@ -10,6 +10,7 @@
 #include "hmi/CellSession.h"
 #include "hmi/KeyMap.h"
 #include "hmi/MachineKeyBar.h"
+#include "hmi/PanelStyle.h"
 #include "hmi/Screen.h"
 #include "hmi/ScreenRegistry.h"
 #include "hmi/SoftKeyBar.h"
@@ -26,6 +27,7 @@ PanelWindow::PanelWindow(CellSession* session, const ScreenRegistry* registry, Q
     : QMainWindow(parent), session_(session), registry_(registry) {
     setObjectName("panelWindow");
     setWindowTitle("MTC200 panel simulator");
+    setStyleSheet(panelStyleSheet());
     auto* central = new QWidget(this);
     auto* outer = new QVBoxLayout(central);
     outer->setContentsMargins(4, 4, 4, 4);

@@ -13,8 +13,8 @@ SoftKeyBar::SoftKeyBar(QWidget* parent) : QWidget(parent) {
         auto* button = new QPushButton(this);
         button->setObjectName(QString("softkey%1").arg(i + 1));
         button->setFocusPolicy(Qt::NoFocus);  // the panel is driven by F keys
-        button->setMinimumHeight(58);
-        button->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Fixed);
+        button->setMinimumHeight(66);
+        button->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Fixed);  // equal widths
         connect(button, &QPushButton::clicked, this, [this, i] { trigger(i); });
         layout->addWidget(button);
         buttons_.push_back(button);

@@ -18,7 +18,7 @@ QLabel* makeLabel(QWidget* parent, const char* name) {
 
 StatusHeader::StatusHeader(QWidget* parent) : QWidget(parent) {
     setObjectName("statusHeader");
-    setAutoFillBackground(true);
+    setAttribute(Qt::WA_StyledBackground, true);
     station_ = makeLabel(this, "headerStation");
     mode_ = makeLabel(this, "headerMode");
     program_ = makeLabel(this, "headerProgram");
