@@ -9,6 +9,8 @@ ctest_args=()
 if [ "${1:-}" = "--asan" ]; then
   preset=asan
   ctest_args+=(-LE gl)
+  export LSAN_OPTIONS="suppressions=$here/tests/sanitizer/lsan.supp:print_suppressions=0"
+  export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
   shift
 fi
 "$here/scripts/setup.sh" "$preset"
