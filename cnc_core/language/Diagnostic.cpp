@@ -12,7 +12,8 @@ std::string formatDiagnostic(const Diagnostic& d) {
         if (d.where.column > 0) text += ":" + std::to_string(d.where.column);
     }
     text += ": " + d.message;
-    for (const auto& detail : d.details) text += "\n    " + detail;
+    for (const auto& detail : d.details)
+        text += "\n    " + detail;
     return text;
 }
 

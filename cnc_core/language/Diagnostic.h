@@ -28,7 +28,7 @@ struct Diagnostic {
 
 /// Collects diagnostics in the order they were found.
 class DiagnosticList {
-public:
+  public:
     void add(Diagnostic diagnostic) { items_.push_back(std::move(diagnostic)); }
     void error(std::string code, SourceLocation where, std::string message,
                std::vector<std::string> details = {}) {
@@ -37,8 +37,8 @@ public:
     }
     void warning(std::string code, SourceLocation where, std::string message,
                  std::vector<std::string> details = {}) {
-        items_.push_back({Severity::Warning, std::move(code), std::move(where),
-                          std::move(message), std::move(details)});
+        items_.push_back({Severity::Warning, std::move(code), std::move(where), std::move(message),
+                          std::move(details)});
     }
     void append(const DiagnosticList& other) {
         items_.insert(items_.end(), other.items_.begin(), other.items_.end());
@@ -53,7 +53,7 @@ public:
     const std::vector<Diagnostic>& items() const { return items_; }
     void clear() { items_.clear(); }
 
-private:
+  private:
     std::vector<Diagnostic> items_;
 };
 

@@ -7,127 +7,97 @@
 #include <unordered_map>
 #include <vector>
 
+#include "cnc_core/language/BlockList.h"
 #include "cnc_core/language/Diagnostic.h"
+#include "cnc_core/language/WordList.h"
 
 /// The parsed form of an NC program. Compact and flat on purpose: a program of
 /// 1,000,000 blocks must parse and stay in memory at a few times its source
 /// size, so blocks, words and expression nodes live in three vectors and refer
 /// to each other by index; text is kept once in `source` and referenced by span.
+///
+/// Storage note (language helper): `Program::blocks` and `Program::words` are
+/// packed containers (BlockList / WordList below). Reading them looks exactly
+/// like reading a std::vector (`size()`, `operator[]`, range-for, `back()`),
+/// but elements come back BY VALUE as `const Block` / `const Word`: bind them
+/// with `const Block& b = program.blocks[i]` or `auto b = ...`; to change one,
+/// use `set(i, value)`. Common words (a letter and a short decimal) take 8
+/// bytes, common blocks 20 bytes; everything else lives in side tables.
 namespace mtc::core {
-
-/// A slice of Program::source.
-struct TextSpan {
-    std::uint32_t offset = 0;
-    std::uint32_t length = 0;
-};
 
 /// Expression node. Children are indices into Program::expressions.
 enum class ExprOp : std::uint8_t {
-    Constant,    ///< value
-    Variable,    ///< @n (process = -1: own process) or @p:n; number in `index`
-    Negate,      ///< -a
-    Add, Subtract, Multiply, Divide,  ///< a op b
-    ReadM,       ///< M(a): last M of group a (1..16)
-    ReadG,       ///< G(a): active G of group a
-    ReadT,       ///< T
-    ReadE,       ///< E
-    ReadS,       ///< S / S1..S3 (spindle in `index`, 0 = main spindle)
-    ReadSPC,     ///< SPC
-    ReadTime,    ///< TIME
-    ReadMTD,     ///< MTD(a,b,c,d); empty argument = -1 node index
+    Constant,  ///< value
+    Variable,  ///< @n (process = -1: own process) or @p:n; number in `index`
+    Negate,    ///< -a
+    Add,
+    Subtract,
+    Multiply,
+    Divide,    ///< a op b
+    ReadM,     ///< M(a): last M of group a (1..16)
+    ReadG,     ///< G(a): active G of group a
+    ReadT,     ///< T
+    ReadE,     ///< E
+    ReadS,     ///< S / S1..S3 (spindle in `index`, 0 = main spindle)
+    ReadSPC,   ///< SPC
+    ReadTime,  ///< TIME
+    ReadMTD,   ///< MTD(a,b,c,d); empty argument = -1 node index
 };
 
 struct ExprNode {
     ExprOp op = ExprOp::Constant;
-    std::int8_t process = -1;  ///< Variable: explicit process or -1
-    std::int32_t index = 0;    ///< Variable number, spindle index
+    std::int8_t process = -1;                     ///< Variable: explicit process or -1
+    std::int32_t index = 0;                       ///< Variable number, spindle index
     std::int32_t a = -1, b = -1, c = -1, d = -1;  ///< children (MTD uses all four)
     double value = 0.0;
 };
 
-/// What a word is. Address letters that carry a number are separate kinds so
-/// the interpreter dispatches with one switch.
-enum class WordKind : std::uint8_t {
-    G,            ///< G<n> (number) or G=<expr>
-    M,            ///< M<n> or M=<expr>
-    Q,            ///< Q<n> or Q=<expr>
-    S,            ///< spindle speed; axisIndex = spindle 0..3 (0 = S without index)
-    T,            ///< tool number
-    E,            ///< E word
-    F,            ///< feed
-    D,            ///< D correction
-    Axis,         ///< axis word: letter in `letter`, index 0..3 in `axisIndex`
-    CircleCenter, ///< I / J / K in `letter`
-    EffectiveRadius,  ///< RI
-    Assign,       ///< @n = expr (variable node in `target`)
-    AssignMTD,    ///< MTD(a,b,c,d) = expr (ReadMTD node in `target`)
-    Jump,         ///< branch / jump / call / return; see JumpKind
-    Command,      ///< other keyword command (MTP, TCH, AXD, GAX, ...): raw args in `text`
-};
-
-enum class JumpKind : std::uint8_t {
-    BRA, BEQ, BNE, BPL, BMI,  ///< branches on the last arithmetic result
-    BST, RET,                 ///< program end
-    BSR, RTS,                 ///< subroutine in same program / program 99
-    JSR, JMP,                 ///< other program (number or variable)
-    BES, BER, BEV, JEV,       ///< event-dependent (event in eventProcess:eventNumber)
-    BRF, BSE, BTE,            ///< tool-related branches
-};
-
-struct Word {
-    WordKind kind = WordKind::G;
-    char letter = 0;                ///< Axis / CircleCenter letter; Command: 0
-    std::uint8_t axisIndex = 0;     ///< 0 = no index, 1..3
-    JumpKind jump = JumpKind::BRA;  ///< only for WordKind::Jump
-    std::uint16_t column = 0;       ///< 1-based column in the source line
-    std::int32_t expr = -1;         ///< value expression; -1 = use `number`
-    std::int32_t target = -1;       ///< Assign/AssignMTD target node
-    double number = 0.0;            ///< constant value when expr == -1
-    TextSpan text;                  ///< label (without '.') / command keyword+args / raw word
-    std::int16_t eventProcess = -1; ///< BES/BER/BEV/JEV "p:e"
-    std::int16_t eventNumber = -1;
-};
-
-/// Block flags.
-enum BlockFlags : std::uint8_t {
-    kBlockSkip = 1,      ///< '/' skip block
-    kBlockPrimary = 2,   ///< ':' primary block
-    kBlockHasError = 4,  ///< the parser rejected (part of) this block
-};
-
-struct Block {
-    std::uint32_t firstWord = 0;
-    std::uint16_t wordCount = 0;
-    std::uint8_t flags = 0;
-    std::int32_t number = -1;    ///< N number, -1 = none
-    std::uint32_t line = 0;      ///< 1-based first source line
-    std::uint16_t lineCount = 1; ///< with continuation lines
-    TextSpan label;              ///< ".NAME" without the dot; empty = none
-    TextSpan comment;            ///< text after ';' (and texts in ( ) / [ ])
-    TextSpan sourceText;         ///< the whole block's source text
+/// A cycle parameter declared in a %MAC file between %CHBEGIN% and %CHEND%:
+/// "%V% @141 INT[1,2] text" (seed 000, 7.2).
+struct CycleParameter {
+    int variable = 0;      ///< @n
+    std::string type;      ///< INT, REAL, ...
+    double minimum = 0.0;  ///< range, when given
+    double maximum = 0.0;
+    bool hasRange = false;
+    std::string text;  ///< operator prompt
+    std::uint32_t line = 0;
 };
 
 /// One parsed NC program.
 struct Program {
-    int number = 0;                ///< program number (0 = loose file)
-    std::string name;              ///< file name or title
-    std::string identification;    ///< .DAT first line, if any
-    std::string header;            ///< %NPG..%NPG header lines, if any
-    std::string source;            ///< the text all spans refer to
-    std::vector<Block> blocks;
-    std::vector<Word> words;
+    int number = 0;              ///< program number (0 = loose file)
+    std::string name;            ///< file name or title
+    std::string identification;  ///< .DAT first line, if any
+    std::string header;          ///< %NPG..%NPG header lines, if any
+    std::string source;          ///< the text all spans refer to
+    BlockList blocks;
+    WordList words;
     std::vector<ExprNode> expressions;
     std::unordered_map<std::string, std::uint32_t> labels;  ///< label -> block index
-    DiagnosticList diagnostics;    ///< parse problems
-    bool isCycle = false;          ///< lives in the cycle memory (%MAC)
+    DiagnosticList diagnostics;                             ///< parse problems
+    bool isCycle = false;                                   ///< lives in the cycle memory (%MAC)
+
+    // Added by the language helper:
+    std::string title;                  ///< header line "*title", if any
+    bool hasDatHeader = false;          ///< the source had the .DAT structure (limits checked)
+    bool usesCompilerKeywords = false;  ///< some word has kWordNeedsCompiler
+    std::vector<CycleParameter> cycleParameters;  ///< %V% declarations of a cycle
+    std::string cycleCall;  ///< %N% line of a cycle ("BSR .*WSTCH ;cycle call")
 
     std::string_view text(TextSpan span) const {
         return std::string_view(source).substr(span.offset, span.length);
     }
-    /// "N0012" or "" for a block without number.
+    /// "N0012" (or "N0012:0001" for compiled blocks) or "" for a block without number.
     std::string blockId(std::size_t blockIndex) const;
     /// Index of the block with label `name`, or -1.
     long findLabel(std::string_view name) const;
+    /// 1-based source line of `offset` in `source` (binary search over the line
+    /// starts is not kept, so this scans; for diagnostics only).
+    std::uint32_t lineOf(std::uint32_t offset) const;
+    /// Bytes this program holds (source, vectors, side tables; an estimate for
+    /// maps and strings). For the memory benchmark.
+    std::size_t memoryBytes() const;
 };
 
 using ProgramPtr = std::shared_ptr<const Program>;

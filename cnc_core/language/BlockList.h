@@ -1,0 +1,82 @@
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <iterator>
+#include <vector>
+
+#include "cnc_core/language/Block.h"
+
+namespace mtc::core {
+
+/// Packed, append-mostly list of blocks (see the storage note at the top).
+class BlockList {
+  public:
+    class const_iterator;
+    std::size_t size() const { return packed_.size(); }
+    bool empty() const { return packed_.empty(); }
+    /// The block at `index` (by value). Precondition: index < size().
+    const Block operator[](std::size_t index) const;
+    const Block back() const { return (*this)[size() - 1]; }
+    const Block front() const { return (*this)[0]; }
+    const_iterator begin() const;
+    const_iterator end() const;
+    /// Appends `block`.
+    void push_back(const Block& block);
+    /// Replaces the block at `index`. Precondition: index < size().
+    void set(std::size_t index, const Block& block);
+    /// N number of block `index` without unpacking the rest (fast path).
+    std::int32_t numberAt(std::size_t index) const;
+    void reserve(std::size_t count) { packed_.reserve(count); }
+    void shrink_to_fit();
+    void clear();
+    std::size_t memoryBytes() const;
+
+  private:
+    struct Packed {
+        std::uint32_t firstWord;
+        std::uint32_t sourceOffset;
+        std::uint32_t line;
+        std::int16_t number;
+        std::uint16_t wordCount;
+        std::uint16_t sourceLength;
+        std::uint8_t flags;
+        std::uint8_t lineCount;  ///< 1..127, bit 7 = extended (full Block in extended_)
+    };
+    static bool packable(const Block& block);
+    Packed pack(const Block& block) const;
+    long findExtended(std::size_t index) const;
+    std::vector<Packed> packed_;
+    std::vector<std::uint32_t> extendedIndex_;  ///< sorted block indices
+    std::vector<Block> extended_;
+};
+
+class BlockList::const_iterator {
+  public:
+    using value_type = Block;
+    using difference_type = std::ptrdiff_t;
+    using reference = const Block;
+    using pointer = void;
+    using iterator_category = std::input_iterator_tag;
+    const_iterator(const BlockList* list, std::size_t index) : list_(list), index_(index) {}
+    const Block operator*() const { return (*list_)[index_]; }
+    const_iterator& operator++() {
+        ++index_;
+        return *this;
+    }
+    bool operator==(const const_iterator& other) const { return index_ == other.index_; }
+    bool operator!=(const const_iterator& other) const { return index_ != other.index_; }
+
+  private:
+    const BlockList* list_;
+    std::size_t index_;
+};
+
+inline BlockList::const_iterator BlockList::begin() const {
+    return {this, 0};
+}
+inline BlockList::const_iterator BlockList::end() const {
+    return {this, size()};
+}
+
+}  // namespace mtc::core

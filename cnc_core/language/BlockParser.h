@@ -1,0 +1,93 @@
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <string_view>
+
+#include "cnc_core/language/Keywords.h"
+#include "cnc_core/language/Lexer.h"
+#include "cnc_core/language/ParseContext.h"
+
+namespace mtc::core {
+
+/// Where one block's text lies: [begin, end) of the source, from the start of
+/// its first line to the end of its last continuation line (no final '\n').
+struct BlockSource {
+    std::uint32_t begin = 0;
+    std::uint32_t end = 0;
+    std::uint32_t line = 0;
+    std::uint16_t lineCount = 1;
+};
+
+/// Parses one NC block into Program::blocks / words / expressions:
+/// [/] [Nxxxx[:yyyy]] [:] [.LABEL] [:] words [; comment].
+/// On the first error in a block it reports a diagnostic, flags the block
+/// with kBlockHasError, keeps the words parsed so far and skips the rest
+/// (recovery at the next block). Never throws.
+class BlockParser {
+  public:
+    /// Most words one block may have (Block::wordCount is 16 bits).
+    static constexpr std::size_t kMaxWords = 65535;
+
+    explicit BlockParser(ParseContext& context);
+
+    /// Parses `source` and appends exactly one Block.
+    void parse(const BlockSource& source);
+    /// True once a PROGRAMMENDE block was parsed.
+    bool programEnded() const { return programEnded_; }
+
+  private:
+    // Block structure (BlockParser.cpp).
+    bool parsePrefix();
+    void takePrimary();
+    bool parseBlockNumber();
+    bool parseBlockLabel();
+    bool parseNextWord();
+    bool parseAddress(char letter, std::uint32_t start);
+    std::uint8_t scanAxisIndex();
+    bool parseValue(WordKind kind, char letter, std::uint8_t index, std::uint32_t start);
+    bool parseNumberValue(WordKind kind, char letter, std::uint8_t index, std::uint32_t start,
+                          bool negative);
+    bool parseExpressionValue(Word& word, std::uint32_t start);
+    bool parseAssignment(std::uint32_t start);
+    bool parseMtdAssignment(std::uint32_t start);
+    bool parseText(char open, char close, std::uint32_t start);
+    bool parseComment(std::uint32_t start);
+    bool finishSimpleValue(Word& word, std::int32_t node, std::uint32_t start);
+    void finish();
+
+    // Keywords (BlockParserKeywords.cpp).
+    bool parseKeyword(std::string_view name, std::uint32_t start);
+    bool parseJump(JumpKind kind, std::uint32_t start);
+    bool parseJumpLabel(Word& word, std::uint32_t start);
+    bool parseEvent(Word& word, std::uint32_t start);
+    bool parseProgramReference(Word& word, std::uint32_t start);
+    bool parseCommand(bool compiler, std::uint32_t start);
+    bool scanCommandArguments();
+    bool parseRestOfBlock(std::string_view name, std::uint32_t start);
+    bool checkDefine(std::uint32_t argsBegin, std::uint32_t argsEnd);
+    bool parseProgramEnd(std::uint32_t start);
+    bool blockUsesMacro() const;
+    void emitMacroBlock();
+    std::uint32_t commentStart() const;
+
+    // Helpers.
+    bool addWord(const Word& word);
+    bool error(const char* code, std::uint32_t offset, std::string message);
+    void warning(const char* code, std::uint32_t offset, std::string message);
+    std::uint32_t lineOf(std::uint32_t offset) const;
+    std::uint32_t columnOf(std::uint32_t offset) const;
+    TextSpan trimmedSpan(std::uint32_t begin, std::uint32_t end) const;
+    bool valueMustBeWhole(WordKind kind) const;
+
+    ParseContext& context_;
+    Program& program_;
+    std::string_view text_;
+    Lexer lexer_;
+    BlockSource source_;
+    Block block_;
+    bool primarySeen_ = false;
+    bool programEnded_ = false;
+};
+
+}  // namespace mtc::core

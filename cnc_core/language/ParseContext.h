@@ -1,0 +1,45 @@
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "cnc_core/language/Program.h"
+
+namespace mtc::core {
+
+/// State shared by the parts of one parseProgram() run: the program being
+/// built, the diagnostic budget and the macros defined so far. Internal to
+/// the language layer.
+class ParseContext {
+  public:
+    /// Most diagnostics one parse records; garbage input cannot flood memory.
+    static constexpr std::size_t kMaxDiagnostics = 1000;
+
+    explicit ParseContext(Program& program) : program_(program) {}
+
+    Program& program() { return program_; }
+    std::string_view source() const { return program_.source; }
+
+    /// Records a diagnostic at `line`:`column` of block `block` ("N0012" or
+    /// ""). After kMaxDiagnostics it records one PARSE_TOO_MANY_DIAGNOSTICS
+    /// error and drops the rest.
+    void report(Severity severity, const char* code, std::uint32_t line, std::uint32_t column,
+                std::string block, std::string message);
+
+    /// Macro names defined by DEFINE so far (seed 001, ch. 4).
+    const std::vector<std::string>& macros() const { return macros_; }
+    void addMacro(std::string_view name) { macros_.emplace_back(name); }
+    bool isMacro(std::string_view name) const;
+
+  private:
+    Program& program_;
+    std::size_t reported_ = 0;
+    std::vector<std::string> macros_;
+};
+
+/// "N0012" / "N0012:0003" / "" (number < 0).
+std::string formatBlockId(std::int32_t number, std::int32_t subNumber = -1);
+
+}  // namespace mtc::core

@@ -1,0 +1,83 @@
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <iterator>
+#include <vector>
+
+#include "cnc_core/language/Word.h"
+
+namespace mtc::core {
+
+/// Packed, append-mostly list of words (see the storage note at the top).
+class WordList {
+  public:
+    class const_iterator;
+    std::size_t size() const { return packed_.size(); }
+    bool empty() const { return packed_.empty(); }
+    /// The word at `index` (by value). Precondition: index < size().
+    const Word operator[](std::size_t index) const;
+    const Word back() const { return (*this)[size() - 1]; }
+    const Word front() const { return (*this)[0]; }
+    const_iterator begin() const;
+    const_iterator end() const;
+    /// Appends `word`; picks the 8-byte form when the word allows it.
+    void push_back(const Word& word);
+    /// Appends a plain numeric word, value = mantissa / 10^scale, in the 8-byte
+    /// form (the parser's fast path). Appends nothing and returns false when
+    /// it does not fit (scale > 7, |mantissa| >= 2^31, column 0 or > 255,
+    /// axisIndex > 3); the caller then appends a full Word.
+    bool tryPushNumber(WordKind kind, char letter, std::uint8_t axisIndex, std::uint32_t column,
+                       std::int64_t mantissa, unsigned scale);
+    /// Replaces the word at `index`. Precondition: index < size().
+    void set(std::size_t index, const Word& word);
+    void reserve(std::size_t count) { packed_.reserve(count); }
+    /// Drops unused capacity (only when worthwhile).
+    void shrink_to_fit();
+    void clear();
+    /// Bytes held (for memory measurements).
+    std::size_t memoryBytes() const;
+
+  private:
+    struct Packed {
+        std::uint8_t kind;
+        std::uint8_t letter;
+        std::uint8_t bits;     ///< axisIndex (2) | scale (3) << 2 | extended << 5
+        std::uint8_t column;   ///< 1..255
+        std::int32_t payload;  ///< mantissa, or index into extended_
+    };
+    static bool packable(const Word& word, std::int32_t& mantissa, unsigned& scale);
+    Packed pack(const Word& word);
+    std::vector<Packed> packed_;
+    std::vector<Word> extended_;
+};
+
+class WordList::const_iterator {
+  public:
+    using value_type = Word;
+    using difference_type = std::ptrdiff_t;
+    using reference = const Word;
+    using pointer = void;
+    using iterator_category = std::input_iterator_tag;
+    const_iterator(const WordList* list, std::size_t index) : list_(list), index_(index) {}
+    const Word operator*() const { return (*list_)[index_]; }
+    const_iterator& operator++() {
+        ++index_;
+        return *this;
+    }
+    bool operator==(const const_iterator& other) const { return index_ == other.index_; }
+    bool operator!=(const const_iterator& other) const { return index_ != other.index_; }
+
+  private:
+    const WordList* list_;
+    std::size_t index_;
+};
+
+inline WordList::const_iterator WordList::begin() const {
+    return {this, 0};
+}
+inline WordList::const_iterator WordList::end() const {
+    return {this, size()};
+}
+
+}  // namespace mtc::core
