@@ -62,13 +62,23 @@ std::int32_t BlockList::numberAt(std::size_t index) const {
 }
 
 void BlockList::push_back(const Block& block) {
-    Packed p = pack(block);
-    if (!packable(block)) {
+    bool extended = !packable(block);
+    Packed& p = packed_.emplace_back();
+    p.firstWord = block.firstWord;
+    p.sourceOffset = block.sourceText.offset;
+    p.line = block.line;
+    p.number =
+        static_cast<std::int16_t>(block.number >= -1 && block.number <= 32767 ? block.number : -1);
+    p.wordCount = block.wordCount;
+    p.sourceLength =
+        static_cast<std::uint16_t>(std::min<std::uint32_t>(block.sourceText.length, 65535));
+    p.flags = block.flags;
+    p.lineCount = static_cast<std::uint8_t>(std::min<std::uint16_t>(block.lineCount, 127));
+    if (extended) {
         p.lineCount |= kExtendedBit;
-        extendedIndex_.push_back(static_cast<std::uint32_t>(packed_.size()));
+        extendedIndex_.push_back(static_cast<std::uint32_t>(packed_.size() - 1));
         extended_.push_back(block);
     }
-    packed_.push_back(p);
 }
 
 void BlockList::set(std::size_t index, const Block& block) {

@@ -79,8 +79,7 @@ bool BlockParser::parsePrefix() {
         lexer_.skipBlanks();
     }
     takePrimary();
-    if (lexer_.peek() == 'N' && Lexer::isDigit(lexer_.peek(1)) && !parseBlockNumber())
-        return false;
+    if (lexer_.peek() == 'N' && Lexer::isDigit(lexer_.peek(1)) && !parseBlockNumber()) return false;
     takePrimary();
     if (lexer_.peek() == '.') {
         if (!parseBlockLabel()) return false;
@@ -326,11 +325,11 @@ bool BlockParser::parseNumberValue(WordKind kind, char letter, std::uint8_t inde
         return error("PARSE_BAD_NUMBER", numberStart, "number with two decimal points");
     std::int64_t mantissa = number.mantissa;
     unsigned scale = number.scale;
-    while (scale > 0 && mantissa % 10 == 0 && (scale > 7 || mantissa > 2147483647)) {
+    while ((scale > 7 || mantissa > 2147483647) && scale > 0 && mantissa % 10 == 0) {
         mantissa /= 10;
         --scale;
     }
-    if (valueMustBeWhole(kind)) {
+    if (valueMustBeWhole(kind) && (negative || scale > 0)) {
         if (negative)
             return error("PARSE_BAD_NUMBER", numberStart,
                          std::string("'") + letter + "' needs a positive whole number");

@@ -58,18 +58,6 @@ void WordList::push_back(const Word& word) {
     packed_.push_back(pack(word));
 }
 
-bool WordList::tryPushNumber(WordKind kind, char letter, std::uint8_t axisIndex,
-                             std::uint32_t column, std::int64_t mantissa, unsigned scale) {
-    if (scale >= 8 || column < 1 || column > 255 || axisIndex > 3 || mantissa > 2147483647 ||
-        mantissa < -2147483647)
-        return false;
-    packed_.push_back(Packed{static_cast<std::uint8_t>(kind), static_cast<std::uint8_t>(letter),
-                             static_cast<std::uint8_t>(axisIndex | (scale << 2)),
-                             static_cast<std::uint8_t>(column),
-                             static_cast<std::int32_t>(mantissa)});
-    return true;
-}
-
 void WordList::set(std::size_t index, const Word& word) {
     Packed& p = packed_[index];
     if (p.bits & kExtendedBit) {

@@ -28,7 +28,20 @@ class WordList {
     /// it does not fit (scale > 7, |mantissa| >= 2^31, column 0 or > 255,
     /// axisIndex > 3); the caller then appends a full Word.
     bool tryPushNumber(WordKind kind, char letter, std::uint8_t axisIndex, std::uint32_t column,
-                       std::int64_t mantissa, unsigned scale);
+                       std::int64_t mantissa, unsigned scale) {
+        if (scale >= 8 || column < 1 || column > 255 || axisIndex > 3 || mantissa > 2147483647 ||
+            mantissa < -2147483647)
+            return false;
+        // Field stores into the element itself: building a temporary and
+        // copying it stalls on store forwarding in this hot path.
+        Packed& p = packed_.emplace_back();
+        p.kind = static_cast<std::uint8_t>(kind);
+        p.letter = static_cast<std::uint8_t>(letter);
+        p.bits = static_cast<std::uint8_t>(axisIndex | (scale << 2));
+        p.column = static_cast<std::uint8_t>(column);
+        p.payload = static_cast<std::int32_t>(mantissa);
+        return true;
+    }
     /// Replaces the word at `index`. Precondition: index < size().
     void set(std::size_t index, const Word& word);
     void reserve(std::size_t count) { packed_.reserve(count); }
