@@ -1,0 +1,199 @@
+#include "cnc_core/interp/BlockExecutor.h"
+
+#include <vector>
+
+namespace mtc::core {
+namespace {
+
+constexpr double kInch = 25.4;
+
+/// Groups without side effects: the programmed value simply becomes active.
+constexpr int kPlainGroups[] = {kGroupToolPath,     kGroupFeedType,  kGroupDimension, kGroupUnits,
+                                kGroupAcceleration, kGroupExactStop, kGroupToolLength};
+
+bool reportProblems(const BlockContext& c, const std::vector<PlaneProblem>& problems, int column) {
+    for (const auto& p : problems)
+        c.error(p.code, p.message, p.column ? p.column : column);
+    return problems.empty();
+}
+
+bool isProgramControl(int m) {
+    return m == 0 || m == 1 || m == 2 || m == 30;
+}
+
+}  // namespace
+
+bool BlockExecutor::plan(const BlockContext& c, const BlockInput& in, const InterpreterState& state,
+                         BlockPlan& plan) const {
+    plan.next = state.modal;
+    plan.hasMotion = false;
+    plan.dwellSeconds = -1.0;
+    plan.programControl = -1;
+    plan.auxChanged = false;
+    ModalState& next = plan.next;
+    for (int group : kPlainGroups)
+        if (in.g[static_cast<size_t>(group)] >= 0)
+            next.g[static_cast<size_t>(group)] = in.g[static_cast<size_t>(group)];
+    if (!transformationOff(c, in, next) || !planeChange(c, in, state.modal, next) ||
+        !transformationOn(c, in, next))
+        return false;
+    explicitGroups(in, next);
+    const bool offsetsChanged =
+        in.g[kGroupZeroOffset] >= 0 || in.g[kGroupPlane] >= 0 || in.g[kGroupTransformation] >= 0;
+    if (offsetsChanged) motion_.recomputeWork(next);
+    if (!scalars(c, in, plan) || !auxiliaries(c, in, state, plan)) return false;
+    const bool freePlaneBlock = in.g[kGroupPlane] == 20;
+    if (in.axisMask == 0 || freePlaneBlock) return true;
+    if (in.dwell)
+        return c.error("DWELL_WITH_AXES", "G4 cannot be combined with axis words", in.dwellColumn);
+    return motion_.plan(c, in, state.modal, plan, setup_.arcTolerance);
+}
+
+bool BlockExecutor::transformationOff(const BlockContext& c, const BlockInput& in,
+                                      ModalState& next) const {
+    (void)c;
+    if (in.g[kGroupTransformation] != 30 || !next.transformation.active()) return true;
+    next.transformation.deselect();
+    next.g[kGroupTransformation] = 30;
+    next.g[kGroupZeroOffset] = 53;
+    next.g[kGroupRadiusDiameter] = (*setup_.defaults)[kGroupRadiusDiameter];
+    return true;
+}
+
+bool BlockExecutor::planeChange(const BlockContext& c, const BlockInput& in,
+                                const ModalState& current, ModalState& next) const {
+    const int plane = in.g[kGroupPlane];
+    if (plane < 0) return true;
+    const int column = in.gColumn[kGroupPlane];
+    if (next.transformation.active())
+        return c.error("PLANE_CHANGE_IN_TRANSFORMATION",
+                       "the plane cannot change while G" +
+                           std::to_string(next.transformation.kind()) +
+                           " is active; deselect it with G30 first",
+                       column);
+    if (plane != 20) {
+        if (!reportProblems(c, next.plane.selectStandard(*setup_.axes, plane), column))
+            return false;
+        next.g[kGroupPlane] = static_cast<std::int16_t>(plane);
+        return true;
+    }
+    std::vector<FreePlaneAxis> programmed;
+    for (int i = 0; i < in.axisCount; ++i) {
+        const int a = in.axisOrder[static_cast<size_t>(i)];
+        programmed.push_back(
+            {a, in.axisValue[static_cast<size_t>(a)], in.axisColumn[static_cast<size_t>(a)]});
+    }
+    if (!reportProblems(c, next.plane.selectFree(*setup_.axes, programmed), column)) return false;
+    next.g[kGroupPlane] = 20;
+    next.g[kGroupInterpolation] = 1;  // seed 003, 3.7: G20 activates G1 ...
+    next.g[kGroupSurfaceSpeed] = 97;  // ... and replaces G96 by G97
+    for (int i = 0; i < in.axisCount; ++i) {
+        const AxisModel& m = setup_.axes->axis(in.axisOrder[static_cast<size_t>(i)]);
+        if (m.spindle) next.rotaryAxisMode[static_cast<size_t>(m.spindleIndex)] = 1;
+    }
+    (void)current;
+    return true;
+}
+
+bool BlockExecutor::transformationOn(const BlockContext& c, const BlockInput& in,
+                                     ModalState& next) const {
+    const int wanted = in.g[kGroupTransformation];
+    if (in.hasRadius && wanted != 32)
+        return c.error("RI_WITHOUT_G32", "RI (effective radius) belongs to G32", in.radiusColumn);
+    if (wanted != 31 && wanted != 32) return true;
+    const int column = in.gColumn[kGroupTransformation];
+    const bool already = next.transformation.kind() == wanted;
+    std::vector<PlaneProblem> problems =
+        wanted == 32
+            ? next.transformation.selectCylinder(*setup_.axes, next.plane, in.hasRadius, in.radius)
+            : next.transformation.selectFacing(*setup_.axes, next.plane);
+    if (!reportProblems(c, problems, column)) return false;
+    if (already) return true;
+    next.g[kGroupTransformation] = static_cast<std::int16_t>(wanted);
+    next.g[kGroupZeroOffset] = 53;      // seed 003, 4.4: all zero shifts off on select
+    next.g[kGroupRadiusDiameter] = 15;  // radius programming while active
+    if (wanted == 32) next.lastEffectiveRadius = in.radius;
+    return true;
+}
+
+void BlockExecutor::explicitGroups(const BlockInput& in, ModalState& next) const {
+    for (int group :
+         {kGroupInterpolation, kGroupZeroOffset, kGroupRadiusDiameter, kGroupSurfaceSpeed})
+        if (in.g[static_cast<size_t>(group)] >= 0)
+            next.g[static_cast<size_t>(group)] = in.g[static_cast<size_t>(group)];
+}
+
+bool BlockExecutor::scalars(const BlockContext& c, const BlockInput& in, BlockPlan& plan) const {
+    ModalState& next = plan.next;
+    const double unit = next.g[kGroupUnits] == 70 ? kInch : 1.0;
+    if (in.dwell) {
+        if (!in.hasFeed)
+            return c.error("DWELL_TIME_MISSING", "G4 needs the dwell time in F (seconds)",
+                           in.dwellColumn);
+        plan.dwellSeconds = in.feed;
+        next.time += in.feed;
+    } else if (in.hasFeed) {
+        next.feed = in.feed * unit;
+    }
+    if (in.hasTool) {
+        if (in.tool != 0 && !setup_.config->tool(in.tool))
+            return c.error("TOOL_UNKNOWN",
+                           "T" + std::to_string(in.tool) +
+                               " is not in the current tools list of process " +
+                               std::to_string(setup_.config->index),
+                           in.toolColumn);
+        next.tool = in.tool;
+    }
+    if (in.hasEdge) next.edge = in.edge;
+    if (in.hasCorrection) next.correction = in.correction;
+    return spindles(c, in, next);
+}
+
+bool BlockExecutor::spindles(const BlockContext& c, const BlockInput& in, ModalState& next) const {
+    if (in.spindleMask == 0) return true;
+    const int reference = next.referenceSpindle;
+    if ((in.spindleMask & 1u) && (in.spindleMask & (1u << reference)))
+        return c.error("WORD_TWICE", "S and S" + std::to_string(reference) +
+                                         " both program the reference spindle");
+    for (int slot = 0; slot < kSpindleSlots; ++slot) {
+        if (!((in.spindleMask >> slot) & 1u)) continue;
+        const int spindle = slot == 0 ? reference : slot;
+        auto& target = in.speedLimit ? next.spindleLimit : next.spindleSpeed;
+        target[static_cast<size_t>(spindle)] = in.spindle[static_cast<size_t>(slot)];
+    }
+    return true;
+}
+
+bool BlockExecutor::auxiliaries(const BlockContext& c, const BlockInput& in,
+                                const InterpreterState& state, BlockPlan& plan) const {
+    if (in.mCount == 0 && in.qCount == 0) return true;
+    plan.auxChanged = true;
+    plan.mGroups = state.mGroups;
+    plan.lastQ = state.lastQ;
+    std::array<int, 17> seen{};
+    for (int i = 0; i < in.mCount; ++i) {
+        const int m = in.m[static_cast<size_t>(i)].value;
+        const int column = in.m[static_cast<size_t>(i)].column;
+        if (m > 999) return c.error("M_RANGE", "M functions are M0..M999", column);
+        const int group = (*setup_.mGroupOf)[static_cast<size_t>(m)];
+        if (group < 16 && seen[static_cast<size_t>(group)]++)
+            return c.error("M_GROUP_CONFLICT",
+                           "two M functions of group " + std::to_string(group) + " in one block",
+                           column);
+        plan.mGroups[static_cast<size_t>(group)] = m;
+        if (isProgramControl(m)) {
+            if (plan.programControl >= 0)
+                return c.error("M_GROUP_CONFLICT", "two program control functions in one block",
+                               column);
+            plan.programControl = m;
+        }
+        const int spindle = m / 100 == 0 ? 1 : m / 100;
+        const int function = m % 100;
+        if ((function == 3 || function == 4 || function == 19) && spindle < kSpindleSlots)
+            plan.next.rotaryAxisMode[static_cast<size_t>(spindle)] = 0;
+    }
+    if (in.qCount > 0) plan.lastQ = in.q[static_cast<size_t>(in.qCount - 1)].value;
+    return true;
+}
+
+}  // namespace mtc::core

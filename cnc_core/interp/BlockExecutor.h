@@ -1,0 +1,60 @@
+#pragma once
+
+#include <array>
+#include <cstdint>
+
+#include "cnc_core/interp/BlockContext.h"
+#include "cnc_core/interp/BlockInput.h"
+#include "cnc_core/interp/BlockPlan.h"
+#include "cnc_core/interp/InterpreterState.h"
+#include "cnc_core/interp/MotionPlanner.h"
+#include "cnc_core/machine/MachineConfig.h"
+#include "cnc_core/machine/ProcessAxes.h"
+#include "cnc_core/machine/ZeroOffsetTable.h"
+
+namespace mtc::core {
+
+/// Second stage of a block: from the decoded words and the current state,
+/// computes the complete effect of the block (BlockPlan) and checks every
+/// rule that involves more than one word: G20 and G31/G32 boundary
+/// conditions, RI usage, tool existence, M group conflicts, then the motion
+/// (MotionPlanner). Order inside a block: simple modal groups, G30, plane,
+/// G31/G32 (with their forced G1/G97 and G53/G15), zero offset, F S T E D,
+/// M and Q, motion. Never changes the interpreter state.
+class BlockExecutor {
+  public:
+    struct Setup {
+        const ProcessConfig* config = nullptr;
+        const ProcessAxes* axes = nullptr;
+        const ZeroOffsetTable* offsets = nullptr;
+        const GGroupValues* defaults = nullptr;
+        const std::array<std::int8_t, 1000>* mGroupOf = nullptr;  ///< M number -> group 1..16
+        double arcTolerance = 0.002;
+    };
+
+    explicit BlockExecutor(const Setup& setup)
+        : setup_(setup), motion_(setup.axes, setup.offsets) {}
+
+    /// Fills `plan` for `input`. Returns false when the block must be
+    /// rejected (errors added through `context`).
+    bool plan(const BlockContext& context, const BlockInput& input, const InterpreterState& state,
+              BlockPlan& plan) const;
+    /// Sets the arc end-point tolerance in mm.
+    void setArcTolerance(double tolerance) { setup_.arcTolerance = tolerance; }
+
+  private:
+    bool transformationOff(const BlockContext& c, const BlockInput& in, ModalState& next) const;
+    bool planeChange(const BlockContext& c, const BlockInput& in, const ModalState& current,
+                     ModalState& next) const;
+    bool transformationOn(const BlockContext& c, const BlockInput& in, ModalState& next) const;
+    void explicitGroups(const BlockInput& in, ModalState& next) const;
+    bool scalars(const BlockContext& c, const BlockInput& in, BlockPlan& plan) const;
+    bool spindles(const BlockContext& c, const BlockInput& in, ModalState& next) const;
+    bool auxiliaries(const BlockContext& c, const BlockInput& in, const InterpreterState& state,
+                     BlockPlan& plan) const;
+
+    Setup setup_;
+    MotionPlanner motion_;
+};
+
+}  // namespace mtc::core

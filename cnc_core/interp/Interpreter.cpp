@@ -1,0 +1,257 @@
+#include "cnc_core/interp/Interpreter.h"
+
+#include "cnc_core/machine/InMemoryMachineData.h"
+
+namespace mtc::core {
+namespace {
+
+std::shared_ptr<MachineDataProvider> ownMachineData(const InterpreterServices& services,
+                                                    const ProcessConfig& config) {
+    if (services.machineData) return services.machineData;
+    MachineConfig cell;
+    cell.processes.push_back(config);
+    return std::make_shared<InMemoryMachineData>(cell);
+}
+
+std::shared_ptr<EventTable> ownEvents(const InterpreterServices& services) {
+    return services.events ? services.events : std::make_shared<EventTable>();
+}
+
+}  // namespace
+
+const char* runStatusName(RunStatus status) {
+    switch (status) {
+        case RunStatus::Running:
+            return "running";
+        case RunStatus::Ended:
+            return "ended";
+        case RunStatus::Stopped:
+            return "stopped";
+        case RunStatus::TargetReached:
+            return "target";
+        case RunStatus::BudgetExceeded:
+            return "budget";
+        case RunStatus::Error:
+            return "error";
+    }
+    return "error";
+}
+
+Interpreter::Interpreter(const ProcessConfig& config, const ProgramStore& programs,
+                         MachineSink& sink, InterpreterServices services)
+    : config_(config),
+      programs_(programs),
+      sink_(sink),
+      axes_(ProcessAxes::build(config, configDiagnostics_)),
+      zeroOffsets_(ZeroOffsetTable::build(config, configDiagnostics_)),
+      defaults_(defaultGGroups(config)),
+      machineData_(ownMachineData(services, config)),
+      events_(ownEvents(services)),
+      otherProcesses_(services.otherProcesses),
+      evaluator_({&state_, &input_, machineData_.get(), services.otherProcesses, config.index}),
+      executor_({&config_, &axes_, &zeroOffsets_, &defaults_, &mGroupOf_, 0.002}),
+      programFlow_(programs, config.index, events_.get()) {
+    const int plane = config.defaultPlane();
+    if (plane < 17 || plane > 19)
+        configDiagnostics_.error("CFG_DEFAULT_PLANE", {},
+                                 "process " + std::to_string(config.index) +
+                                     ": B004 default plane must be 17, 18 or 19");
+    mGroupOf_.fill(16);
+    for (const auto& group : config.mGroups)
+        for (int m : group.functions)
+            if (m >= 0 && m < 1000 && group.number >= 1 && group.number <= 15)
+                mGroupOf_[static_cast<size_t>(m)] = static_cast<std::int8_t>(group.number);
+    state_.modal.plane = PlaneSelection::base(axes_, defaults_[kGroupPlane]);
+    resetModal();
+    state_.mGroups.fill(-1);
+    for (const auto& group : config.mGroups)
+        if (group.number >= 1 && group.number <= 15)
+            state_.mGroups[static_cast<size_t>(group.number)] = group.resetValue;
+    rebuildNames();
+}
+
+bool Interpreter::select(int number, std::uint32_t startBlock, DiagnosticList* diagnostics) {
+    ProgramPtr program = programs_.find(config_.index, number);
+    if (!program) {
+        if (diagnostics)
+            diagnostics->error("PROGRAM_NOT_FOUND", {number, "", 0, 0},
+                               "program " + std::to_string(number) + " does not exist in process " +
+                                   std::to_string(config_.index));
+        return false;
+    }
+    return select(std::move(program), startBlock, diagnostics);
+}
+
+bool Interpreter::select(ProgramPtr program, std::uint32_t startBlock,
+                         DiagnosticList* diagnostics) {
+    if (!program || (startBlock > 0 && startBlock >= program->blocks.size())) {
+        if (diagnostics)
+            diagnostics->error("BLOCK_RANGE", {program ? program->number : 0, "", 0, 0},
+                               "the start block lies outside the program");
+        return false;
+    }
+    state_.selected = program;
+    state_.program = std::move(program);
+    state_.block = startBlock;
+    state_.callStack.clear();
+    state_.ended = false;
+    programFlow_.clearCache();
+    return true;
+}
+
+void Interpreter::setStopTarget(std::optional<StopTarget> target) {
+    target_ = target;
+    targetArrivals_ = 0;
+}
+
+void Interpreter::restoreState(const InterpreterState& state) {
+    state_ = state;
+    programFlow_.clearCache();
+    rebuildNames();
+}
+
+RunResult Interpreter::step() {
+    RunResult result;
+    if (configDiagnostics_.hasErrors() || !state_.program) return run(0);
+    const Outcome outcome = executeNext(result.diagnostics, result.blocksInterpreted);
+    switch (outcome) {
+        case Outcome::Continue:
+            result.status = RunStatus::Running;
+            break;
+        case Outcome::Ended:
+            result.status = RunStatus::Ended;
+            break;
+        case Outcome::Stopped:
+            result.status = RunStatus::Stopped;
+            break;
+        case Outcome::Target:
+            result.status = RunStatus::TargetReached;
+            break;
+        case Outcome::Error:
+            result.status = RunStatus::Error;
+            break;
+    }
+    return result;
+}
+
+RunResult Interpreter::run(std::uint64_t budget) {
+    RunResult result;
+    if (configDiagnostics_.hasErrors()) {
+        result.diagnostics.append(configDiagnostics_);
+        result.status = RunStatus::Error;
+        return result;
+    }
+    if (!state_.program) {
+        result.diagnostics.error("NO_PROGRAM", {}, "no program is selected");
+        result.status = RunStatus::Error;
+        return result;
+    }
+    state_.ended = false;
+    for (;;) {
+        if (result.blocksInterpreted >= budget) {
+            result.diagnostics.error(
+                "BLOCK_BUDGET", blockLocation(*state_.program, state_.block),
+                "the run was stopped after " + std::to_string(budget) +
+                    " interpreted blocks (block budget); is the program an endless loop?");
+            result.status = RunStatus::BudgetExceeded;
+            return result;
+        }
+        switch (executeNext(result.diagnostics, result.blocksInterpreted)) {
+            case Outcome::Continue:
+                continue;
+            case Outcome::Ended:
+                result.status = RunStatus::Ended;
+                return result;
+            case Outcome::Stopped:
+                result.status = RunStatus::Stopped;
+                return result;
+            case Outcome::Target:
+                result.status = RunStatus::TargetReached;
+                return result;
+            case Outcome::Error:
+                result.status = RunStatus::Error;
+                return result;
+        }
+    }
+}
+
+Interpreter::Outcome Interpreter::executeNext(DiagnosticList& diagnostics,
+                                              std::uint64_t& executed) {
+    const Program& program = *state_.program;
+    const std::uint32_t index = state_.block;
+    if (index >= program.blocks.size() || (program.blocks[index].flags & kBlockProgramEnd)) {
+        if (!state_.callStack.empty()) {
+            diagnostics.error("SUBROUTINE_WITHOUT_RTS", blockLocation(program, index),
+                              "the end of program " + std::to_string(program.number) +
+                                  " was reached inside a subroutine (RTS missing)");
+            return Outcome::Error;
+        }
+        diagnostics.warning("PROGRAM_END_MISSING", blockLocation(program, index),
+                            "the program ended without BST, RET, M02 or M30");
+        programEnd();
+        return Outcome::Ended;
+    }
+    if (target_ && program.number == target_->program && index == target_->block &&
+        ++targetArrivals_ >= target_->pass) {
+        target_.reset();
+        return Outcome::Target;
+    }
+    const std::uint8_t flags = program.blocks[index].flags;
+    if ((flags & kBlockSkip) && options_.skipBlocks) {
+        ++state_.block;
+        return Outcome::Continue;
+    }
+    ++executed;
+    if (!checkedBlock(program, index, diagnostics)) {
+        if (!options_.continueAfterError) return Outcome::Error;
+        ++state_.block;
+        return Outcome::Continue;
+    }
+    return commit(program, index, diagnostics);
+}
+
+bool Interpreter::checkedBlock(const Program& program, std::uint32_t index,
+                               DiagnosticList& diagnostics) {
+    const BlockContext context{program, index, diagnostics};
+    if (program.blocks[index].flags & kBlockHasError) {
+        std::vector<std::string> details;
+        const auto line = program.blocks[index].line;
+        for (const auto& d : program.diagnostics.items())
+            if (d.where.line == static_cast<int>(line)) details.push_back(d.message);
+        return context.error("BLOCK_SYNTAX", "the block has syntax errors and cannot be executed",
+                             0, details);
+    }
+    executor_.setArcTolerance(options_.arcTolerance);
+    const BlockDecoder decoder(axes_, names_, evaluator_);
+    return decoder.decode(program, index, input_, diagnostics) &&
+           executor_.plan(context, input_, state_, plan_) &&
+           programFlow_.plan(context, input_, state_, plan_.next, flow_) &&
+           validateMachineData(context);
+}
+
+bool Interpreter::validateMachineData(const BlockContext& context) {
+    for (int i = 0; i < input_.mtdCount; ++i) {
+        const auto& w = input_.mtdWrites[static_cast<size_t>(i)];
+        const MachineDataStatus status =
+            machineData_->check(w.address, w.value, MachineDataWriter::Nc);
+        if (status != MachineDataStatus::Ok)
+            return context.error(
+                machineDataStatusCode(status),
+                "MTD(" + std::to_string(w.address.page) + "," + std::to_string(w.address.process) +
+                    "," + std::to_string(w.address.sub) + "," + std::to_string(w.address.element) +
+                    ") cannot take the value " + std::to_string(w.value),
+                w.column);
+    }
+    for (int i = 0; i < input_.writeCount; ++i) {
+        const auto& w = input_.writes[static_cast<size_t>(i)];
+        double probe = 0;
+        if (w.process >= 0 && w.process != config_.index &&
+            (!otherProcesses_ || !otherProcesses_->read(w.process, w.index, probe)))
+            return context.error("VARIABLE_PROCESS", "variable @" + std::to_string(w.process) +
+                                                         ":" + std::to_string(w.index) +
+                                                         " cannot be written: no such process");
+    }
+    return true;
+}
+
+}  // namespace mtc::core

@@ -1,0 +1,213 @@
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "cnc_core/interp/BlockExecutor.h"
+#include "cnc_core/interp/BlockInput.h"
+#include "cnc_core/interp/BlockPlan.h"
+#include "cnc_core/interp/ExpressionEvaluator.h"
+#include "cnc_core/interp/InterpreterState.h"
+#include "cnc_core/interp/MachineSink.h"
+#include "cnc_core/interp/ProgramFlow.h"
+#include "cnc_core/interp/VariableAccess.h"
+#include "cnc_core/language/Diagnostic.h"
+#include "cnc_core/machine/AxisNameTable.h"
+#include "cnc_core/machine/EventTable.h"
+#include "cnc_core/machine/MachineConfig.h"
+#include "cnc_core/machine/MachineDataProvider.h"
+#include "cnc_core/machine/ProcessAxes.h"
+#include "cnc_core/machine/ZeroOffsetTable.h"
+#include "cnc_core/program/ProgramStore.h"
+
+namespace mtc::core {
+
+/// Default bound of run(): 10,000,000 interpreted blocks (CLI-CONTRACT.md).
+inline constexpr std::uint64_t kDefaultBlockBudget = 10'000'000;
+
+/// How a run (or step) ended.
+enum class RunStatus {
+    Running,         ///< step(): the block was executed, the program goes on
+    Ended,           ///< program end (BST, RET, M02, M30, or the last block)
+    Stopped,         ///< M00, or M01 with optional stop on; run() again continues
+    TargetReached,   ///< the stop target block was reached (it is NOT executed)
+    BudgetExceeded,  ///< the block budget is used up (diagnostic BLOCK_BUDGET)
+    Error,           ///< a block was rejected; state is as before that block
+};
+
+/// "running", "ended", "stopped", "target", "budget", "error".
+const char* runStatusName(RunStatus status);
+
+struct RunResult {
+    RunStatus status = RunStatus::Ended;
+    DiagnosticList diagnostics;           ///< errors and warnings of this run
+    std::uint64_t blocksInterpreted = 0;  ///< blocks executed by this call
+};
+
+/// What leaves the interpreter. The restart computing process switches
+/// motion off and the aux types off as its process parameters say
+/// (Bxx.058..061); M groups, M(16), Q, S, T and E are collected regardless.
+struct OutputOptions {
+    bool motion = true;    ///< moves to MachineSink::motion
+    bool dwell = true;     ///< G4 to MachineSink::dwell
+    bool m = true;         ///< M functions to MachineSink::auxiliary
+    bool q = true;         ///< Q functions
+    bool s = true;         ///< S words
+    bool te = true;        ///< T and E words
+    bool commands = true;  ///< MTP, TCH, AXD, ... to MachineSink::command
+};
+
+struct InterpreterOptions {
+    OutputOptions output;
+    bool optionalStop = false;        ///< M01 stops like M00
+    bool skipBlocks = false;          ///< '/' blocks are skipped (the skip switch)
+    bool continueAfterError = false;  ///< check mode: a rejected block is skipped, the run goes on
+    double arcTolerance = 0.002;      ///< mm, radius difference allowed between start and end
+};
+
+/// Stop BEFORE block `block` (index into Program::blocks) of program
+/// `program` when it is reached for the `pass`-th time (restart target).
+struct StopTarget {
+    int program = 0;
+    std::uint32_t block = 0;
+    std::uint32_t pass = 1;
+};
+
+/// Sees every M, Q, S, T and E the program issues, whether or not it was
+/// forwarded to the sink (`forwarded` false = suppressed by OutputOptions).
+class AuxObserver {
+  public:
+    virtual ~AuxObserver() = default;
+    virtual void auxiliary(const AuxOutput& output, bool forwarded) = 0;
+};
+
+/// One program level of the call stack (level 0 = main program).
+struct StackLevel {
+    int program = 0;
+    std::uint32_t blockIndex = 0;  ///< current block of the innermost level, call block otherwise
+    std::string block;             ///< "N0012" or ""
+    int line = 0;
+};
+
+/// Cell-wide services an interpreter uses. Left empty, the interpreter makes
+/// its own event table and an InMemoryMachineData for its process.
+struct InterpreterServices {
+    std::shared_ptr<MachineDataProvider> machineData;
+    std::shared_ptr<EventTable> events;
+    VariableAccess* otherProcesses = nullptr;  ///< @p:n of other processes
+};
+
+/// Executes the NC programs of one process, block by block: decode (words,
+/// expressions), plan (every rule checked, nothing changed), commit (state,
+/// outputs through the sink, program flow). A rejected block changes
+/// nothing. All state lives in InterpreterState (state(), restoreState()).
+/// Never throws; every problem is a diagnostic with program, block, line.
+class Interpreter {
+  public:
+    /// The references must outlive the interpreter. Configuration problems
+    /// (bad axis definitions, zero offset columns) are reported by
+    /// configurationDiagnostics(); the interpreter then refuses to run.
+    Interpreter(const ProcessConfig& config, const ProgramStore& programs, MachineSink& sink,
+                InterpreterServices services = {});
+    Interpreter(const Interpreter&) = delete;
+    Interpreter& operator=(const Interpreter&) = delete;
+
+    const DiagnosticList& configurationDiagnostics() const { return configDiagnostics_; }
+
+    /// Selects program `number` of this process and puts the program
+    /// pointer on block `startBlock`. Returns false (diagnostic
+    /// PROGRAM_NOT_FOUND / BLOCK_RANGE into `diagnostics`) when impossible;
+    /// then nothing changes. The call stack is cleared.
+    bool select(int number, std::uint32_t startBlock = 0, DiagnosticList* diagnostics = nullptr);
+    /// Same with a program that is not (or not yet) in the store.
+    bool select(ProgramPtr program, std::uint32_t startBlock = 0,
+                DiagnosticList* diagnostics = nullptr);
+    /// Executes at most one block (skipped '/' blocks are passed over).
+    RunResult step();
+    /// Executes blocks until program end, M00, the stop target, an error or
+    /// `budget` blocks (then BLOCK_BUDGET). After Ended the program pointer
+    /// is back on the first block of the selected program.
+    RunResult run(std::uint64_t budget = kDefaultBlockBudget);
+    /// Control reset: program end resets (M groups, base coordinate system,
+    /// transformation off, G groups to their defaults), call stack cleared,
+    /// program pointer on the first block of the selected program.
+    void controlReset();
+
+    const InterpreterState& state() const { return state_; }
+    /// Replaces the whole state (e.g. a snapshot taken with state()).
+    void restoreState(const InterpreterState& state);
+    /// Program levels from the main program to the current block.
+    std::vector<StackLevel> callStack() const;
+
+    InterpreterOptions& options() { return options_; }
+    const InterpreterOptions& options() const { return options_; }
+    /// Sets (or clears with std::nullopt) the block to stop before; resets the pass count.
+    void setStopTarget(std::optional<StopTarget> target);
+    /// How often the stop target block was reached so far.
+    std::uint32_t targetArrivals() const { return targetArrivals_; }
+    /// Observer of every aux function (nullptr = none). Not owned.
+    void setObserver(AuxObserver* observer) { observer_ = observer; }
+
+    EventTable& events() { return *events_; }
+    MachineDataProvider& machineData() { return *machineData_; }
+    const ProcessAxes& axes() const { return axes_; }
+    const ProcessConfig& config() const { return config_; }
+    /// Name of machine axis `axis` as the JSON and transcripts show it
+    /// (configuration name, e.g. "X", "Z2", "S1").
+    const std::string& axisName(int axis) const { return axes_.axis(axis).configName; }
+    /// Workpiece coordinate of `axis` as the program sees it now (the
+    /// inverse of the conversions of MotionPlanner: mm, degrees, diameter).
+    double programmedPosition(int axis) const;
+    /// Writes the page 60 elements (rotary axis modes, transformation, tool
+    /// spindles) of this process into the machine data (restart target reached).
+    void publishPage60();
+
+  private:
+    enum class Outcome { Continue, Ended, Stopped, Target, Error };
+
+    Outcome executeNext(DiagnosticList& diagnostics, std::uint64_t& executed);
+    bool checkedBlock(const Program& program, std::uint32_t index, DiagnosticList& diagnostics);
+    Outcome commit(const Program& program, std::uint32_t index, DiagnosticList& diagnostics);
+    bool validateMachineData(const BlockContext& context);
+    void emitAux(const Program& program, std::uint32_t index);
+    void sendAux(char type, int spindle, double value, const SourceLocation& where, bool forwarded);
+    void emitMotion(const Program& program, std::uint32_t index);
+    void runCommands(const Program& program, std::uint32_t index);
+    Outcome applyFlow(const Program& program, std::uint32_t index);
+    void programEnd();
+    void resetBaseSystem();
+    void resetModal();
+    void rebuildNames() { names_ = AxisNameTable::build(axes_, state_.modal.transformation); }
+
+    const ProcessConfig& config_;
+    const ProgramStore& programs_;
+    MachineSink& sink_;
+    DiagnosticList configDiagnostics_;
+    ProcessAxes axes_;
+    ZeroOffsetTable zeroOffsets_;
+    GGroupValues defaults_{};
+    std::array<std::int8_t, 1000> mGroupOf_{};
+    std::shared_ptr<MachineDataProvider> machineData_;
+    std::shared_ptr<EventTable> events_;
+    VariableAccess* otherProcesses_ = nullptr;
+    AuxObserver* observer_ = nullptr;
+    InterpreterOptions options_;
+    std::optional<StopTarget> target_;
+    std::uint32_t targetArrivals_ = 0;
+
+    InterpreterState state_;
+    AxisNameTable names_;
+    BlockInput input_;
+    BlockPlan plan_;
+    FlowPlan flow_;
+    Motion motion_;
+    ExpressionEvaluator evaluator_;
+    BlockExecutor executor_;
+    ProgramFlow programFlow_;
+};
+
+}  // namespace mtc::core

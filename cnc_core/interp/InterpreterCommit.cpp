@@ -1,0 +1,266 @@
+// Interpreter, second half: committing a checked block (state, outputs
+// through the sink, program flow) and the program-end / reset rules.
+#include <cmath>
+
+#include "cnc_core/interp/Interpreter.h"
+
+namespace mtc::core {
+namespace {
+
+constexpr double kInch = 25.4;
+
+SourceLocation sinkLocation(const Program& program, std::uint32_t index) {
+    return blockLocation(program, index, 0);
+}
+
+/// "TCH(2,1)" -> 1 (the SPI argument), default 1; clamped to 1..4.
+int spindleArgument(std::string_view args) {
+    const auto comma = args.find(',');
+    if (comma == std::string_view::npos) return 1;
+    int spindle = 0;
+    for (std::size_t i = comma + 1; i < args.size() && args[i] >= '0' && args[i] <= '9'; ++i)
+        spindle = spindle * 10 + (args[i] - '0');
+    return spindle >= 1 && spindle <= 4 ? spindle : 1;
+}
+
+}  // namespace
+
+Interpreter::Outcome Interpreter::commit(const Program& program, std::uint32_t index,
+                                         DiagnosticList& /*diagnostics*/) {
+    const bool transformationChanged =
+        plan_.next.transformation.kind() != state_.modal.transformation.kind();
+    const ModalState before = plan_.hasMotion ? state_.modal : ModalState{};
+    state_.modal = plan_.next;
+    for (int i = 0; i < input_.writeCount; ++i) {
+        const auto& w = input_.writes[static_cast<size_t>(i)];
+        if (w.process >= 0 && w.process != config_.index) {
+            otherProcesses_->write(w.process, w.index, w.value);
+            continue;
+        }
+        state_.variables.values[static_cast<size_t>(w.index)] = w.value;
+        state_.variables.written.set(static_cast<size_t>(w.index));
+    }
+    for (int i = 0; i < input_.mtdCount; ++i)
+        machineData_->write(input_.mtdWrites[static_cast<size_t>(i)].address,
+                            input_.mtdWrites[static_cast<size_t>(i)].value, MachineDataWriter::Nc);
+    if (input_.conditionSet) state_.condition = input_.condition;
+    if (plan_.auxChanged) {
+        state_.mGroups = plan_.mGroups;
+        state_.lastQ = plan_.lastQ;
+    }
+    if (transformationChanged) rebuildNames();
+    emitAux(program, index);
+    if (plan_.hasMotion && options_.output.motion) {
+        motion_.start = before.machine;
+        emitMotion(program, index);
+    }
+    if (plan_.dwellSeconds >= 0.0 && options_.output.dwell)
+        sink_.dwell(sinkLocation(program, index), plan_.dwellSeconds);
+    if (input_.commandCount > 0) runCommands(program, index);
+    switch (plan_.programControl) {
+        case 2:
+        case 30:
+            programEnd();
+            return Outcome::Ended;
+        default:
+            break;
+    }
+    const Outcome flow = applyFlow(program, index);
+    if (flow != Outcome::Continue) return flow;
+    if (plan_.programControl == 0 || (plan_.programControl == 1 && options_.optionalStop))
+        return Outcome::Stopped;
+    return Outcome::Continue;
+}
+
+void Interpreter::sendAux(char type, int spindle, double value, const SourceLocation& where,
+                          bool forwarded) {
+    AuxOutput out;
+    out.where = where;
+    out.type = type;
+    out.spindle = spindle;
+    out.value = value;
+    if (forwarded) sink_.auxiliary(out);
+    if (observer_) observer_->auxiliary(out, forwarded);
+}
+
+void Interpreter::emitAux(const Program& program, std::uint32_t index) {
+    const BlockInput& in = input_;
+    if (in.spindleMask == 0 && !in.hasTool && !in.hasEdge && in.mCount == 0 && in.qCount == 0)
+        return;
+    const SourceLocation where = sinkLocation(program, index);
+    const OutputOptions& out = options_.output;
+    if (!in.speedLimit)
+        for (int slot = 0; slot < kSpindleSlots; ++slot)
+            if ((in.spindleMask >> slot) & 1u)
+                sendAux('S', slot == 0 ? state_.modal.referenceSpindle : slot,
+                        in.spindle[static_cast<size_t>(slot)], where, out.s);
+    if (in.hasTool) sendAux('T', 0, in.tool, where, out.te);
+    if (in.hasEdge) sendAux('E', 0, in.edge, where, out.te);
+    for (int i = 0; i < in.mCount; ++i)
+        sendAux('M', 0, in.m[static_cast<size_t>(i)].value, where, out.m);
+    for (int i = 0; i < in.qCount; ++i)
+        sendAux('Q', 0, in.q[static_cast<size_t>(i)].value, where, out.q);
+}
+
+void Interpreter::emitMotion(const Program& program, std::uint32_t index) {
+    Motion& m = motion_;
+    m.where.program = program.number;
+    m.where.block = program.blockId(index);
+    m.where.line = static_cast<int>(program.blocks[index].line);
+    m.where.column = 0;
+    m.type = plan_.motionType;
+    m.axisCount = axes_.count();
+    m.end = state_.modal.machine;
+    const bool arc = m.type == MotionType::ArcCW || m.type == MotionType::ArcCCW;
+    m.planeAxis1 = arc ? plan_.planeAxis1 : -1;
+    m.planeAxis2 = arc ? plan_.planeAxis2 : -1;
+    m.center1 = arc ? plan_.center1 : 0.0;
+    m.center2 = arc ? plan_.center2 : 0.0;
+    m.feed = plan_.feedRate;
+    m.transformation = state_.modal.transformation.kind();
+    m.effectiveRadius = state_.modal.transformation.effectiveRadius();
+    sink_.motion(m);
+}
+
+void Interpreter::runCommands(const Program& program, std::uint32_t index) {
+    const SourceLocation where = sinkLocation(program, index);
+    for (int i = 0; i < input_.commandCount; ++i) {
+        const Word w = program.words[input_.commands[static_cast<size_t>(i)]];
+        const std::string_view text = program.text(w.text);
+        const std::string_view args = program.text(w.args);
+        std::string keyword(text.substr(0, text.find_first_of(" (=")));
+        if (keyword == "MTP" && config_.toolStorage == "turret")
+            state_.modal.toolSpindle[0] = state_.modal.tool;
+        else if (keyword == "TCH" || keyword == "TMS")
+            state_.modal.toolSpindle[static_cast<size_t>(spindleArgument(args) - 1)] =
+                state_.modal.tool;
+        else if (keyword == "TSM")
+            state_.modal.toolSpindle[static_cast<size_t>(spindleArgument(args) - 1)] = 0;
+        if (options_.output.commands) sink_.command(where, keyword, std::string(args));
+    }
+}
+
+Interpreter::Outcome Interpreter::applyFlow(const Program& /*program*/, std::uint32_t index) {
+    switch (flow_.kind) {
+        case FlowPlan::Kind::Next:
+            ++state_.block;
+            return Outcome::Continue;
+        case FlowPlan::Kind::Goto:
+            if (flow_.program != state_.program) state_.program = flow_.program;
+            state_.block = flow_.block;
+            return Outcome::Continue;
+        case FlowPlan::Kind::Call:
+            state_.callStack.push_back({state_.program, index, index + 1});
+            state_.program = flow_.program;
+            state_.block = flow_.block;
+            return Outcome::Continue;
+        case FlowPlan::Kind::Return: {
+            CallFrame frame = std::move(state_.callStack.back());
+            state_.callStack.pop_back();
+            state_.program = std::move(frame.program);
+            state_.block = frame.returnBlock;
+            return Outcome::Continue;
+        }
+        case FlowPlan::Kind::End:
+            programEnd();
+            return Outcome::Ended;
+        case FlowPlan::Kind::Jump:
+            resetBaseSystem();
+            state_.callStack.clear();
+            state_.program = flow_.program;
+            state_.selected = flow_.program;
+            state_.block = 0;
+            return Outcome::Continue;
+    }
+    return Outcome::Continue;
+}
+
+void Interpreter::resetBaseSystem() {
+    ModalState& m = state_.modal;
+    if (m.transformation.active()) {
+        m.transformation.deselect();
+        m.g[kGroupTransformation] = 30;
+        m.g[kGroupZeroOffset] = 53;
+        m.g[kGroupRadiusDiameter] = defaults_[kGroupRadiusDiameter];
+    }
+    m.g[kGroupPlane] = defaults_[kGroupPlane];
+    m.plane = PlaneSelection::base(axes_, defaults_[kGroupPlane]);
+    MotionPlanner(&axes_, &zeroOffsets_).recomputeWork(m);
+    rebuildNames();
+}
+
+void Interpreter::resetModal() {
+    ModalState& m = state_.modal;
+    m.g = defaults_;
+    m.transformation.deselect();
+    m.plane = PlaneSelection::base(axes_, defaults_[kGroupPlane]);
+    m.spindleLimit = {};
+    MotionPlanner(&axes_, &zeroOffsets_).recomputeWork(m);
+}
+
+void Interpreter::programEnd() {
+    resetModal();
+    for (int g = 1; g <= 16; ++g)
+        state_.mGroups[static_cast<size_t>(g)] = -1;
+    for (const auto& group : config_.mGroups)
+        if (group.number >= 1 && group.number <= 15)
+            state_.mGroups[static_cast<size_t>(group.number)] = group.resetValue;
+    state_.lastQ = -1;
+    state_.callStack.clear();
+    state_.program = state_.selected;
+    state_.block = 0;
+    state_.ended = true;
+    rebuildNames();
+}
+
+void Interpreter::controlReset() {
+    if (!state_.selected) state_.selected = state_.program;
+    programEnd();
+    state_.ended = false;
+    target_.reset();
+    targetArrivals_ = 0;
+}
+
+std::vector<StackLevel> Interpreter::callStack() const {
+    std::vector<StackLevel> levels;
+    auto level = [&](const ProgramPtr& program, std::uint32_t block) {
+        StackLevel l;
+        if (!program) return l;
+        l.program = program->number;
+        l.blockIndex = block;
+        if (block < program->blocks.size()) {
+            l.block = program->blockId(block);
+            l.line = static_cast<int>(program->blocks[block].line);
+        }
+        return l;
+    };
+    for (const auto& frame : state_.callStack)
+        levels.push_back(level(frame.program, frame.callBlock));
+    if (state_.program) levels.push_back(level(state_.program, state_.block));
+    return levels;
+}
+
+double Interpreter::programmedPosition(int axis) const {
+    const ModalState& m = state_.modal;
+    double v = m.work[static_cast<size_t>(axis)];
+    const AxisModel& model = axes_.axis(axis);
+    if (model.rotary && !m.transformation.transforms(axis)) return v;
+    if (m.g[kGroupRadiusDiameter] == 16 && m.plane.definitionOf(axis) == AxisDefinition::X)
+        v *= 2.0;
+    if (m.g[kGroupUnits] == 70) v /= kInch;
+    return v;
+}
+
+void Interpreter::publishPage60() {
+    const ModalState& m = state_.modal;
+    auto put = [&](int element, double value) {
+        machineData_->write({60, config_.index, 0, element}, value, MachineDataWriter::Nc);
+    };
+    for (int s = 1; s <= 3; ++s)
+        put(s, m.rotaryAxisMode[static_cast<size_t>(s)]);
+    put(4, m.transformation.kind());
+    for (int t = 0; t < kToolSpindles; ++t)
+        put(5 + t, m.toolSpindle[static_cast<size_t>(t)]);
+}
+
+}  // namespace mtc::core

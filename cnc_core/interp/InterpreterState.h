@@ -1,0 +1,78 @@
+#pragma once
+
+#include <array>
+#include <bitset>
+#include <cstdint>
+#include <vector>
+
+#include "cnc_core/interp/MachineSink.h"
+#include "cnc_core/interp/ModalGroups.h"
+#include "cnc_core/language/Program.h"
+#include "cnc_core/machine/PlaneSelection.h"
+#include "cnc_core/machine/Transformation.h"
+
+namespace mtc::core {
+
+inline constexpr int kSpindleSlots = 4;      ///< index 1..3 = S1..S3
+inline constexpr int kToolSpindles = 4;      ///< page 60 elements 5..8
+inline constexpr int kVariableCount = 1000;  ///< @0 .. @999
+inline constexpr int kMaxCallLevels = 10;    ///< main program + 9 nested calls (seed 000, 2.5)
+
+/// Everything a block may change except variables, aux groups and program
+/// flow. Plain data: the interpreter copies it to validate a block and
+/// assigns it back to commit, so a rejected block changes nothing.
+struct ModalState {
+    GGroupValues g{};
+    PlaneSelection plane;
+    Transformation transformation;
+    /// Programmed (workpiece) coordinates per machine axis in mm (degrees for
+    /// rotary axes outside a transformation; plane coordinates in mm for the
+    /// axes a transformation maps).
+    std::array<double, kMaxAxes> work{};
+    /// Commanded machine positions (zero offsets applied, transformation
+    /// applied): mm for linear axes, degrees for rotary axes.
+    std::array<double, kMaxAxes> machine{};
+    double feed = 0.0;  ///< F in mm/min (G94) or mm/rev (G95), metric
+    std::array<double, kSpindleSlots> spindleSpeed{};         ///< last S per spindle
+    std::array<double, kSpindleSlots> spindleLimit{};         ///< G92 S limits
+    std::array<std::int8_t, kSpindleSlots> rotaryAxisMode{};  ///< page 60 el. 1..3
+    std::array<int, kToolSpindles> toolSpindle{};             ///< page 60 el. 5..8
+    int tool = 0;                                             ///< T
+    int edge = 0;                                             ///< E
+    int correction = 0;                                       ///< D
+    int referenceSpindle = 1;                                 ///< SPC
+    double time = 0.0;                 ///< simulated seconds (moves and dwells)
+    double lastEffectiveRadius = 0.0;  ///< RI of the last G32 (kept after G30)
+};
+
+/// One saved return point of BSR / JSR / BEV / JEV.
+struct CallFrame {
+    ProgramPtr program;
+    std::uint32_t callBlock = 0;    ///< block index of the call
+    std::uint32_t returnBlock = 0;  ///< block index to continue with after RTS
+};
+
+/// The interpreter's variables @0..@999 and which of them were written.
+struct Variables {
+    std::array<double, kVariableCount> values{};
+    std::bitset<kVariableCount> written;
+};
+
+/// The complete state of one interpreter: copy it to snapshot a run, assign
+/// it back with Interpreter::restoreState. No pointers into the interpreter.
+struct InterpreterState {
+    ModalState modal;
+    /// Last M function of each group; index 1..16 (0 unused). Group 16 is
+    /// "every M not in a configured group".
+    std::array<int, 17> mGroups{};
+    int lastQ = -1;  ///< last Q function (-1 = none since reset)
+    Variables variables;
+    double condition = 0.0;            ///< result of the last arithmetic (BEQ/BNE/BPL/BMI)
+    ProgramPtr program;                ///< program being executed (nullptr = none selected)
+    std::uint32_t block = 0;           ///< index of the next block to execute
+    std::vector<CallFrame> callStack;  ///< saved return points, innermost last
+    bool ended = false;                ///< the selected program reached its end
+    ProgramPtr selected;               ///< program chosen with select(); program end returns to it
+};
+
+}  // namespace mtc::core

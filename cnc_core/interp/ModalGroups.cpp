@@ -1,0 +1,111 @@
+#include "cnc_core/interp/ModalGroups.h"
+
+namespace mtc::core {
+
+GCodeInfo gCodeInfo(int number) {
+    switch (number) {
+        case 0:
+        case 1:
+        case 2:
+        case 3:
+            return {GKind::Modal, kGroupInterpolation};
+        case 4:
+            return {GKind::Dwell, 0};
+        case 6:
+        case 7:
+            return {GKind::Modal, kGroupAcceleration};
+        case 8:
+        case 9:
+            return {GKind::Modal, kGroupExactStop};
+        case 15:
+        case 16:
+            return {GKind::Modal, kGroupRadiusDiameter};
+        case 17:
+        case 18:
+        case 19:
+        case 20:
+            return {GKind::Modal, kGroupPlane};
+        case 30:
+        case 31:
+        case 32:
+            return {GKind::Modal, kGroupTransformation};
+        case 40:
+        case 41:
+        case 42:
+            return {GKind::Modal, kGroupToolPath};
+        case 47:
+        case 48:
+            return {GKind::Modal, kGroupToolLength};
+        case 53:
+        case 54:
+        case 55:
+        case 56:
+        case 57:
+        case 58:
+        case 59:
+            return {GKind::Modal, kGroupZeroOffset};
+        case 70:
+        case 71:
+            return {GKind::Modal, kGroupUnits};
+        case 90:
+        case 91:
+            return {GKind::Modal, kGroupDimension};
+        case 92:
+            return {GKind::SpeedLimit, 0};
+        case 94:
+        case 95:
+            return {GKind::Modal, kGroupFeedType};
+        case 96:
+        case 97:
+            return {GKind::Modal, kGroupSurfaceSpeed};
+        // Named in the seeds, not executed by this simulator (yet):
+        case 25:
+        case 26:  // adaptive feed control (seed 002)
+        case 33:
+        case 63:
+        case 64:
+        case 65:  // thread cutting, tapping
+        case 50:
+        case 51:
+        case 52:  // programmable / incremental zero offsets
+        case 72:
+        case 73:
+        case 74:
+        case 75:
+        case 76:
+        case 77:
+        case 78:
+        case 79:
+            return {GKind::Unsupported, 0};
+        default:
+            return {GKind::Unknown, 0};
+    }
+}
+
+GGroupValues defaultGGroups(const ProcessConfig& config) {
+    GGroupValues g;
+    g.fill(-1);
+    g[kGroupInterpolation] = 0;
+    const int plane = config.defaultPlane();
+    g[kGroupPlane] = static_cast<std::int16_t>(plane == 18 || plane == 19 ? plane : 17);
+    g[kGroupToolPath] = 40;
+    g[kGroupZeroOffset] = 53;
+    g[kGroupFeedType] = 94;
+    g[kGroupDimension] = 90;
+    auto it = config.parameters.find("B015");
+    g[kGroupRadiusDiameter] = (it != config.parameters.end() && it->second == "diameter") ? 16 : 15;
+    g[kGroupUnits] = 71;
+    g[kGroupSurfaceSpeed] = 97;
+    g[kGroupAcceleration] = 6;
+    g[kGroupExactStop] = 8;
+    g[kGroupToolLength] = 47;
+    g[kGroupTransformation] = 30;
+    return g;
+}
+
+const std::array<int, 13>& usedGGroups() {
+    static constexpr std::array<int, 13> kGroups = {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 13, 17};
+    return kGroups;
+}
+
+}  // namespace mtc::core

@@ -1,0 +1,222 @@
+#include "cnc_core/interp/MotionPlanner.h"
+
+#include <cmath>
+#include <cstdio>
+
+namespace mtc::core {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kInch = 25.4;
+
+std::string format(double value) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.4f", value);
+    return text;
+}
+
+/// Sweep angle (radians, > 0) from angle a1 to a2 in the given direction.
+double sweep(double a1, double a2, bool clockwise) {
+    double d = clockwise ? a1 - a2 : a2 - a1;
+    while (d <= 0.0)
+        d += 2.0 * kPi;
+    while (d > 2.0 * kPi)
+        d -= 2.0 * kPi;
+    return d;
+}
+
+}  // namespace
+
+double MotionPlanner::offsetOf(const ModalState& modal, int axis) const {
+    return offsets_->value(modal.g[kGroupZeroOffset], modal.plane.definitionOf(axis));
+}
+
+void MotionPlanner::recomputeWork(ModalState& modal) const {
+    const Transformation& t = modal.transformation;
+    for (int a = 0; a < axes_->count(); ++a)
+        if (!t.transforms(a))
+            modal.work[static_cast<size_t>(a)] =
+                modal.machine[static_cast<size_t>(a)] - offsetOf(modal, a);
+    if (!t.active()) return;
+    const int p1 = t.planeAxis(0), p2 = t.planeAxis(1);
+    double c1 = 0, c2 = 0;
+    t.toPlane(*axes_, modal.machine[static_cast<size_t>(p1)],
+              modal.machine[static_cast<size_t>(p2)], c1, c2);
+    modal.work[static_cast<size_t>(p1)] = c1 - offsetOf(modal, p1);
+    modal.work[static_cast<size_t>(p2)] = c2 - offsetOf(modal, p2);
+}
+
+double MotionPlanner::programmedValue(const ModalState& next, int axis, double value) const {
+    const AxisModel& model = axes_->axis(axis);
+    const bool lengthUnit = !model.rotary || next.transformation.transforms(axis);
+    if (!lengthUnit) return value;
+    if (next.g[kGroupUnits] == 70) value *= kInch;
+    if (next.g[kGroupRadiusDiameter] == 16 && next.plane.definitionOf(axis) == AxisDefinition::X)
+        value *= 0.5;
+    return value;
+}
+
+void MotionPlanner::toMachine(const ModalState& current, ModalState& next,
+                              std::uint16_t axisMask) const {
+    const Transformation& t = next.transformation;
+    bool planeTouched = false;
+    for (int a = 0; axisMask >> a; ++a) {
+        if (!((axisMask >> a) & 1u)) continue;
+        if (t.transforms(a)) {
+            planeTouched = true;
+            continue;
+        }
+        next.machine[static_cast<size_t>(a)] =
+            next.work[static_cast<size_t>(a)] + offsetOf(next, a);
+    }
+    if (!planeTouched) return;
+    const auto p1 = static_cast<size_t>(t.planeAxis(0)), p2 = static_cast<size_t>(t.planeAxis(1));
+    t.toMachine(*axes_, next.work[p1] + offsetOf(next, t.planeAxis(0)),
+                next.work[p2] + offsetOf(next, t.planeAxis(1)), current.machine[p1],
+                current.machine[p2], next.machine[p1], next.machine[p2]);
+}
+
+bool MotionPlanner::checkLimits(const BlockContext& context, const BlockInput& input,
+                                const ModalState& next) const {
+    for (int a = 0; a < axes_->count(); ++a) {
+        const bool moved = ((input.axisMask >> a) & 1u) || next.transformation.transforms(a);
+        const AxisModel& m = axes_->axis(a);
+        if (!moved || !m.limited()) continue;
+        const double p = next.machine[static_cast<size_t>(a)];
+        if (p >= m.minPosition - 1e-9 && p <= m.maxPosition + 1e-9) continue;
+        return context.error("TRAVEL_LIMIT",
+                             "axis " + m.configName + " would move to " + format(p) +
+                                 ", outside its travel range " + format(m.minPosition) + " .. " +
+                                 format(m.maxPosition),
+                             input.axisColumn[static_cast<size_t>(a)]);
+    }
+    return true;
+}
+
+bool MotionPlanner::plan(const BlockContext& context, const BlockInput& input,
+                         const ModalState& current, BlockPlan& plan, double arcTolerance) const {
+    ModalState& next = plan.next;
+    const bool incremental = next.g[kGroupDimension] == 91;
+    for (int i = 0; i < input.axisCount; ++i) {
+        const int a = input.axisOrder[static_cast<size_t>(i)];
+        const double v = programmedValue(next, a, input.axisValue[static_cast<size_t>(a)]);
+        double& work = next.work[static_cast<size_t>(a)];
+        work = incremental ? work + v : v;
+        const AxisModel& m = axes_->axis(a);
+        if (m.spindle) next.rotaryAxisMode[static_cast<size_t>(m.spindleIndex)] = 1;
+    }
+    toMachine(current, next, input.axisMask);
+    if (!checkLimits(context, input, next)) return false;
+    const int g = next.g[kGroupInterpolation];
+    plan.hasMotion = true;
+    plan.motionType = g == 0   ? MotionType::Rapid
+                      : g == 1 ? MotionType::Linear
+                      : g == 2 ? MotionType::ArcCW
+                               : MotionType::ArcCCW;
+    double length = 0.0;
+    if (g >= 2) {
+        if (!arc(context, input, current, plan, arcTolerance, length)) return false;
+    } else {
+        for (int a = 0; a < axes_->count(); ++a) {
+            const double d =
+                next.work[static_cast<size_t>(a)] - current.work[static_cast<size_t>(a)];
+            length += d * d;
+        }
+        length = std::sqrt(length);
+    }
+    if (g != 0) {
+        const bool perRevolution = next.g[kGroupFeedType] == 95;
+        const double speed = next.spindleSpeed[static_cast<size_t>(next.referenceSpindle)];
+        plan.feedRate = perRevolution ? next.feed * speed : next.feed;
+        if (next.feed <= 0.0)
+            return context.error("FEED_MISSING", "G" + std::to_string(g) + " needs a feed F > 0");
+        if (plan.feedRate <= 0.0)
+            return context.error(
+                "FEED_PER_REVOLUTION_NO_SPEED",
+                "G95 feed per revolution needs a spindle speed S of the reference spindle");
+    }
+    next.time += moveTime(current, plan, length);
+    return true;
+}
+
+bool MotionPlanner::arc(const BlockContext& context, const BlockInput& input,
+                        const ModalState& current, BlockPlan& plan, double arcTolerance,
+                        double& length) const {
+    ModalState& next = plan.next;
+    const int p1 = next.plane.firstAxis(), p2 = next.plane.secondAxis();
+    if (p1 < 0 || p2 < 0)
+        return context.error("ARC_PLANE", "the working plane is not spanned by two axes");
+    if (input.centerMask == 0)
+        return context.error("ARC_CENTER_MISSING", "a circle needs its centre (I, J or K)");
+    const bool incremental = next.g[kGroupDimension] == 91;
+    double centre[2] = {current.work[static_cast<size_t>(p1)],
+                        current.work[static_cast<size_t>(p2)]};
+    static constexpr AxisDefinition kDefinition[3] = {AxisDefinition::X, AxisDefinition::Y,
+                                                      AxisDefinition::Z};
+    static constexpr char kLetter[3] = {'I', 'J', 'K'};
+    for (int k = 0; k < 3; ++k) {
+        if (!((input.centerMask >> k) & 1u)) continue;
+        const int axis = next.plane.axisOf(kDefinition[k]);
+        if (axis != p1 && axis != p2)
+            return context.error(
+                "ARC_CENTER_NOT_IN_PLANE",
+                std::string(1, kLetter[k]) + " belongs to an axis outside the working plane",
+                input.centerColumn);
+        const int slot = axis == p1 ? 0 : 1;
+        const double v = programmedValue(next, axis, input.center[static_cast<size_t>(k)]);
+        centre[slot] = incremental ? centre[slot] + v : v;
+    }
+    const double s1 = current.work[static_cast<size_t>(p1)],
+                 s2 = current.work[static_cast<size_t>(p2)];
+    const double e1 = next.work[static_cast<size_t>(p1)], e2 = next.work[static_cast<size_t>(p2)];
+    const double r1 = std::hypot(s1 - centre[0], s2 - centre[1]);
+    const double r2 = std::hypot(e1 - centre[0], e2 - centre[1]);
+    if (r1 < 1e-9)
+        return context.error("ARC_RADIUS_ZERO", "the circle's start point is its centre");
+    if (std::fabs(r1 - r2) > arcTolerance)
+        return context.error(
+            "ARC_RADIUS_MISMATCH", "start and end point are not on one circle around the centre",
+            input.centerColumn,
+            {"radius at the start point " + format(r1) + " mm",
+             "radius at the end point " + format(r2) + " mm",
+             "difference " + format(r2 - r1) + " mm, tolerance " + format(arcTolerance) + " mm"});
+    const bool full = std::hypot(e1 - s1, e2 - s2) <= arcTolerance;
+    const double angle = full ? 2.0 * kPi
+                              : sweep(std::atan2(s2 - centre[1], s1 - centre[0]),
+                                      std::atan2(e2 - centre[1], e1 - centre[0]),
+                                      plan.motionType == MotionType::ArcCW);
+    double helix = 0.0;
+    for (int a = 0; a < axes_->count(); ++a) {
+        if (a == p1 || a == p2) continue;
+        const double d = next.work[static_cast<size_t>(a)] - current.work[static_cast<size_t>(a)];
+        helix += d * d;
+    }
+    length = std::sqrt(r1 * angle * r1 * angle + helix);
+    plan.planeAxis1 = p1;
+    plan.planeAxis2 = p2;
+    const Transformation& t = next.transformation;
+    const double c1 = centre[0] + offsetOf(next, p1), c2 = centre[1] + offsetOf(next, p2);
+    if (t.kind() == 32) {
+        t.toMachine(*axes_, c1, c2, current.machine[static_cast<size_t>(p1)],
+                    current.machine[static_cast<size_t>(p2)], plan.center1, plan.center2);
+    } else {
+        plan.center1 = c1;
+        plan.center2 = c2;
+    }
+    return true;
+}
+
+double MotionPlanner::moveTime(const ModalState& current, const BlockPlan& plan,
+                               double length) const {
+    if (plan.motionType != MotionType::Rapid) return length / plan.feedRate * 60.0;
+    double minutes = 0.0;
+    for (int a = 0; a < axes_->count(); ++a) {
+        const double d = std::fabs(plan.next.machine[static_cast<size_t>(a)] -
+                                   current.machine[static_cast<size_t>(a)]);
+        const double t = d / axes_->axis(a).maxVelocity;
+        if (t > minutes) minutes = t;
+    }
+    return minutes * 60.0;
+}
+
+}  // namespace mtc::core

@@ -1,0 +1,52 @@
+#pragma once
+
+#include "cnc_core/interp/BlockContext.h"
+#include "cnc_core/interp/BlockInput.h"
+#include "cnc_core/interp/BlockPlan.h"
+#include "cnc_core/interp/InterpreterState.h"
+#include "cnc_core/machine/ProcessAxes.h"
+#include "cnc_core/machine/ZeroOffsetTable.h"
+
+namespace mtc::core {
+
+/// Turns axis words into target positions and a move (G0, G1, G2, G3):
+///  - value conversion: inch (G70) x 25.4 for linear and transformed axes,
+///    diameter (G16) / 2 for the axis with definition X, incremental (G91);
+///  - workpiece -> machine: + zero offset of the axis's current definition,
+///    then G31/G32 for the two plane axes;
+///  - arcs: centre I/J/K as coordinates of the axes with definition X/Y/Z
+///    (absolute under G90, relative to the start under G91), both radii
+///    checked against the tolerance, the centre must lie in the plane;
+///  - travel limits of every programmed axis, feed present for G1/G2/G3,
+///    simulated time of the move.
+class MotionPlanner {
+  public:
+    MotionPlanner(const ProcessAxes* axes, const ZeroOffsetTable* offsets)
+        : axes_(axes), offsets_(offsets) {}
+
+    /// Zero offset (mm, or degrees for an untransformed rotary axis) that
+    /// applies to machine axis `axis` in `modal`.
+    double offsetOf(const ModalState& modal, int axis) const;
+    /// Re-derives every workpiece coordinate from the machine positions (after
+    /// a change of zero offset, axis allocation or transformation): the axes
+    /// do not move, their programmed coordinates change.
+    void recomputeWork(ModalState& modal) const;
+    /// Plans the move of the block's axis words into plan.next / plan. The
+    /// block must not be a G20 block. Returns false on an error.
+    bool plan(const BlockContext& context, const BlockInput& input, const ModalState& current,
+              BlockPlan& plan, double arcTolerance) const;
+
+  private:
+    double programmedValue(const ModalState& next, int axis, double value) const;
+    void toMachine(const ModalState& current, ModalState& next, std::uint16_t axisMask) const;
+    bool checkLimits(const BlockContext& context, const BlockInput& input,
+                     const ModalState& next) const;
+    bool arc(const BlockContext& context, const BlockInput& input, const ModalState& current,
+             BlockPlan& plan, double arcTolerance, double& length) const;
+    double moveTime(const ModalState& current, const BlockPlan& plan, double length) const;
+
+    const ProcessAxes* axes_;
+    const ZeroOffsetTable* offsets_;
+};
+
+}  // namespace mtc::core
