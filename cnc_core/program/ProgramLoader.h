@@ -1,0 +1,45 @@
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "cnc_core/language/Diagnostic.h"
+#include "cnc_core/program/ProgramStore.h"
+
+namespace mtc::core {
+
+/// Fills a ProgramStore from program files named NuxxYzzz.DAT: a program
+/// goes to (process y, number zzz); a cycle (%MAC header) goes to the cycle
+/// memory under its file name without extension. Files are taken in name
+/// order; when two files name the same process and number (different plant
+/// or package), the first wins and the second gets FILE_DUPLICATE_PROGRAM.
+/// Each program keeps its own parse diagnostics; the loader's list holds the
+/// file-level problems (unreadable files, names outside the seed naming).
+class ProgramLoader {
+  public:
+    explicit ProgramLoader(ProgramStore& store) : store_(store) {}
+
+    /// Loads every *.DAT file of `directory` (other files are ignored; a
+    /// .DAT file with another name gets FILE_BAD_NAME and is skipped).
+    /// Returns how many programs were stored; a missing or unreadable
+    /// directory gives FILE_UNREADABLE and 0.
+    std::size_t loadDirectory(const std::string& directory);
+
+    /// Loads (file name, file text) pairs, e.g. the embedded demo programs
+    /// (resources/programs/N1010001.DAT ...). Path prefixes of the names are
+    /// ignored. Returns how many programs were stored.
+    std::size_t loadTexts(const std::vector<std::pair<std::string, std::string>>& files);
+
+    /// File-level problems found so far.
+    const DiagnosticList& diagnostics() const { return diagnostics_; }
+
+  private:
+    bool store(const std::string& fileName, std::string text);
+
+    ProgramStore& store_;
+    DiagnosticList diagnostics_;
+};
+
+}  // namespace mtc::core
