@@ -12,6 +12,13 @@ namespace {
 constexpr std::uint32_t kNotFound = std::numeric_limits<std::uint32_t>::max();
 constexpr std::size_t kMaxMacroName = 20;  // seed 001, ch. 4
 
+/// `name` for a message, cut to 32 characters.
+std::string shortened(std::string_view name) {
+    std::string shown(name.substr(0, 32));
+    if (name.size() > 32) shown += "...";
+    return shown;
+}
+
 bool isNameChar(char c) {
     return (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_';
 }
@@ -58,13 +65,13 @@ bool BlockParser::parseKeyword(std::string_view name, std::uint32_t start) {
         case KeywordClass::ReadOnly:
             return error("PARSE_READ_ONLY_WORD", start,
                          std::string(name) + " can only be read in an expression (e.g. @1=" +
-                             std::string(name) + ")");
+                             shortened(name) + ")");
         case KeywordClass::ProgramEnd:
             return parseProgramEnd(start);
         case KeywordClass::None:
             break;
     }
-    return error("PARSE_UNKNOWN_WORD", start, "unknown word '" + std::string(name) + "'");
+    return error("PARSE_UNKNOWN_WORD", start, "unknown word '" + shortened(name) + "'");
 }
 
 // ---------------------------------------------------------------- jumps
@@ -255,7 +262,7 @@ bool BlockParser::checkDefine(std::uint32_t argsBegin, std::uint32_t argsEnd) {
                      "macro definition: DEFINE <name> AS <instructions>");
     if (name.size() > kMaxMacroName)
         return error("PARSE_MACRO_NAME_TOO_LONG", argsBegin,
-                     "macro name longer than 20 characters: " + std::string(name));
+                     "macro name longer than 20 characters: " + shortened(name));
     if (lookupKeyword(name).keywordClass != KeywordClass::None)
         return error("PARSE_MACRO_REDEFINES_KEYWORD", argsBegin,
                      "a keyword cannot be redefined by a macro: " + std::string(name));
@@ -265,7 +272,7 @@ bool BlockParser::checkDefine(std::uint32_t argsBegin, std::uint32_t argsEnd) {
         return error("PARSE_NESTED_MACRO", nested,
                      "macros must not be nested (macro used in the "
                      "instructions of macro " +
-                         std::string(name) + ")");
+                         shortened(name) + ")");
     return true;
 }
 

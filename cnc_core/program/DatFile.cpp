@@ -60,6 +60,8 @@ Program DatFile::parse(std::string text, const std::string& fileName, ParseOptio
 }
 
 Program DatFile::read(const std::string& path, ParseOptions options) {
+    std::optional<DatFileName> name = parseDatFileName(path);
+    if (options.programNumber == 0 && name) options.programNumber = name->number;
     std::error_code ignored;
     bool regular = std::filesystem::is_regular_file(path, ignored);
     std::ifstream file;
