@@ -17,10 +17,9 @@ SourceLocation blockLocation(const Program& program, std::uint32_t blockIndex, i
     return where;
 }
 
-bool BlockDecoder::decode(const Program& program, std::uint32_t blockIndex, BlockInput& input,
-                          DiagnosticList& diagnostics) const {
+bool BlockDecoder::decode(const Program& program, const Block& block, std::uint32_t blockIndex,
+                          BlockInput& input, DiagnosticList& diagnostics) const {
     input.clear();
-    const Block block = program.blocks[blockIndex];
     const std::size_t end =
         std::min<std::size_t>(block.firstWord + block.wordCount, program.words.size());
     bool ok = true;
@@ -37,22 +36,15 @@ bool BlockDecoder::error(Cursor& c, const std::string& code, const std::string& 
     return false;
 }
 
-bool BlockDecoder::value(Cursor& c, double& out) const {
-    if (c.word.expr < 0) {
-        out = c.word.number;
-        return true;
-    }
+bool BlockDecoder::evaluated(Cursor& c, double& out) const {
     EvaluationError e;
     if (evaluator_.evaluate(c.program, c.word.expr, out, e)) return true;
     return error(c, e.code, e.message);
 }
 
-bool BlockDecoder::integer(Cursor& c, double v, int& out, const char* what) const {
-    if (v != std::floor(v) || v < 0 || v > 1e8)
-        return error(c, "NOT_AN_INTEGER",
-                     std::string(what) + " needs a whole number >= 0, got " + std::to_string(v));
-    out = static_cast<int>(v);
-    return true;
+bool BlockDecoder::notInteger(Cursor& c, double v, const char* what) const {
+    return error(c, "NOT_AN_INTEGER",
+                 std::string(what) + " needs a whole number >= 0, got " + std::to_string(v));
 }
 
 bool BlockDecoder::word(Cursor& c) const {
@@ -91,12 +83,12 @@ bool BlockDecoder::gWord(Cursor& c) const {
     int number = 0;
     if (!value(c, v) || !integer(c, v, number, "G")) return false;
     const GCodeInfo info = gCodeInfo(number);
-    const std::string name = "G" + std::to_string(number);
+    auto name = [number] { return "G" + std::to_string(number); };
     switch (info.kind) {
         case GKind::Unknown:
-            return error(c, "UNKNOWN_G", name + " is not a G function");
+            return error(c, "UNKNOWN_G", name() + " is not a G function");
         case GKind::Unsupported:
-            return error(c, "G_NOT_SUPPORTED", name + " is not executed by this simulator");
+            return error(c, "G_NOT_SUPPORTED", name() + " is not executed by this simulator");
         case GKind::Dwell:
             c.input.dwell = true;
             c.input.dwellColumn = c.word.column;
@@ -110,7 +102,7 @@ bool BlockDecoder::gWord(Cursor& c) const {
     auto& slot = c.input.g[static_cast<size_t>(info.group)];
     if (slot >= 0 && slot != number)
         return error(c, "G_GROUP_CONFLICT",
-                     name + " and G" + std::to_string(slot) + " belong to the same group " +
+                     name() + " and G" + std::to_string(slot) + " belong to the same group " +
                          std::to_string(info.group));
     slot = static_cast<std::int16_t>(number);
     c.input.gColumn[static_cast<size_t>(info.group)] = c.word.column;

@@ -25,8 +25,8 @@ class BlockDecoder {
 
     /// Decodes block `blockIndex` of `program`. Returns false when an error
     /// was added to `diagnostics` (warnings do not fail).
-    bool decode(const Program& program, std::uint32_t blockIndex, BlockInput& input,
-                DiagnosticList& diagnostics) const;
+    bool decode(const Program& program, const Block& block, std::uint32_t blockIndex,
+                BlockInput& input, DiagnosticList& diagnostics) const;
 
   private:
     struct Cursor {
@@ -39,8 +39,22 @@ class BlockDecoder {
     };
 
     bool word(Cursor& c) const;
-    bool value(Cursor& c, double& out) const;
-    bool integer(Cursor& c, double v, int& out, const char* what) const;
+    bool value(Cursor& c, double& out) const {
+        if (c.word.expr < 0) {
+            out = c.word.number;
+            return true;
+        }
+        return evaluated(c, out);
+    }
+    bool evaluated(Cursor& c, double& out) const;
+    bool integer(Cursor& c, double v, int& out, const char* what) const {
+        if (v >= 0 && v <= 1e8 && v == static_cast<double>(static_cast<int>(v))) {
+            out = static_cast<int>(v);
+            return true;
+        }
+        return notInteger(c, v, what);
+    }
+    bool notInteger(Cursor& c, double v, const char* what) const;
     bool gWord(Cursor& c) const;
     bool auxWord(Cursor& c) const;
     bool spindleWord(Cursor& c) const;

@@ -25,7 +25,6 @@ bool isProgramControl(int m) {
 
 bool BlockExecutor::plan(const BlockContext& c, const BlockInput& in, const InterpreterState& state,
                          BlockPlan& plan) const {
-    plan.next = state.modal;
     plan.hasMotion = false;
     plan.dwellSeconds = -1.0;
     plan.programControl = -1;

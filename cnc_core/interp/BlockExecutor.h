@@ -35,8 +35,9 @@ class BlockExecutor {
     explicit BlockExecutor(const Setup& setup)
         : setup_(setup), motion_(setup.axes, setup.offsets) {}
 
-    /// Fills `plan` for `input`. Returns false when the block must be
-    /// rejected (errors added through `context`).
+    /// Fills `plan` for `input`. Precondition: plan.next equals state.modal
+    /// (the interpreter keeps it so, which saves a copy per block). Returns
+    /// false when the block must be rejected (errors added through `context`).
     bool plan(const BlockContext& context, const BlockInput& input, const InterpreterState& state,
               BlockPlan& plan) const;
     /// Sets the arc end-point tolerance in mm.

@@ -106,6 +106,7 @@ void Interpreter::setStopTarget(std::optional<StopTarget> target) {
 
 void Interpreter::restoreState(const InterpreterState& state) {
     state_ = state;
+    modalChanged();
     programFlow_.clearCache();
     rebuildNames();
 }
@@ -179,7 +180,8 @@ Interpreter::Outcome Interpreter::executeNext(DiagnosticList& diagnostics,
                                               std::uint64_t& executed) {
     const Program& program = *state_.program;
     const std::uint32_t index = state_.block;
-    if (index >= program.blocks.size() || (program.blocks[index].flags & kBlockProgramEnd)) {
+    if (index < program.blocks.size()) block_ = program.blocks[index];
+    if (index >= program.blocks.size() || (block_.flags & kBlockProgramEnd)) {
         if (!state_.callStack.empty()) {
             diagnostics.error("SUBROUTINE_WITHOUT_RTS", blockLocation(program, index),
                               "the end of program " + std::to_string(program.number) +
@@ -196,8 +198,7 @@ Interpreter::Outcome Interpreter::executeNext(DiagnosticList& diagnostics,
         target_.reset();
         return Outcome::Target;
     }
-    const std::uint8_t flags = program.blocks[index].flags;
-    if ((flags & kBlockSkip) && options_.skipBlocks) {
+    if ((block_.flags & kBlockSkip) && options_.skipBlocks) {
         ++state_.block;
         return Outcome::Continue;
     }
@@ -213,17 +214,19 @@ Interpreter::Outcome Interpreter::executeNext(DiagnosticList& diagnostics,
 bool Interpreter::checkedBlock(const Program& program, std::uint32_t index,
                                DiagnosticList& diagnostics) {
     const BlockContext context{program, index, diagnostics};
-    if (program.blocks[index].flags & kBlockHasError) {
+    if (block_.flags & kBlockHasError) {
         std::vector<std::string> details;
-        const auto line = program.blocks[index].line;
+        const auto line = block_.line;
         for (const auto& d : program.diagnostics.items())
             if (d.where.line == static_cast<int>(line)) details.push_back(d.message);
         return context.error("BLOCK_SYNTAX", "the block has syntax errors and cannot be executed",
                              0, details);
     }
     executor_.setArcTolerance(options_.arcTolerance);
+    if (!planSynced_) plan_.next = state_.modal;
+    planSynced_ = false;
     const BlockDecoder decoder(axes_, names_, evaluator_);
-    return decoder.decode(program, index, input_, diagnostics) &&
+    return decoder.decode(program, block_, index, input_, diagnostics) &&
            executor_.plan(context, input_, state_, plan_) &&
            programFlow_.plan(context, input_, state_, plan_.next, flow_) &&
            validateMachineData(context);

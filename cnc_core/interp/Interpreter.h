@@ -171,6 +171,8 @@ class Interpreter {
 
     Outcome executeNext(DiagnosticList& diagnostics, std::uint64_t& executed);
     bool checkedBlock(const Program& program, std::uint32_t index, DiagnosticList& diagnostics);
+    /// Location of the current block (block_) for the sink, without printf.
+    SourceLocation sinkLocation(const Program& program, std::uint32_t index) const;
     Outcome commit(const Program& program, std::uint32_t index, DiagnosticList& diagnostics);
     bool validateMachineData(const BlockContext& context);
     void emitAux(const Program& program, std::uint32_t index);
@@ -182,6 +184,8 @@ class Interpreter {
     void resetBaseSystem();
     void resetModal();
     void rebuildNames() { names_ = AxisNameTable::build(axes_, state_.modal.transformation); }
+    /// Call after changing state_.modal outside commit(): plan_.next is stale.
+    void modalChanged() { planSynced_ = false; }
 
     const ProcessConfig& config_;
     const ProgramStore& programs_;
@@ -201,8 +205,10 @@ class Interpreter {
 
     InterpreterState state_;
     AxisNameTable names_;
+    Block block_;  ///< copy of the block being executed
     BlockInput input_;
     BlockPlan plan_;
+    bool planSynced_ = false;  ///< plan_.next == state_.modal (saves a copy per block)
     FlowPlan flow_;
     Motion motion_;
     ExpressionEvaluator evaluator_;

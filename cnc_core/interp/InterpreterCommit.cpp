@@ -9,8 +9,31 @@ namespace {
 
 constexpr double kInch = 25.4;
 
-SourceLocation sinkLocation(const Program& program, std::uint32_t index) {
-    return blockLocation(program, index, 0);
+/// "N0012" / "N0012:0001" into `out` without printf (called once per move).
+void formatBlockId(const Block& block, std::string& out) {
+    out.clear();
+    if (block.number < 0) return;
+    char text[24];
+    int n = 0;
+    auto digits = [&](int value) {
+        char reversed[12];
+        int count = 0;
+        do {
+            reversed[count++] = static_cast<char>('0' + value % 10);
+            value /= 10;
+        } while (value > 0 && count < 11);
+        for (int pad = count; pad < 4; ++pad)
+            text[n++] = '0';
+        while (count > 0)
+            text[n++] = reversed[--count];
+    };
+    text[n++] = 'N';
+    digits(block.number);
+    if (block.subNumber >= 0) {
+        text[n++] = ':';
+        digits(block.subNumber);
+    }
+    out.assign(text, static_cast<std::size_t>(n));
 }
 
 /// "TCH(2,1)" -> 1 (the SPI argument), default 1; clamped to 1..4.
@@ -25,12 +48,22 @@ int spindleArgument(std::string_view args) {
 
 }  // namespace
 
+SourceLocation Interpreter::sinkLocation(const Program& program, std::uint32_t /*index*/) const {
+    SourceLocation where;
+    where.program = program.number;
+    formatBlockId(block_, where.block);
+    where.line = static_cast<int>(block_.line);
+    return where;
+}
+
 Interpreter::Outcome Interpreter::commit(const Program& program, std::uint32_t index,
                                          DiagnosticList& /*diagnostics*/) {
     const bool transformationChanged =
         plan_.next.transformation.kind() != state_.modal.transformation.kind();
-    const ModalState before = plan_.hasMotion ? state_.modal : ModalState{};
+    const bool motion = plan_.hasMotion && options_.output.motion;
+    if (motion) motion_.start = state_.modal.machine;
     state_.modal = plan_.next;
+    planSynced_ = true;
     for (int i = 0; i < input_.writeCount; ++i) {
         const auto& w = input_.writes[static_cast<size_t>(i)];
         if (w.process >= 0 && w.process != config_.index) {
@@ -50,10 +83,7 @@ Interpreter::Outcome Interpreter::commit(const Program& program, std::uint32_t i
     }
     if (transformationChanged) rebuildNames();
     emitAux(program, index);
-    if (plan_.hasMotion && options_.output.motion) {
-        motion_.start = before.machine;
-        emitMotion(program, index);
-    }
+    if (motion) emitMotion(program, index);
     if (plan_.dwellSeconds >= 0.0 && options_.output.dwell)
         sink_.dwell(sinkLocation(program, index), plan_.dwellSeconds);
     if (input_.commandCount > 0) runCommands(program, index);
@@ -104,9 +134,10 @@ void Interpreter::emitAux(const Program& program, std::uint32_t index) {
 
 void Interpreter::emitMotion(const Program& program, std::uint32_t index) {
     Motion& m = motion_;
+    (void)index;
     m.where.program = program.number;
-    m.where.block = program.blockId(index);
-    m.where.line = static_cast<int>(program.blocks[index].line);
+    formatBlockId(block_, m.where.block);
+    m.where.line = static_cast<int>(block_.line);
     m.where.column = 0;
     m.type = plan_.motionType;
     m.axisCount = axes_.count();
@@ -129,6 +160,7 @@ void Interpreter::runCommands(const Program& program, std::uint32_t index) {
         const std::string_view text = program.text(w.text);
         const std::string_view args = program.text(w.args);
         std::string keyword(text.substr(0, text.find_first_of(" (=")));
+        modalChanged();
         if (keyword == "MTP" && config_.toolStorage == "turret")
             state_.modal.toolSpindle[0] = state_.modal.tool;
         else if (keyword == "TCH" || keyword == "TMS")
@@ -176,6 +208,7 @@ Interpreter::Outcome Interpreter::applyFlow(const Program& /*program*/, std::uin
 }
 
 void Interpreter::resetBaseSystem() {
+    modalChanged();
     ModalState& m = state_.modal;
     if (m.transformation.active()) {
         m.transformation.deselect();
@@ -190,6 +223,7 @@ void Interpreter::resetBaseSystem() {
 }
 
 void Interpreter::resetModal() {
+    modalChanged();
     ModalState& m = state_.modal;
     m.g = defaults_;
     m.transformation.deselect();

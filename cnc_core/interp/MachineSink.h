@@ -43,7 +43,7 @@ struct AuxOutput {
 };
 
 class MachineSink {
-public:
+  public:
     virtual ~MachineSink() = default;
     virtual void motion(const Motion& motion) = 0;
     virtual void auxiliary(const AuxOutput& output) = 0;
@@ -55,7 +55,7 @@ public:
 
 /// Keeps everything in vectors: for tests and the CLI.
 class RecordingSink : public MachineSink {
-public:
+  public:
     void motion(const Motion& m) override { motions.push_back(m); }
     void auxiliary(const AuxOutput& a) override { aux.push_back(a); }
     void dwell(const SourceLocation& where, double seconds) override {
@@ -82,7 +82,7 @@ public:
 
 /// Discards everything (computing process, --no-motion).
 class NullSink : public MachineSink {
-public:
+  public:
     void motion(const Motion&) override {}
     void auxiliary(const AuxOutput&) override {}
     void dwell(const SourceLocation&, double) override {}

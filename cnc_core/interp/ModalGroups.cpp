@@ -2,7 +2,9 @@
 
 namespace mtc::core {
 
-GCodeInfo gCodeInfo(int number) {
+namespace {
+
+GCodeInfo classify(int number) {
     switch (number) {
         case 0:
         case 1:
@@ -80,6 +82,18 @@ GCodeInfo gCodeInfo(int number) {
         default:
             return {GKind::Unknown, 0};
     }
+}
+
+}  // namespace
+
+const std::array<GCodeInfo, 100>& gCodeTable() {
+    static const std::array<GCodeInfo, 100> table = [] {
+        std::array<GCodeInfo, 100> t{};
+        for (int g = 0; g < 100; ++g)
+            t[static_cast<std::size_t>(g)] = classify(g);
+        return t;
+    }();
+    return table;
 }
 
 GGroupValues defaultGGroups(const ProcessConfig& config) {

@@ -42,8 +42,14 @@ struct GCodeInfo {
     std::int8_t group = 0;
 };
 
+/// Classification table of G0..G99 (built once; see ModalGroups.cpp).
+const std::array<GCodeInfo, 100>& gCodeTable();
+
 /// Classification of G number `number` (0..99; anything else is Unknown).
-GCodeInfo gCodeInfo(int number);
+inline GCodeInfo gCodeInfo(int number) {
+    if (number < 0 || number > 99) return {};
+    return gCodeTable()[static_cast<std::size_t>(number)];
+}
 
 /// The active G function of every group: index = group number, -1 = unused.
 using GGroupValues = std::array<std::int16_t, kGroupSlots>;

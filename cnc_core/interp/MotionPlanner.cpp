@@ -9,20 +9,14 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kInch = 25.4;
 
+double distance(double dx, double dy) {
+    return std::sqrt(dx * dx + dy * dy);
+}
+
 std::string format(double value) {
     char text[32];
     std::snprintf(text, sizeof text, "%.4f", value);
     return text;
-}
-
-/// Sweep angle (radians, > 0) from angle a1 to a2 in the given direction.
-double sweep(double a1, double a2, bool clockwise) {
-    double d = clockwise ? a1 - a2 : a2 - a1;
-    while (d <= 0.0)
-        d += 2.0 * kPi;
-    while (d > 2.0 * kPi)
-        d -= 2.0 * kPi;
-    return d;
 }
 
 }  // namespace
@@ -78,10 +72,13 @@ void MotionPlanner::toMachine(const ModalState& current, ModalState& next,
 
 bool MotionPlanner::checkLimits(const BlockContext& context, const BlockInput& input,
                                 const ModalState& next) const {
-    for (int a = 0; a < axes_->count(); ++a) {
-        const bool moved = ((input.axisMask >> a) & 1u) || next.transformation.transforms(a);
+    std::uint32_t moved = input.axisMask;
+    if (next.transformation.active())
+        moved |=
+            (1u << next.transformation.planeAxis(0)) | (1u << next.transformation.planeAxis(1));
+    for (int a = 0; moved >> a; ++a) {
         const AxisModel& m = axes_->axis(a);
-        if (!moved || !m.limited()) continue;
+        if (!((moved >> a) & 1u) || !m.limited()) continue;
         const double p = next.machine[static_cast<size_t>(a)];
         if (p >= m.minPosition - 1e-9 && p <= m.maxPosition + 1e-9) continue;
         return context.error("TRAVEL_LIMIT",
@@ -169,8 +166,8 @@ bool MotionPlanner::arc(const BlockContext& context, const BlockInput& input,
     const double s1 = current.work[static_cast<size_t>(p1)],
                  s2 = current.work[static_cast<size_t>(p2)];
     const double e1 = next.work[static_cast<size_t>(p1)], e2 = next.work[static_cast<size_t>(p2)];
-    const double r1 = std::hypot(s1 - centre[0], s2 - centre[1]);
-    const double r2 = std::hypot(e1 - centre[0], e2 - centre[1]);
+    const double r1 = distance(s1 - centre[0], s2 - centre[1]);
+    const double r2 = distance(e1 - centre[0], e2 - centre[1]);
     if (r1 < 1e-9)
         return context.error("ARC_RADIUS_ZERO", "the circle's start point is its centre");
     if (std::fabs(r1 - r2) > arcTolerance)
@@ -180,11 +177,16 @@ bool MotionPlanner::arc(const BlockContext& context, const BlockInput& input,
             {"radius at the start point " + format(r1) + " mm",
              "radius at the end point " + format(r2) + " mm",
              "difference " + format(r2 - r1) + " mm, tolerance " + format(arcTolerance) + " mm"});
-    const bool full = std::hypot(e1 - s1, e2 - s2) <= arcTolerance;
-    const double angle = full ? 2.0 * kPi
-                              : sweep(std::atan2(s2 - centre[1], s1 - centre[0]),
-                                      std::atan2(e2 - centre[1], e1 - centre[0]),
-                                      plan.motionType == MotionType::ArcCW);
+    const double chord1 = e1 - s1, chord2 = e2 - s2;
+    const bool full = chord1 * chord1 + chord2 * chord2 <= arcTolerance * arcTolerance;
+    double angle = 2.0 * kPi;
+    if (!full) {
+        const double u1 = s1 - centre[0], u2 = s2 - centre[1];     // centre -> start
+        const double v1 = e1 - centre[0], v2 = e2 - centre[1];     // centre -> end
+        angle = std::atan2(u1 * v2 - u2 * v1, u1 * v1 + u2 * v2);  // counter-clockwise, -pi..pi
+        if (plan.motionType == MotionType::ArcCW) angle = -angle;
+        if (angle <= 0.0) angle += 2.0 * kPi;
+    }
     double helix = 0.0;
     for (int a = 0; a < axes_->count(); ++a) {
         if (a == p1 || a == p2) continue;
@@ -208,15 +210,21 @@ bool MotionPlanner::arc(const BlockContext& context, const BlockInput& input,
 
 double MotionPlanner::moveTime(const ModalState& current, const BlockPlan& plan,
                                double length) const {
-    if (plan.motionType != MotionType::Rapid) return length / plan.feedRate * 60.0;
-    double minutes = 0.0;
+    if (plan.motionType != MotionType::Rapid) {
+        if (plan.feedRate != feedCache_.feed) {  // the feed changes far less often than blocks
+            feedCache_.feed = plan.feedRate;
+            feedCache_.secondsPerUnit = 60.0 / plan.feedRate;
+        }
+        return length * feedCache_.secondsPerUnit;
+    }
+    double seconds = 0.0;
     for (int a = 0; a < axes_->count(); ++a) {
         const double d = std::fabs(plan.next.machine[static_cast<size_t>(a)] -
                                    current.machine[static_cast<size_t>(a)]);
-        const double t = d / axes_->axis(a).maxVelocity;
-        if (t > minutes) minutes = t;
+        const double t = d * axes_->axis(a).rapidSecondsPerUnit;
+        if (t > seconds) seconds = t;
     }
-    return minutes * 60.0;
+    return seconds;
 }
 
 }  // namespace mtc::core

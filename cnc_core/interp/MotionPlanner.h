@@ -47,6 +47,12 @@ class MotionPlanner {
 
     const ProcessAxes* axes_;
     const ZeroOffsetTable* offsets_;
+    /// 60 / feed for the last feed seen: saves a division per block.
+    struct FeedCache {
+        double feed = -1.0;
+        double secondsPerUnit = 0.0;
+    };
+    mutable FeedCache feedCache_;
 };
 
 }  // namespace mtc::core

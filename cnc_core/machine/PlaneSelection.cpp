@@ -109,17 +109,6 @@ std::vector<PlaneProblem> PlaneSelection::selectFree(const ProcessAxes& axes,
     return problems;
 }
 
-std::array<AxisDefinition, 3> PlaneSelection::planeDefinitions() const {
-    switch (plane_) {
-        case 18:
-            return {AxisDefinition::Z, AxisDefinition::X, AxisDefinition::Y};
-        case 19:
-            return {AxisDefinition::Y, AxisDefinition::Z, AxisDefinition::X};
-        default:
-            return {AxisDefinition::X, AxisDefinition::Y, AxisDefinition::Z};
-    }
-}
-
 bool PlaneSelection::isBase(const ProcessAxes& axes) const {
     for (int i = 0; i < axes.count(); ++i)
         if (definitionOfAxis_[static_cast<size_t>(i)] != axes.axis(i).baseDefinition())

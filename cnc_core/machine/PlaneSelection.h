@@ -60,7 +60,16 @@ class PlaneSelection {
         return definitionOfAxis_[static_cast<size_t>(axis)];
     }
     /// Definitions spanning the plane: 1st axis, 2nd axis, perpendicular.
-    std::array<AxisDefinition, 3> planeDefinitions() const;
+    std::array<AxisDefinition, 3> planeDefinitions() const {
+        switch (plane_) {
+            case 18:
+                return {AxisDefinition::Z, AxisDefinition::X, AxisDefinition::Y};
+            case 19:
+                return {AxisDefinition::Y, AxisDefinition::Z, AxisDefinition::X};
+            default:
+                return {AxisDefinition::X, AxisDefinition::Y, AxisDefinition::Z};
+        }
+    }
     int firstAxis() const { return axisOf(planeDefinitions()[0]); }
     int secondAxis() const { return axisOf(planeDefinitions()[1]); }
     int perpendicularAxis() const { return axisOf(planeDefinitions()[2]); }

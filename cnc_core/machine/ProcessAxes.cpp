@@ -19,6 +19,7 @@ AxisModel modelOf(const AxisConfig& config, DiagnosticList& diagnostics) {
     model.endless = model.rotary && config.minPosition == 0.0 && config.maxPosition == 0.0;
     model.polarDirection = config.polarDirection;
     model.maxVelocity = config.maxVelocity;
+    model.rapidSecondsPerUnit = config.maxVelocity > 0 ? 60.0 / config.maxVelocity : 0.0;
     model.minPosition = config.minPosition;
     model.maxPosition = config.maxPosition;
     const std::string programName = model.spindle ? config.rotaryAxisName : config.name;

@@ -21,9 +21,10 @@ struct AxisModel {
     bool endless = false;    ///< rotary axis with both travel limits 0
     std::array<AxisDefinition, 4> definitions{};  ///< Cxx.053: [0] base, rest G20 alternates
     int definitionCount = 0;
-    int polarDirection = 0;        ///< Cxx.076
-    double maxVelocity = 10000.0;  ///< mm/min or deg/min (rapid traverse)
-    double minPosition = 0.0;      ///< travel limits; both 0 = not monitored
+    int polarDirection = 0;                       ///< Cxx.076
+    double maxVelocity = 10000.0;                 ///< mm/min or deg/min (rapid traverse)
+    double rapidSecondsPerUnit = 60.0 / 10000.0;  ///< 60 / maxVelocity
+    double minPosition = 0.0;                     ///< travel limits; both 0 = not monitored
     double maxPosition = 0.0;
 
     /// True when the travel limits are monitored (they differ).
