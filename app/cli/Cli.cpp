@@ -3,15 +3,49 @@
 #include <cstdio>
 #include <string>
 
+#include "cli/CheckCommand.h"
+#include "cli/CliOptions.h"
+#include "cli/CliOutput.h"
+#include "cli/RunCommand.h"
+
 namespace mtc::cli {
 
+namespace {
+
+constexpr const char* kVersion = "mtc200-cli 0.1.0";
+
+/// Commands of the contract that this build does not implement yet.
+int notYetAvailable(const CliOptions& options) {
+    return reportUsageError("command '" + options.commandName +
+                                "' is not yet available in this build (available: check, run)",
+                            options.json);
+}
+
+}  // namespace
+
 int runCli(int argc, char** argv) {
-    if (argc < 2) {
-        std::fprintf(stderr, "usage: mtc200-cli check|run|restart|compile|md ...\n");
-        return 2;
+    const ParsedCommandLine parsed = parseCommandLine(argc, argv);
+    if (!parsed.ok()) return reportUsageError(parsed.error, parsed.options.json);
+    const CliOptions& options = parsed.options;
+    switch (options.command) {
+        case Command::Help:
+            std::fputs(helpText().c_str(), stdout);
+            return 0;
+        case Command::Version:
+            std::printf("%s\n", kVersion);
+            return 0;
+        case Command::Check:
+            return runCheckCommand(options);
+        case Command::Run:
+            return runRunCommand(options);
+        case Command::Restart:
+        case Command::Compile:
+        case Command::MachineData:
+            return notYetAvailable(options);
+        case Command::None:
+            break;
     }
-    std::fprintf(stderr, "mtc200-cli: unknown command '%s'\n", argv[1]);
-    return 2;
+    return reportUsageError("no command given", options.json);
 }
 
 }  // namespace mtc::cli

@@ -1,0 +1,197 @@
+#include "cli/CliOptions.h"
+
+#include <charconv>
+#include <string_view>
+
+namespace mtc::cli {
+
+namespace {
+
+constexpr std::uint64_t kMaxBlocksLimit = 1'000'000'000'000ULL;
+constexpr int kMaxProcess = 99;
+
+Command commandFromName(std::string_view name) {
+    if (name == "check") return Command::Check;
+    if (name == "run") return Command::Run;
+    if (name == "restart") return Command::Restart;
+    if (name == "compile") return Command::Compile;
+    if (name == "md") return Command::MachineData;
+    if (name == "help") return Command::Help;
+    return Command::None;
+}
+
+/// Parses a decimal unsigned integer that must use every character.
+bool parseUnsigned(std::string_view text, std::uint64_t& value) {
+    if (text.empty() || text.front() == '+' || text.front() == '-') return false;
+    auto result = std::from_chars(text.data(), text.data() + text.size(), value);
+    return result.ec == std::errc() && result.ptr == text.data() + text.size();
+}
+
+class CommandLineReader {
+  public:
+    CommandLineReader(int argc, const char* const* argv) : argc_(argc), argv_(argv) {}
+
+    ParsedCommandLine read() {
+        for (index_ = 1; index_ < argc_ && out_.error.empty(); ++index_) {
+            std::string_view arg = argv_[index_];
+            if (onlyPositional_ || arg.size() < 2 || arg.front() != '-') {
+                positional(arg);
+            } else if (arg == "--") {
+                onlyPositional_ = true;
+            } else {
+                option(arg);
+            }
+        }
+        if (out_.error.empty()) validateCombination();
+        return std::move(out_);
+    }
+
+  private:
+    void positional(std::string_view arg) {
+        CliOptions& o = out_.options;
+        if (o.command != Command::None) {
+            o.arguments.emplace_back(arg);
+            return;
+        }
+        o.commandName = std::string(arg);
+        o.command = commandFromName(arg);
+        if (o.command == Command::None) out_.error = "unknown command '" + o.commandName + "'";
+    }
+
+    /// The value of an option: after '=' or the next argument.
+    bool optionValue(std::string_view name, std::string_view inlineValue, bool hasInline,
+                     std::string& value) {
+        if (hasInline) {
+            value = std::string(inlineValue);
+            return true;
+        }
+        if (index_ + 1 >= argc_) {
+            out_.error = "option " + std::string(name) + " needs a value";
+            return false;
+        }
+        value = argv_[++index_];
+        return true;
+    }
+
+    void option(std::string_view arg) {
+        const auto equals = arg.find('=');
+        const bool hasInline = equals != std::string_view::npos;
+        const std::string_view name = hasInline ? arg.substr(0, equals) : arg;
+        const std::string_view inlineValue = hasInline ? arg.substr(equals + 1) : "";
+        CliOptions& o = out_.options;
+        std::string value;
+        if (name == "--json" || name == "--no-motion" || name == "--help" || name == "-h" ||
+            name == "--version") {
+            if (hasInline) {
+                out_.error = "option " + std::string(name) + " takes no value";
+                return;
+            }
+            flag(name);
+        } else if (name == "--machine") {
+            if (optionValue(name, inlineValue, hasInline, value)) o.machineFile = value;
+            if (out_.error.empty() && o.machineFile.empty()) out_.error = "--machine needs a file";
+        } else if (name == "--programs") {
+            if (optionValue(name, inlineValue, hasInline, value)) o.programsDir = value;
+            if (out_.error.empty() && o.programsDir.empty())
+                out_.error = "--programs needs a directory";
+        } else if (name == "--process") {
+            if (optionValue(name, inlineValue, hasInline, value)) processValue(value);
+        } else if (name == "--max-blocks") {
+            if (optionValue(name, inlineValue, hasInline, value)) maxBlocksValue(value);
+        } else {
+            out_.error = "unknown option '" + std::string(arg) + "'";
+        }
+    }
+
+    void flag(std::string_view name) {
+        CliOptions& o = out_.options;
+        if (name == "--json") o.json = true;
+        if (name == "--no-motion") o.noMotion = true;
+        if (name == "--help" || name == "-h") helpRequested_ = true;
+        if (name == "--version") versionRequested_ = true;
+    }
+
+    void processValue(const std::string& value) {
+        std::uint64_t number = 0;
+        if (!parseUnsigned(value, number) || number > kMaxProcess) {
+            out_.error = "bad value '" + value + "' for --process (a process number 0.." +
+                         std::to_string(kMaxProcess) + ")";
+            return;
+        }
+        out_.options.process = static_cast<int>(number);
+        out_.options.processGiven = true;
+    }
+
+    void maxBlocksValue(const std::string& value) {
+        std::uint64_t number = 0;
+        if (!parseUnsigned(value, number) || number == 0 || number > kMaxBlocksLimit) {
+            out_.error = "bad value '" + value +
+                         "' for --max-blocks (a whole number of blocks, 1.." +
+                         std::to_string(kMaxBlocksLimit) + ")";
+            return;
+        }
+        out_.options.maxBlocks = number;
+    }
+
+    void validateCombination() {
+        CliOptions& o = out_.options;
+        if (versionRequested_) o.command = Command::Version;
+        if (helpRequested_) o.command = Command::Help;
+        if (o.command == Command::None) {
+            out_.error = "no command given";
+        } else if (o.noMotion && o.command != Command::Run && o.command != Command::Help &&
+                   o.command != Command::Version) {
+            out_.error = "option --no-motion belongs to 'run'";
+        } else if ((o.command == Command::Check || o.command == Command::Run) &&
+                   o.arguments.empty()) {
+            out_.error = "'" + o.commandName + "' needs a program (number or file)";
+        } else if (o.command == Command::Run && o.arguments.size() > 1) {
+            out_.error = "'run' takes exactly one program";
+        }
+    }
+
+    int argc_;
+    const char* const* argv_;
+    int index_ = 1;
+    bool onlyPositional_ = false;
+    bool helpRequested_ = false;
+    bool versionRequested_ = false;
+    ParsedCommandLine out_;
+};
+
+}  // namespace
+
+ParsedCommandLine parseCommandLine(int argc, const char* const* argv) {
+    return CommandLineReader(argc, argv).read();
+}
+
+std::string helpText() {
+    return R"(usage: mtc200-cli [global options] COMMAND [arguments]
+
+Headless MTC200 simulator (contract: docs/CLI-CONTRACT.md).
+
+Commands available:
+  check FILE|PROG...          parse and check programs; diagnostics only
+  run   FILE|PROG [--no-motion]
+                              execute one program in simulated time;
+                              --no-motion leaves the motion list out
+  help                        this text
+
+Global options:
+  --machine FILE      machine configuration (default: built-in demo cell)
+  --process N         process (station) of the cell (default 0)
+  --programs DIR      program directory with NuxxYzzz.DAT files
+                      (default: built-in demo programs)
+  --json              print exactly one JSON document on stdout
+  --max-blocks N      bound of a run in interpreted blocks (default 10000000)
+  --version           print the version
+
+A program is a program number (looked up in the program directory for the
+selected process) or a path to a source file (.DAT with %NPG header or a
+plain file of blocks).
+
+Exit codes: 0 success, 1 the program or run has errors, 2 usage or file error.
+)";
+}
+
+}  // namespace mtc::cli

@@ -1,0 +1,46 @@
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace mtc::cli {
+
+/// The sub-command of mtc200-cli (CLI-CONTRACT.md).
+enum class Command { None, Help, Version, Check, Run, Restart, Compile, MachineData };
+
+/// Default bound of a run: interpreted blocks before the run stops with a diagnostic.
+inline constexpr std::uint64_t kDefaultMaxBlocks = 10'000'000;
+
+/// Everything the command line said, validated for syntax (not yet for
+/// existence of files or processes).
+struct CliOptions {
+    Command command = Command::None;
+    std::string commandName;             ///< as typed
+    std::vector<std::string> arguments;  ///< positional arguments after the command
+    std::string machineFile;             ///< empty = built-in demo cell
+    std::string programsDir;             ///< empty = built-in demo programs
+    int process = 0;
+    bool processGiven = false;  ///< --process was on the command line
+    bool json = false;
+    std::uint64_t maxBlocks = kDefaultMaxBlocks;
+    bool noMotion = false;
+};
+
+/// Result of reading argv: the options, or the usage error that stops the run
+/// (exit code 2).
+struct ParsedCommandLine {
+    CliOptions options;
+    std::string error;  ///< empty = the command line is well-formed
+    bool ok() const { return error.empty(); }
+};
+
+/// Reads argv (argv[0] is skipped). Global options may stand before or after
+/// the command; `--name=value` and `--name value` are both accepted; `--` ends
+/// the options. Never throws: every problem is returned in `error`.
+ParsedCommandLine parseCommandLine(int argc, const char* const* argv);
+
+/// The help text printed by `mtc200-cli --help`.
+std::string helpText();
+
+}  // namespace mtc::cli

@@ -1,0 +1,122 @@
+#include "cli/MotionOutput.h"
+
+namespace mtc::cli {
+
+namespace {
+
+const std::string kNoName;
+
+bool isArc(core::MotionType type) {
+    return type == core::MotionType::ArcCW || type == core::MotionType::ArcCCW;
+}
+
+}  // namespace
+
+MotionOutput::MotionOutput(MotionMode mode, JsonWriter* json, std::FILE* text)
+    : mode_(mode), json_(json), text_(text) {}
+
+const char* MotionOutput::typeName(core::MotionType type) {
+    switch (type) {
+        case core::MotionType::Rapid:
+            return "rapid";
+        case core::MotionType::Linear:
+            return "linear";
+        case core::MotionType::ArcCW:
+            return "cw";
+        case core::MotionType::ArcCCW:
+            return "ccw";
+    }
+    return "linear";
+}
+
+const std::string& MotionOutput::axisName(int index) const {
+    if (index < 0 || static_cast<std::size_t>(index) >= names_.size()) return kNoName;
+    return names_[static_cast<std::size_t>(index)];
+}
+
+void MotionOutput::motion(const core::Motion& motion) {
+    ++motions_;
+    if (mode_ == MotionMode::Json && json_ != nullptr) writeJson(motion);
+    if (mode_ == MotionMode::Text && text_ != nullptr) writeText(motion);
+}
+
+void MotionOutput::auxiliary(const core::AuxOutput&) {
+    ++auxiliaries_;
+}
+
+void MotionOutput::dwell(const core::SourceLocation&, double seconds) {
+    ++dwells_;
+    dwellSeconds_ += seconds;
+}
+
+void MotionOutput::command(const core::SourceLocation&, const std::string&, const std::string&) {
+    ++commands_;
+}
+
+void MotionOutput::writeJson(const core::Motion& m) {
+    JsonWriter& json = *json_;
+    json.beginObject();
+    json.key("program");
+    json.value(m.where.program);
+    json.key("block");
+    json.value(m.where.block);
+    json.key("line");
+    json.value(m.where.line);
+    json.key("type");
+    json.value(typeName(m.type));
+    json.key("end");
+    json.beginObject();
+    for (int i = 0; i < m.axisCount && i < core::kMaxAxes; ++i) {
+        const std::string& name = axisName(i);
+        if (name.empty()) continue;
+        json.key(name);
+        json.value(m.end[static_cast<std::size_t>(i)]);
+    }
+    json.endObject();
+    if (isArc(m.type)) {
+        json.key("center");
+        json.beginObject();
+        if (!axisName(m.planeAxis1).empty()) {
+            json.key(axisName(m.planeAxis1));
+            json.value(m.center1);
+        }
+        if (!axisName(m.planeAxis2).empty()) {
+            json.key(axisName(m.planeAxis2));
+            json.value(m.center2);
+        }
+        json.endObject();
+    }
+    json.key("feed");
+    json.value(m.feed);
+    json.endObject();
+}
+
+void MotionOutput::appendAxisValue(int axis, double value) {
+    const std::string& name = axisName(axis);
+    if (name.empty()) return;
+    line_ += ' ';
+    line_ += name;
+    line_ += '=';
+    JsonWriter::appendNumber(line_, value);
+}
+
+void MotionOutput::writeText(const core::Motion& m) {
+    line_ = "P" + std::to_string(m.where.program) + ' ';
+    line_ += m.where.block.empty() ? "-" : m.where.block;
+    line_ += " L" + std::to_string(m.where.line) + ' ' + typeName(m.type);
+    for (int i = 0; i < m.axisCount && i < core::kMaxAxes; ++i)
+        appendAxisValue(i, m.end[static_cast<std::size_t>(i)]);
+    if (isArc(m.type)) {
+        line_ += " centre";
+        appendAxisValue(m.planeAxis1, m.center1);
+        appendAxisValue(m.planeAxis2, m.center2);
+    }
+    if (m.type != core::MotionType::Rapid) {
+        line_ += " F=";
+        JsonWriter::appendNumber(line_, m.feed);
+    }
+    line_ += '\n';
+    std::fwrite(line_.data(), 1, line_.size(), text_);
+}
+
+}  // namespace mtc::cli

@@ -1,0 +1,63 @@
+#pragma once
+
+#include <cstdint>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "cli/JsonWriter.h"
+#include "cnc_core/interp/MachineSink.h"
+
+namespace mtc::cli {
+
+/// How `run` reports motion while the program runs.
+enum class MotionMode { None, Json, Text };
+
+/// The sink `run` hands to the interpreter: every motion is written at once
+/// (JSON array entries or text lines) so a run of a million motions streams
+/// instead of piling up; with MotionMode::None motions are only counted.
+/// Auxiliary functions, dwells and commands are counted.
+class MotionOutput : public core::MachineSink {
+  public:
+    /// `json` must have an open array when mode is Json; `text` is used in
+    /// Text mode.
+    MotionOutput(MotionMode mode, JsonWriter* json, std::FILE* text);
+
+    /// Names of the machine axes in Motion::end order; "" leaves an axis out.
+    /// Set before the first motion arrives.
+    void setAxisNames(std::vector<std::string> names) { names_ = std::move(names); }
+
+    void motion(const core::Motion& motion) override;
+    void auxiliary(const core::AuxOutput& output) override;
+    void dwell(const core::SourceLocation& where, double seconds) override;
+    void command(const core::SourceLocation& where, const std::string& keyword,
+                 const std::string& arguments) override;
+
+    std::uint64_t motionCount() const { return motions_; }
+    std::uint64_t auxiliaryCount() const { return auxiliaries_; }
+    std::uint64_t dwellCount() const { return dwells_; }
+    double dwellSeconds() const { return dwellSeconds_; }
+    std::uint64_t commandCount() const { return commands_; }
+
+    /// "rapid", "linear", "cw" or "ccw".
+    static const char* typeName(core::MotionType type);
+
+  private:
+    void writeJson(const core::Motion& motion);
+    void writeText(const core::Motion& motion);
+    const std::string& axisName(int index) const;
+    void appendAxisValue(int axis, double value);
+
+    MotionMode mode_;
+    JsonWriter* json_;
+    std::FILE* text_;
+    std::vector<std::string> names_;  ///< per machine axis; "" = leave out
+    std::string line_;                ///< reused text line
+    std::uint64_t motions_ = 0;
+    std::uint64_t auxiliaries_ = 0;
+    std::uint64_t dwells_ = 0;
+    double dwellSeconds_ = 0.0;
+    std::uint64_t commands_ = 0;
+};
+
+}  // namespace mtc::cli

@@ -1,0 +1,148 @@
+#include "cli/ProgramMemory.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <system_error>
+#include <utility>
+#include <vector>
+
+#include "cnc_core/program/DatFile.h"
+#include "cnc_core/program/DatFileName.h"
+#include "cnc_core/program/ProgramLoader.h"
+#include "resources/EmbeddedResources.h"
+
+namespace mtc::cli {
+
+namespace {
+
+constexpr std::string_view kEmbeddedPrefix = "programs/";
+
+bool allDigits(std::string_view text) {
+    return !text.empty() && std::all_of(text.begin(), text.end(), [](char c) {
+        return std::isdigit(static_cast<unsigned char>(c)) != 0;
+    });
+}
+
+std::string baseName(const std::string& path) {
+    const auto slash = path.find_last_of('/');
+    return slash == std::string::npos ? path : path.substr(slash + 1);
+}
+
+/// Loader problems of single files become warnings of the command.
+void appendAsWarnings(const core::DiagnosticList& from, core::DiagnosticList& to) {
+    for (core::Diagnostic d : from.items()) {
+        d.severity = core::Severity::Warning;
+        to.add(std::move(d));
+    }
+}
+
+bool resolveNumber(const std::string& argument, const ProgramMemory& memory,
+                   ProgramRequest& request, core::DiagnosticList& diagnostics) {
+    request.number = std::stoi(argument);
+    request.program = memory.store.find(request.process, request.number);
+    if (!request.program) {
+        diagnostics.error("CLI_PROGRAM_NOT_FOUND", {},
+                          "program " + argument + " of process " + std::to_string(request.process) +
+                              " not found in the " + memory.origin);
+        return false;
+    }
+    request.displayName = request.program->name;
+    return true;
+}
+
+}  // namespace
+
+bool readTextFile(const std::string& path, std::string& text, std::string& error) {
+    std::error_code ec;
+    const auto status = std::filesystem::status(path, ec);
+    if (ec || !std::filesystem::exists(status)) {
+        error = "cannot read '" + path + "': no such file";
+        return false;
+    }
+    if (!std::filesystem::is_regular_file(status)) {
+        error = "cannot read '" + path + "': not a regular file";
+        return false;
+    }
+    std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "rb"),
+                                                         &std::fclose);
+    if (!file) {
+        error = "cannot read '" + path + "': permission denied or unreadable";
+        return false;
+    }
+    text.clear();
+    const auto size = std::filesystem::file_size(path, ec);
+    if (!ec) text.reserve(static_cast<std::size_t>(size));
+    char buffer[1 << 16];
+    std::size_t count = 0;
+    while ((count = std::fread(buffer, 1, sizeof buffer, file.get())) > 0)
+        text.append(buffer, count);
+    if (std::ferror(file.get())) {
+        error = "cannot read '" + path + "': read error";
+        return false;
+    }
+    return true;
+}
+
+bool loadProgramMemory(const std::string& directory, ProgramMemory& memory,
+                       core::DiagnosticList& diagnostics) {
+    core::ProgramLoader loader(memory.store);
+    if (directory.empty()) {
+        memory.origin = "built-in demo programs";
+        std::vector<std::pair<std::string, std::string>> files;
+        for (const std::string& name : resources::list(kEmbeddedPrefix))
+            files.emplace_back(name, std::string(resources::find(name)));
+        loader.loadTexts(files);
+    } else {
+        memory.origin = "program directory '" + directory + "'";
+        std::error_code ec;
+        if (!std::filesystem::is_directory(directory, ec)) {
+            diagnostics.error("CLI_FILE_UNREADABLE", {},
+                              "program directory '" + directory + "' is not a readable directory");
+            return false;
+        }
+        loader.loadDirectory(directory);
+    }
+    appendAsWarnings(loader.diagnostics(), diagnostics);
+    return true;
+}
+
+bool resolveProgram(const std::string& argument, const ProgramMemory& memory, int process,
+                    bool processGiven, ProgramRequest& request, core::DiagnosticList& diagnostics) {
+    request = ProgramRequest{};
+    request.argument = argument;
+    request.process = process;
+    if (argument.size() <= 3 && allDigits(argument))
+        return resolveNumber(argument, memory, request, diagnostics);
+    std::string text, error;
+    if (!readTextFile(argument, text, error)) {
+        diagnostics.error("CLI_FILE_UNREADABLE", {}, error);
+        return false;
+    }
+    request.displayName = baseName(argument);
+    if (auto id = core::parseDatFileName(request.displayName)) {
+        request.number = id->number;
+        if (!processGiven) {
+            request.process = id->process;
+        } else if (id->process != process) {
+            diagnostics.warning("CLI_PROCESS_MISMATCH", {},
+                                "file name " + request.displayName + " names process " +
+                                    std::to_string(id->process) + "; it runs in process " +
+                                    std::to_string(process) + " as --process says");
+        }
+    }
+    core::ParseOptions options{request.number, request.displayName};
+    request.program = std::make_shared<const core::Program>(
+        core::DatFile::parse(std::move(text), request.displayName, options));
+    return true;
+}
+
+core::ProgramStore storeWith(const core::ProgramStore& store, const ProgramRequest& request) {
+    core::ProgramStore copy = store;
+    copy.put(request.process, request.number, request.program);
+    return copy;
+}
+
+}  // namespace mtc::cli

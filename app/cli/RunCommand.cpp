@@ -1,0 +1,206 @@
+#include "cli/RunCommand.h"
+
+#include <cstdio>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "cli/CliOutput.h"
+#include "cli/CommandSetup.h"
+#include "cli/JsonWriter.h"
+#include "cli/MachineSetup.h"
+#include "cli/MotionOutput.h"
+#include "cli/ProgramMemory.h"
+#include "cli/StateOutput.h"
+#include "cnc_core/interp/Interpreter.h"
+
+namespace mtc::cli {
+
+namespace {
+
+/// Everything a run needs once the files are read.
+struct PreparedRun {
+    CommandSetup setup;
+    ProgramRequest request;
+    const core::ProcessConfig* process = nullptr;
+    core::ProgramStore store;
+    core::ProgramPtr program;
+    core::DiagnosticList diagnostics;  ///< warnings of the preparation, parse problems
+};
+
+/// What the run produced besides the streamed motion.
+struct RunOutcome {
+    core::RunStatus status = core::RunStatus::Ended;
+    std::uint64_t blocks = 0;
+    bool started = false;
+};
+
+/// Reads machine, program directory and program; false (diagnostics in
+/// `failure`) on a file or configuration problem (exit 2).
+bool prepareRun(const CliOptions& options, PreparedRun& run, core::DiagnosticList& failure) {
+    std::optional<CommandSetup> setup = prepareCommand(options, failure);
+    if (!setup) return false;
+    run.setup = std::move(*setup);
+    run.diagnostics.append(failure);  // warnings of the machine file
+    failure.clear();
+    if (!resolveProgram(options.arguments.front(), run.setup.programs, options.process,
+                        options.processGiven, run.request, failure))
+        return false;
+    run.process = run.setup.machine.process(run.request.process);
+    if (run.process == nullptr) {
+        checkProcessExists(run.setup.machine, run.request.process, failure);
+        return false;
+    }
+    run.program = run.request.program;
+    run.store = storeWith(run.setup.programs.store, run.request);
+    run.diagnostics.append(run.program->diagnostics);
+    return true;
+}
+
+/// Axis names for motion and position: the configuration names the
+/// interpreter uses; spindles without rotary axis capability are left out.
+std::vector<std::string> reportedAxisNames(const core::Interpreter& interpreter) {
+    std::vector<std::string> names;
+    const core::ProcessAxes& axes = interpreter.axes();
+    for (int i = 0; i < axes.count(); ++i) {
+        const core::AxisModel& axis = axes.axis(i);
+        names.push_back(axis.spindle && !axis.rotary ? std::string() : interpreter.axisName(i));
+    }
+    return names;
+}
+
+/// Runs the program to its end. M00 / M01 stops are continued as the
+/// operator would with the Start key (noted as a warning); the block bound
+/// covers the whole run.
+RunOutcome execute(core::Interpreter& interpreter, const PreparedRun& run, std::uint64_t budget,
+                   core::DiagnosticList& diagnostics) {
+    RunOutcome outcome;
+    if (!interpreter.select(run.program, 0, &diagnostics)) {
+        outcome.status = core::RunStatus::Error;
+        return outcome;
+    }
+    outcome.started = true;
+    while (true) {
+        core::RunResult result = interpreter.run(budget - outcome.blocks);
+        outcome.blocks += result.blocksInterpreted;
+        diagnostics.append(result.diagnostics);
+        outcome.status = result.status;
+        if (result.status != core::RunStatus::Stopped) return outcome;
+        const std::vector<core::StackLevel> levels = interpreter.callStack();
+        const core::StackLevel where = levels.empty() ? core::StackLevel{} : levels.back();
+        diagnostics.warning("RUN_PROGRAM_STOP", {where.program, where.block, where.line, 0},
+                            "programmed stop: continued as with the Start key");
+        if (outcome.blocks >= budget) {
+            diagnostics.error("BLOCK_BUDGET", {where.program, where.block, where.line, 0},
+                              "the run exceeded --max-blocks " + std::to_string(budget));
+            outcome.status = core::RunStatus::BudgetExceeded;
+            return outcome;
+        }
+    }
+}
+
+Page61Buffers readPage61(core::Interpreter& interpreter, int process) {
+    Page61Buffers buffers;
+    for (int element = 1; element <= 40; ++element) {
+        double value = 0.0;
+        const auto index = static_cast<std::size_t>(element - 1);
+        if (interpreter.machineData().read({61, process, 1, element}, value) ==
+            core::MachineDataStatus::Ok)
+            buffers.m16[index] = value;
+        value = 0.0;
+        if (interpreter.machineData().read({61, process, 2, element}, value) ==
+            core::MachineDataStatus::Ok)
+            buffers.q[index] = value;
+    }
+    return buffers;
+}
+
+std::vector<double> programmedPositions(const core::Interpreter& interpreter) {
+    std::vector<double> positions;
+    for (int i = 0; i < interpreter.axes().count(); ++i)
+        positions.push_back(interpreter.programmedPosition(i));
+    return positions;
+}
+
+/// How the run ended: the interpreter's word, or "not_started" when the
+/// program could not be started (parse errors, selection refused).
+const char* runStatusText(const RunOutcome& outcome) {
+    return outcome.started ? core::runStatusName(outcome.status) : "not_started";
+}
+
+void writeJsonTail(JsonWriter& json, const MotionOutput& sink, const RunOutcome& outcome,
+                   const core::DiagnosticList& diagnostics, const StateView& view) {
+    json.key("motion_count");
+    json.value(static_cast<long long>(sink.motionCount()));
+    json.key("status");
+    json.value(diagnostics.hasErrors() ? "error" : "ok");
+    writeDiagnosticsJson(json, diagnostics);
+    json.key("run_status");
+    json.value(runStatusText(outcome));
+    json.key("blocks_interpreted");
+    json.value(static_cast<long long>(outcome.blocks));
+    json.key("simulated_time");
+    json.value(view.state.modal.time);
+    json.key("final");
+    writeStateJson(json, view);
+    json.endObject();
+    json.finish();
+}
+
+void writeTextTail(const MotionOutput& sink, const RunOutcome& outcome,
+                   const core::DiagnosticList& diagnostics, const StateView& view) {
+    std::fflush(stdout);
+    printDiagnosticsText(stdout, diagnostics);
+    std::printf("run: %s after %llu blocks, %llu motions, simulated time %.3f s\n",
+                runStatusText(outcome), static_cast<unsigned long long>(outcome.blocks),
+                static_cast<unsigned long long>(sink.motionCount()), view.state.modal.time);
+    printStateText(stdout, view);
+    std::printf("status: %s\n", diagnostics.hasErrors() ? "error" : "ok");
+}
+
+}  // namespace
+
+int runRunCommand(const CliOptions& options) {
+    PreparedRun run;
+    core::DiagnosticList failure;
+    if (!prepareRun(options, run, failure)) return reportSetupFailure(failure, options.json);
+
+    JsonWriter json(stdout);
+    const MotionMode mode = options.noMotion ? MotionMode::None
+                            : options.json   ? MotionMode::Json
+                                             : MotionMode::Text;
+    MotionOutput sink(mode, &json, stdout);
+    core::Interpreter interpreter(*run.process, run.store, sink);
+    if (interpreter.configurationDiagnostics().hasErrors()) {
+        failure.error(
+            "CLI_MACHINE_INVALID", {},
+            "the machine configuration cannot run process " + std::to_string(run.request.process));
+        failure.append(interpreter.configurationDiagnostics());
+        return reportSetupFailure(failure, options.json);
+    }
+    sink.setAxisNames(reportedAxisNames(interpreter));
+    if (options.json) json.beginObject();
+    if (mode == MotionMode::Json) {
+        json.key("motion");
+        json.beginArray();
+    }
+    core::DiagnosticList diagnostics = run.diagnostics;
+    RunOutcome outcome;
+    if (!run.program->diagnostics.hasErrors())
+        outcome = execute(interpreter, run, options.maxBlocks, diagnostics);
+    if (mode == MotionMode::Json) json.endArray();
+
+    const Page61Buffers page61 = readPage61(interpreter, run.request.process);
+    const std::vector<double> positions = programmedPositions(interpreter);
+    const std::vector<std::string> names = reportedAxisNames(interpreter);
+    const StateView view{
+        interpreter.state(), *run.process, interpreter.axes(), page61, names, positions};
+    if (options.json) {
+        writeJsonTail(json, sink, outcome, diagnostics, view);
+    } else {
+        writeTextTail(sink, outcome, diagnostics, view);
+    }
+    return exitCodeFor(false, diagnostics);
+}
+
+}  // namespace mtc::cli

@@ -1,0 +1,38 @@
+#pragma once
+
+#include <array>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "cli/JsonWriter.h"
+#include "cnc_core/interp/InterpreterState.h"
+#include "cnc_core/machine/MachineConfig.h"
+#include "cnc_core/machine/ProcessAxes.h"
+
+namespace mtc::cli {
+
+/// The 40-entry buffers of machine data page 61 (oldest first, 0 = empty).
+struct Page61Buffers {
+    std::array<double, 40> m16{};
+    std::array<double, 40> q{};
+};
+
+/// What the State object of CLI-CONTRACT.md is made from.
+struct StateView {
+    const core::InterpreterState& state;
+    const core::ProcessConfig& process;
+    const core::ProcessAxes& axes;
+    const Page61Buffers& page61;
+    const std::vector<std::string>& axisNames;  ///< per machine axis; "" = not reported
+    const std::vector<double>& positions;       ///< programmed position per machine axis
+};
+
+/// Writes the contract's State object (g, m_groups, page61, page60, s, t, e,
+/// f, variables, position, call_stack) as the next JSON value.
+void writeStateJson(JsonWriter& json, const StateView& view);
+
+/// Prints the same state as readable lines to `stream`.
+void printStateText(std::FILE* stream, const StateView& view);
+
+}  // namespace mtc::cli

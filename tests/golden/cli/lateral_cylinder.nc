@@ -1,0 +1,12 @@
+; Lathe: G20 free plane Z/C/X and G32 lateral cylinder RI 20; an arc
+; length of 31.4159 mm on the shell is 90 degrees of C.
+N0000 G0 G18 G54 X30 Z-10 M5
+N0001 G0 C0
+N0002 G20 Z0 C0 X0
+N0003 G32 RI 20
+N0004 G0 G56 Y1 0 Z1 240
+N0005 G1 X19 F100
+N0006 G1 Y1 31.4159 F300
+N0007 G0 X30
+N0008 G30
+N0009 G18
