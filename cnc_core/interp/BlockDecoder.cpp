@@ -200,13 +200,17 @@ bool BlockDecoder::axisWord(Cursor& c) const {
     double v = 0;
     if (!value(c, v)) return false;
     const auto bit = static_cast<std::uint16_t>(1u << found.axis);
-    if (c.input.axisMask & bit)
-        return error(c, "WORD_TWICE", "axis " + written.toString() + " programmed twice");
+    if (c.input.axisCount == BlockInput::kMaxAxisWords)
+        return error(c, "TOO_MANY_AXES", "more than 16 axis words in one block");
+    if ((c.input.axisMask & bit) && c.input.repeatedAxisColumn == 0)
+        c.input.repeatedAxisColumn = c.word.column;  // reported by the executor (G20 or not)
     c.input.axisMask |= bit;
     c.input.axisValue[static_cast<size_t>(found.axis)] = v;
     c.input.axisColumn[static_cast<size_t>(found.axis)] = c.word.column;
-    c.input.axisOrder[static_cast<size_t>(c.input.axisCount++)] =
-        static_cast<std::int8_t>(found.axis);
+    const auto slot = static_cast<size_t>(c.input.axisCount++);
+    c.input.axisOrder[slot] = static_cast<std::int8_t>(found.axis);
+    c.input.orderValue[slot] = v;
+    c.input.orderColumn[slot] = c.word.column;
     return true;
 }
 

@@ -25,6 +25,9 @@ bool isProgramControl(int m) {
 
 bool BlockExecutor::plan(const BlockContext& c, const BlockInput& in, const InterpreterState& state,
                          BlockPlan& plan) const {
+    if (in.repeatedAxisColumn && in.g[kGroupPlane] != 20)
+        return c.error("WORD_TWICE", "an axis is programmed twice in one block",
+                       in.repeatedAxisColumn);
     plan.hasMotion = false;
     plan.dwellSeconds = -1.0;
     plan.programControl = -1;
@@ -80,7 +83,7 @@ bool BlockExecutor::planeChange(const BlockContext& c, const BlockInput& in,
     for (int i = 0; i < in.axisCount; ++i) {
         const int a = in.axisOrder[static_cast<size_t>(i)];
         programmed.push_back(
-            {a, in.axisValue[static_cast<size_t>(a)], in.axisColumn[static_cast<size_t>(a)]});
+            {a, in.orderValue[static_cast<size_t>(i)], in.orderColumn[static_cast<size_t>(i)]});
     }
     if (!reportProblems(c, next.plane.selectFree(*setup_.axes, programmed), column)) return false;
     next.g[kGroupPlane] = 20;

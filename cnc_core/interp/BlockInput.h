@@ -41,8 +41,14 @@ struct BlockInput {
     std::uint16_t axisMask = 0;  ///< bit i: machine axis i programmed
     std::array<double, kMaxAxes> axisValue{};
     std::array<std::uint16_t, kMaxAxes> axisColumn{};
-    std::array<std::int8_t, kMaxAxes> axisOrder{};  ///< program order of the axis words
+    /// Axis words in program order (repeats included, so that G20 can report
+    /// an axis written twice); axisValue/axisColumn hold the last occurrence.
+    static constexpr int kMaxAxisWords = 16;
+    std::array<std::int8_t, kMaxAxisWords> axisOrder{};
+    std::array<double, kMaxAxisWords> orderValue{};
+    std::array<std::uint16_t, kMaxAxisWords> orderColumn{};
     int axisCount = 0;
+    std::uint16_t repeatedAxisColumn = 0;  ///< column of the first repeated axis word, 0 = none
 
     std::uint8_t centerMask = 0;  ///< bit 0 I, 1 J, 2 K
     std::array<double, 3> center{};
@@ -80,6 +86,7 @@ struct BlockInput {
         dwell = speedLimit = false;
         axisMask = 0;
         axisCount = 0;
+        repeatedAxisColumn = 0;
         centerMask = 0;
         hasFeed = hasTool = hasEdge = hasCorrection = hasRadius = false;
         spindleMask = 0;

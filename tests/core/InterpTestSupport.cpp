@@ -123,6 +123,12 @@ std::string stateText(const Interpreter& interpreter) {
     for (int a = 0; a < interpreter.axes().count(); ++a)
         text +=
             " " + interpreter.axisName(a) + ":" + definitionLetter(s.modal.plane.definitionOf(a));
+    text += "\nstate page60 rotary=";
+    for (int j = 1; j <= 3; ++j)
+        text += (j > 1 ? "," : "") + std::to_string(s.modal.rotaryAxisMode[static_cast<size_t>(j)]);
+    text += " transformation=" + std::to_string(s.modal.transformation.kind()) + " tools=";
+    for (int t = 0; t < kToolSpindles; ++t)
+        text += (t > 0 ? "," : "") + std::to_string(s.modal.toolSpindle[static_cast<size_t>(t)]);
     text += "\nstate variables";
     for (int i = 0; i < kVariableCount; ++i)
         if (s.variables.written.test(static_cast<size_t>(i)))
@@ -136,11 +142,12 @@ std::string stateText(const Interpreter& interpreter) {
 }
 
 Station::Station(const MachineConfig& cell, int process) : config(*cell.process(process)) {
-    std::vector<std::string> names;
-    for (const auto& a : config.axes)
-        names.push_back(a.name);
-    sink = std::make_unique<TranscriptSink>(names);
+    sink = std::make_unique<TranscriptSink>(std::vector<std::string>{});
     interpreter = std::make_unique<Interpreter>(config, store, *sink);
+    std::vector<std::string> names;
+    for (int a = 0; a < interpreter->axes().count(); ++a)
+        names.push_back(interpreter->axisName(a));
+    sink->setNames(names);
 }
 
 ProgramPtr Station::add(const std::string& source, int number) {

@@ -27,6 +27,7 @@ core::ProgramPtr parse(const std::string& source, int number);
 class TranscriptSink : public core::MachineSink {
   public:
     explicit TranscriptSink(std::vector<std::string> axisNames) : names_(std::move(axisNames)) {}
+    void setNames(std::vector<std::string> axisNames) { names_ = std::move(axisNames); }
     void motion(const core::Motion& m) override;
     void auxiliary(const core::AuxOutput& a) override;
     void dwell(const core::SourceLocation& where, double seconds) override;
