@@ -2,42 +2,56 @@
 
 #include <QObject>
 #include <QString>
-#include <map>
 #include <memory>
 #include <vector>
 
+#include "cnc_core/language/Program.h"
 #include "cnc_core/machine/MachineConfig.h"
 #include "cnc_core/machine/ProcessControl.h"
+#include "cnc_core/program/ProgramStore.h"
+
+namespace mtc::core {
+class Interpreter;
+class SimulatedMachine;
+}  // namespace mtc::core
 
 namespace mtc::hmi {
 
-/// The source text of one program as the panel knows it.
-struct ProgramSource {
-    int number = 0;
-    QString fileName;
-    QString text;
-};
+class SimulationClock;
 
 /// The simulated cell behind the panel: machine configuration, program
-/// memory and one ProcessControl per process. Screens read it and send
-/// machine keys to it; it tells everybody when a process changed.
+/// memory (parsed programs), and per process its ProcessControl, its
+/// interpreter on a simulated machine and the simulation clock that steps
+/// it. Screens read it and send machine keys to it; it tells everybody when
+/// a process changed.
 class CellSession : public QObject {
     Q_OBJECT
   public:
     explicit CellSession(mtc::core::MachineConfig config, QObject* parent = nullptr);
+    ~CellSession() override;
 
     const mtc::core::MachineConfig& config() const { return config_; }
     int processCount() const { return static_cast<int>(config_.processes.size()); }
     /// Process config by station slot (0..processCount-1).
     const mtc::core::ProcessConfig& processConfig(int slot) const;
-    mtc::core::ProcessControl& control(int slot) { return *controls_.at(slot); }
-    const mtc::core::ProcessControl& control(int slot) const { return *controls_.at(slot); }
+    mtc::core::ProcessControl& control(int slot);
+    const mtc::core::ProcessControl& control(int slot) const;
+    mtc::core::Interpreter& interpreter(int slot);
+    mtc::core::SimulatedMachine& machine(int slot);
+    SimulationClock& clock(int slot);
+    const mtc::core::ProgramStore& store() const { return store_; }
 
-    /// Adds or replaces a program of a station.
-    void addProgram(int slot, ProgramSource program);
+    /// Parses `text` and stores it as program `number` of the station.
+    void addProgram(int slot, int number, const std::string& name, std::string text);
+    /// Stores an already parsed program (used by the loaders).
+    void putProgram(int slot, int number, mtc::core::ProgramPtr program);
     /// Programs of a station ordered by number.
-    std::vector<const ProgramSource*> programs(int slot) const;
-    const ProgramSource* program(int slot, int number) const;
+    std::vector<mtc::core::ProgramPtr> programs(int slot) const;
+    mtc::core::ProgramPtr program(int slot, int number) const;
+    /// Station slot of process number `process`, or -1.
+    int slotOfProcess(int process) const;
+    /// The program store, for loaders filling it before the panel starts.
+    mtc::core::ProgramStore& mutableStore() { return store_; }
 
     /// Sends a machine control key to a station and announces the change.
     bool pressKey(int slot, mtc::core::ControlKey key);
@@ -50,9 +64,10 @@ class CellSession : public QObject {
     void processChanged(int slot);
 
   private:
+    struct Station;
     mtc::core::MachineConfig config_;
-    std::vector<std::unique_ptr<mtc::core::ProcessControl>> controls_;
-    std::vector<std::map<int, ProgramSource>> programs_;
+    mtc::core::ProgramStore store_;
+    std::vector<std::unique_ptr<Station>> stations_;
 };
 
 }  // namespace mtc::hmi

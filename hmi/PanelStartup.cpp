@@ -3,9 +3,11 @@
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
-#include <QRegularExpression>
+#include <QTextStream>
 
 #include "cnc_core/machine/MachineConfigReader.h"
+#include "cnc_core/program/DatFileName.h"
+#include "cnc_core/program/ProgramLoader.h"
 #include "hmi/CellSession.h"
 #include "hmi/PanelWindow.h"
 #include "resources/EmbeddedResources.h"
@@ -13,30 +15,6 @@
 namespace mtc::hmi {
 
 namespace {
-
-/// Seed file naming NuxxYzzz.DAT: y = process, zzz = program number.
-bool programFileName(const QString& fileName, int& process, int& number) {
-    static const QRegularExpression pattern("^N\\d{3}(\\d)(\\d{3})\\.DAT$",
-                                            QRegularExpression::CaseInsensitiveOption);
-    auto match = pattern.match(fileName);
-    if (!match.hasMatch()) return false;
-    process = match.captured(1).toInt();
-    number = match.captured(2).toInt();
-    return true;
-}
-
-int slotOfProcess(const CellSession& session, int process) {
-    for (int slot = 0; slot < session.processCount(); ++slot)
-        if (session.processConfig(slot).index == process) return slot;
-    return -1;
-}
-
-void addProgramText(CellSession& session, const QString& fileName, const QString& text) {
-    int process = 0, number = 0;
-    if (!programFileName(fileName, process, number)) return;
-    const int slot = slotOfProcess(session, process);
-    if (slot >= 0) session.addProgram(slot, {number, fileName, text});
-}
 
 bool readFile(const QString& path, QString& text, QString& error) {
     QFile file(path);
@@ -46,6 +24,21 @@ bool readFile(const QString& path, QString& text, QString& error) {
     }
     text = QString::fromUtf8(file.readAll());
     return true;
+}
+
+/// Number for a program file given with --program: its NuxxYzzz number, or
+/// for a loose file the lowest number 1..98 the station does not use yet.
+int numberForProgramFile(const CellSession& session, int slot, const QString& path) {
+    if (auto name = mtc::core::parseDatFileName(path.toStdString())) return name->number;
+    for (int number = 1; number < 99; ++number)
+        if (!session.program(slot, number)) return number;
+    return 0;
+}
+
+void reportLoaderProblems(const mtc::core::DiagnosticList& diagnostics) {
+    for (const auto& d : diagnostics.items())
+        QTextStream(stderr) << "mtc200-panel: " << QString::fromStdString(formatDiagnostic(d))
+                            << "\n";
 }
 
 }  // namespace
@@ -69,31 +62,27 @@ std::unique_ptr<CellSession> createSession(const PanelOptions& options, QString&
         return nullptr;
     }
     auto session = std::make_unique<CellSession>(std::move(result.config));
+    mtc::core::ProgramLoader loader(session->mutableStore());
     if (options.programsDir.isEmpty()) {
-        for (const auto& name : mtc::resources::list("programs/")) {
-            auto data = mtc::resources::find(name);
-            addProgramText(*session, QFileInfo(QString::fromStdString(name)).fileName(),
-                           QString::fromUtf8(data.data(), static_cast<int>(data.size())));
-        }
+        std::vector<std::pair<std::string, std::string>> files;
+        for (const auto& name : mtc::resources::list("programs/"))
+            files.emplace_back(name, std::string(mtc::resources::find(name)));
+        loader.loadTexts(files);
     } else {
-        QDir dir(options.programsDir);
-        if (!dir.exists()) {
+        if (!QDir(options.programsDir).exists()) {
             error = "program directory does not exist: " + options.programsDir;
             return nullptr;
         }
-        for (const QString& name : dir.entryList(QDir::Files, QDir::Name)) {
-            QString text;
-            if (readFile(dir.filePath(name), text, error)) addProgramText(*session, name, text);
-        }
-        error.clear();
+        loader.loadDirectory(options.programsDir.toStdString());
     }
+    reportLoaderProblems(loader.diagnostics());
     return session;
 }
 
 bool applyStartOptions(const PanelOptions& options, CellSession& session, PanelWindow& window,
                        QString& error) {
     if (options.process >= 0) {
-        const int slot = slotOfProcess(session, options.process);
+        const int slot = session.slotOfProcess(options.process);
         if (slot < 0) {
             error = QString("the cell has no process %1").arg(options.process);
             return false;
@@ -107,11 +96,13 @@ bool applyStartOptions(const PanelOptions& options, CellSession& session, PanelW
         if (!isNumber) {
             QString text;
             if (!readFile(options.program, text, error)) return false;
-            number = 1;
-            int process = 0;
-            if (!programFileName(QFileInfo(options.program).fileName(), process, number))
-                number = 1;
-            session.addProgram(slot, {number, QFileInfo(options.program).fileName(), text});
+            number = numberForProgramFile(session, slot, options.program);
+            if (number == 0) {
+                error = "no free program number for " + options.program;
+                return false;
+            }
+            session.addProgram(slot, number, QFileInfo(options.program).fileName().toStdString(),
+                               text.toStdString());
         } else if (!session.program(slot, number)) {
             error = QString("station %1 has no program %2").arg(slot).arg(number);
             return false;

@@ -59,11 +59,16 @@ bool ProcessControl::press(ControlKey key) {
             return start();
         case ControlKey::Stop:
             signals_.set(p + "CSTOP", 1);
-            setProgramActive(false);
+            if (active_ && !held_) {
+                if (runner_) runner_->hold();
+                held_ = true;
+                signals_.set(p + "SHOLD", 1);
+            }
             signals_.set(p + "CSTOP", 0);
             return true;
         case ControlKey::ControlReset:
             signals_.set(p + "CRESET", 1);
+            if (runner_) runner_->reset();
             setProgramActive(false);
             alarm_.clear();
             currentBlock_.clear();
@@ -101,12 +106,23 @@ bool ProcessControl::start() {
         alarm_ = "Start refused: no program selected";
         return false;
     }
-    if (active_) return true;
+    if (active_ && !held_) return true;  // already running
+    if (!runner_) {
+        alarm_ = "Start refused: no NC core attached";
+        return false;
+    }
     signals_.set(p + "CADV", 1);
-    std::string result = startProgram ? startProgram(selectedProgram_)
-                                      : std::string("Start refused: no NC core attached");
+    const bool resuming = active_;
+    if (!resuming) setProgramActive(true);
+    alarm_.clear();
+    std::string result = resuming ? runner_->resume() : runner_->start(selectedProgram_);
     signals_.set(p + "CADV", 0);
+    if (resuming && result.empty()) {
+        held_ = false;
+        signals_.set(p + "SHOLD", 0);
+    }
     if (!result.empty()) {
+        if (!resuming) setProgramActive(false);
         alarm_ = result;
         return false;
     }
@@ -122,8 +138,23 @@ bool ProcessControl::selectProgram(int number) {
     return true;
 }
 
+void ProcessControl::programFinished(std::string alarm) {
+    setProgramActive(false);
+    if (!alarm.empty()) alarm_ = std::move(alarm);
+}
+
+void ProcessControl::programStopped(std::string message) {
+    held_ = true;
+    signals_.set(signalPrefix() + "SHOLD", 1);
+    alarm_ = std::move(message);
+}
+
 void ProcessControl::setProgramActive(bool active) {
     active_ = active;
+    if (!active && held_) {
+        held_ = false;
+        signals_.set(signalPrefix() + "SHOLD", 0);
+    }
     signals_.set(signalPrefix() + "SACTIV", active ? 1 : 0);
 }
 

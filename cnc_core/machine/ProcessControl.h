@@ -1,6 +1,5 @@
 #pragma once
 
-#include <functional>
 #include <string>
 
 #include "cnc_core/machine/SignalTable.h"
@@ -18,15 +17,31 @@ enum class ControlKey { ProgramRestart, Repos, Manual, Automatic, Start, Stop, C
 const char* modeName(OperatingMode mode);
 const char* keyName(ControlKey key);
 
+/// Runs the selected program of a process (the panel's simulation clock,
+/// later the restart logic). ProcessControl calls it for Start/Stop/Reset.
+class ProgramRunner {
+  public:
+    virtual ~ProgramRunner() = default;
+    /// Starts program `number` from its first block. Returns "" or an alarm.
+    virtual std::string start(int number) = 0;
+    /// Continues a held run. Returns "" or an alarm.
+    virtual std::string resume() = 0;
+    /// Stop key: feed hold; the program stays active.
+    virtual void hold() = 0;
+    /// Control reset: the run is abandoned, the interpreter reset.
+    virtual void reset() = 0;
+};
+
 /// What a process (station) of the cell is doing, seen from the panel:
 /// operating mode, selected program, current alarm and the interface
 /// signals. One object per process; no globals.
 ///
 /// Key handling of this layer: Manual/Automatic switch the mode (refused
-/// while a program is active), Control reset clears the alarm and stops the
-/// program, Stop stops it, Start starts the selected program in automatic
-/// mode through the `startProgram` hook; NC program restart and REPOS set
-/// the M-key flags mBPREP / mREPOS that the restart logic consumes.
+/// while a program is active), Start starts the selected program in
+/// automatic mode through the ProgramRunner (or continues a held one), Stop
+/// holds it (PxxSHOLD = 1, the program stays active), Control reset
+/// abandons it and clears the alarm; NC program restart and REPOS toggle the
+/// M-key flags mBPREP / mREPOS that the restart logic consumes.
 class ProcessControl {
   public:
     explicit ProcessControl(int process);
@@ -38,6 +53,7 @@ class ProcessControl {
     int process() const { return process_; }
     OperatingMode mode() const { return mode_; }
     bool programActive() const { return active_; }
+    bool programHeld() const { return held_; }
     const std::string& alarm() const { return alarm_; }
     int selectedProgram() const { return selectedProgram_; }
     const std::string& currentBlock() const { return currentBlock_; }
@@ -52,9 +68,14 @@ class ProcessControl {
     void setAlarm(std::string text) { alarm_ = std::move(text); }
     /// Marks the program as running / finished (sets PxxSACTIV).
     void setProgramActive(bool active);
-    /// Called by Start in automatic mode with a selected program; returns an
-    /// alarm text or "" on success. Without a hook, Start raises an alarm.
-    std::function<std::string(int program)> startProgram;
+    /// The runner Start/Stop/Reset act on (not owned; nullptr = none, then
+    /// Start raises an alarm).
+    void setRunner(ProgramRunner* runner) { runner_ = runner; }
+    /// The runner reports the end of the program (or an error that ended it).
+    void programFinished(std::string alarm);
+    /// The runner reports a programmed stop (M00/M01): the program stays
+    /// active and held until Start.
+    void programStopped(std::string message);
 
     /// "P00" for process 0: the prefix of this process's signal names.
     std::string signalPrefix() const;
@@ -66,6 +87,8 @@ class ProcessControl {
     int process_;
     OperatingMode mode_ = OperatingMode::Automatic;
     bool active_ = false;
+    bool held_ = false;
+    ProgramRunner* runner_ = nullptr;
     int selectedProgram_ = 0;
     std::string currentBlock_;
     std::string alarm_;

@@ -13,7 +13,7 @@ ProgramDirectoryModel::ProgramDirectoryModel(mtc::hmi::CellSession* session, int
 void ProgramDirectoryModel::reload() {
     beginResetModel();
     numbers_.clear();
-    for (const auto* program : session_->programs(slot_))
+    for (const auto& program : session_->programs(slot_))
         numbers_.push_back(program->number);
     endResetModel();
 }
@@ -24,14 +24,14 @@ int ProgramDirectoryModel::rowCount(const QModelIndex& parent) const {
 
 QVariant ProgramDirectoryModel::data(const QModelIndex& index, int role) const {
     if (!index.isValid() || index.row() >= numbers_.size()) return {};
-    const auto* program = session_->program(slot_, numbers_[index.row()]);
+    const auto program = session_->program(slot_, numbers_[index.row()]);
     if (!program) return {};
     if (role == Qt::DisplayRole) {
         const bool selected = session_->control(slot_).selectedProgram() == program->number;
         return QString("%1 %2  %3")
             .arg(selected ? "→" : " ")
             .arg(program->number, 3, 10, QChar('0'))
-            .arg(program->fileName);
+            .arg(QString::fromStdString(program->name));
     }
     if (role == Qt::UserRole) return program->number;
     return {};

@@ -47,8 +47,8 @@ void ProgramsScreen::activated() {
 
 void ProgramsScreen::showListing() {
     const int number = model_->programAt(list_->currentIndex().row());
-    const auto* program = context().session->program(context().process, number);
-    listing_->setPlainText(program ? program->text : QString());
+    const auto program = context().session->program(context().process, number);
+    listing_->setPlainText(program ? QString::fromStdString(program->source) : QString());
 }
 
 void ProgramsScreen::selectCurrent() {

@@ -1,10 +1,14 @@
 // The panel shell driven by keys: soft keys, stations, machine keys, settings.
+#include <QFile>
 #include <QLabel>
 #include <QPushButton>
 #include <QSettings>
 #include <QStackedWidget>
+#include <QTemporaryDir>
 
 #include "PanelFixture.h"
+#include "cnc_core/machine/SimulatedMachine.h"
+#include "hmi/SimulationClock.h"
 #include "hmi/SoftKeyBar.h"
 
 using mtc::core::ControlKey;
@@ -108,6 +112,74 @@ class PanelShellTest : public QObject {
         QVERIFY(log.size() >= 5);
         QCOMPARE(QString::fromStdString(log.front().name), QString("P00SAUTO"));
         QCOMPARE(QString::fromStdString(log.back().name), QString("mBPREP"));
+    }
+
+    void startRunsTheProgramInSimulatedTimeUntilItsEnd() {
+        QTemporaryDir dir;
+        const QString path = dir.filePath("drill.nc");
+        QFile file(path);
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        file.write(
+            "N0001 G0 G90 X10 Y10 Z5\nN0002 G1 Z-1 F600\nN0003 X50\n"
+            "N0004 M00\nN0005 X10\nN0006 M30\n");
+        file.close();
+        mtc::hmi::PanelOptions options;
+        options.program = path;
+        PanelFixture panel;
+        QString error;
+        QVERIFY2(mtc::hmi::applyStartOptions(options, *panel.session, *panel.window, error),
+                 qPrintable(error));
+        auto& mill = panel.session->control(0);
+        QVERIFY(mill.selectedProgram() != 0);
+        panel.session->clock(0).setSpeed(1000);
+        panel.press(Qt::Key_F5, Qt::ShiftModifier);  // Start
+        QVERIFY(mill.programActive());
+        QCOMPARE(mill.signalTable().get("P00SACTIV"), 1);
+        QTRY_VERIFY(mill.programHeld());  // M00 programmed stop
+        QCOMPARE(QString::fromStdString(mill.currentBlock()), QString("N0004"));
+        QCOMPARE(mill.signalTable().get("P00SHOLD"), 1);
+        QVERIFY(panel.window->findChild<QLabel*>("headerProgram")->text().contains("N0004"));
+        panel.press(Qt::Key_F5, Qt::ShiftModifier);  // Start continues
+        QTRY_VERIFY(!mill.programActive());
+        QVERIFY2(mill.alarm().empty(), mill.alarm().c_str());
+        QCOMPARE(mill.signalTable().get("P00SACTIV"), 0);
+        QCOMPARE(mill.signalTable().get("P00SHOLD"), 0);
+        // 5 + 6 + 40 + 40 mm: the simulated machine took its time for each move.
+        QVERIFY(panel.session->machine(0).seconds() > 8.0);
+    }
+
+    void stopHoldsAndControlResetAbandonsTheRun() {
+        PanelFixture panel;
+        auto& mill = panel.session->control(0);
+        panel.session->addProgram(0, 50, "slow.nc", "N0001 G1 G90 X300 F10\nN0002 M30\n");
+        QVERIFY(panel.session->selectProgram(0, 50));
+        panel.press(Qt::Key_F5, Qt::ShiftModifier);
+        QVERIFY(mill.programActive());
+        QVERIFY(panel.session->clock(0).running());
+        panel.press(Qt::Key_F6, Qt::ShiftModifier);  // Stop: feed hold
+        QVERIFY(mill.programActive());
+        QVERIFY(mill.programHeld());
+        QVERIFY(!panel.session->clock(0).running());
+        panel.press(Qt::Key_F3, Qt::ShiftModifier);  // Manual refused while active
+        QCOMPARE(mill.mode(), mtc::core::OperatingMode::Automatic);
+        QVERIFY(!mill.alarm().empty());
+        panel.press(Qt::Key_F7, Qt::ShiftModifier);  // Control reset
+        QVERIFY(!mill.programActive());
+        QVERIFY(!mill.programHeld());
+        QVERIFY(mill.alarm().empty());
+        QVERIFY(!panel.session->clock(0).running());
+    }
+
+    void aProgramErrorEndsTheRunWithAnAlarm() {
+        PanelFixture panel;
+        auto& mill = panel.session->control(0);
+        panel.session->addProgram(0, 51, "bad.nc", "N0001 G1 X10 F100\nN0002 T999\nN0003 M30\n");
+        QVERIFY(panel.session->selectProgram(0, 51));
+        panel.session->clock(0).setSpeed(1000);
+        panel.press(Qt::Key_F5, Qt::ShiftModifier);
+        QTRY_VERIFY(!mill.programActive());
+        QVERIFY(!mill.alarm().empty());
+        QVERIFY2(QString::fromStdString(mill.alarm()).contains("N0002"), mill.alarm().c_str());
     }
 
     void settingsKeepScreensStationAndGeometry() {

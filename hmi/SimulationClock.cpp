@@ -1,0 +1,104 @@
+#include "hmi/SimulationClock.h"
+
+#include "cnc_core/interp/Interpreter.h"
+#include "cnc_core/machine/SimulatedMachine.h"
+
+namespace mtc::hmi {
+
+namespace {
+constexpr int kTickMs = 20;
+constexpr int kMaxBlocksPerTick = 20000;  // keeps a tick well under a frame
+
+std::string firstProblem(const mtc::core::DiagnosticList& diagnostics, const char* fallback) {
+    for (const auto& d : diagnostics.items())
+        if (d.severity == mtc::core::Severity::Error) return mtc::core::formatDiagnostic(d);
+    return fallback;
+}
+}  // namespace
+
+SimulationClock::SimulationClock(mtc::core::Interpreter& interpreter,
+                                 mtc::core::SimulatedMachine& machine,
+                                 mtc::core::ProcessControl& control, QObject* parent)
+    : QObject(parent), interpreter_(interpreter), machine_(machine), control_(control) {
+    timer_.setInterval(kTickMs);
+    connect(&timer_, &QTimer::timeout, this, &SimulationClock::tick);
+}
+
+std::string SimulationClock::start(int number) {
+    mtc::core::DiagnosticList diagnostics;
+    if (!interpreter_.select(number, 0, &diagnostics))
+        return firstProblem(diagnostics, "the program cannot be selected");
+    machine_.reset();
+    lastProgram_.reset();
+    beginTiming();
+    showCurrentBlock();
+    return {};
+}
+
+std::string SimulationClock::resume() {
+    beginTiming();
+    return {};
+}
+
+void SimulationClock::hold() {
+    timer_.stop();
+}
+
+void SimulationClock::reset() {
+    timer_.stop();
+    interpreter_.controlReset();
+    machine_.reset();
+    lastProgram_.reset();
+    control_.setCurrentBlock({});
+    emit changed();
+}
+
+void SimulationClock::beginTiming() {
+    simulatedBase_ = machine_.seconds();
+    realTime_.start();
+    timer_.start();
+}
+
+void SimulationClock::tick() {
+    using mtc::core::RunStatus;
+    const double target = simulatedBase_ + realTime_.elapsed() / 1000.0 * speed_;
+    for (int n = 0; n < kMaxBlocksPerTick && machine_.seconds() <= target; ++n) {
+        const auto& state = interpreter_.state();
+        lastProgram_ = state.program;
+        lastBlock_ = state.block;
+        auto result = interpreter_.step();
+        switch (result.status) {
+            case RunStatus::Running:
+                continue;
+            case RunStatus::Ended:
+                return finish({});
+            case RunStatus::Stopped:
+                timer_.stop();
+                control_.programStopped("Programmed stop: press Start to continue");
+                showCurrentBlock();
+                return;
+            case RunStatus::TargetReached:
+                return finish({});
+            case RunStatus::BudgetExceeded:
+            case RunStatus::Error:
+                return finish(
+                    firstProblem(result.diagnostics, "the program stopped with an error"));
+        }
+    }
+    showCurrentBlock();
+}
+
+void SimulationClock::finish(const std::string& alarm) {
+    timer_.stop();
+    showCurrentBlock();
+    control_.programFinished(alarm);
+    emit changed();
+}
+
+void SimulationClock::showCurrentBlock() {
+    // The block executed last is the one the operator sees as "current".
+    control_.setCurrentBlock(lastProgram_ ? lastProgram_->blockId(lastBlock_) : std::string());
+    emit changed();
+}
+
+}  // namespace mtc::hmi

@@ -1,0 +1,60 @@
+#pragma once
+
+#include <QElapsedTimer>
+#include <QObject>
+#include <QTimer>
+#include <functional>
+
+#include "cnc_core/language/Program.h"
+#include "cnc_core/machine/ProcessControl.h"
+
+namespace mtc::core {
+class Interpreter;
+class SimulatedMachine;
+}  // namespace mtc::core
+
+namespace mtc::hmi {
+
+/// Steps one process's interpreter in simulated time: every tick it executes
+/// blocks until the simulated machine's clock has caught up with real time ×
+/// speed (at most a bounded number of blocks per tick, so the GUI stays
+/// responsive). It is the ProgramRunner behind the Start/Stop/Reset keys.
+class SimulationClock : public QObject, public mtc::core::ProgramRunner {
+    Q_OBJECT
+  public:
+    SimulationClock(mtc::core::Interpreter& interpreter, mtc::core::SimulatedMachine& machine,
+                    mtc::core::ProcessControl& control, QObject* parent = nullptr);
+
+    std::string start(int number) override;
+    std::string resume() override;
+    void hold() override;
+    void reset() override;
+
+    /// Simulated seconds per real second (default 1; tests and demos go faster).
+    void setSpeed(double speed) { speed_ = speed > 0 ? speed : 1.0; }
+    double speed() const { return speed_; }
+    bool running() const { return timer_.isActive(); }
+    /// Runs one tick now (the timer calls this; tests may too).
+    void tick();
+
+  signals:
+    /// The process's state changed (block, position, end of program).
+    void changed();
+
+  private:
+    void beginTiming();
+    void finish(const std::string& alarm);
+    void showCurrentBlock();
+
+    mtc::core::Interpreter& interpreter_;
+    mtc::core::SimulatedMachine& machine_;
+    mtc::core::ProcessControl& control_;
+    QTimer timer_;
+    QElapsedTimer realTime_;
+    double simulatedBase_ = 0.0;
+    double speed_ = 1.0;
+    mtc::core::ProgramPtr lastProgram_;  ///< program and block executed last
+    std::uint32_t lastBlock_ = 0;
+};
+
+}  // namespace mtc::hmi
