@@ -57,8 +57,8 @@ bool prepareRun(const CliOptions& options, PreparedRun& run, core::DiagnosticLis
     return true;
 }
 
-/// Axis names for motion and position: the configuration names the
-/// interpreter uses; spindles without rotary axis capability are left out.
+/// Axis names for motion and position as the interpreter names the axes
+/// (Interpreter::axisName); spindles without rotary axis capability are left out.
 std::vector<std::string> reportedAxisNames(const core::Interpreter& interpreter) {
     std::vector<std::string> names;
     const core::ProcessAxes& axes = interpreter.axes();
@@ -158,6 +158,23 @@ void writeTextTail(const MotionOutput& sink, const RunOutcome& outcome,
     std::printf("status: %s\n", diagnostics.hasErrors() ? "error" : "ok");
 }
 
+/// Writes everything after the motion list: the JSON tail (when `json` is
+/// given) or the text summary, with the final state of `interpreter`.
+void writeReport(core::Interpreter& interpreter, const PreparedRun& run, const MotionOutput& sink,
+                 const RunOutcome& outcome, const core::DiagnosticList& diagnostics,
+                 JsonWriter* json) {
+    const Page61Buffers page61 = readPage61(interpreter, run.request.process);
+    const std::vector<double> positions = programmedPositions(interpreter);
+    const std::vector<std::string> names = reportedAxisNames(interpreter);
+    const StateView view{
+        interpreter.state(), *run.process, interpreter.axes(), page61, names, positions};
+    if (json != nullptr) {
+        writeJsonTail(*json, sink, outcome, diagnostics, view);
+    } else {
+        writeTextTail(sink, outcome, diagnostics, view);
+    }
+}
+
 }  // namespace
 
 int runRunCommand(const CliOptions& options) {
@@ -190,16 +207,7 @@ int runRunCommand(const CliOptions& options) {
         outcome = execute(interpreter, run, options.maxBlocks, diagnostics);
     if (mode == MotionMode::Json) json.endArray();
 
-    const Page61Buffers page61 = readPage61(interpreter, run.request.process);
-    const std::vector<double> positions = programmedPositions(interpreter);
-    const std::vector<std::string> names = reportedAxisNames(interpreter);
-    const StateView view{
-        interpreter.state(), *run.process, interpreter.axes(), page61, names, positions};
-    if (options.json) {
-        writeJsonTail(json, sink, outcome, diagnostics, view);
-    } else {
-        writeTextTail(sink, outcome, diagnostics, view);
-    }
+    writeReport(interpreter, run, sink, outcome, diagnostics, options.json ? &json : nullptr);
     return exitCodeFor(false, diagnostics);
 }
 
