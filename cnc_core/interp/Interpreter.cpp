@@ -99,6 +99,17 @@ bool Interpreter::select(ProgramPtr program, std::uint32_t startBlock,
     return true;
 }
 
+SourceLocation Interpreter::currentLocation() const {
+    const Program& program = *state_.program;
+    // Past the last block: point at the last block (or line 1 of an empty program).
+    const std::uint32_t index = state_.block < program.blocks.size() || program.blocks.empty()
+                                    ? state_.block
+                                    : static_cast<std::uint32_t>(program.blocks.size() - 1);
+    SourceLocation where = blockLocation(program, index);
+    if (where.line == 0) where.line = 1;
+    return where;
+}
+
 void Interpreter::setStopTarget(std::optional<StopTarget> target) {
     target_ = target;
     targetArrivals_ = 0;
@@ -151,7 +162,7 @@ RunResult Interpreter::run(std::uint64_t budget) {
     for (;;) {
         if (result.blocksInterpreted >= budget) {
             result.diagnostics.error(
-                "BLOCK_BUDGET", blockLocation(*state_.program, state_.block),
+                "BLOCK_BUDGET", currentLocation(),
                 "the run was stopped after " + std::to_string(budget) +
                     " interpreted blocks (block budget); is the program an endless loop?");
             result.status = RunStatus::BudgetExceeded;
@@ -182,13 +193,14 @@ Interpreter::Outcome Interpreter::executeNext(DiagnosticList& diagnostics,
     const std::uint32_t index = state_.block;
     if (index < program.blocks.size()) block_ = program.blocks[index];
     if (index >= program.blocks.size() || (block_.flags & kBlockProgramEnd)) {
+        const SourceLocation where = currentLocation();
         if (!state_.callStack.empty()) {
-            diagnostics.error("SUBROUTINE_WITHOUT_RTS", blockLocation(program, index),
+            diagnostics.error("SUBROUTINE_WITHOUT_RTS", where,
                               "the end of program " + std::to_string(program.number) +
                                   " was reached inside a subroutine (RTS missing)");
             return Outcome::Error;
         }
-        diagnostics.warning("PROGRAM_END_MISSING", blockLocation(program, index),
+        diagnostics.warning("PROGRAM_END_MISSING", where,
                             "the program ended without BST, RET, M02 or M30");
         programEnd();
         return Outcome::Ended;

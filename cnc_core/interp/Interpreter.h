@@ -175,6 +175,8 @@ class Interpreter {
 
     Outcome executeNext(DiagnosticList& diagnostics, std::uint64_t& executed);
     bool checkedBlock(const Program& program, std::uint32_t index, DiagnosticList& diagnostics);
+    /// Where the program pointer is (the last block when it is past the end).
+    SourceLocation currentLocation() const;
     /// Location of the current block (block_) for the sink, without printf.
     SourceLocation sinkLocation(const Program& program, std::uint32_t index) const;
     Outcome commit(const Program& program, std::uint32_t index, DiagnosticList& diagnostics);
