@@ -476,6 +476,10 @@ bool BlockParser::error(const char* code, std::uint32_t offset, std::string mess
     block_.flags |= kBlockHasError;
     context_.report(Severity::Error, code, lineOf(offset), columnOf(offset),
                     formatBlockId(block_.number, block_.subNumber), std::move(message));
+    // Keep the block's comment for display even though its words are skipped.
+    std::uint32_t semicolon = commentStart();
+    if (block_.comment.empty() && semicolon < source_.end)
+        block_.comment = trimmedSpan(semicolon + 1, source_.end);
     lexer_.seek(source_.end);
     return false;
 }

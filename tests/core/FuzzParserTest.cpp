@@ -132,9 +132,9 @@ void checkConsistent(const Program& p, const std::string& input) {
 
 TEST(FuzzParser, RandomAndMutatedProgramsGiveDiagnosticsNotCrashes) {
     std::mt19937 rng(20240611u);
-    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(4);
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(3);
     int programs = 0, withDiagnostics = 0;
-    for (; programs < 30000; ++programs) {
+    for (; programs < 200000; ++programs) {
         if (programs >= 3000 && std::chrono::steady_clock::now() > deadline) break;
         std::string input;
         switch (programs % 4) {

@@ -63,9 +63,10 @@ TEST(ParserErrors, EachCodeWithItsColumn) {
 }
 
 TEST(ParserErrors, WordsBeforeTheErrorAreKept) {
-    Program p = parse("N0001 G1 X5 H7 Y3");
+    Program p = parse("N0001 G1 X5 H7 Y3 ;still shown");
     EXPECT_EQ(describeBlock(p, 0), "G1 X5");
     EXPECT_TRUE(p.blocks[0].flags & kBlockHasError);
+    EXPECT_EQ(p.text(p.blocks[0].comment), "still shown");
 }
 
 TEST(ParserErrors, BlockIdInDiagnostics) {
