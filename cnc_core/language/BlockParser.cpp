@@ -169,6 +169,8 @@ bool BlockParser::parseNextWord() {
             return error("PARSE_UNBALANCED_PARENTHESES", start,
                          describeChar(c) + " without a matching opening bracket");
         case '.':
+            if (Lexer::isDigit(lexer_.peek(1)))
+                return error("PARSE_UNEXPECTED_NUMBER", start, "value without an address letter");
             return error("PARSE_MISPLACED_LABEL", start,
                          "a label must stand at the start of the block (after the block number)");
         case ':':
@@ -180,8 +182,12 @@ bool BlockParser::parseNextWord() {
         default:
             break;
     }
-    if (Lexer::isDigit(c) || c == '-' || c == '+')
-        return error("PARSE_UNEXPECTED_NUMBER", start, "value without an address letter");
+    bool number =
+        Lexer::isDigit(c) || (c == '.' && Lexer::isDigit(lexer_.peek(1))) ||
+        ((c == '-' || c == '+') && (Lexer::isDigit(lexer_.peek(1)) || lexer_.peek(1) == '.'));
+    if (number) return error("PARSE_UNEXPECTED_NUMBER", start, "value without an address letter");
+    if (c == '-' || c == '+' || c == '*' || c == '=' || c == ',')
+        return error("PARSE_UNEXPECTED_CHARACTER", start, describeChar(c) + " cannot start a word");
     if (c >= 'a' && c <= 'z')
         return error("LEX_BAD_CHAR", start,
                      describeChar(c) + ": NC words are written in capital letters");
