@@ -13,6 +13,7 @@ namespace mtc::core {
 class BlockList {
   public:
     class const_iterator;
+    /// Number of blocks.
     std::size_t size() const { return packed_.size(); }
     bool empty() const { return packed_.empty(); }
     /// The block at `index` (by value). Precondition: index < size().
@@ -27,9 +28,13 @@ class BlockList {
     void set(std::size_t index, const Block& block);
     /// N number of block `index` without unpacking the rest (fast path).
     std::int32_t numberAt(std::size_t index) const;
+    /// Reserves room for `count` blocks (no effect on the contents).
     void reserve(std::size_t count) { packed_.reserve(count); }
+    /// Drops unused capacity (only when worthwhile).
     void shrink_to_fit();
+    /// Removes every block.
     void clear();
+    /// Bytes held (for memory measurements).
     std::size_t memoryBytes() const;
 
   private:

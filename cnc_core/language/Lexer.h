@@ -57,15 +57,19 @@ class Lexer {
     Lexer(std::string_view source, std::uint32_t begin, std::uint32_t end)
         : text_(source.data()), pos_(begin), end_(end) {}
 
+    /// Offset of the next character in the source.
     std::uint32_t position() const { return pos_; }
+    /// End of the scanned range.
     std::uint32_t end() const { return end_; }
     /// Moves to `offset` (clamped to the end).
     void seek(std::uint32_t offset) { pos_ = offset < end_ ? offset : end_; }
+    /// True when the range is used up.
     bool atEnd() const { return pos_ >= end_; }
     /// The character at position()+ahead, or -1 past the end.
     int peek(std::uint32_t ahead = 0) const {
         return pos_ + ahead < end_ ? static_cast<unsigned char>(text_[pos_ + ahead]) : -1;
     }
+    /// Moves forward by `count` characters (not past the end).
     void advance(std::uint32_t count = 1) { seek(pos_ + count); }
 
     static bool isBlank(int c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n'; }

@@ -13,6 +13,7 @@ namespace mtc::core {
 class WordList {
   public:
     class const_iterator;
+    /// Number of words.
     std::size_t size() const { return packed_.size(); }
     bool empty() const { return packed_.empty(); }
     /// The word at `index` (by value). Precondition: index < size().
@@ -44,9 +45,11 @@ class WordList {
     }
     /// Replaces the word at `index`. Precondition: index < size().
     void set(std::size_t index, const Word& word);
+    /// Reserves room for `count` words (no effect on the contents).
     void reserve(std::size_t count) { packed_.reserve(count); }
     /// Drops unused capacity (only when worthwhile).
     void shrink_to_fit();
+    /// Removes every word.
     void clear();
     /// Bytes held (for memory measurements).
     std::size_t memoryBytes() const;

@@ -35,8 +35,9 @@ const char* kShaft =
 class TempDir {
   public:
     TempDir() {
-        path_ = fs::temp_directory_path() /
-                ("mtc-datfile-" + std::to_string(::getpid()) + "-" + std::to_string(counter_++));
+        const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
+        path_ = fs::temp_directory_path() / ("mtc-datfile-" + std::to_string(::getpid()) + "-" +
+                                             test->test_suite_name() + "-" + test->name());
         fs::remove_all(path_);
         fs::create_directories(path_);
     }
@@ -48,7 +49,6 @@ class TempDir {
     const fs::path& path() const { return path_; }
 
   private:
-    static inline int counter_ = 0;
     fs::path path_;
 };
 
