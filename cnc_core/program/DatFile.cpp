@@ -1,11 +1,9 @@
 #include "cnc_core/program/DatFile.h"
 
 #include <cstdio>
-#include <filesystem>
-#include <fstream>
-#include <sstream>
 
 #include "cnc_core/program/AtomicWrite.h"
+#include "cnc_core/program/FileText.h"
 
 namespace mtc::core {
 
@@ -62,21 +60,16 @@ Program DatFile::parse(std::string text, const std::string& fileName, ParseOptio
 Program DatFile::read(const std::string& path, ParseOptions options) {
     std::optional<DatFileName> name = parseDatFileName(path);
     if (options.programNumber == 0 && name) options.programNumber = name->number;
-    std::error_code ignored;
-    bool regular = std::filesystem::is_regular_file(path, ignored);
-    std::ifstream file;
-    if (regular) file.open(path, std::ios::binary);
-    std::ostringstream content;
-    if (file) content << file.rdbuf();
-    if (!regular || !file || file.bad()) {
+    std::string text, error;
+    if (!readFileText(path, text, error)) {
         Program program;
         program.number = options.programNumber;
         program.name = options.name.empty() ? baseName(path) : options.name;
         program.diagnostics.error("FILE_UNREADABLE", SourceLocation{program.number, "", 0, 0},
-                                  "cannot read program file " + path);
+                                  error);
         return program;
     }
-    return parse(std::move(content).str(), path, std::move(options));
+    return parse(std::move(text), path, std::move(options));
 }
 
 std::string DatFile::format(const Program& program, const DatFileName& name) {

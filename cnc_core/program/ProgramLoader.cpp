@@ -3,13 +3,12 @@
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
-#include <fstream>
 #include <memory>
 #include <optional>
-#include <sstream>
 
 #include "cnc_core/program/DatFile.h"
 #include "cnc_core/program/DatFileName.h"
+#include "cnc_core/program/FileText.h"
 
 namespace mtc::core {
 
@@ -47,14 +46,12 @@ std::size_t ProgramLoader::loadDirectory(const std::string& directory) {
     std::sort(files.begin(), files.end());
     std::size_t stored = 0;
     for (const auto& path : files) {
-        std::ifstream file(path, std::ios::binary);
-        std::ostringstream content;
-        if (file) content << file.rdbuf();
-        if (!file || file.bad()) {
-            diagnostics_.error("FILE_UNREADABLE", SourceLocation{}, "cannot read " + path);
+        std::string text, why;
+        if (!readFileText(path, text, why)) {
+            diagnostics_.error("FILE_UNREADABLE", SourceLocation{}, why);
             continue;
         }
-        stored += store(path, std::move(content).str()) ? 1 : 0;
+        stored += store(path, std::move(text)) ? 1 : 0;
     }
     return stored;
 }

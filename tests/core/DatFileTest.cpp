@@ -10,6 +10,7 @@
 #include "cnc_core/program/AtomicWrite.h"
 #include "cnc_core/program/DatFile.h"
 #include "cnc_core/program/DatFileName.h"
+#include "cnc_core/program/FileText.h"
 #include "cnc_core/program/ProgramLoader.h"
 
 using namespace mtc::core;
@@ -255,6 +256,21 @@ TEST(DatFileIo, UnreadableFileAndNameMismatch) {
     Program mismatch = DatFile::parse(kShaft, "N1010009.DAT");
     EXPECT_NE(find(mismatch, "DAT_NAME_MISMATCH"), nullptr);
     EXPECT_EQ(mismatch.number, 9);  // the file name decides
+}
+
+TEST(DatFileIo, ReadFileText) {
+    TempDir dir;
+    std::string text, error;
+    std::string binary("N0000 G1\0\xff\n", 11);
+    writeFile(dir.file("a.DAT"), binary);
+    ASSERT_TRUE(readFileText(dir.file("a.DAT"), text, error));
+    EXPECT_EQ(text, binary);
+    writeFile(dir.file("empty.DAT"), "");
+    ASSERT_TRUE(readFileText(dir.file("empty.DAT"), text, error));
+    EXPECT_TRUE(text.empty());
+    EXPECT_FALSE(readFileText(dir.file("missing.DAT"), text, error));
+    EXPECT_FALSE(error.empty());
+    EXPECT_FALSE(readFileText(dir.path().string(), text, error));
 }
 
 TEST(AtomicWrite, ReplacesTheFileAndLeavesNoTemporary) {
