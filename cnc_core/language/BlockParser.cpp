@@ -151,6 +151,11 @@ bool BlockParser::parseNextWord() {
     std::uint32_t start = lexer_.position();
     int c = lexer_.peek();
     if (Lexer::isUpper(c)) {
+        int next = lexer_.peek(1);
+        if (!Lexer::isUpper(next) && next != '_') {  // fast path: address letter
+            lexer_.advance();
+            return parseAddress(static_cast<char>(c), start);
+        }
         std::string_view name = lexer_.scanIdentifier();
         if (name.size() == 1) return parseAddress(name[0], start);
         return parseKeyword(name, start);
