@@ -12,19 +12,19 @@ enum class AxisKind { Linear, Rotary, Spindle };
 
 /// One axis or spindle of a process (axis parameters C...).
 struct AxisConfig {
-    std::string name;                      ///< axis designation 1, e.g. "X", "Z2", "S1"
+    std::string name;  ///< axis designation 1, e.g. "X", "Z2", "S1"
     AxisKind kind = AxisKind::Linear;
     std::vector<std::string> definitions;  ///< Cxx.053: first = base, rest = G20 alternates
     std::string designation2;              ///< Cxx.075, used while G31/G32 is active ("" = none)
     int polarDirection = 0;                ///< Cxx.076 (0/1)
     double minPosition = 0.0;              ///< travel limits; both 0 = endless (rotary)
     double maxPosition = 0.0;
-    double maxVelocity = 10000.0;          ///< mm/min (deg/min for rotary)
-    double maxAcceleration = 2000.0;       ///< mm/s^2 (deg/s^2 for rotary)
+    double maxVelocity = 10000.0;     ///< mm/min (deg/min for rotary)
+    double maxAcceleration = 2000.0;  ///< mm/s^2 (deg/s^2 for rotary)
     // Spindles only:
-    int spindleIndex = 0;                  ///< 1..3 for S1..S3
-    std::string rotaryAxisName;            ///< name in rotary axis mode, e.g. "C"
-    double maxSpeed = 0.0;                 ///< rpm
+    int spindleIndex = 0;        ///< 1..3 for S1..S3
+    std::string rotaryAxisName;  ///< name in rotary axis mode, e.g. "C"
+    double maxSpeed = 0.0;       ///< rpm
 };
 
 /// An M function group: the last output value is kept in M(number).
@@ -71,14 +71,14 @@ struct UserDataPage {
 struct ProcessConfig {
     int index = 0;
     std::string name;
-    std::vector<AxisConfig> axes;        ///< in machine order
-    std::vector<MGroupConfig> mGroups;   ///< groups 1..15 that exist
-    std::vector<ToolConfig> tools;       ///< current tools list
+    std::vector<AxisConfig> axes;       ///< in machine order
+    std::vector<MGroupConfig> mGroups;  ///< groups 1..15 that exist
+    std::vector<ToolConfig> tools;      ///< current tools list
     std::vector<ZeroOffset> zeroOffsets;
     std::vector<UserDataPage> userPages;
     /// Process parameters by number, e.g. "B004" -> "17", "B058" -> "yes".
     std::map<std::string, std::string> parameters;
-    int toolPlaces = 0;  ///< magazine / turret places
+    int toolPlaces = 0;                    ///< magazine / turret places
     std::string toolStorage = "magazine";  ///< "magazine" or "turret"
 
     const AxisConfig* axis(const std::string& name) const;
