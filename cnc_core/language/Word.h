@@ -31,26 +31,24 @@ enum class WordKind : std::uint8_t {
     Command,          ///< other keyword command (MTP, TCH, AXD, GAX, ...): raw args in `text`
 };
 
+/// Jump commands, in groups:
+/// - BRA always; BEQ (= 0), BNE (!= 0), BPL (>= 0), BMI (< 0) test the result
+///   of the last arithmetic;
+/// - BST, RET end the program;
+/// - BSR / RTS: subroutine in the same program or program 99 / return;
+/// - JSR / JMP: other program, by number or variable;
+/// - BES, BER, BEV, JEV: event-dependent (event in eventProcess:eventNumber);
+/// - BRF, BSE, BTE: tool-related branches.
+// clang-format off
 enum class JumpKind : std::uint8_t {
-    BRA,
-    BEQ,
-    BNE,
-    BPL,
-    BMI,  ///< branches on the last arithmetic result
-    BST,
-    RET,  ///< program end
-    BSR,
-    RTS,  ///< subroutine in same program / program 99
-    JSR,
-    JMP,  ///< other program (number or variable)
-    BES,
-    BER,
-    BEV,
-    JEV,  ///< event-dependent (event in eventProcess:eventNumber)
-    BRF,
-    BSE,
-    BTE,  ///< tool-related branches
+    BRA, BEQ, BNE, BPL, BMI,
+    BST, RET,
+    BSR, RTS,
+    JSR, JMP,
+    BES, BER, BEV, JEV,
+    BRF, BSE, BTE,
 };
+// clang-format on
 
 /// Word::flags bits.
 enum WordFlags : std::uint8_t {
