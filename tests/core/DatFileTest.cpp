@@ -12,6 +12,7 @@
 #include "cnc_core/program/DatFileName.h"
 #include "cnc_core/program/FileText.h"
 #include "cnc_core/program/ProgramLoader.h"
+#include "resources/EmbeddedResources.h"
 
 using namespace mtc::core;
 using namespace mtc::core::testing;
@@ -353,6 +354,24 @@ TEST(ProgramLoaderTest, LoadsEmbeddedTexts) {
     ProgramLoader missing(store);
     EXPECT_EQ(missing.loadDirectory("/nonexistent/programs"), 0u);
     EXPECT_EQ(missing.diagnostics().items()[0].code, "FILE_UNREADABLE");
+}
+
+TEST(ProgramLoaderTest, EmbeddedDemoProgramsLoadWithoutErrors) {
+    std::vector<std::pair<std::string, std::string>> files;
+    for (const std::string& name : mtc::resources::list("programs/"))
+        files.emplace_back(name, std::string(mtc::resources::find(name)));
+    ASSERT_FALSE(files.empty());
+    ProgramStore store;
+    ProgramLoader loader(store);
+    EXPECT_EQ(loader.loadTexts(files), files.size());
+    EXPECT_TRUE(loader.diagnostics().empty());
+    for (const auto& [key, program] : store.programs()) {
+        EXPECT_TRUE(program->hasDatHeader) << program->name;
+        for (const auto& d : program->diagnostics.items())
+            ADD_FAILURE() << program->name << ": " << formatDiagnostic(d);
+        ASSERT_FALSE(program->blocks.empty());
+        EXPECT_TRUE(program->blocks.back().flags & kBlockProgramEnd) << program->name;
+    }
 }
 
 }  // namespace
