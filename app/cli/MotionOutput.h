@@ -33,6 +33,9 @@ class MotionOutput : public core::MachineSink {
     void command(const core::SourceLocation& where, const std::string& keyword,
                  const std::string& arguments) override;
 
+    /// False with MotionMode::None: the run does not produce motion at all
+    /// (--no-motion), so motionCount() means nothing.
+    bool reportsMotion() const { return mode_ != MotionMode::None; }
     std::uint64_t motionCount() const { return motions_; }
     std::uint64_t auxiliaryCount() const { return auxiliaries_; }
     std::uint64_t dwellCount() const { return dwells_; }
