@@ -17,281 +17,294 @@ SourceLocation blockLocation(const Program& program, std::uint32_t blockIndex, i
     return where;
 }
 
-bool BlockDecoder::decode(const Program& program, const Block& block, std::uint32_t blockIndex,
-                          BlockInput& input, DiagnosticList& diagnostics) const {
-    input.clear();
-    const std::size_t end =
-        std::min<std::size_t>(block.firstWord + block.wordCount, program.words.size());
+bool BlockDecoder::decode(const Block& block) const {
+    t_.input.clear();
+    const std::size_t end = std::min<std::size_t>(std::size_t{block.firstWord} + block.wordCount,
+                                                  t_.program.words.size());
     bool ok = true;
-    for (std::size_t i = block.firstWord; i < end; ++i) {
-        const Word w = program.words[i];
-        Cursor c{program, blockIndex, static_cast<std::uint32_t>(i), w, input, diagnostics};
-        if (!word(c)) ok = false;
-    }
+    for (std::size_t i = block.firstWord; i < end; ++i)
+        if (!word(t_.program.words[i], static_cast<std::uint32_t>(i))) ok = false;
     return ok;
 }
 
-bool BlockDecoder::error(Cursor& c, const std::string& code, const std::string& message) const {
-    c.diagnostics.error(code, blockLocation(c.program, c.blockIndex, c.word.column), message);
-    return false;
-}
-
-bool BlockDecoder::evaluated(Cursor& c, double& out) const {
-    EvaluationError e;
-    if (evaluator_.evaluate(c.program, c.word.expr, out, e)) return true;
-    return error(c, e.code, e.message);
-}
-
-bool BlockDecoder::notInteger(Cursor& c, double v, const char* what) const {
-    return error(c, "NOT_AN_INTEGER",
-                 std::string(what) + " needs a whole number >= 0, got " + std::to_string(v));
-}
-
-bool BlockDecoder::word(Cursor& c) const {
-    switch (c.word.kind) {
+bool BlockDecoder::word(const Word& w, std::uint32_t index) const {
+    switch (w.kind) {
         case WordKind::G:
-            return gWord(c);
+            return gWord(w);
+        case WordKind::Axis:
+            return axisWord(w);
+        case WordKind::CircleCenter:
+            return centerWord(w);
         case WordKind::M:
         case WordKind::Q:
-            return auxWord(c);
+            return auxWord(w);
         case WordKind::S:
-            return spindleWord(c);
+            return spindleWord(w);
         case WordKind::T:
         case WordKind::E:
         case WordKind::F:
         case WordKind::D:
         case WordKind::EffectiveRadius:
-            return scalarWord(c);
-        case WordKind::Axis:
-            return axisWord(c);
-        case WordKind::CircleCenter:
-            return centerWord(c);
+            return scalarWord(w);
         case WordKind::Assign:
-            return assignment(c);
+            return assignment(w);
         case WordKind::AssignMTD:
-            return machineDataAssignment(c);
+            return machineDataAssignment(w);
         case WordKind::Jump:
-            return jumpWord(c);
+            return jumpWord(w, index);
         case WordKind::Command:
-            return commandWord(c);
+            return commandWord(w, index);
     }
-    return error(c, "UNKNOWN_WORD", "unknown word");
+    return error(w, "UNKNOWN_WORD", "unknown word");
 }
 
-bool BlockDecoder::gWord(Cursor& c) const {
+bool BlockDecoder::gWord(const Word& w) const {
     double v = 0;
     int number = 0;
-    if (!value(c, v) || !integer(c, v, number, "G")) return false;
+    if (!value(w, v) || !integer(w, v, number, "G")) return false;
     const GCodeInfo info = gCodeInfo(number);
-    auto name = [number] { return "G" + std::to_string(number); };
-    switch (info.kind) {
-        case GKind::Unknown:
-            return error(c, "UNKNOWN_G", name() + " is not a G function");
-        case GKind::Unsupported:
-            return error(c, "G_NOT_SUPPORTED", name() + " is not executed by this simulator");
-        case GKind::Dwell:
-            c.input.dwell = true;
-            c.input.dwellColumn = c.word.column;
-            return true;
-        case GKind::SpeedLimit:
-            c.input.speedLimit = true;
-            return true;
-        case GKind::Modal:
-            break;
+    BlockInput& in = t_.input;
+    if (info.kind == GKind::Modal) {
+        auto& slot = in.g[static_cast<size_t>(info.group)];
+        if (slot >= 0 && slot != number) return badG(w, number, info, slot);
+        slot = static_cast<std::int16_t>(number);
+        in.gColumn[static_cast<size_t>(info.group)] = w.column;
+        in.gMask |= 1u << info.group;
+        return true;
     }
-    auto& slot = c.input.g[static_cast<size_t>(info.group)];
-    if (slot >= 0 && slot != number)
-        return error(c, "G_GROUP_CONFLICT",
-                     name() + " and G" + std::to_string(slot) + " belong to the same group " +
-                         std::to_string(info.group));
-    slot = static_cast<std::int16_t>(number);
-    c.input.gColumn[static_cast<size_t>(info.group)] = c.word.column;
+    if (info.kind == GKind::Dwell) {
+        in.dwell = true;
+        in.dwellColumn = w.column;
+        return true;
+    }
+    if (info.kind == GKind::SpeedLimit) {
+        in.speedLimit = true;
+        return true;
+    }
+    return badG(w, number, info, -1);
+}
+
+bool BlockDecoder::axisWord(const Word& w) const {
+    const AxisLookup found = names_.find(w.letter, w.axisIndex);
+    if (found.status != AxisNameStatus::Ok) {
+        if (found.status != AxisNameStatus::TransformedLinear) return badAxis(w, found);
+        designationOneWarning(w, found);
+    }
+    double v = 0;
+    if (!value(w, v)) return false;
+    BlockInput& in = t_.input;
+    if (in.axisCount == BlockInput::kMaxAxisWords)
+        return error(w, "TOO_MANY_AXES", "more than 16 axis words in one block");
+    const auto axis = static_cast<size_t>(found.axis);
+    const auto bit = static_cast<std::uint16_t>(1u << found.axis);
+    if ((in.axisMask & bit) && in.repeatedAxisColumn == 0)
+        in.repeatedAxisColumn = w.column;  // reported by the executor (G20 or not)
+    in.axisMask |= bit;
+    in.axisValue[axis] = v;
+    in.axisColumn[axis] = w.column;
+    const auto slot = static_cast<size_t>(in.axisCount++);
+    in.axisOrder[slot] = static_cast<std::int8_t>(found.axis);
+    in.orderValue[slot] = v;
+    in.orderColumn[slot] = w.column;
     return true;
 }
 
-bool BlockDecoder::auxWord(Cursor& c) const {
-    const bool isM = c.word.kind == WordKind::M;
+bool BlockDecoder::centerWord(const Word& w) const {
+    const int slot = w.letter - 'I';  // I J K
+    if (slot < 0 || slot > 2) return error(w, "UNKNOWN_WORD", "unknown interpolation parameter");
+    double v = 0;
+    if (!value(w, v)) return false;
+    BlockInput& in = t_.input;
+    const auto bit = static_cast<std::uint8_t>(1u << slot);
+    if (in.centerMask & bit) return twice(w, std::string(1, w.letter));
+    in.centerMask |= bit;
+    in.center[static_cast<size_t>(slot)] = v;
+    in.centerColumn = w.column;
+    return true;
+}
+
+bool BlockDecoder::auxWord(const Word& w) const {
+    const bool isM = w.kind == WordKind::M;
     double v = 0;
     int number = 0;
-    if (!value(c, v) || !integer(c, v, number, isM ? "M" : "Q")) return false;
-    int& count = isM ? c.input.mCount : c.input.qCount;
+    if (!value(w, v) || !integer(w, v, number, isM ? "M" : "Q")) return false;
+    int& count = isM ? t_.input.mCount : t_.input.qCount;
     if (count == BlockInput::kMaxAux)
-        return error(c, "TOO_MANY_AUX", "more than 8 M or Q functions in one block");
-    (isM ? c.input.m : c.input.q)[static_cast<size_t>(count++)] = {number, c.word.column};
+        return error(w, "TOO_MANY_AUX", "more than 8 M or Q functions in one block");
+    (isM ? t_.input.m : t_.input.q)[static_cast<size_t>(count++)] = {number, w.column};
     return true;
 }
 
-bool BlockDecoder::spindleWord(Cursor& c) const {
+bool BlockDecoder::spindleWord(const Word& w) const {
     double v = 0;
-    if (!value(c, v)) return false;
-    const int spindle = c.word.axisIndex == 0 ? 0 : c.word.axisIndex;
-    const int slot = spindle == 0 ? 0 : spindle;
-    if (spindle != 0 && axes_.spindleAxis(spindle) < 0)
-        return error(c, "AXIS_UNKNOWN",
-                     "S" + std::to_string(spindle) + ": this process has no spindle " +
-                         std::to_string(spindle));
+    if (!value(w, v)) return false;
+    const int slot = w.axisIndex;  // 0 = S without index (reference spindle)
+    if (slot != 0 && axes_.spindleAxis(slot) < 0)
+        return error(
+            w, "AXIS_UNKNOWN",
+            "S" + std::to_string(slot) + ": this process has no spindle " + std::to_string(slot));
     const auto bit = static_cast<std::uint8_t>(1u << slot);
-    if (c.input.spindleMask & bit) return error(c, "WORD_TWICE", "spindle speed programmed twice");
-    if (v < 0) return error(c, "VALUE_RANGE", "a spindle speed cannot be negative");
-    c.input.spindleMask |= bit;
-    c.input.spindle[static_cast<size_t>(slot)] = v;
+    if (t_.input.spindleMask & bit) return twice(w, "spindle speed");
+    if (v < 0) return error(w, "VALUE_RANGE", "a spindle speed cannot be negative");
+    t_.input.spindleMask |= bit;
+    t_.input.spindle[static_cast<size_t>(slot)] = v;
     return true;
 }
 
-bool BlockDecoder::scalarWord(Cursor& c) const {
+bool BlockDecoder::scalarWord(const Word& w) const {
     double v = 0;
-    if (!value(c, v)) return false;
-    BlockInput& in = c.input;
-    auto once = [&](bool& flag, const char* name) {
-        if (flag)
-            return error(c, "WORD_TWICE", std::string(name) + " programmed twice in one block");
-        flag = true;
-        return true;
-    };
-    switch (c.word.kind) {
+    if (!value(w, v)) return false;
+    BlockInput& in = t_.input;
+    switch (w.kind) {
         case WordKind::T:
-            in.toolColumn = c.word.column;
-            return once(in.hasTool, "T") && integer(c, v, in.tool, "T");
+            if (in.hasTool) return twice(w, "T");
+            in.hasTool = true;
+            in.toolColumn = w.column;
+            return integer(w, v, in.tool, "T");
         case WordKind::E:
-            return once(in.hasEdge, "E") && integer(c, v, in.edge, "E");
+            if (in.hasEdge) return twice(w, "E");
+            in.hasEdge = true;
+            return integer(w, v, in.edge, "E");
         case WordKind::D:
-            return once(in.hasCorrection, "D") && integer(c, v, in.correction, "D");
+            if (in.hasCorrection) return twice(w, "D");
+            in.hasCorrection = true;
+            return integer(w, v, in.correction, "D");
         case WordKind::F:
-            if (!once(in.hasFeed, "F")) return false;
-            if (v < 0) return error(c, "VALUE_RANGE", "F cannot be negative");
+            if (in.hasFeed) return twice(w, "F");
+            if (v < 0) return error(w, "VALUE_RANGE", "F cannot be negative");
+            in.hasFeed = true;
             in.feed = v;
-            in.feedColumn = c.word.column;
+            in.feedColumn = w.column;
             return true;
         default:
-            if (!once(in.hasRadius, "RI")) return false;
+            if (in.hasRadius) return twice(w, "RI");
+            in.hasRadius = true;
             in.radius = v;
-            in.radiusColumn = c.word.column;
+            in.radiusColumn = w.column;
             return true;
     }
 }
 
-bool BlockDecoder::axisWord(Cursor& c) const {
-    const AxisLookup found = names_.find(c.word.letter, c.word.axisIndex);
-    AxisName written{c.word.letter, c.word.axisIndex};
-    switch (found.status) {
-        case AxisNameStatus::Unknown:
-            return error(c, "AXIS_UNKNOWN", "this process has no axis " + written.toString());
-        case AxisNameStatus::InactiveDesignation2:
-            return error(c, "AXIS_DESIGNATION2_INACTIVE",
-                         written.toString() +
-                             " is an axis designation 2; it is valid only while "
-                             "G31 or G32 is active");
-        case AxisNameStatus::TransformedRotary:
-            return error(c, "AXIS_TRANSFORMED",
-                         written.toString() +
-                             " spans the transformed plane; use its axis "
-                             "designation 2 " +
-                             axes_.axis(found.axis).designation2.toString());
-        case AxisNameStatus::TransformedLinear:
-            c.diagnostics.warning(
-                "AXIS_DESIGNATION1_IN_TRANSFORMATION",
-                blockLocation(c.program, c.blockIndex, c.word.column),
-                written.toString() + " is written with designation 1 while G31/G32 renames it to " +
-                    axes_.axis(found.axis).designation2.toString() + "; taken as that axis");
-            break;
-        case AxisNameStatus::Ok:
-            break;
-    }
-    double v = 0;
-    if (!value(c, v)) return false;
-    const auto bit = static_cast<std::uint16_t>(1u << found.axis);
-    if (c.input.axisCount == BlockInput::kMaxAxisWords)
-        return error(c, "TOO_MANY_AXES", "more than 16 axis words in one block");
-    if ((c.input.axisMask & bit) && c.input.repeatedAxisColumn == 0)
-        c.input.repeatedAxisColumn = c.word.column;  // reported by the executor (G20 or not)
-    c.input.axisMask |= bit;
-    c.input.axisValue[static_cast<size_t>(found.axis)] = v;
-    c.input.axisColumn[static_cast<size_t>(found.axis)] = c.word.column;
-    const auto slot = static_cast<size_t>(c.input.axisCount++);
-    c.input.axisOrder[slot] = static_cast<std::int8_t>(found.axis);
-    c.input.orderValue[slot] = v;
-    c.input.orderColumn[slot] = c.word.column;
-    return true;
-}
-
-bool BlockDecoder::centerWord(Cursor& c) const {
-    const int slot = c.word.letter == 'I'   ? 0
-                     : c.word.letter == 'J' ? 1
-                     : c.word.letter == 'K' ? 2
-                                            : -1;
-    if (slot < 0) return error(c, "UNKNOWN_WORD", "unknown interpolation parameter");
-    double v = 0;
-    if (!value(c, v)) return false;
-    const auto bit = static_cast<std::uint8_t>(1u << slot);
-    if (c.input.centerMask & bit)
-        return error(c, "WORD_TWICE", std::string(1, c.word.letter) + " programmed twice");
-    c.input.centerMask |= bit;
-    c.input.center[static_cast<size_t>(slot)] = v;
-    c.input.centerColumn = c.word.column;
-    return true;
-}
-
-bool BlockDecoder::assignment(Cursor& c) const {
-    if (c.word.target < 0 || static_cast<size_t>(c.word.target) >= c.program.expressions.size() ||
-        c.program.expressions[static_cast<size_t>(c.word.target)].op != ExprOp::Variable)
-        return error(c, "EXPRESSION_MALFORMED", "assignment without a variable");
-    const ExprNode& target = c.program.expressions[static_cast<size_t>(c.word.target)];
+bool BlockDecoder::assignment(const Word& w) const {
+    const auto& nodes = t_.program.expressions;
+    if (w.target < 0 || static_cast<size_t>(w.target) >= nodes.size() ||
+        nodes[static_cast<size_t>(w.target)].op != ExprOp::Variable)
+        return error(w, "EXPRESSION_MALFORMED", "assignment without a variable");
+    const ExprNode& target = nodes[static_cast<size_t>(w.target)];
     if (target.index < 0 || target.index >= kVariableCount)
-        return error(c, "VARIABLE_RANGE",
+        return error(w, "VARIABLE_RANGE",
                      "variable @" + std::to_string(target.index) + " does not exist (0.." +
                          std::to_string(kVariableCount - 1) + ")");
     double v = 0;
-    if (!value(c, v)) return false;
-    if (c.input.writeCount == BlockInput::kMaxWrites)
-        return error(c, "TOO_MANY_ASSIGNMENTS", "more than 16 assignments in one block");
-    c.input.writes[static_cast<size_t>(c.input.writeCount++)] = {target.process, target.index, v};
-    c.input.conditionSet = true;
-    c.input.condition = v;
+    if (!value(w, v)) return false;
+    BlockInput& in = t_.input;
+    if (in.writeCount == BlockInput::kMaxWrites)
+        return error(w, "TOO_MANY_ASSIGNMENTS", "more than 16 assignments in one block");
+    in.writes[static_cast<size_t>(in.writeCount++)] = {target.process, target.index, v};
+    in.conditionSet = true;
+    in.condition = v;
     return true;
 }
 
-bool BlockDecoder::machineDataAssignment(Cursor& c) const {
-    if (c.word.target < 0 || static_cast<size_t>(c.word.target) >= c.program.expressions.size() ||
-        c.program.expressions[static_cast<size_t>(c.word.target)].op != ExprOp::ReadMTD)
-        return error(c, "EXPRESSION_MALFORMED", "MTD assignment without MTD(...)");
-    BlockInput::MtdWrite w;
+bool BlockDecoder::machineDataAssignment(const Word& w) const {
+    const auto& nodes = t_.program.expressions;
+    if (w.target < 0 || static_cast<size_t>(w.target) >= nodes.size() ||
+        nodes[static_cast<size_t>(w.target)].op != ExprOp::ReadMTD)
+        return error(w, "EXPRESSION_MALFORMED", "MTD assignment without MTD(...)");
+    BlockInput::MtdWrite write;
     EvaluationError e;
-    if (!evaluator_.machineDataAddress(
-            c.program, c.program.expressions[static_cast<size_t>(c.word.target)], w.address, e))
-        return error(c, e.code, e.message);
-    if (!value(c, w.value)) return false;
-    if (c.input.mtdCount == BlockInput::kMaxMtdWrites)
-        return error(c, "TOO_MANY_ASSIGNMENTS", "more than 4 MTD assignments in one block");
-    w.column = c.word.column;
-    c.input.mtdWrites[static_cast<size_t>(c.input.mtdCount++)] = w;
-    c.input.conditionSet = true;
-    c.input.condition = w.value;
+    if (!evaluator_.machineDataAddress(t_.program, nodes[static_cast<size_t>(w.target)],
+                                       write.address, e))
+        return error(w, e.code, e.message);
+    if (!value(w, write.value)) return false;
+    BlockInput& in = t_.input;
+    if (in.mtdCount == BlockInput::kMaxMtdWrites)
+        return error(w, "TOO_MANY_ASSIGNMENTS", "more than 4 MTD assignments in one block");
+    write.column = w.column;
+    in.mtdWrites[static_cast<size_t>(in.mtdCount++)] = write;
+    in.conditionSet = true;
+    in.condition = write.value;
     return true;
 }
 
-bool BlockDecoder::jumpWord(Cursor& c) const {
-    if (c.input.jumpWord >= 0)
-        return error(c, "JUMP_TWICE", "only one jump, branch or call per block");
-    c.input.jumpWord = c.wordIndex;
-    const JumpKind k = c.word.jump;
-    if (k != JumpKind::JSR && k != JumpKind::JMP && k != JumpKind::JEV) return true;
+bool BlockDecoder::jumpWord(const Word& w, std::uint32_t index) const {
+    if (t_.input.jumpWord >= 0)
+        return error(w, "JUMP_TWICE", "only one jump, branch or call per block");
+    t_.input.jumpWord = index;
+    if (w.jump != JumpKind::JSR && w.jump != JumpKind::JMP && w.jump != JumpKind::JEV) return true;
     double v = 0;
-    if (!value(c, v)) return false;
     int number = 0;
-    if (!integer(c, v, number, "program number")) return false;
-    c.input.jumpProgram = number;
+    if (!value(w, v) || !integer(w, v, number, "program number")) return false;
+    t_.input.jumpProgram = number;
     return true;
 }
 
-bool BlockDecoder::commandWord(Cursor& c) const {
-    if (c.input.commandCount == BlockInput::kMaxCommands)
-        return error(c, "TOO_MANY_COMMANDS", "more than 4 commands in one block");
-    if (c.word.flags & kWordNeedsCompiler)
-        return error(c, "NEEDS_COMPILER",
-                     "'" + std::string(c.program.text(c.word.text)) +
+bool BlockDecoder::commandWord(const Word& w, std::uint32_t index) const {
+    if (t_.input.commandCount == BlockInput::kMaxCommands)
+        return error(w, "TOO_MANY_COMMANDS", "more than 4 commands in one block");
+    if (w.flags & kWordNeedsCompiler)
+        return error(w, "NEEDS_COMPILER",
+                     "'" + std::string(t_.program.text(w.text)) +
                          "' is an NC compiler function; compile the program before running it");
-    c.input.commands[static_cast<size_t>(c.input.commandCount++)] = c.wordIndex;
+    t_.input.commands[static_cast<size_t>(t_.input.commandCount++)] = index;
     return true;
+}
+
+// ------------------------------------------------------------------ error paths
+
+bool BlockDecoder::error(const Word& w, const std::string& code, const std::string& message) const {
+    t_.diagnostics.error(code, blockLocation(t_.program, t_.blockIndex, w.column), message);
+    return false;
+}
+
+bool BlockDecoder::evaluated(const Word& w, double& out) const {
+    EvaluationError e;
+    if (evaluator_.evaluate(t_.program, w.expr, out, e)) return true;
+    return error(w, e.code, e.message);
+}
+
+bool BlockDecoder::notInteger(const Word& w, double v, const char* what) const {
+    return error(w, "NOT_AN_INTEGER",
+                 std::string(what) + " needs a whole number >= 0, got " + std::to_string(v));
+}
+
+bool BlockDecoder::twice(const Word& w, const std::string& what) const {
+    return error(w, "WORD_TWICE", what + " programmed twice in one block");
+}
+
+bool BlockDecoder::badG(const Word& w, int number, const GCodeInfo& info, int other) const {
+    const std::string name = "G" + std::to_string(number);
+    if (info.kind == GKind::Unknown) return error(w, "UNKNOWN_G", name + " is not a G function");
+    if (info.kind == GKind::Unsupported)
+        return error(w, "G_NOT_SUPPORTED", name + " is not executed by this simulator");
+    return error(w, "G_GROUP_CONFLICT",
+                 name + " and G" + std::to_string(other) + " belong to the same group " +
+                     std::to_string(info.group));
+}
+
+bool BlockDecoder::badAxis(const Word& w, const AxisLookup& found) const {
+    const std::string written = AxisName{w.letter, w.axisIndex}.toString();
+    switch (found.status) {
+        case AxisNameStatus::InactiveDesignation2:
+            return error(w, "AXIS_DESIGNATION2_INACTIVE",
+                         written +
+                             " is an axis designation 2; it is valid only while G31 or "
+                             "G32 is active");
+        case AxisNameStatus::TransformedRotary:
+            return error(w, "AXIS_TRANSFORMED",
+                         written + " spans the transformed plane; use its axis designation 2 " +
+                             axes_.axis(found.axis).designation2.toString());
+        default:
+            return error(w, "AXIS_UNKNOWN", "this process has no axis " + written);
+    }
+}
+
+void BlockDecoder::designationOneWarning(const Word& w, const AxisLookup& found) const {
+    t_.diagnostics.warning(
+        "AXIS_DESIGNATION1_IN_TRANSFORMATION", blockLocation(t_.program, t_.blockIndex, w.column),
+        AxisName{w.letter, w.axisIndex}.toString() +
+            " is written with designation 1 while G31/G32 renames it to " +
+            axes_.axis(found.axis).designation2.toString() + "; taken as that axis");
 }
 
 }  // namespace mtc::core

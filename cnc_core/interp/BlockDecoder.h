@@ -1,7 +1,10 @@
 #pragma once
 
+#include <string>
+
 #include "cnc_core/interp/BlockInput.h"
 #include "cnc_core/interp/ExpressionEvaluator.h"
+#include "cnc_core/interp/ModalGroups.h"
 #include "cnc_core/language/Diagnostic.h"
 #include "cnc_core/language/Program.h"
 #include "cnc_core/machine/AxisNameTable.h"
@@ -16,60 +19,65 @@ SourceLocation blockLocation(const Program& program, std::uint32_t blockIndex, i
 /// every expression and assignment (left to right) and checking each word on
 /// its own: known G function, one G per group, known axis name for the
 /// process, no word twice, integer values where integers are required.
-/// Changes nothing but `input` and `diagnostics`.
+/// Changes nothing but `input` and `diagnostics`. One decoder per block; the
+/// error paths live in separate functions so that the per-word path stays short.
 class BlockDecoder {
   public:
-    BlockDecoder(const ProcessAxes& axes, const AxisNameTable& names,
-                 const ExpressionEvaluator& evaluator)
-        : axes_(axes), names_(names), evaluator_(evaluator) {}
-
-    /// Decodes block `blockIndex` of `program`. Returns false when an error
-    /// was added to `diagnostics` (warnings do not fail).
-    bool decode(const Program& program, const Block& block, std::uint32_t blockIndex,
-                BlockInput& input, DiagnosticList& diagnostics) const;
-
-  private:
-    struct Cursor {
+    struct Target {
         const Program& program;
         std::uint32_t blockIndex;
-        std::uint32_t wordIndex;
-        const Word& word;
         BlockInput& input;
         DiagnosticList& diagnostics;
     };
 
-    bool word(Cursor& c) const;
-    bool value(Cursor& c, double& out) const {
-        if (c.word.expr < 0) {
-            out = c.word.number;
+    BlockDecoder(const ProcessAxes& axes, const AxisNameTable& names,
+                 const ExpressionEvaluator& evaluator, Target target)
+        : axes_(axes), names_(names), evaluator_(evaluator), t_(target) {}
+
+    /// Decodes `block` (block `blockIndex` of the program) into the input.
+    /// Returns false when an error was added (warnings do not fail).
+    bool decode(const Block& block) const;
+
+  private:
+    bool word(const Word& w, std::uint32_t index) const;
+    bool value(const Word& w, double& out) const {
+        if (w.expr < 0) {
+            out = w.number;
             return true;
         }
-        return evaluated(c, out);
+        return evaluated(w, out);
     }
-    bool evaluated(Cursor& c, double& out) const;
-    bool integer(Cursor& c, double v, int& out, const char* what) const {
+    bool integer(const Word& w, double v, int& out, const char* what) const {
         if (v >= 0 && v <= 1e8 && v == static_cast<double>(static_cast<int>(v))) {
             out = static_cast<int>(v);
             return true;
         }
-        return notInteger(c, v, what);
+        return notInteger(w, v, what);
     }
-    bool notInteger(Cursor& c, double v, const char* what) const;
-    bool gWord(Cursor& c) const;
-    bool auxWord(Cursor& c) const;
-    bool spindleWord(Cursor& c) const;
-    bool scalarWord(Cursor& c) const;
-    bool axisWord(Cursor& c) const;
-    bool centerWord(Cursor& c) const;
-    bool assignment(Cursor& c) const;
-    bool machineDataAssignment(Cursor& c) const;
-    bool jumpWord(Cursor& c) const;
-    bool commandWord(Cursor& c) const;
-    bool error(Cursor& c, const std::string& code, const std::string& message) const;
+    bool gWord(const Word& w) const;
+    bool auxWord(const Word& w) const;
+    bool spindleWord(const Word& w) const;
+    bool scalarWord(const Word& w) const;
+    bool axisWord(const Word& w) const;
+    bool centerWord(const Word& w) const;
+    bool assignment(const Word& w) const;
+    bool machineDataAssignment(const Word& w) const;
+    bool jumpWord(const Word& w, std::uint32_t index) const;
+    bool commandWord(const Word& w, std::uint32_t index) const;
+
+    // Error paths (cold).
+    bool evaluated(const Word& w, double& out) const;
+    bool notInteger(const Word& w, double v, const char* what) const;
+    bool badG(const Word& w, int number, const GCodeInfo& info, int other) const;
+    bool badAxis(const Word& w, const AxisLookup& found) const;
+    void designationOneWarning(const Word& w, const AxisLookup& found) const;
+    bool twice(const Word& w, const std::string& what) const;
+    bool error(const Word& w, const std::string& code, const std::string& message) const;
 
     const ProcessAxes& axes_;
     const AxisNameTable& names_;
     const ExpressionEvaluator& evaluator_;
+    Target t_;
 };
 
 }  // namespace mtc::core

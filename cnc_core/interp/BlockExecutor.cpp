@@ -33,22 +33,39 @@ bool BlockExecutor::plan(const BlockContext& c, const BlockInput& in, const Inte
     plan.programControl = -1;
     plan.auxChanged = false;
     ModalState& next = plan.next;
-    for (int group : kPlainGroups)
-        if (in.g[static_cast<size_t>(group)] >= 0)
-            next.g[static_cast<size_t>(group)] = in.g[static_cast<size_t>(group)];
-    if (!transformationOff(c, in, next) || !planeChange(c, in, state.modal, next) ||
-        !transformationOn(c, in, next))
-        return false;
-    explicitGroups(in, next);
-    const bool offsetsChanged =
-        in.g[kGroupZeroOffset] >= 0 || in.g[kGroupPlane] >= 0 || in.g[kGroupTransformation] >= 0;
-    if (offsetsChanged) motion_.recomputeWork(next);
-    if (!scalars(c, in, plan) || !auxiliaries(c, in, state, plan)) return false;
-    const bool freePlaneBlock = in.g[kGroupPlane] == 20;
-    if (in.axisMask == 0 || freePlaneBlock) return true;
+    if (in.gMask != 0 || in.hasRadius) {
+        if (!modalGroups(c, in, state.modal, next)) return false;
+    }
+    const bool scalarWords = in.dwell || in.hasFeed || in.hasTool || in.hasEdge ||
+                             in.hasCorrection || in.spindleMask != 0;
+    if (scalarWords && !scalars(c, in, plan)) return false;
+    if ((in.mCount != 0 || in.qCount != 0) && !auxiliaries(c, in, state, plan)) return false;
+    if (in.axisMask == 0 || in.g[kGroupPlane] == 20) return true;
     if (in.dwell)
         return c.error("DWELL_WITH_AXES", "G4 cannot be combined with axis words", in.dwellColumn);
     return motion_.plan(c, in, state.modal, plan, setup_.arcTolerance);
+}
+
+bool BlockExecutor::modalGroups(const BlockContext& c, const BlockInput& in,
+                                const ModalState& current, ModalState& next) const {
+    constexpr std::uint32_t kPlainMask = (1u << kGroupToolPath) | (1u << kGroupFeedType) |
+                                         (1u << kGroupDimension) | (1u << kGroupUnits) |
+                                         (1u << kGroupAcceleration) | (1u << kGroupExactStop) |
+                                         (1u << kGroupToolLength);
+    constexpr std::uint32_t kGeometryMask =
+        (1u << kGroupPlane) | (1u << kGroupTransformation) | (1u << kGroupZeroOffset);
+    if (in.gMask & kPlainMask)
+        for (int group : kPlainGroups)
+            if (in.g[static_cast<size_t>(group)] >= 0)
+                next.g[static_cast<size_t>(group)] = in.g[static_cast<size_t>(group)];
+    if ((in.gMask & kGeometryMask) || in.hasRadius) {
+        if (!transformationOff(c, in, next) || !planeChange(c, in, current, next) ||
+            !transformationOn(c, in, next))
+            return false;
+    }
+    explicitGroups(in, next);
+    if (in.gMask & kGeometryMask) motion_.recomputeWork(next);
+    return true;
 }
 
 bool BlockExecutor::transformationOff(const BlockContext& c, const BlockInput& in,
@@ -148,11 +165,10 @@ bool BlockExecutor::scalars(const BlockContext& c, const BlockInput& in, BlockPl
     }
     if (in.hasEdge) next.edge = in.edge;
     if (in.hasCorrection) next.correction = in.correction;
-    return spindles(c, in, next);
+    return in.spindleMask == 0 || spindles(c, in, next);
 }
 
 bool BlockExecutor::spindles(const BlockContext& c, const BlockInput& in, ModalState& next) const {
-    if (in.spindleMask == 0) return true;
     const int reference = next.referenceSpindle;
     if ((in.spindleMask & 1u) && (in.spindleMask & (1u << reference)))
         return c.error("WORD_TWICE", "S and S" + std::to_string(reference) +
@@ -168,7 +184,6 @@ bool BlockExecutor::spindles(const BlockContext& c, const BlockInput& in, ModalS
 
 bool BlockExecutor::auxiliaries(const BlockContext& c, const BlockInput& in,
                                 const InterpreterState& state, BlockPlan& plan) const {
-    if (in.mCount == 0 && in.qCount == 0) return true;
     plan.auxChanged = true;
     plan.mGroups = state.mGroups;
     plan.lastQ = state.lastQ;

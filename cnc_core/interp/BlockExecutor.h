@@ -44,6 +44,9 @@ class BlockExecutor {
     void setArcTolerance(double tolerance) { setup_.arcTolerance = tolerance; }
 
   private:
+    /// G words (and RI): plain groups, G30, plane, G31/G32, explicit groups.
+    bool modalGroups(const BlockContext& c, const BlockInput& in, const ModalState& current,
+                     ModalState& next) const;
     bool transformationOff(const BlockContext& c, const BlockInput& in, ModalState& next) const;
     bool planeChange(const BlockContext& c, const BlockInput& in, const ModalState& current,
                      ModalState& next) const;

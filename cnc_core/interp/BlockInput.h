@@ -32,7 +32,8 @@ struct BlockInput {
         std::uint16_t column = 0;
     };
 
-    GGroupValues g{};  ///< programmed G per group, -1 = none
+    GGroupValues g{};         ///< programmed G per group, -1 = none
+    std::uint32_t gMask = 0;  ///< bit n: a G of group n is programmed
     std::array<std::uint16_t, kGroupSlots> gColumn{};
     bool dwell = false;       ///< G4
     bool speedLimit = false;  ///< G92
@@ -83,6 +84,7 @@ struct BlockInput {
     /// Forgets the previous block (cheap: only flags and counters).
     void clear() {
         g.fill(-1);
+        gMask = 0;
         dwell = speedLimit = false;
         axisMask = 0;
         axisCount = 0;

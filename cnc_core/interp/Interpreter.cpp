@@ -237,11 +237,18 @@ bool Interpreter::checkedBlock(const Program& program, std::uint32_t index,
     executor_.setArcTolerance(options_.arcTolerance);
     if (!planSynced_) plan_.next = state_.modal;
     planSynced_ = false;
-    const BlockDecoder decoder(axes_, names_, evaluator_);
-    return decoder.decode(program, block_, index, input_, diagnostics) &&
-           executor_.plan(context, input_, state_, plan_) &&
-           programFlow_.plan(context, input_, state_, plan_.next, flow_) &&
-           validateMachineData(context);
+    const BlockDecoder decoder(axes_, names_, evaluator_, {program, index, input_, diagnostics});
+    return decoder.decode(block_) && executor_.plan(context, input_, state_, plan_) &&
+           planFlow(context) &&
+           (input_.mtdCount == 0 && input_.writeCount == 0 ? true : validateMachineData(context));
+}
+
+bool Interpreter::planFlow(const BlockContext& context) {
+    if (input_.jumpWord < 0) {
+        flow_.kind = FlowPlan::Kind::Next;
+        return true;
+    }
+    return programFlow_.plan(context, input_, state_, plan_.next, flow_);
 }
 
 bool Interpreter::validateMachineData(const BlockContext& context) {

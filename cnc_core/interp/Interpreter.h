@@ -180,6 +180,7 @@ class Interpreter {
     /// Location of the current block (block_) for the sink, without printf.
     SourceLocation sinkLocation(const Program& program, std::uint32_t index) const;
     Outcome commit(const Program& program, std::uint32_t index, DiagnosticList& diagnostics);
+    bool planFlow(const BlockContext& context);
     bool validateMachineData(const BlockContext& context);
     void emitAux(const Program& program, std::uint32_t index);
     void sendAux(char type, int spindle, double value, const SourceLocation& where, bool forwarded);

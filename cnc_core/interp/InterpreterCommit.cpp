@@ -82,7 +82,9 @@ Interpreter::Outcome Interpreter::commit(const Program& program, std::uint32_t i
         state_.lastQ = plan_.lastQ;
     }
     if (transformationChanged) rebuildNames();
-    emitAux(program, index);
+    const BlockInput& in = input_;
+    if (in.spindleMask != 0 || in.hasTool || in.hasEdge || in.mCount != 0 || in.qCount != 0)
+        emitAux(program, index);
     if (motion) emitMotion(program, index);
     if (plan_.dwellSeconds >= 0.0 && options_.output.dwell)
         sink_.dwell(sinkLocation(program, index), plan_.dwellSeconds);
@@ -95,8 +97,12 @@ Interpreter::Outcome Interpreter::commit(const Program& program, std::uint32_t i
         default:
             break;
     }
-    const Outcome flow = applyFlow(program, index);
-    if (flow != Outcome::Continue) return flow;
+    if (flow_.kind == FlowPlan::Kind::Next) {
+        ++state_.block;
+    } else {
+        const Outcome flow = applyFlow(program, index);
+        if (flow != Outcome::Continue) return flow;
+    }
     if (plan_.programControl == 0 || (plan_.programControl == 1 && options_.optionalStop))
         return Outcome::Stopped;
     return Outcome::Continue;
@@ -115,8 +121,6 @@ void Interpreter::sendAux(char type, int spindle, double value, const SourceLoca
 
 void Interpreter::emitAux(const Program& program, std::uint32_t index) {
     const BlockInput& in = input_;
-    if (in.spindleMask == 0 && !in.hasTool && !in.hasEdge && in.mCount == 0 && in.qCount == 0)
-        return;
     const SourceLocation where = sinkLocation(program, index);
     const OutputOptions& out = options_.output;
     if (!in.speedLimit)

@@ -70,24 +70,13 @@ void MotionPlanner::toMachine(const ModalState& current, ModalState& next,
                 current.machine[p2], next.machine[p1], next.machine[p2]);
 }
 
-bool MotionPlanner::checkLimits(const BlockContext& context, const BlockInput& input,
-                                const ModalState& next) const {
-    std::uint32_t moved = input.axisMask;
-    if (next.transformation.active())
-        moved |=
-            (1u << next.transformation.planeAxis(0)) | (1u << next.transformation.planeAxis(1));
-    for (int a = 0; moved >> a; ++a) {
-        const AxisModel& m = axes_->axis(a);
-        if (!((moved >> a) & 1u) || !m.limited()) continue;
-        const double p = next.machine[static_cast<size_t>(a)];
-        if (p >= m.minPosition - 1e-9 && p <= m.maxPosition + 1e-9) continue;
-        return context.error("TRAVEL_LIMIT",
-                             "axis " + m.configName + " would move to " + format(p) +
-                                 ", outside its travel range " + format(m.minPosition) + " .. " +
-                                 format(m.maxPosition),
-                             input.axisColumn[static_cast<size_t>(a)]);
-    }
-    return true;
+bool MotionPlanner::travelLimit(const BlockContext& context, const BlockInput& input,
+                                const AxisModel& m, int axis, double position) const {
+    return context.error("TRAVEL_LIMIT",
+                         "axis " + m.configName + " would move to " + format(position) +
+                             ", outside its travel range " + format(m.minPosition) + " .. " +
+                             format(m.maxPosition),
+                         input.axisColumn[static_cast<size_t>(axis)]);
 }
 
 bool MotionPlanner::plan(const BlockContext& context, const BlockInput& input,
@@ -102,38 +91,74 @@ bool MotionPlanner::plan(const BlockContext& context, const BlockInput& input,
         const AxisModel& m = axes_->axis(a);
         if (m.spindle) next.rotaryAxisMode[static_cast<size_t>(m.spindleIndex)] = 1;
     }
+    const std::uint32_t moved = movedAxes(input, next);
     toMachine(current, next, input.axisMask);
-    if (!checkLimits(context, input, next)) return false;
+    for (int a = 0; moved >> a; ++a) {
+        const AxisModel& m = axes_->axis(a);
+        if (!((moved >> a) & 1u) || !m.limited()) continue;
+        const double p = next.machine[static_cast<size_t>(a)];
+        if (p < m.minPosition - 1e-9 || p > m.maxPosition + 1e-9)
+            return travelLimit(context, input, m, a, p);
+    }
     const int g = next.g[kGroupInterpolation];
     plan.hasMotion = true;
     plan.motionType = g == 0   ? MotionType::Rapid
                       : g == 1 ? MotionType::Linear
                       : g == 2 ? MotionType::ArcCW
                                : MotionType::ArcCCW;
+    if (g == 0) {
+        plan.feedRate = 0.0;
+        next.time += rapidTime(current, next, moved);
+        return true;
+    }
     double length = 0.0;
     if (g >= 2) {
         if (!arc(context, input, current, plan, arcTolerance, length)) return false;
     } else {
-        for (int a = 0; a < axes_->count(); ++a) {
+        for (int a = 0; moved >> a; ++a) {
+            if (!((moved >> a) & 1u)) continue;
             const double d =
                 next.work[static_cast<size_t>(a)] - current.work[static_cast<size_t>(a)];
             length += d * d;
         }
         length = std::sqrt(length);
     }
-    if (g != 0) {
-        const bool perRevolution = next.g[kGroupFeedType] == 95;
-        const double speed = next.spindleSpeed[static_cast<size_t>(next.referenceSpindle)];
-        plan.feedRate = perRevolution ? next.feed * speed : next.feed;
-        if (next.feed <= 0.0)
-            return context.error("FEED_MISSING", "G" + std::to_string(g) + " needs a feed F > 0");
-        if (plan.feedRate <= 0.0)
-            return context.error(
-                "FEED_PER_REVOLUTION_NO_SPEED",
-                "G95 feed per revolution needs a spindle speed S of the reference spindle");
+    const bool perRevolution = next.g[kGroupFeedType] == 95;
+    const double speed = next.spindleSpeed[static_cast<size_t>(next.referenceSpindle)];
+    plan.feedRate = perRevolution ? next.feed * speed : next.feed;
+    if (next.feed <= 0.0)
+        return context.error("FEED_MISSING", "G" + std::to_string(g) + " needs a feed F > 0");
+    if (plan.feedRate <= 0.0)
+        return context.error(
+            "FEED_PER_REVOLUTION_NO_SPEED",
+            "G95 feed per revolution needs a spindle speed S of the reference spindle");
+    if (plan.feedRate != feedCache_.feed) {  // the feed changes far less often than blocks
+        feedCache_.feed = plan.feedRate;
+        feedCache_.secondsPerUnit = 60.0 / plan.feedRate;
     }
-    next.time += moveTime(current, plan, length);
+    next.time += length * feedCache_.secondsPerUnit;
     return true;
+}
+
+std::uint32_t MotionPlanner::movedAxes(const BlockInput& input, const ModalState& next) const {
+    std::uint32_t moved = input.axisMask;
+    const Transformation& t = next.transformation;
+    if (t.active() && (moved & ((1u << t.planeAxis(0)) | (1u << t.planeAxis(1)))))
+        moved |= (1u << t.planeAxis(0)) | (1u << t.planeAxis(1));  // G31 couples both
+    return moved;
+}
+
+double MotionPlanner::rapidTime(const ModalState& current, const ModalState& next,
+                                std::uint32_t moved) const {
+    double seconds = 0.0;
+    for (int a = 0; moved >> a; ++a) {
+        if (!((moved >> a) & 1u)) continue;
+        const double d = std::fabs(next.machine[static_cast<size_t>(a)] -
+                                   current.machine[static_cast<size_t>(a)]);
+        const double t = d * axes_->axis(a).rapidSecondsPerUnit;
+        if (t > seconds) seconds = t;
+    }
+    return seconds;
 }
 
 bool MotionPlanner::arc(const BlockContext& context, const BlockInput& input,
@@ -188,12 +213,13 @@ bool MotionPlanner::arc(const BlockContext& context, const BlockInput& input,
         if (angle <= 0.0) angle += 2.0 * kPi;
     }
     double helix = 0.0;
-    for (int a = 0; a < axes_->count(); ++a) {
-        if (a == p1 || a == p2) continue;
+    const std::uint32_t others = input.axisMask & ~((1u << p1) | (1u << p2));
+    for (int a = 0; others >> a; ++a) {
+        if (!((others >> a) & 1u)) continue;
         const double d = next.work[static_cast<size_t>(a)] - current.work[static_cast<size_t>(a)];
         helix += d * d;
     }
-    length = std::sqrt(r1 * angle * r1 * angle + helix);
+    length = helix == 0.0 ? r1 * angle : std::sqrt(r1 * angle * r1 * angle + helix);
     plan.planeAxis1 = p1;
     plan.planeAxis2 = p2;
     const Transformation& t = next.transformation;
@@ -206,25 +232,6 @@ bool MotionPlanner::arc(const BlockContext& context, const BlockInput& input,
         plan.center2 = c2;
     }
     return true;
-}
-
-double MotionPlanner::moveTime(const ModalState& current, const BlockPlan& plan,
-                               double length) const {
-    if (plan.motionType != MotionType::Rapid) {
-        if (plan.feedRate != feedCache_.feed) {  // the feed changes far less often than blocks
-            feedCache_.feed = plan.feedRate;
-            feedCache_.secondsPerUnit = 60.0 / plan.feedRate;
-        }
-        return length * feedCache_.secondsPerUnit;
-    }
-    double seconds = 0.0;
-    for (int a = 0; a < axes_->count(); ++a) {
-        const double d = std::fabs(plan.next.machine[static_cast<size_t>(a)] -
-                                   current.machine[static_cast<size_t>(a)]);
-        const double t = d * axes_->axis(a).rapidSecondsPerUnit;
-        if (t > seconds) seconds = t;
-    }
-    return seconds;
 }
 
 }  // namespace mtc::core

@@ -39,11 +39,14 @@ class MotionPlanner {
   private:
     double programmedValue(const ModalState& next, int axis, double value) const;
     void toMachine(const ModalState& current, ModalState& next, std::uint16_t axisMask) const;
-    bool checkLimits(const BlockContext& context, const BlockInput& input,
-                     const ModalState& next) const;
+    /// Axes whose position the block changes (G31 couples both plane axes).
+    std::uint32_t movedAxes(const BlockInput& input, const ModalState& next) const;
+    /// TRAVEL_LIMIT diagnostic for `axis` (cold path).
+    bool travelLimit(const BlockContext& context, const BlockInput& input, const AxisModel& m,
+                     int axis, double position) const;
+    double rapidTime(const ModalState& current, const ModalState& next, std::uint32_t moved) const;
     bool arc(const BlockContext& context, const BlockInput& input, const ModalState& current,
              BlockPlan& plan, double arcTolerance, double& length) const;
-    double moveTime(const ModalState& current, const BlockPlan& plan, double length) const;
 
     const ProcessAxes* axes_;
     const ZeroOffsetTable* offsets_;
