@@ -9,31 +9,46 @@ namespace {
 
 constexpr double kInch = 25.4;
 
+/// Writes `value` with at least four digits at `out` (0..99,999,999); returns the end.
+char* fourDigits(int value, char* out) {
+    char reversed[12];
+    int count = 0;
+    do {
+        reversed[count++] = static_cast<char>('0' + value % 10);
+        value /= 10;
+    } while (value > 0 && count < 11);
+    for (int pad = count; pad < 4; ++pad)
+        *out++ = '0';
+    while (count > 0)
+        *out++ = reversed[--count];
+    return out;
+}
+
 /// "N0012" / "N0012:0001" into `out` without printf (called once per move).
 void formatBlockId(const Block& block, std::string& out) {
-    out.clear();
-    if (block.number < 0) return;
-    char text[24];
-    int n = 0;
-    auto digits = [&](int value) {
-        char reversed[12];
-        int count = 0;
-        do {
-            reversed[count++] = static_cast<char>('0' + value % 10);
-            value /= 10;
-        } while (value > 0 && count < 11);
-        for (int pad = count; pad < 4; ++pad)
-            text[n++] = '0';
-        while (count > 0)
-            text[n++] = reversed[--count];
-    };
-    text[n++] = 'N';
-    digits(block.number);
-    if (block.subNumber >= 0) {
-        text[n++] = ':';
-        digits(block.subNumber);
+    const int number = block.number;
+    if (number < 0) {
+        out.clear();
+        return;
     }
-    out.assign(text, static_cast<std::size_t>(n));
+    if (number < 10000 && block.subNumber < 0) {  // the usual case: write in place
+        out.resize(5);
+        out[0] = 'N';
+        out[1] = static_cast<char>('0' + number / 1000);
+        out[2] = static_cast<char>('0' + number / 100 % 10);
+        out[3] = static_cast<char>('0' + number / 10 % 10);
+        out[4] = static_cast<char>('0' + number % 10);
+        return;
+    }
+    char text[32];
+    char* end = text;
+    *end++ = 'N';
+    end = fourDigits(number, end);
+    if (block.subNumber >= 0) {
+        *end++ = ':';
+        end = fourDigits(block.subNumber, end);
+    }
+    out.assign(text, static_cast<std::size_t>(end - text));
 }
 
 /// "TCH(2,1)" -> 1 (the SPI argument), default 1; clamped to 1..4.
