@@ -1,5 +1,8 @@
 #include "cnc_core/interp/ModalGroups.h"
 
+#include <cctype>
+#include <string>
+
 namespace mtc::core {
 
 namespace {
@@ -107,7 +110,10 @@ GGroupValues defaultGGroups(const ProcessConfig& config) {
     g[kGroupFeedType] = 94;
     g[kGroupDimension] = 90;
     auto it = config.parameters.find("B015");
-    g[kGroupRadiusDiameter] = (it != config.parameters.end() && it->second == "diameter") ? 16 : 15;
+    std::string b015 = it == config.parameters.end() ? "" : it->second;
+    for (char& ch : b015)
+        ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+    g[kGroupRadiusDiameter] = (b015 == "diameter" || b015 == "16" || b015 == "g16") ? 16 : 15;
     g[kGroupUnits] = 71;
     g[kGroupSurfaceSpeed] = 97;
     g[kGroupAcceleration] = 6;
