@@ -7,7 +7,7 @@ here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 preset="${1:-release}"
 
 packages=(build-essential cmake ninja-build qtbase5-dev libvtk9-dev libvtk9-qt-dev
-          libeigen3-dev libgtest-dev libgmock-dev libbenchmark-dev xvfb xauth)
+          libeigen3-dev libgtest-dev libgmock-dev libbenchmark-dev xvfb xauth python3)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
