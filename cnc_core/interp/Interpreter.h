@@ -159,10 +159,7 @@ class Interpreter {
     /// Name of machine axis `axis` as the JSON and transcripts show it: its
     /// designation 1 in programs ("X", "Z2", "C" for spindle S1 with rotary
     /// axis capability), or the configuration name of a plain spindle ("S2").
-    std::string axisName(int axis) const {
-        const AxisModel& a = axes_.axis(axis);
-        return a.name.valid() ? a.name.toString() : a.configName;
-    }
+    std::string axisName(int axis) const { return axes_.axis(axis).displayName(); }
     /// Workpiece coordinate of `axis` as the program sees it now (the
     /// inverse of the conversions of MotionPlanner: mm, degrees, diameter).
     double programmedPosition(int axis) const;

@@ -73,7 +73,7 @@ void MotionPlanner::toMachine(const ModalState& current, ModalState& next,
 bool MotionPlanner::travelLimit(const BlockContext& context, const BlockInput& input,
                                 const AxisModel& m, int axis, double position) const {
     return context.error("TRAVEL_LIMIT",
-                         "axis " + m.configName + " would move to " + format(position) +
+                         "axis " + m.displayName() + " would move to " + format(position) +
                              ", outside its travel range " + format(m.minPosition) + " .. " +
                              format(m.maxPosition),
                          input.axisColumn[static_cast<size_t>(axis)]);
@@ -168,6 +168,12 @@ bool MotionPlanner::arc(const BlockContext& context, const BlockInput& input,
     const int p1 = next.plane.firstAxis(), p2 = next.plane.secondAxis();
     if (p1 < 0 || p2 < 0)
         return context.error("ARC_PLANE", "the working plane is not spanned by two axes");
+    const Transformation& transformation = next.transformation;
+    for (int p : {p1, p2})
+        if (axes_->axis(p).rotary && !transformation.transforms(p))
+            return context.error("ARC_ROTARY_AXIS",
+                                 "a circle with the rotary axis " + axes_->axis(p).displayName() +
+                                     " in the plane needs G31 or G32 first (seed 003, 4.2)");
     if (input.centerMask == 0)
         return context.error("ARC_CENTER_MISSING", "a circle needs its centre (I, J or K)");
     const bool incremental = next.g[kGroupDimension] == 91;

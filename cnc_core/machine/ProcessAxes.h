@@ -30,6 +30,9 @@ struct AxisModel {
     /// True when the travel limits are monitored (they differ).
     bool limited() const { return minPosition != maxPosition; }
 
+    /// The name programs and displays use: designation 1 ("C" for spindle
+    /// S1/C), or the configuration name of a plain spindle ("S2").
+    std::string displayName() const { return name.valid() ? name.toString() : configName; }
     /// True when `definition` is listed in Cxx.053 (base or alternate).
     bool allows(AxisDefinition definition) const;
     AxisDefinition baseDefinition() const {
