@@ -6,7 +6,8 @@
 # MTC_CLI selects the binary (default build/release/app/mtc200-cli).
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-export MTC_CLI="${MTC_CLI:-$here/build/release/app/mtc200-cli}"
+MTC_CLI="${MTC_CLI:-$here/build/release/app/mtc200-cli}"
+export MTC_CLI="$(realpath "$MTC_CLI" 2>/dev/null || echo "$MTC_CLI")"
 [ -x "$MTC_CLI" ] || { echo "update-golden: no mtc200-cli at $MTC_CLI (build first or set MTC_CLI)" >&2; exit 2; }
 source "$here/tests/cli/golden.bash"
 dir="$here/tests/golden/cli"
