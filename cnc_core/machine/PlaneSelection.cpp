@@ -117,7 +117,9 @@ bool PlaneSelection::isBase(const ProcessAxes& axes) const {
 }
 
 void PlaneSelection::assign(int axis, AxisDefinition definition) {
-    axisOfDefinition_[static_cast<size_t>(definition)] = static_cast<std::int8_t>(axis);
+    // None has no column in axisOfDefinition_ (index -1): only the axis side changes.
+    if (definition != AxisDefinition::None)
+        axisOfDefinition_[static_cast<size_t>(definition)] = static_cast<std::int8_t>(axis);
     definitionOfAxis_[static_cast<size_t>(axis)] = definition;
 }
 
