@@ -4,25 +4,6 @@
 
 namespace mtc::core {
 
-namespace {
-
-constexpr double kPow10[8] = {1.0, 10.0, 100.0, 1e3, 1e4, 1e5, 1e6, 1e7};
-constexpr std::uint8_t kExtendedBit = 1u << 5;
-
-}  // namespace
-
-const Word WordList::operator[](std::size_t index) const {
-    const Packed& p = packed_[index];
-    if (p.bits & kExtendedBit) return extended_[static_cast<std::size_t>(p.payload)];
-    Word word;
-    word.kind = static_cast<WordKind>(p.kind);
-    word.letter = static_cast<char>(p.letter);
-    word.axisIndex = p.bits & 3u;
-    word.column = p.column;
-    word.number = static_cast<double>(p.payload) / kPow10[(p.bits >> 2) & 7u];
-    return word;
-}
-
 bool WordList::packable(const Word& word, std::int32_t& mantissa, unsigned& scale) {
     if (word.kind >= WordKind::Assign || word.expr >= 0 || word.target >= 0 ||
         word.text.length != 0 || word.args.length != 0 || word.eventProcess != -1 ||

@@ -17,7 +17,18 @@ class WordList {
     std::size_t size() const { return packed_.size(); }
     bool empty() const { return packed_.empty(); }
     /// The word at `index` (by value). Precondition: index < size().
-    const Word operator[](std::size_t index) const;
+    /// Inline: the interpreter reads every word of every block through it.
+    const Word operator[](std::size_t index) const {
+        const Packed& p = packed_[index];
+        if (p.bits & kExtendedBit) return extended_[static_cast<std::size_t>(p.payload)];
+        Word word;
+        word.kind = static_cast<WordKind>(p.kind);
+        word.letter = static_cast<char>(p.letter);
+        word.axisIndex = p.bits & 3u;
+        word.column = p.column;
+        word.number = static_cast<double>(p.payload) / kPow10[(p.bits >> 2) & 7u];
+        return word;
+    }
     const Word back() const { return (*this)[size() - 1]; }
     const Word front() const { return (*this)[0]; }
     const_iterator begin() const;
@@ -55,6 +66,8 @@ class WordList {
     std::size_t memoryBytes() const;
 
   private:
+    static constexpr double kPow10[8] = {1.0, 10.0, 100.0, 1e3, 1e4, 1e5, 1e6, 1e7};
+    static constexpr std::uint8_t kExtendedBit = 1u << 5;
     struct Packed {
         std::uint8_t kind;
         std::uint8_t letter;
