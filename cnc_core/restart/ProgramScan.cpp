@@ -1,0 +1,305 @@
+#include "cnc_core/restart/ProgramScan.h"
+
+#include <algorithm>
+#include <string>
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
+namespace mtc::core {
+
+namespace {
+
+inline unsigned char fold(unsigned char c) {
+    return (c >= 'A' && c <= 'Z') ? static_cast<unsigned char>(c | 0x20) : c;
+}
+
+bool equalFolded(const char* text, std::string_view needle) {
+    for (std::size_t i = 0; i < needle.size(); ++i)
+        if (fold(static_cast<unsigned char>(text[i])) !=
+            fold(static_cast<unsigned char>(needle[i])))
+            return false;
+    return true;
+}
+
+/// How common a character is in NC text (0 = everywhere, 2 = rare): the
+/// search anchors on the two rarest characters of the needle.
+int rarity(unsigned char c) {
+    if (c == ' ' || (c >= '0' && c <= '9')) return 0;
+    switch (fold(c)) {
+        case 'n':
+        case 'g':
+        case 'x':
+        case 'y':
+        case 'z':
+        case 'f':
+        case 'm':
+        case 'i':
+        case 'j':
+        case 's':
+        case 't':
+        case '.':
+        case '\n':
+        case '\r':
+            return 1;
+        default:
+            return 2;
+    }
+}
+
+/// Two distinct positions of the needle to compare first (rarest characters).
+void pickAnchors(std::string_view needle, std::size_t& first, std::size_t& second) {
+    first = 0;
+    second = needle.size() - 1;
+    int best = -1;
+    for (std::size_t i = 0; i < needle.size(); ++i) {
+        const int r = rarity(static_cast<unsigned char>(needle[i]));
+        if (r > best) best = r, first = i;
+    }
+    best = -1;
+    for (std::size_t i = 0; i < needle.size(); ++i) {
+        if (i == first && needle.size() > 1) continue;
+        const int r = rarity(static_cast<unsigned char>(needle[i]));
+        if (r > best) best = r, second = i;
+    }
+}
+
+#if defined(__SSE2__)
+inline __m128i foldBlock(__m128i x) {
+    const __m128i upper = _mm_and_si128(_mm_cmpgt_epi8(x, _mm_set1_epi8('A' - 1)),
+                                        _mm_cmplt_epi8(x, _mm_set1_epi8('Z' + 1)));
+    return _mm_or_si128(x, _mm_and_si128(upper, _mm_set1_epi8(0x20)));
+}
+
+/// Bit i set when the needle may start at `start + i` (both anchors match).
+inline unsigned candidates16(const char* start, std::size_t first, std::size_t second, __m128i a,
+                             __m128i b) {
+    const __m128i x = foldBlock(_mm_loadu_si128(reinterpret_cast<const __m128i*>(start + first)));
+    const __m128i y = foldBlock(_mm_loadu_si128(reinterpret_cast<const __m128i*>(start + second)));
+    return static_cast<unsigned>(
+        _mm_movemask_epi8(_mm_and_si128(_mm_cmpeq_epi8(x, a), _mm_cmpeq_epi8(y, b))));
+}
+#endif
+
+/// Last position < `before` where `needle` starts (case-insensitive), or npos.
+std::size_t findFoldedBackward(std::string_view haystack, std::string_view needle,
+                               std::size_t before) {
+    if (needle.empty() || needle.size() > haystack.size()) return std::string_view::npos;
+    std::size_t end = std::min(before, haystack.size() - needle.size() + 1);  // exclusive
+    const char* text = haystack.data();
+#if defined(__SSE2__)
+    std::size_t first = 0, second = 0;
+    pickAnchors(needle, first, second);
+    const __m128i a =
+        _mm_set1_epi8(static_cast<char>(fold(static_cast<unsigned char>(needle[first]))));
+    const __m128i b =
+        _mm_set1_epi8(static_cast<char>(fold(static_cast<unsigned char>(needle[second]))));
+    while (end >= 16) {
+        const std::size_t base = end - 16;
+        unsigned mask = candidates16(text + base, first, second, a, b);
+        while (mask) {
+            const int bit = 31 - __builtin_clz(mask);
+            if (equalFolded(text + base + bit, needle)) return base + static_cast<std::size_t>(bit);
+            mask &= ~(1u << bit);
+        }
+        end = base;
+    }
+#endif
+    while (end > 0) {
+        --end;
+        if (equalFolded(text + end, needle)) return end;
+    }
+    return std::string_view::npos;
+}
+
+}  // namespace
+
+ProgramScan::ProgramScan(ProgramPtr program) : program_(std::move(program)) {}
+
+std::size_t ProgramScan::findFolded(std::string_view haystack, std::string_view needle,
+                                    std::size_t from) {
+    if (needle.empty() || needle.size() > haystack.size()) return std::string_view::npos;
+    const std::size_t lastStart = haystack.size() - needle.size();
+    std::size_t pos = from;
+    const char* text = haystack.data();
+#if defined(__SSE2__)
+    std::size_t first = 0, second = 0;
+    pickAnchors(needle, first, second);
+    const __m128i a =
+        _mm_set1_epi8(static_cast<char>(fold(static_cast<unsigned char>(needle[first]))));
+    const __m128i b =
+        _mm_set1_epi8(static_cast<char>(fold(static_cast<unsigned char>(needle[second]))));
+    for (; pos + 16 <= lastStart + 1; pos += 16) {
+        unsigned mask = candidates16(text + pos, first, second, a, b);
+        while (mask) {
+            const int bit = __builtin_ctz(mask);
+            if (equalFolded(text + pos + static_cast<std::size_t>(bit), needle))
+                return pos + static_cast<std::size_t>(bit);
+            mask &= mask - 1;
+        }
+    }
+#endif
+    for (; pos <= lastStart; ++pos)
+        if (equalFolded(text + pos, needle)) return pos;
+    return std::string_view::npos;
+}
+
+std::uint32_t ProgramScan::lastSelectableBlock() const {
+    const std::uint32_t count = blockCount();
+    if (count == 0) return 0;
+    if (count > 1 && (program_->blocks[count - 1].flags & kBlockProgramEnd)) return count - 2;
+    return count - 1;
+}
+
+std::uint32_t ProgramScan::blockAtOffset(std::uint32_t offset) const {
+    // First block whose text ends after `offset`.
+    std::uint32_t low = 0, high = blockCount();
+    while (low < high) {
+        const std::uint32_t mid = low + (high - low) / 2;
+        const TextSpan span = program_->blocks[mid].sourceText;
+        if (span.offset + span.length <= offset)
+            low = mid + 1;
+        else
+            high = mid;
+    }
+    return low;
+}
+
+std::uint32_t ProgramScan::blockAtLine(std::uint32_t line) const {
+    // Last block starting on or before `line`.
+    std::uint32_t low = 0, high = blockCount();
+    while (low < high) {
+        const std::uint32_t mid = low + (high - low) / 2;
+        if (program_->blocks[mid].line <= line)
+            low = mid + 1;
+        else
+            high = mid;
+    }
+    return low == 0 ? 0 : low - 1;
+}
+
+std::optional<std::uint32_t> ProgramScan::findTextAfter(std::uint32_t block,
+                                                        std::string_view needle) const {
+    const std::uint32_t count = blockCount();
+    if (needle.empty() || block + 1 >= count) return std::nullopt;
+    const TextSpan from = program_->blocks[block].sourceText;
+    const TextSpan last = program_->blocks[lastSelectableBlock()].sourceText;
+    const std::string_view source = program_->source;
+    const std::size_t end = std::min<std::size_t>(source.size(), last.offset + last.length);
+    const std::size_t start = from.offset + from.length;
+    if (start >= end) return std::nullopt;
+    const std::size_t hit = findFolded(source.substr(0, end), needle, start);
+    if (hit == std::string_view::npos) return std::nullopt;
+    const std::uint32_t found = blockAtOffset(static_cast<std::uint32_t>(hit));
+    if (found >= count || found <= block) return std::nullopt;
+    return std::min(found, lastSelectableBlock());
+}
+
+std::optional<std::uint32_t> ProgramScan::lastPrimaryIn(std::uint32_t first,
+                                                        std::uint32_t end) const {
+    if (!primariesBuilt_) {
+        const std::uint32_t count = blockCount();
+        for (std::uint32_t i = 0; i < count; ++i)
+            if (program_->blocks[i].flags & kBlockPrimary) primaries_.push_back(i);
+        primariesBuilt_ = true;
+    }
+    auto it = std::lower_bound(primaries_.begin(), primaries_.end(), end);
+    if (it == primaries_.begin()) return std::nullopt;
+    --it;
+    if (*it < first) return std::nullopt;
+    return *it;
+}
+
+long ProgramScan::jumpWordOf(std::uint32_t block) const {
+    const Block b = program_->blocks[block];
+    for (std::uint32_t w = b.firstWord; w < b.firstWord + b.wordCount; ++w)
+        if (program_->words[w].kind == WordKind::Jump) return static_cast<long>(w);
+    return -1;
+}
+
+bool ProgramScan::hasG(std::uint32_t block, int g) const {
+    const Block b = program_->blocks[block];
+    for (std::uint32_t w = b.firstWord; w < b.firstWord + b.wordCount; ++w) {
+        const Word word = program_->words[w];
+        if (word.kind == WordKind::G && word.expr < 0 && word.number == g) return true;
+    }
+    return false;
+}
+
+bool ProgramScan::modalActiveBefore(std::uint32_t block, int on, int off) const {
+    // Nearest real occurrence of each G word before the block, by source offset.
+    const std::string_view source = program_->source;
+    auto nearest = [&](int g) -> std::size_t {
+        const std::string needle = "G" + std::to_string(g);
+        std::size_t before = program_->blocks[block].sourceText.offset;
+        while (true) {
+            const std::size_t hit = findFoldedBackward(source, needle, before);
+            if (hit == std::string_view::npos) return hit;
+            const std::size_t after = hit + needle.size();
+            const bool wholeNumber =
+                after >= source.size() || source[after] < '0' || source[after] > '9';
+            if (wholeNumber && hasG(blockAtOffset(static_cast<std::uint32_t>(hit)), g)) return hit;
+            before = hit;
+        }
+    };
+    const std::size_t onAt = nearest(on);
+    if (onAt == std::string_view::npos) return false;
+    const std::size_t offAt = nearest(off);
+    return offAt == std::string_view::npos || onAt > offAt;
+}
+
+bool ProgramScan::stopsStraightFlow(std::uint32_t block, bool& isReturn) const {
+    isReturn = false;
+    const Block b = program_->blocks[block];
+    for (std::uint32_t w = b.firstWord; w < b.firstWord + b.wordCount; ++w) {
+        const Word word = program_->words[w];
+        if (word.kind == WordKind::M && word.expr < 0 && (word.number == 2 || word.number == 30))
+            return true;
+        if (word.kind != WordKind::Jump) continue;
+        switch (word.jump) {
+            case JumpKind::RTS:
+                isReturn = true;
+                return true;
+            case JumpKind::BRA:
+            case JumpKind::JMP:
+            case JumpKind::BST:
+            case JumpKind::RET:
+                return true;
+            default:
+                break;
+        }
+    }
+    return (b.flags & kBlockProgramEnd) != 0;
+}
+
+std::optional<std::uint32_t> ProgramScan::returnWithoutCall() const {
+    if (returnWithoutCall_) return *returnWithoutCall_;
+    std::optional<std::uint32_t> result;
+    // Text prefilter: only programs that contain "RTS" at all are walked, and
+    // only up to the first real RTS.
+    std::size_t from = 0;
+    std::optional<std::uint32_t> firstReturn;
+    while (!firstReturn) {
+        const std::size_t hit = findFolded(program_->source, "RTS", from);
+        if (hit == std::string_view::npos) break;
+        const std::uint32_t b = blockAtOffset(static_cast<std::uint32_t>(hit));
+        if (b >= blockCount()) break;
+        const long w = jumpWordOf(b);
+        if (w >= 0 && program_->words[static_cast<std::size_t>(w)].jump == JumpKind::RTS)
+            firstReturn = b;
+        from = hit + 3;
+    }
+    if (firstReturn) {
+        for (std::uint32_t b = 0; b <= *firstReturn; ++b) {
+            bool isReturn = false;
+            if (!stopsStraightFlow(b, isReturn)) continue;
+            if (isReturn) result = b;
+            break;
+        }
+    }
+    returnWithoutCall_ = result;
+    return result;
+}
+
+}  // namespace mtc::core

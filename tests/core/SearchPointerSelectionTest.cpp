@@ -1,0 +1,232 @@
+// Search pointer of the restart screen: search string, start block (last
+// primary block), number of runs, warnings and the selection <Enter> builds
+// (seed 000, 2.3-2.6 and 5.1).
+#include <gtest/gtest.h>
+
+#include "SearchPointerTestSupport.h"
+
+using namespace mtc::core;
+using namespace mtc::core::testing;
+
+namespace {
+
+struct SearchSelectionTest : ::testing::Test {
+    SearchStore cell;
+    SearchPointer pointer{cell.store, 0, cell.sources()};
+
+    void SetUp() override { ASSERT_TRUE(pointer.begin(5).ok); }
+    void cursorOn(int n) { pointer.moveTo(blockOf(pointer, n)); }
+    std::string code(const SearchReply& reply) { return reply.note ? reply.note->code : ""; }
+    std::vector<std::string> codes(const AcceptResult& result) {
+        std::vector<std::string> list;
+        for (const auto& d : result.diagnostics.items())
+            list.push_back(d.code);
+        return list;
+    }
+};
+
+}  // namespace
+
+TEST_F(SearchSelectionTest, SearchFindsWordsForwardFromTheCursor) {
+    ASSERT_TRUE(pointer.search("BSR").ok);
+    EXPECT_EQ(cursorText(pointer), "P5 N0002");
+    ASSERT_TRUE(pointer.search("BSR").ok) << "the next occurrence, not the cursor block";
+    EXPECT_EQ(cursorText(pointer), "P5 N0005");
+}
+
+TEST_F(SearchSelectionTest, SearchIncludesCommentsAndIgnoresCase) {
+    ASSERT_TRUE(pointer.search("second primary").ok);
+    EXPECT_EQ(cursorText(pointer), "P5 N0007");
+    ASSERT_TRUE(pointer.search("side WALL").ok);
+    EXPECT_EQ(cursorText(pointer), "P5 N0020");
+}
+
+TEST_F(SearchSelectionTest, AHitOnACommentLineGoesToTheNextBlock) {
+    ASSERT_TRUE(pointer.search("hidden-gem").ok);
+    EXPECT_EQ(cursorText(pointer), "P5 N0020");
+}
+
+TEST_F(SearchSelectionTest, SearchDoesNotWrapAndKeepsTheCursor) {
+    cursorOn(20);
+    auto reply = pointer.search("BSR .TOOL");
+    EXPECT_FALSE(reply.ok);
+    EXPECT_EQ(code(reply), "RESTART_TEXT_NOT_FOUND");
+    EXPECT_NE(reply.note->message.find("not found after N0020"), std::string::npos);
+    EXPECT_EQ(cursorText(pointer), "P5 N0020");
+    EXPECT_EQ(code(pointer.search("")), "RESTART_SEARCH_EMPTY");
+    EXPECT_EQ(code(pointer.search("PROGRAMMENDE")), "RESTART_TEXT_NOT_FOUND")
+        << "the end of the program is not a target";
+}
+
+TEST_F(SearchSelectionTest, SearchWorksInTheDisplayedLevel) {
+    cursorOn(2);
+    ASSERT_TRUE(pointer.planePlus().ok);  // P99 .TOOL
+    ASSERT_TRUE(pointer.search("deep").ok);
+    EXPECT_EQ(cursorText(pointer), "P99 N0003");
+}
+
+TEST_F(SearchSelectionTest, FindFoldedMatchesEveryPositionOfTheText) {
+    // Lengths around the 16-byte SSE2 step, hits at the start, inside and at the end.
+    std::string text(100, 'x');
+    text.replace(0, 3, "AbC");
+    text.replace(40, 3, "abc");
+    text.replace(97, 3, "ABC");
+    EXPECT_EQ(ProgramScan::findFolded(text, "abc"), 0u);
+    EXPECT_EQ(ProgramScan::findFolded(text, "ABC", 1), 40u);
+    EXPECT_EQ(ProgramScan::findFolded(text, "abc", 41), 97u);
+    EXPECT_EQ(ProgramScan::findFolded(text, "abc", 98), std::string::npos);
+    EXPECT_EQ(ProgramScan::findFolded(text, "x"), 3u);
+    EXPECT_EQ(ProgramScan::findFolded("short", "longer than the text"), std::string::npos);
+    EXPECT_EQ(ProgramScan::findFolded("@[`{", "@[`{"), 0u) << "no folding outside A-Z";
+    EXPECT_EQ(ProgramScan::findFolded("`{", "@["), std::string::npos);
+}
+
+TEST_F(SearchSelectionTest, StartBlockIsN0000UnlessTheLastPrimaryBlockIsChosen) {
+    cursorOn(12);
+    auto start = pointer.startBlock();
+    ASSERT_TRUE(start);
+    EXPECT_FALSE(start->primary);
+    EXPECT_EQ(start->block.block, 0u);
+    ASSERT_TRUE(pointer.setFromLastPrimary(true).ok);
+    start = pointer.startBlock();
+    ASSERT_TRUE(start);
+    EXPECT_TRUE(start->primary);
+    EXPECT_EQ(start->block.block, blockOf(pointer, 7));
+    cursorOn(7);  // the target itself is not "before the target"
+    EXPECT_EQ(pointer.startBlock()->block.block, blockOf(pointer, 1));
+    cursorOn(8);
+    EXPECT_EQ(pointer.startBlock()->block.block, blockOf(pointer, 7));
+}
+
+TEST_F(SearchSelectionTest, NoPrimaryBlockBeforeTheTargetIsRefusedAndWarned) {
+    cursorOn(1);  // N0001 is the first primary block: nothing before it
+    auto reply = pointer.setFromLastPrimary(true);
+    EXPECT_FALSE(reply.ok);
+    EXPECT_EQ(code(reply), "RESTART_NO_PRIMARY");
+    EXPECT_FALSE(pointer.fromLastPrimary());
+    // Switched on further down, then the cursor moves up: Enter refuses.
+    cursorOn(3);
+    ASSERT_TRUE(pointer.setFromLastPrimary(true).ok);
+    cursorOn(0);
+    EXPECT_FALSE(pointer.startBlock());
+    const AcceptResult result = pointer.accept();
+    EXPECT_FALSE(result.ok);
+    EXPECT_EQ(codes(result), std::vector<std::string>{"RESTART_NO_PRIMARY"});
+}
+
+TEST_F(SearchSelectionTest, PrimaryBlockInASubroutineOrOnTheWayThere) {
+    // Program 6 has a primary block N0001; JSR 6 in N0008 of program 5.
+    cursorOn(8);
+    ASSERT_TRUE(pointer.planePlus().ok);
+    pointer.end();  // P6 N0002 RTS
+    ASSERT_TRUE(pointer.setFromLastPrimary(true).ok);
+    auto start = pointer.startBlock();
+    EXPECT_EQ(start->level, 1);
+    EXPECT_EQ(start->block.program, 6);
+    EXPECT_EQ(start->block.block, 1u);
+    // On N0000 of program 6 the last primary block is N0007 of program 5.
+    pointer.home();
+    start = pointer.startBlock();
+    EXPECT_EQ(start->level, 0);
+    EXPECT_EQ(start->block.program, 5);
+    EXPECT_EQ(start->block.block, 7u);
+    // In .SIDE (entered from N0005) the blocks between N0005 and the label are skipped.
+    ASSERT_TRUE(pointer.planeMinus().ok);
+    cursorOn(5);
+    ASSERT_TRUE(pointer.planePlus().ok);
+    EXPECT_EQ(pointer.startBlock()->block.block, 1u) << "N0001, not N0007 after the call";
+}
+
+TEST_F(SearchSelectionTest, NumberOfRunsIsValidatedAndOldValueKept) {
+    ASSERT_TRUE(pointer.setRuns("3").ok);
+    EXPECT_EQ(pointer.runs(), 3u);
+    auto reply = pointer.setRuns("0");
+    EXPECT_EQ(code(reply), "RESTART_RUNS_RANGE");
+    EXPECT_NE(reply.note->message.find("1 ... 65536"), std::string::npos);
+    EXPECT_EQ(code(pointer.setRuns("65537")), "RESTART_RUNS_RANGE");
+    EXPECT_EQ(code(pointer.setRuns("99999999999999999999999")), "RESTART_RUNS_RANGE");
+    EXPECT_EQ(code(pointer.setRuns("abc")), "RESTART_RUNS_TEXT");
+    EXPECT_EQ(code(pointer.setRuns("2.5")), "RESTART_RUNS_TEXT");
+    EXPECT_EQ(code(pointer.setRuns("-4")), "RESTART_RUNS_TEXT");
+    EXPECT_EQ(code(pointer.setRuns("")), "RESTART_RUNS_TEXT");
+    EXPECT_EQ(pointer.runs(), 3u);
+    ASSERT_TRUE(pointer.setRuns(" 65536 ").ok);
+    EXPECT_EQ(pointer.runs(), 65536u);
+    ASSERT_TRUE(pointer.setRuns("1").ok);
+    EXPECT_EQ(pointer.runs(), 1u);
+}
+
+TEST_F(SearchSelectionTest, RunsGoBackToOneOnEntryAndAfterTheComputingProcess) {
+    ASSERT_TRUE(pointer.setRuns("12").ok);
+    pointer.computingProcessDone();
+    EXPECT_EQ(pointer.runs(), 1u);
+    ASSERT_TRUE(pointer.setRuns("12").ok);
+    ASSERT_TRUE(pointer.begin(5).ok);
+    EXPECT_EQ(pointer.runs(), 1u);
+}
+
+TEST_F(SearchSelectionTest, AcceptBuildsTheSelectionWithPathAndTarget) {
+    cursorOn(5);
+    ASSERT_TRUE(pointer.planePlus().ok);  // .SIDE
+    pointer.down();                       // N0021
+    ASSERT_TRUE(pointer.setRuns("3").ok);
+    const AcceptResult result = pointer.accept();
+    ASSERT_TRUE(result.ok);
+    const RestartSelection& s = result.selection;
+    EXPECT_EQ(s.process, 0);
+    EXPECT_EQ(s.mainProgram, 5);
+    ASSERT_EQ(s.path.size(), 1u);
+    EXPECT_EQ(s.path[0], (BlockRef{5, 5}));
+    EXPECT_EQ(s.target, (BlockRef{5, 21}));
+    EXPECT_EQ(s.runs, 3u);
+    EXPECT_FALSE(s.fromLastPrimary);
+    EXPECT_TRUE(result.diagnostics.empty());
+}
+
+TEST_F(SearchSelectionTest, AcceptIsRefusedWhileAWindowIsOpen) {
+    cursorOn(10);
+    ASSERT_TRUE(pointer.planePlus().ok);
+    const AcceptResult result = pointer.accept();
+    EXPECT_FALSE(result.ok);
+    EXPECT_EQ(codes(result), std::vector<std::string>{"RESTART_WINDOW_OPEN"});
+}
+
+TEST_F(SearchSelectionTest, WarnsWhenASubroutineSitsAtTheProgramStart) {
+    ASSERT_TRUE(pointer.begin(8).ok);
+    pointer.moveTo(4);  // N0004 after the subroutine and its call
+    AcceptResult result = pointer.accept();
+    ASSERT_TRUE(result.ok);
+    ASSERT_EQ(codes(result), std::vector<std::string>{"RESTART_START_BLOCK_NEEDED"});
+    EXPECT_EQ(result.diagnostics.items()[0].where.block, "N0001");
+    // With the start block chosen the warning is gone.
+    ASSERT_TRUE(pointer.setFromLastPrimary(true).ok);
+    result = pointer.accept();
+    ASSERT_TRUE(result.ok);
+    EXPECT_TRUE(result.diagnostics.empty());
+    EXPECT_EQ(result.start.block.block, 2u);
+    // A target inside the subroutine itself is reached before its RTS.
+    ASSERT_TRUE(pointer.setFromLastPrimary(false).ok);
+    pointer.moveTo(1);
+    EXPECT_TRUE(pointer.accept().diagnostics.empty());
+    // Program 5 has its subroutine after M30: no warning.
+    ASSERT_TRUE(pointer.begin(5).ok);
+    pointer.end();
+    EXPECT_TRUE(pointer.accept().diagnostics.empty());
+}
+
+TEST_F(SearchSelectionTest, WarnsWhenTheStartBlockLiesAfterG91OrG51) {
+    ASSERT_TRUE(pointer.begin(7).ok);
+    ASSERT_TRUE(pointer.setFromLastPrimary(false).ok);
+    pointer.moveTo(2);  // start N0001: G91 only in its comment and later
+    ASSERT_TRUE(pointer.setFromLastPrimary(true).ok);
+    EXPECT_TRUE(pointer.accept().diagnostics.empty());
+    pointer.moveTo(4);  // start N0003 after G91 in N0002
+    AcceptResult result = pointer.accept();
+    ASSERT_TRUE(result.ok);
+    EXPECT_EQ(codes(result), std::vector<std::string>{"RESTART_START_AFTER_G91"});
+    EXPECT_EQ(result.diagnostics.items()[0].where.block, "N0003");
+    pointer.moveTo(6);  // start N0005: G90 in N0004 ends G91
+    EXPECT_TRUE(pointer.accept().diagnostics.empty());
+    pointer.moveTo(8);  // start N0007 after G51 in N0006
+    EXPECT_EQ(codes(pointer.accept()), std::vector<std::string>{"RESTART_START_AFTER_G51"});
+}
