@@ -11,6 +11,10 @@ namespace mtc::core {
 
 namespace {
 
+/// Bound of the breadcrumb (branches do not count as program levels but
+/// every <Plane+> is a step <Plane-> can undo).
+constexpr std::size_t kMaxPlaneSteps = 32;
+
 bool isCall(JumpKind kind) {
     return kind == JumpKind::BSR || kind == JumpKind::JSR || kind == JumpKind::BEV ||
            kind == JumpKind::JEV;
@@ -188,9 +192,14 @@ SearchReply SearchPointer::planePlus() {
         default:
             break;
     }
-    if (levels_.size() >= static_cast<std::size_t>(kMaxSearchLevels))
+    if (isCall(jump.kind) && programLevels().size() >= static_cast<std::size_t>(kMaxSearchLevels))
         return refuse("RESTART_LEVEL_LIMIT",
-                      "the target can be at most on the 10th level (9 nested <Plane+>)");
+                      "the target can be at most on the 10th program level (9 nested calls, "
+                      "seed 000, 2.5)");
+    if (levels_.size() > kMaxPlaneSteps)
+        return refuse("RESTART_LEVEL_LIMIT",
+                      "at most " + std::to_string(kMaxPlaneSteps) +
+                          " <Plane+> steps are kept: go back with <Plane-> first");
     if (jump.hasEvent) {
         if (!EventTable::valid(jump.event.process, jump.event.event))
             return refuse("RESTART_EVENT_INVALID",
@@ -367,14 +376,35 @@ SearchReply SearchPointer::search(std::string_view text) {
     return {};
 }
 
+std::vector<ProgramLevel> SearchPointer::programLevels() const {
+    std::vector<ProgramLevel> list;
+    if (!active()) return list;
+    list.push_back({levels_[0].program, 0, nullptr, 0});
+    for (std::size_t i = 1; i < levels_.size(); ++i) {
+        const SearchLevel& level = levels_[i];
+        if (level.call)
+            list.push_back(
+                {level.program, level.entry, levels_[i - 1].program, levels_[i - 1].cursor});
+        else if (level.via == JumpKind::JMP)
+            list.assign(1, ProgramLevel{level.program, 0, nullptr, 0});
+    }
+    return list;
+}
+
 std::optional<StartBlock> SearchPointer::startBlock() const {
     if (!active()) return std::nullopt;
-    if (!fromLastPrimary_) return StartBlock{0, BlockRef{levels_[0].program->number, 0}, false};
-    for (std::size_t level = levels_.size(); level-- > 0;) {
-        const SearchLevel& l = levels_[level];
-        const std::uint32_t end = level + 1 == levels_.size() ? l.cursor : l.cursor + 1;
-        if (auto primary = scan(l.program).lastPrimaryIn(l.entry, end))
-            return StartBlock{static_cast<int>(level), BlockRef{l.program->number, *primary}, true};
+    const std::vector<ProgramLevel> levels = programLevels();
+    if (!fromLastPrimary_) return StartBlock{0, BlockRef{levels[0].program->number, 0}, false};
+    // Backwards from the target on its level, then from each call (inclusive) outwards.
+    ProgramPtr position = current().program;
+    std::uint32_t end = current().cursor;  // exclusive
+    for (std::size_t k = levels.size(); k-- > 0;) {
+        const std::uint32_t lower = position == levels[k].program ? levels[k].entry : 0;
+        if (auto primary = scan(position).lastPrimaryIn(lower, end))
+            return StartBlock{static_cast<int>(k), BlockRef{position->number, *primary}, true};
+        if (k == 0) break;
+        position = levels[k].caller;
+        end = levels[k].callBlock + 1;
     }
     return std::nullopt;
 }
@@ -450,25 +480,37 @@ AcceptResult SearchPointer::accept() const {
 
 void SearchPointer::addWarnings(const StartBlock& start, DiagnosticList& diagnostics) const {
     if (!start.primary) {
-        const SearchLevel& main = levels_.front();
-        const auto rts = scan(main.program).returnWithoutCall();
-        if (rts && *rts < main.cursor)
+        // The block of the outermost program level the way passes: the call
+        // into level 1, or the target itself.
+        const std::vector<ProgramLevel> levels = programLevels();
+        const ProgramPtr& main = levels[0].program;
+        std::optional<std::uint32_t> passed;
+        if (levels.size() > 1 && levels[1].caller == main)
+            passed = levels[1].callBlock;
+        else if (levels.size() == 1 && current().program == main)
+            passed = current().cursor;
+        const auto rts = scan(main).returnWithoutCall();
+        if (rts && passed && *rts < *passed) {
+            SearchLevel shown{main, *rts, 0, JumpKind::BRA, false};
             diagnostics.warning(
-                "RESTART_START_BLOCK_NEEDED", where(main, *rts),
-                "the program starts with a subroutine (RTS in " + main.program->blockId(*rts) +
+                "RESTART_START_BLOCK_NEEDED", where(shown, *rts),
+                "the program starts with a subroutine (RTS in " + main->blockId(*rts) +
                     " without a call): select 'restart from last primary block', otherwise the "
                     "computing process runs into the subroutine (seed 000, 2.4)");
+        }
         return;
     }
-    const SearchLevel& level = levels_[static_cast<std::size_t>(start.level)];
-    const ProgramScan& s = scan(level.program);
+    const ProgramPtr program = store_.find(process_, start.block.program);
+    if (!program) return;
+    const ProgramScan& s = scan(program);
     const std::uint32_t block = start.block.block;
+    const SearchLevel shown{program, block, 0, JumpKind::BRA, false};
     if (s.modalActiveBefore(block, 91, 90))
-        diagnostics.warning("RESTART_START_AFTER_G91", where(level, block),
+        diagnostics.warning("RESTART_START_AFTER_G91", where(shown, block),
                             "the start block lies after an incremental dimension G91: the "
                             "computing process starts in G90 (seed 000, 5.1)");
     if (s.modalActiveBefore(block, 51, 50))
-        diagnostics.warning("RESTART_START_AFTER_G51", where(level, block),
+        diagnostics.warning("RESTART_START_AFTER_G51", where(shown, block),
                             "the start block lies after an incremental zero offset G51: the "
                             "computing process does not see it (seed 000, 5.1)");
 }

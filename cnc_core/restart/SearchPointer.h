@@ -64,9 +64,19 @@ struct SearchReply {
     std::optional<Diagnostic> note;
 };
 
+/// A program level as the running program would have it (seed 000, 2.5):
+/// calls (BSR, JSR, BEV, JEV) open one, JMP replaces all of them, branches
+/// stay on theirs. The 10-level limit counts these.
+struct ProgramLevel {
+    ProgramPtr program;
+    std::uint32_t entry = 0;      ///< block the level was entered at
+    ProgramPtr caller;            ///< program of the call (level > 0)
+    std::uint32_t callBlock = 0;  ///< block of the call in `caller`
+};
+
 /// Where the computing process starts (seed 000, 2.4).
 struct StartBlock {
-    int level = 0;         ///< search level of the start block
+    int level = 0;         ///< program level of the start block (0 = outermost)
     BlockRef block;        ///< program and block index
     bool primary = false;  ///< the last primary block before the target
 };
@@ -176,6 +186,8 @@ class SearchPointer {
     /// The jump or call that opened `level` as written ("BSR .CONTUR",
     /// "JSR @10"); "" for level 0.
     std::string levelCommand(std::size_t level) const;
+    /// The program levels of the way to the target (outermost first).
+    std::vector<ProgramLevel> programLevels() const;
     /// Variables and events changed in the windows so far.
     const std::map<int, double>& variableChanges() const { return variableChanges_; }
     const std::map<EventRef, bool>& eventChanges() const { return eventChanges_; }

@@ -116,6 +116,11 @@ TEST_F(SearchPointerTest, JmpContinuesTheSearchInTheOtherProgram) {
     ASSERT_TRUE(pointer.planePlus().ok);
     EXPECT_EQ(cursorText(pointer), "P7 N0000");
     EXPECT_FALSE(pointer.current().call);
+    // JMP ends program 5: program 7 is the only program level, the
+    // computing process starts at its N0000.
+    ASSERT_EQ(pointer.programLevels().size(), 1u);
+    EXPECT_EQ(pointer.programLevels()[0].program->number, 7);
+    EXPECT_EQ(pointer.startBlock()->block, (BlockRef{7, 0}));
 }
 
 TEST_F(SearchPointerTest, JsrByVariableShowsTheValueAndJumpsWithIt) {
@@ -285,8 +290,7 @@ TEST(SearchPointerPrograms, TestProgramsParseWithoutErrors) {
     for (const auto& [key, program] : cell.store.programs()) {
         EXPECT_FALSE(program->diagnostics.hasErrors())
             << "program " << key.second << ": "
-            << (program->diagnostics.empty() ? ""
-                                             : program->diagnostics.items().front().message);
+            << (program->diagnostics.empty() ? "" : program->diagnostics.items().front().message);
     }
     EXPECT_EQ(cell.store.cycles().at("PECK")->findLabel("*PECK"), 0);
 }

@@ -47,8 +47,9 @@ inline const char* kSearchLibrary =
     "N0001 M30\n"
     "N0002 .TOOL M6 RTS\n"
     "N0003 .DEEP G1 X1 BSR .DEEP ;recursion for the level limit\n"
-    "N0004 RTS\n"
-    "N0005 PROGRAMMENDE\n";
+    "N0004 BRA .DEEP ;branch: no new program level\n"
+    "N0005 RTS\n"
+    "N0006 PROGRAMMENDE\n";
 
 inline const char* kSearchSub6 =
     "N0000 (SUBPROGRAM 6)\n"
