@@ -59,6 +59,10 @@ struct UserDataElement {
     double maximum = 0.0;
     double defaultValue = 0.0;
     std::string unit;
+    bool protectedNc = false;   ///< NC programs (MTD(...)=...) may not write it
+    bool protectedSps = false;  ///< the SPS (MTD_WR) may not write it
+    bool protectedGui = false;  ///< the operator may not change it
+    bool password = false;      ///< the operator needs the machine data password
 };
 
 struct UserDataPage {
@@ -94,6 +98,10 @@ struct ProcessConfig {
 /// The whole cell: the machine configuration the simulator runs on.
 struct MachineConfig {
     std::string name;
+    /// Password the operator gives for password-protected machine data
+    /// (`[cell] md_password`); empty = the built-in default of
+    /// docs/decisions/machine-data.md.
+    std::string machineDataPassword;
     std::vector<ProcessConfig> processes;
 
     const ProcessConfig* process(int index) const;

@@ -122,6 +122,10 @@ class Reader {
     void cellKey(const std::string& key, const std::string& value) {
         if (key == "name")
             r_.config.name = value;
+        else if (key == "md_password" && !value.empty() && value.find(' ') == std::string::npos)
+            r_.config.machineDataPassword = value;
+        else if (key == "md_password")
+            error("CFG_VALUE", "md_password must be one word");
         else
             error("CFG_KEY", "unknown key '" + key + "' in [cell]");
     }
@@ -289,18 +293,48 @@ class Reader {
             UserDataElement e;
             auto fields = splitWords(v, '|');
             if (k.rfind("element ", 0) != 0 || !parseInt(trim(k.substr(8)), e.number) ||
-                fields.size() < 5)
-                return error(
-                    "CFG_PAGE",
-                    "expected 'element N = designation | type | min | max | default [| unit]'");
+                fields.size() < 5 || fields.size() > 7)
+                return error("CFG_PAGE",
+                             "expected 'element N = designation | type | min | max | default "
+                             "[| unit [| protection]]'");
             e.designation = fields[0];
             e.type = fields[1];
+            if (!knownDataType(e.type))
+                return error("CFG_PAGE", "unknown data type '" + e.type +
+                                             "' (BOOL SINT UINT AMPL PERC INT REAL)");
             if (!parseDouble(fields[2], e.minimum) || !parseDouble(fields[3], e.maximum) ||
-                !parseDouble(fields[4], e.defaultValue) || e.minimum > e.maximum)
+                !parseDouble(fields[4], e.defaultValue) || e.minimum > e.maximum ||
+                e.defaultValue < e.minimum || e.defaultValue > e.maximum)
                 return error("CFG_PAGE", "bad range or default in element " + trim(k.substr(8)));
-            if (fields.size() > 5) e.unit = fields[5];
+            if (fields.size() > 5 && fields[5] != "-") e.unit = fields[5];
+            if (fields.size() > 6 && !readProtection(fields[6], e))
+                return error("CFG_PAGE", "protection must list nc, sps, gui, password; got '" +
+                                             fields[6] + "'");
             pg.elements.push_back(e);
         };
+    }
+
+    static bool knownDataType(const std::string& type) {
+        for (const char* name : {"BOOL", "SINT", "UINT", "AMPL", "PERC", "INT", "REAL"})
+            if (type == name) return true;
+        return false;
+    }
+
+    /// "nc sps gui password" (any subset, blank-separated) into the flags.
+    static bool readProtection(const std::string& text, UserDataElement& e) {
+        for (const std::string& word : splitWords(text)) {
+            if (word == "nc")
+                e.protectedNc = true;
+            else if (word == "sps")
+                e.protectedSps = true;
+            else if (word == "gui")
+                e.protectedGui = true;
+            else if (word == "password")
+                e.password = true;
+            else
+                return false;
+        }
+        return true;
     }
 
     MachineConfigReadResult& r_;

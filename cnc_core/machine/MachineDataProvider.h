@@ -18,15 +18,20 @@ enum class MachineDataWriter { Nc, Sps, Gui };
 
 enum class MachineDataStatus {
     Ok,
-    UnknownPage,     ///< no such page (or not provided by this implementation)
-    UnknownProcess,  ///< the page does not exist for that process
-    UnknownElement,  ///< element / sub index outside the page
-    OutOfRange,      ///< value outside the element's value range
-    WriteProtected,  ///< the writer may not change the element
+    UnknownPage,       ///< no such page (or not provided by this implementation)
+    UnknownProcess,    ///< the page does not exist for that process
+    UnknownElement,    ///< element / sub index outside the page
+    OutOfRange,        ///< value outside the element's value range
+    WriteProtected,    ///< the writer may not change the element
+    WrongType,         ///< not a whole number for BOOL/SINT/UINT/INT elements
+    PasswordRequired,  ///< the operator must give the machine data password
+    WrongPassword,     ///< the operator gave a password that does not match
 };
 
 /// Stable code for a status ("MTD_UNKNOWN_PAGE", ...; "" for Ok).
 const char* machineDataStatusCode(MachineDataStatus status);
+/// One sentence for the operator ("value outside the element's range", ...).
+const char* machineDataStatusText(MachineDataStatus status);
 
 /// The machine data the NC reads and writes with MTD. One object per cell,
 /// shared by every process. Implementations never throw.

@@ -1,5 +1,6 @@
-// The in-memory machine data provider: user pages with ranges and defaults,
-// pages 60 and 61 as plain arrays, and what it does not provide.
+// The interpreter's own machine data (InMemoryMachineData = MachineDataStore
+// without persistence): user pages with ranges and defaults, pages 60 and 61,
+// and the pages it does not know.
 #include <gtest/gtest.h>
 
 #include "InterpTestSupport.h"
@@ -45,8 +46,9 @@ TEST(InMemoryMachineData, Pages60And61) {
 
 TEST(InMemoryMachineData, PagesItDoesNotProvide) {
     InMemoryMachineData data(demoCell());
-    double v = 0;
-    EXPECT_EQ(data.read({30, 0, 0, 1}, v), MachineDataStatus::UnknownPage);
+    double v = -1;
+    EXPECT_EQ(data.read({30, 0, 0, 1}, v), MachineDataStatus::Ok) << "page 30 is the store's";
+    EXPECT_EQ(v, 0);
     EXPECT_EQ(data.read({99, 0, 0, 1}, v), MachineDataStatus::UnknownPage);
     EXPECT_STREQ(machineDataStatusCode(MachineDataStatus::UnknownPage), "MTD_UNKNOWN_PAGE");
 }
