@@ -21,6 +21,7 @@ namespace mtc::hmi {
 namespace {
 const QString kMenuScreen = "menu";
 const QString kHelpScreen = "help";
+const QString kRestartScreen = "restart";
 }  // namespace
 
 PanelWindow::PanelWindow(CellSession* session, const ScreenRegistry* registry, QWidget* parent)
@@ -140,7 +141,9 @@ void PanelWindow::refresh() {
 }
 
 void PanelWindow::onMachineKey(mtc::core::ControlKey key) {
-    session_->pressKey(station_, key);
+    const bool accepted = session_->pressKey(station_, key);
+    // The M key 'NC program restart' brings up the restart screen (seed 000, 2.2).
+    if (accepted && key == mtc::core::ControlKey::ProgramRestart) showScreen(kRestartScreen);
 }
 
 void PanelWindow::restoreSettings() {

@@ -1,9 +1,13 @@
 #include "screens/ScreenCatalog.h"
 
+#include <memory>
+
 #include "hmi/ScreenRegistry.h"
 #include "screens/help/HelpScreen.h"
 #include "screens/menu/MenuScreen.h"
 #include "screens/programs/ProgramsScreen.h"
+#include "screens/restart/RestartControllers.h"
+#include "screens/restart/RestartScreen.h"
 #include "screens/signals/SignalsScreen.h"
 
 namespace mtc::screens {
@@ -18,6 +22,12 @@ void registerAllScreens(mtc::hmi::ScreenRegistry& registry) {
                  [](const ScreenContext& c) { return new SignalsScreen(c); });
     registry.add("help", "Key assignments",
                  [](const ScreenContext& c) { return new HelpScreen(c); });
+    // The restart screens of a station share one controller (selection,
+    // computing process, result).
+    auto restart = std::make_shared<RestartControllers>();
+    registry.add("restart", "NC program restart", [restart](const ScreenContext& c) {
+        return new RestartScreen(c, restart->forStation(c));
+    });
 }
 
 }  // namespace mtc::screens

@@ -228,25 +228,30 @@ bool ProgramScan::hasG(std::uint32_t block, int g) const {
 }
 
 bool ProgramScan::modalActiveBefore(std::uint32_t block, int on, int off) const {
-    // Nearest real occurrence of each G word before the block, by source offset.
+    // One backward pass for "G" + the common digits of both numbers (G9 for
+    // G90/G91); each hit is read as a whole G number and checked against the
+    // words of its block, so comments do not count.
+    const std::string onText = std::to_string(on), offText = std::to_string(off);
+    std::size_t common = 0;
+    while (common < onText.size() && common < offText.size() && onText[common] == offText[common])
+        ++common;
+    const std::string needle = "G" + onText.substr(0, common);
     const std::string_view source = program_->source;
-    auto nearest = [&](int g) -> std::size_t {
-        const std::string needle = "G" + std::to_string(g);
-        std::size_t before = program_->blocks[block].sourceText.offset;
-        while (true) {
-            const std::size_t hit = findFoldedBackward(source, needle, before);
-            if (hit == std::string_view::npos) return hit;
-            const std::size_t after = hit + needle.size();
-            const bool wholeNumber =
-                after >= source.size() || source[after] < '0' || source[after] > '9';
-            if (wholeNumber && hasG(blockAtOffset(static_cast<std::uint32_t>(hit)), g)) return hit;
-            before = hit;
-        }
-    };
-    const std::size_t onAt = nearest(on);
-    if (onAt == std::string_view::npos) return false;
-    const std::size_t offAt = nearest(off);
-    return offAt == std::string_view::npos || onAt > offAt;
+    std::size_t before = program_->blocks[block].sourceText.offset;
+    while (true) {
+        const std::size_t hit = findFoldedBackward(source, needle, before);
+        if (hit == std::string_view::npos) return false;
+        before = hit;
+        long number = 0;
+        std::size_t digit = hit + 1;
+        for (; digit < source.size() && source[digit] >= '0' && source[digit] <= '9' &&
+               digit < hit + 10;
+             ++digit)
+            number = number * 10 + (source[digit] - '0');
+        if (digit == hit + 1 || (number != on && number != off)) continue;
+        const std::uint32_t owner = blockAtOffset(static_cast<std::uint32_t>(hit));
+        if (owner < blockCount() && hasG(owner, static_cast<int>(number))) return number == on;
+    }
 }
 
 bool ProgramScan::stopsStraightFlow(std::uint32_t block, bool& isReturn) const {

@@ -31,6 +31,9 @@ class SignalsScreenTest : public QObject {
         auto* values = screen->findChild<QTableView*>("signalValues");
         auto* log = screen->findChild<QTableView*>("signalLog");
         panel.press(Qt::Key_F1, Qt::ShiftModifier);  // NC program restart M key
+        // The M key brings up the restart screen (seed 000, 2.2); back to the monitor.
+        QCOMPARE(panel.window->currentScreenName(), QString("restart"));
+        QVERIFY(panel.window->showScreen("signals"));
         bool found = false;
         for (int row = 0; row < values->model()->rowCount(); ++row)
             if (values->model()->index(row, 0).data().toString() == "mBPREP")

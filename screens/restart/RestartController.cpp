@@ -1,0 +1,300 @@
+#include "screens/restart/RestartController.h"
+
+#include "cnc_core/interp/Interpreter.h"
+#include "hmi/CellSession.h"
+#include "screens/restart/ProgramListingModel.h"
+
+namespace mtc::screens {
+
+namespace {
+
+/// The values the Plane+ windows show: variables of the station's (or
+/// another station's) interpreter and the events of the station.
+mtc::core::SearchSources stationSources(mtc::hmi::CellSession* session, int slot) {
+    mtc::core::SearchSources sources;
+    sources.readVariable = [session](int process, int index, double& value) {
+        const int owner = session->slotOfProcess(process);
+        if (owner < 0 || index < 0 || index >= mtc::core::kVariableCount) return false;
+        value =
+            session->interpreter(owner).state().variables.values[static_cast<std::size_t>(index)];
+        return true;
+    };
+    sources.readEvent = [session, slot](int process, int event) {
+        return session->interpreter(slot).events().get(process, event);
+    };
+    return sources;
+}
+
+QString programCaption(const mtc::core::Program& program) {
+    QString caption = QString("P%1").arg(program.number);
+    if (!program.title.empty()) caption += " " + QString::fromStdString(program.title);
+    return caption;
+}
+
+}  // namespace
+
+RestartController::RestartController(mtc::hmi::CellSession* session, int slot, QObject* parent)
+    : QObject(parent),
+      session_(session),
+      slot_(slot),
+      pointer_(session->store(), session->processConfig(slot).index, stationSources(session, slot)),
+      listing_(new ProgramListingModel(this)) {}
+
+RestartController::~RestartController() = default;
+
+QString RestartController::describe(const mtc::core::Diagnostic& d) {
+    QString where;
+    if (d.where.program) where += QString("P%1").arg(d.where.program);
+    if (!d.where.block.empty()) where += " " + QString::fromStdString(d.where.block);
+    if (d.where.line) where += QString(" line %1").arg(d.where.line);
+    const QString text = QString::fromStdString(d.message);
+    return where.isEmpty() ? text : where.trimmed() + ": " + text;
+}
+
+void RestartController::setMessage(RestartMessage::Level level, const QString& text) {
+    message_ = {level, text};
+}
+
+void RestartController::reply(const mtc::core::SearchReply& reply) {
+    if (reply.note)
+        setMessage(reply.ok ? RestartMessage::Level::Warning : RestartMessage::Level::Error,
+                   describe(*reply.note));
+    else
+        setMessage(RestartMessage::Level::None, {});
+}
+
+QString RestartController::refusalReason() const {
+    const auto& control = session_->control(slot_);
+    if (control.selectedProgram() == 0)
+        return "No program is selected: select it in the program directory first.";
+    if (control.mode() != mtc::core::OperatingMode::Automatic)
+        return "NC program restart needs automatic mode (seed 000, 2.1).";
+    if (control.programActive())
+        return "A program is active: stop it with Control reset before the restart (seed 000, "
+               "2.1).";
+    return {};
+}
+
+void RestartController::enter() {
+    const int number = session_->control(slot_).selectedProgram();
+    const mtc::core::SearchReply started = pointer_.begin(number);
+    shownProgram_ = nullptr;
+    accepted_ = {};
+    if (!started.ok) {
+        listing_->setProgram(nullptr);
+        reply(started);
+    } else {
+        showLevel();
+        const QString reason = refusalReason();
+        if (reason.isEmpty())
+            setMessage(RestartMessage::Level::Info,
+                       "Select the target block and press Enter (Plane+ follows jumps and calls).");
+        else
+            setMessage(RestartMessage::Level::Warning, reason);
+    }
+    emit changed();
+}
+
+void RestartController::showLevel() {
+    if (!pointer_.active()) return;
+    const auto& program = pointer_.current().program;
+    if (program.get() != shownProgram_) {
+        listing_->setProgram(program);
+        shownProgram_ = program.get();
+    }
+    cursorMoved();
+}
+
+void RestartController::cursorMoved() {
+    if (!pointer_.active()) return;
+    std::int64_t start = -1;
+    if (const auto s = pointer_.startBlock();
+        s && s->block.program == pointer_.current().program->number)
+        start = s->block.block;
+    listing_->setMarks(pointer_.current().cursor, start);
+}
+
+void RestartController::up() {
+    pointer_.up();
+    cursorMoved();
+    emit changed();
+}
+
+void RestartController::down() {
+    pointer_.down();
+    cursorMoved();
+    emit changed();
+}
+
+void RestartController::pageUp(int rows) {
+    pointer_.pageUp(static_cast<std::uint32_t>(std::max(1, rows)));
+    cursorMoved();
+    emit changed();
+}
+
+void RestartController::pageDown(int rows) {
+    pointer_.pageDown(static_cast<std::uint32_t>(std::max(1, rows)));
+    cursorMoved();
+    emit changed();
+}
+
+void RestartController::home() {
+    pointer_.home();
+    cursorMoved();
+    emit changed();
+}
+
+void RestartController::end() {
+    pointer_.end();
+    cursorMoved();
+    emit changed();
+}
+
+void RestartController::clickRow(int row) {
+    if (!pointer_.active()) return;
+    pointer_.moveTo(listing_->blockOfRow(row));
+    cursorMoved();
+    emit changed();
+}
+
+void RestartController::planePlus() {
+    reply(pointer_.planePlus());
+    const auto& window = pointer_.window();
+    if (window.kind == mtc::core::PlaneWindow::Kind::Event)
+        setMessage(RestartMessage::Level::Info,
+                   "Space changes the event, Enter follows the jump, Esc aborts.");
+    else if (window.kind == mtc::core::PlaneWindow::Kind::Variable)
+        setMessage(RestartMessage::Level::Info,
+                   "Enter follows the jump with the value shown (or a new one), Esc aborts.");
+    showLevel();
+    emit changed();
+}
+
+void RestartController::planeMinus() {
+    reply(pointer_.planeMinus());
+    showLevel();
+    emit changed();
+}
+
+void RestartController::confirmEvent(bool set) {
+    reply(pointer_.confirmEvent(set));
+    showLevel();
+    emit changed();
+}
+
+bool RestartController::confirmVariable(const QString& text) {
+    bool isNumber = false;
+    const double value = text.trimmed().toDouble(&isNumber);
+    if (!isNumber) {
+        setMessage(RestartMessage::Level::Error,
+                   QString("'%1' is not a program number.").arg(text.trimmed()));
+        emit changed();
+        return false;
+    }
+    const auto result = pointer_.confirmVariable(value);
+    reply(result);
+    showLevel();
+    emit changed();
+    return result.ok;
+}
+
+void RestartController::cancelWindow() {
+    pointer_.cancelWindow();
+    setMessage(RestartMessage::Level::Info, "Aborted: the cursor stays where it was.");
+    emit changed();
+}
+
+bool RestartController::search(const QString& text) {
+    lastSearch_ = text;
+    const auto result = pointer_.search(text.toStdString());
+    reply(result);
+    cursorMoved();
+    emit changed();
+    return result.ok;
+}
+
+bool RestartController::setRuns(const QString& text) {
+    const auto result = pointer_.setRuns(text.toStdString());
+    reply(result);
+    emit changed();
+    return result.ok;
+}
+
+void RestartController::toggleFromLastPrimary() {
+    reply(pointer_.setFromLastPrimary(!pointer_.fromLastPrimary()));
+    cursorMoved();
+    emit changed();
+}
+
+bool RestartController::accept() {
+    const QString reason = refusalReason();
+    if (!reason.isEmpty()) {
+        setMessage(RestartMessage::Level::Error, reason);
+        emit changed();
+        return false;
+    }
+    mtc::core::AcceptResult result = pointer_.accept();
+    QStringList notes;
+    for (const auto& d : result.diagnostics.items())
+        notes << describe(d);
+    if (!result.ok) {
+        setMessage(RestartMessage::Level::Error, notes.join("  "));
+        emit changed();
+        return false;
+    }
+    accepted_ = std::move(result);
+    if (notes.isEmpty())
+        setMessage(RestartMessage::Level::Info, "Target accepted: " + status());
+    else
+        setMessage(RestartMessage::Level::Warning, "Target accepted. " + notes.join("  "));
+    emit changed();
+    return true;
+}
+
+QString RestartController::breadcrumb() const {
+    if (!pointer_.active()) return "No program";
+    const auto& levels = pointer_.levels();
+    QString text = programCaption(*levels[0].program);
+    for (std::size_t i = 1; i < levels.size(); ++i) {
+        const auto& caller = levels[i - 1];
+        text += QString("  ▸  %1 %2  ▸  P%3 %4")
+                    .arg(QString::fromStdString(caller.program->blockId(caller.cursor)),
+                         QString::fromStdString(pointer_.levelCommand(i)))
+                    .arg(levels[i].program->number)
+                    .arg(QString::fromStdString(levels[i].program->blockId(levels[i].entry)));
+    }
+    return text;
+}
+
+QString RestartController::status() const {
+    if (!pointer_.active()) return {};
+    const auto& level = pointer_.current();
+    const auto& program = *level.program;
+    QString target = QString("Target P%1 %2 (line %3), program level %4")
+                         .arg(program.number)
+                         .arg(QString::fromStdString(program.blockId(level.cursor)))
+                         .arg(program.blocks[level.cursor].line)
+                         .arg(pointer_.programLevels().size());
+    QString start;
+    if (const auto s = pointer_.startBlock()) {
+        const auto startProgram = session_->store().find(pointer_.process(), s->block.program);
+        start =
+            QString("start P%1 %2%3")
+                .arg(s->block.program)
+                .arg(startProgram ? QString::fromStdString(startProgram->blockId(s->block.block))
+                                  : QString::number(s->block.block))
+                .arg(s->primary ? " (last primary block)" : "");
+    } else {
+        start = "start: no primary block before the target";
+    }
+    QString text = QString("%1  ·  %2").arg(target, start);
+    QStringList changes;
+    for (const auto& [variable, value] : pointer_.variableChanges())
+        changes << QString("@%1=%2").arg(variable).arg(value, 0, 'g', 10);
+    for (const auto& [event, set] : pointer_.eventChanges())
+        changes << QString("event %1:%2=%3").arg(event.process).arg(event.event).arg(set ? 1 : 0);
+    if (!changes.isEmpty()) text += "  ·  changed " + changes.join(", ");
+    return text + QString("  ·  runs %1").arg(pointer_.runs());
+}
+
+}  // namespace mtc::screens

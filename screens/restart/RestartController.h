@@ -1,0 +1,104 @@
+#pragma once
+
+#include <QObject>
+#include <QString>
+#include <memory>
+
+#include "cnc_core/restart/SearchPointer.h"
+
+namespace mtc::hmi {
+class CellSession;
+}
+
+namespace mtc::screens {
+
+class ProgramListingModel;
+
+/// A line the restart screens show under their content.
+struct RestartMessage {
+    enum class Level { None, Info, Warning, Error };
+    Level level = Level::None;
+    QString text;
+};
+
+/// The model behind the restart screens of one station: the search pointer
+/// (seed 000, 2.3-2.6) on the station's selected program, the listing it
+/// shows, and the operator's messages. Screens forward keys here and render
+/// what it says; it never touches widgets. One per station, shared by the
+/// restart, restart-result and repos screens (RestartControllers).
+class RestartController : public QObject {
+    Q_OBJECT
+  public:
+    RestartController(mtc::hmi::CellSession* session, int slot, QObject* parent = nullptr);
+    ~RestartController() override;
+
+    int slot() const { return slot_; }
+    mtc::hmi::CellSession* session() const { return session_; }
+    const mtc::core::SearchPointer& pointer() const { return pointer_; }
+    ProgramListingModel* listing() const { return listing_; }
+    const RestartMessage& message() const { return message_; }
+    /// The last accepted selection (valid after accept() returned true).
+    const mtc::core::AcceptResult& accepted() const { return accepted_; }
+
+    /// Entry into the restart screen (seed 000, 2.2): the search starts on
+    /// N0000 of the selected program, number of runs 1. Says why when it
+    /// cannot (no program selected, not in automatic mode, program active).
+    void enter();
+    /// True when a program is displayed (enter() succeeded).
+    bool active() const { return pointer_.active(); }
+
+    // ---- keys of the selection (each emits changed())
+    void up();
+    void down();
+    void pageUp(int rows);
+    void pageDown(int rows);
+    void home();
+    void end();
+    /// Mouse: cursor on the block shown on listing row `row`.
+    void clickRow(int row);
+    void planePlus();
+    void planeMinus();
+    /// Event window: follow with the event `set` / not set.
+    void confirmEvent(bool set);
+    /// Variable window: follow with the program number typed as `text`.
+    /// Returns false (window stays open) when refused.
+    bool confirmVariable(const QString& text);
+    void cancelWindow();
+    /// Search string; false when not found (cursor stays).
+    bool search(const QString& text);
+    const QString& lastSearch() const { return lastSearch_; }
+    /// Number of runs from the operator's text; false (old value kept) if refused.
+    bool setRuns(const QString& text);
+    void toggleFromLastPrimary();
+    /// <Enter>: validates the selection. True when accepted (accepted()).
+    bool accept();
+
+    /// "P1 COVER PLATE ▸ N0012 BSR .CONTUR ▸ P1 .CONTUR": the levels.
+    QString breadcrumb() const;
+    /// "Target P1 N0042 (line 50) · start N0000 · runs 1".
+    QString status() const;
+    /// Text for a core diagnostic: "P1 N0014 line 15: message".
+    static QString describe(const mtc::core::Diagnostic& diagnostic);
+
+  signals:
+    /// Anything the screens show changed.
+    void changed();
+
+  private:
+    void reply(const mtc::core::SearchReply& reply);
+    void setMessage(RestartMessage::Level level, const QString& text);
+    void showLevel();
+    void cursorMoved();
+    QString refusalReason() const;
+
+    mtc::hmi::CellSession* session_;
+    int slot_;
+    mtc::core::SearchPointer pointer_;
+    ProgramListingModel* listing_;
+    const mtc::core::Program* shownProgram_ = nullptr;
+    RestartMessage message_;
+    QString lastSearch_;
+    mtc::core::AcceptResult accepted_;
+};
+
+}  // namespace mtc::screens

@@ -1,0 +1,272 @@
+#include "screens/restart/RestartScreen.h"
+
+#include <QFontDatabase>
+#include <QKeyEvent>
+#include <QLabel>
+#include <QLineEdit>
+#include <QListView>
+#include <QVBoxLayout>
+
+#include "cnc_core/language/Keywords.h"
+#include "screens/restart/ProgramListingModel.h"
+#include "screens/restart/RestartController.h"
+#include "screens/restart/RestartPrompt.h"
+
+namespace mtc::screens {
+
+namespace {
+
+QString eventText(bool set) {
+    return set ? "1  (set)" : "0  (not set)";
+}
+
+QString messageStyle(RestartMessage::Level level) {
+    switch (level) {
+        case RestartMessage::Level::Error:
+            return "color: #b00000; font-weight: bold;";
+        case RestartMessage::Level::Warning:
+            return "color: #8a5a00;";
+        default:
+            return "color: #202020;";
+    }
+}
+
+}  // namespace
+
+RestartScreen::RestartScreen(const mtc::hmi::ScreenContext& context, RestartController* controller)
+    : Screen(context), controller_(controller) {
+    breadcrumb_ = new QLabel(this);
+    breadcrumb_->setObjectName("restartBreadcrumb");
+    breadcrumb_->setStyleSheet("background: #dfe6ef; padding: 3px;");
+    list_ = new QListView(this);
+    list_->setObjectName("restartListing");
+    list_->setUniformItemSizes(true);
+    list_->setSelectionMode(QAbstractItemView::NoSelection);
+    list_->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    list_->setFont(QFontDatabase::systemFont(QFontDatabase::FixedFont));
+    list_->setModel(controller_->listing());
+    list_->installEventFilter(this);
+    prompt_ = new RestartPrompt(this);
+    prompt_->field()->installEventFilter(this);
+    status_ = new QLabel(this);
+    status_->setObjectName("restartStatus");
+    message_ = new QLabel(this);
+    message_->setObjectName("restartMessage");
+    message_->setWordWrap(true);
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->addWidget(breadcrumb_);
+    layout->addWidget(list_, 1);
+    layout->addWidget(prompt_);
+    layout->addWidget(status_);
+    layout->addWidget(message_);
+    setFocusProxy(list_);
+    connect(list_, &QListView::clicked, this,
+            [this](const QModelIndex& index) { controller_->clickRow(index.row()); });
+    connect(controller_->listing(), &ProgramListingModel::marksChanged, list_->viewport(),
+            [this] { list_->viewport()->update(); });
+    connect(controller_, &RestartController::changed, this, [this] {
+        if (isVisible()) render();
+    });
+}
+
+void RestartScreen::activated() {
+    if (!entered_) {
+        entered_ = true;
+        closePrompt();
+        controller_->enter();
+    }
+    render();
+    emit softKeysChanged();
+}
+
+void RestartScreen::hideEvent(QHideEvent* event) {
+    // Hidden by its own station page (another screen was chosen), not just
+    // because the whole station was switched away.
+    if (!isVisibleTo(parentWidget())) entered_ = false;
+    Screen::hideEvent(event);
+}
+
+mtc::hmi::SoftKeys RestartScreen::softKeys() {
+    mtc::hmi::SoftKeys keys(8);
+    const bool primary = controller_->pointer().fromLastPrimary();
+    keys[0] = {"Plane +", [this] {
+                   closePrompt();
+                   controller_->planePlus();
+                   openWindow();
+               }};
+    keys[1] = {"Plane −", [this] {
+                   closePrompt();
+                   controller_->planeMinus();
+               }};
+    keys[2] = {"Search\nstring", [this] { openSearch(); }};
+    keys[3] = {primary ? "From last\nprimary ✓" : "From last\nprimary block", [this] {
+                   closePrompt();
+                   controller_->toggleFromLastPrimary();
+                   emit softKeysChanged();
+               }};
+    keys[4] = {"Number\nof runs", [this] { openRuns(); }};
+    keys[5] = {"Accept\ntarget", [this] {
+                   closePrompt();
+                   controller_->accept();
+               }};
+    keys[7] = {"Back", [this] { emit navigateTo("menu"); }};
+    return keys;
+}
+
+// ------------------------------------------------------------------ keys
+
+bool RestartScreen::eventFilter(QObject* watched, QEvent* event) {
+    const bool onList = watched == list_;
+    const bool onPrompt = watched == prompt_->field();
+    if (!onList && !onPrompt) return Screen::eventFilter(watched, event);
+    auto* key = static_cast<QKeyEvent*>(event);
+    if (onPrompt && event->type() == QEvent::ShortcutOverride && key->key() == Qt::Key_Escape) {
+        event->accept();  // Esc closes the window instead of leaving the screen
+        return true;
+    }
+    if (event->type() != QEvent::KeyPress) return Screen::eventFilter(watched, event);
+    if (key->modifiers() & (Qt::ControlModifier | Qt::AltModifier)) return false;
+    return onList ? listKey(key->key()) : promptKey(key->key());
+}
+
+bool RestartScreen::listKey(int key) {
+    switch (key) {
+        case Qt::Key_Up:
+            controller_->up();
+            return true;
+        case Qt::Key_Down:
+            controller_->down();
+            return true;
+        case Qt::Key_PageUp:
+            controller_->pageUp(pageRows());
+            return true;
+        case Qt::Key_PageDown:
+            controller_->pageDown(pageRows());
+            return true;
+        case Qt::Key_Home:
+            controller_->home();
+            return true;
+        case Qt::Key_End:
+            controller_->end();
+            return true;
+        case Qt::Key_Return:
+        case Qt::Key_Enter:
+            controller_->accept();
+            return true;
+        default:
+            return false;
+    }
+}
+
+bool RestartScreen::promptKey(int key) {
+    const RestartPrompt::Kind kind = prompt_->kind();
+    if (key == Qt::Key_Escape) {
+        if (kind == RestartPrompt::Kind::Variable || kind == RestartPrompt::Kind::Event)
+            controller_->cancelWindow();
+        closePrompt();
+        return true;
+    }
+    if (kind == RestartPrompt::Kind::Event && key == Qt::Key_Space) {
+        eventSet_ = !eventSet_;
+        prompt_->setText(eventText(eventSet_));
+        return true;
+    }
+    if (key != Qt::Key_Return && key != Qt::Key_Enter) return false;
+    bool done = true;
+    switch (kind) {
+        case RestartPrompt::Kind::Search:
+            done = controller_->search(prompt_->text());
+            break;
+        case RestartPrompt::Kind::Runs:
+            done = controller_->setRuns(prompt_->text());
+            break;
+        case RestartPrompt::Kind::Variable:
+            done = controller_->confirmVariable(prompt_->text());
+            break;
+        case RestartPrompt::Kind::Event:
+            controller_->confirmEvent(eventSet_);
+            break;
+        case RestartPrompt::Kind::None:
+            break;
+    }
+    if (done) closePrompt();
+    if (done) openWindow();  // JEV @n: the variable window follows the event window
+    return true;
+}
+
+// ------------------------------------------------------------------ prompts
+
+void RestartScreen::openSearch() {
+    if (!controller_->active()) return;
+    controller_->cancelWindow();
+    prompt_->open(RestartPrompt::Kind::Search, "Search string:", controller_->lastSearch(),
+                  "Enter: next occurrence towards the end · Esc: close");
+}
+
+void RestartScreen::openRuns() {
+    if (!controller_->active()) return;
+    controller_->cancelWindow();
+    prompt_->open(RestartPrompt::Kind::Runs,
+                  "Number of runs (1 … 65536):", QString::number(controller_->pointer().runs()),
+                  "Enter: set · Esc: keep the old value");
+}
+
+void RestartScreen::openWindow() {
+    const auto& window = controller_->pointer().window();
+    const QString command = QString::fromStdString(std::string(mtc::core::jumpName(window.jump)));
+    if (window.kind == mtc::core::PlaneWindow::Kind::Event) {
+        eventSet_ = window.eventSet;
+        prompt_->open(RestartPrompt::Kind::Event,
+                      QString("%1: event %2:%3")
+                          .arg(command)
+                          .arg(window.event.process)
+                          .arg(window.event.event),
+                      eventText(eventSet_), "Space: change · Enter: follow the jump · Esc: abort",
+                      true);
+    } else if (window.kind == mtc::core::PlaneWindow::Kind::Variable) {
+        const QString name =
+            window.writable ? QString("@%1").arg(window.variable)
+                            : QString("@%1:%2").arg(window.variableProcess).arg(window.variable);
+        prompt_->open(RestartPrompt::Kind::Variable,
+                      QString("%1 %2 = program number:").arg(command, name),
+                      window.valueKnown ? QString::number(window.value, 'g', 10) : QString(),
+                      window.writable ? "Enter: jump with this value · Esc: abort"
+                                      : "read only (other process) · Enter: jump · Esc: abort",
+                      !window.writable);
+    }
+}
+
+void RestartScreen::closePrompt() {
+    const bool hadFocus = prompt_->isVisible();
+    prompt_->close();
+    if (hadFocus) list_->setFocus();
+}
+
+// ------------------------------------------------------------------ rendering
+
+int RestartScreen::pageRows() const {
+    const int rowHeight = std::max(1, list_->sizeHintForRow(0));
+    return std::max(1, list_->viewport()->height() / rowHeight - 1);
+}
+
+void RestartScreen::scrollToCursor() {
+    if (!controller_->active()) return;
+    const auto* listing = controller_->listing();
+    const int row = listing->rowOfBlock(controller_->pointer().current().cursor);
+    if (row < 0) return;
+    const QModelIndex index = listing->index(row);
+    list_->selectionModel()->setCurrentIndex(index, QItemSelectionModel::NoUpdate);
+    list_->scrollTo(index, QAbstractItemView::EnsureVisible);
+}
+
+void RestartScreen::render() {
+    breadcrumb_->setText(controller_->breadcrumb());
+    status_->setText(controller_->status());
+    const RestartMessage& message = controller_->message();
+    message_->setText(message.text);
+    message_->setStyleSheet(messageStyle(message.level));
+    scrollToCursor();
+}
+
+}  // namespace mtc::screens

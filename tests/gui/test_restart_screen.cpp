@@ -1,0 +1,333 @@
+// NC program restart screen (seed 000, 2.2-2.6) driven by keys only: the M
+// key opens it, cursor keys, Plane+/Plane-, the event and variable windows,
+// search string, number of runs, last primary block and Enter, on both
+// stations; and the response time of the keys on a 1,000,000-block program.
+#include <QElapsedTimer>
+#include <QLabel>
+#include <QLineEdit>
+#include <QListView>
+
+#include "PanelFixture.h"
+#include "screens/restart/ProgramListingModel.h"
+#include "screens/restart/RestartController.h"
+#include "screens/restart/RestartPrompt.h"
+#include "screens/restart/RestartScreen.h"
+
+using mtc::screens::RestartController;
+using mtc::screens::RestartMessage;
+
+namespace {
+
+/// A program with a variable call and an event jump (station 0, program 20).
+const char* kWindowsProgram =
+    "N0000 (WINDOWS)\n"
+    "N0001 @30=1\n"
+    "N0002 JSR @30 ;program by variable\n"
+    "N0003 BES .LATER 0:12\n"
+    "N0004 M30\n"
+    "N0005 .LATER G1 X1 F100\n"
+    "N0006 RTS\n";
+
+mtc::screens::RestartScreen* restartScreen(PanelFixture& panel, int slot) {
+    return static_cast<mtc::screens::RestartScreen*>(panel.window->screen(slot, "restart"));
+}
+
+QString labelText(PanelFixture& panel, int slot, const char* name) {
+    return restartScreen(panel, slot)->findChild<QLabel*>(name)->text();
+}
+
+QString status(PanelFixture& panel, int slot = 0) {
+    return labelText(panel, slot, "restartStatus");
+}
+
+/// Types `text` into the focused widget and presses Enter.
+void typeAndEnter(PanelFixture& panel, const QString& text) {
+    QWidget* field = QApplication::focusWidget();
+    QTest::keyClicks(field, text);
+    panel.press(Qt::Key_Return);
+}
+
+/// Opens the restart screen of the current station with the M key.
+void openRestart(PanelFixture& panel, int slot, int program) {
+    panel.session->selectProgram(slot, program);
+    panel.press(Qt::Key_F1, Qt::ShiftModifier);
+}
+
+}  // namespace
+
+class RestartScreenTest : public QObject {
+    Q_OBJECT
+  private slots:
+    void initTestCase() { useTestSettings(); }
+
+    void machineKeyOpensTheScreenOnTheSelectedProgram() {
+        PanelFixture panel;
+        QVERIFY(panel.window->showScreen("programs"));
+        panel.press(Qt::Key_Return);  // select program 1
+        panel.press(Qt::Key_F1, Qt::ShiftModifier);
+        QCOMPARE(panel.window->currentScreenName(), QString("restart"));
+        QVERIFY(labelText(panel, 0, "restartBreadcrumb").startsWith("P1 Cover plate"));
+        QVERIFY(status(panel).startsWith("Target P1 N0000"));
+        QVERIFY(status(panel).contains("start P1 N0000"));
+        QVERIFY(status(panel).endsWith("runs 1"));
+        auto* list = restartScreen(panel, 0)->findChild<QListView*>("restartListing");
+        QVERIFY(list->model()->index(0, 0).data().toString().startsWith("N0000 (COVER PLATE"));
+        QVERIFY(list->model()->rowCount() > 48);  // comment lines are listed too
+    }
+
+    void cursorKeysHomeEndAndPage() {
+        PanelFixture panel;
+        openRestart(panel, 0, 1);
+        panel.press(Qt::Key_Down);
+        panel.press(Qt::Key_Down);
+        QVERIFY(status(panel).startsWith("Target P1 N0002"));
+        panel.press(Qt::Key_Up);
+        QVERIFY(status(panel).startsWith("Target P1 N0001"));
+        panel.press(Qt::Key_End);
+        QVERIFY(status(panel).startsWith("Target P1 N0047"));  // block before PROGRAMMENDE
+        panel.press(Qt::Key_Down);
+        QVERIFY(status(panel).startsWith("Target P1 N0047"));
+        panel.press(Qt::Key_Home);
+        QVERIFY(status(panel).startsWith("Target P1 N0000"));
+        panel.press(Qt::Key_PageDown);
+        QVERIFY(!status(panel).startsWith("Target P1 N0000"));
+        QVERIFY(!status(panel).startsWith("Target P1 N0001"));
+        panel.press(Qt::Key_PageUp);
+        QVERIFY(status(panel).startsWith("Target P1 N0000"));
+        // The cursor row is highlighted in the listing.
+        auto* list = restartScreen(panel, 0)->findChild<QListView*>("restartListing");
+        QVERIFY(list->model()->index(0, 0).data(Qt::BackgroundRole).isValid());
+        QVERIFY(!list->model()->index(1, 0).data(Qt::BackgroundRole).isValid());
+    }
+
+    void searchPlanePlusAndPlaneMinus() {
+        PanelFixture panel;
+        openRestart(panel, 0, 1);
+        panel.press(Qt::Key_F3);  // Search string
+        typeAndEnter(panel, "bsr .contur");
+        QVERIFY(status(panel).startsWith("Target P1 N0012"));
+        panel.press(Qt::Key_F1);  // Plane+
+        QVERIFY(status(panel).startsWith("Target P1 N0038"));
+        QVERIFY(status(panel).contains("program level 2"));
+        QVERIFY(labelText(panel, 0, "restartBreadcrumb").contains("N0012 BSR .CONTUR"));
+        panel.press(Qt::Key_Down);
+        panel.press(Qt::Key_F2);  // Plane-
+        QVERIFY(status(panel).startsWith("Target P1 N0012"));
+        // N0001 T4 BSR .M6: the label is in program 99.
+        panel.press(Qt::Key_Home);
+        panel.press(Qt::Key_Down);
+        panel.press(Qt::Key_F1);
+        QVERIFY(status(panel).startsWith("Target P99 N0002"));
+        panel.press(Qt::Key_F2);
+        // No jump in N0002: refused with a message, cursor stays.
+        panel.press(Qt::Key_Down);
+        panel.press(Qt::Key_F1);
+        QVERIFY(status(panel).startsWith("Target P1 N0002"));
+        QVERIFY(labelText(panel, 0, "restartMessage").contains("no jump or call"));
+        QCOMPARE(restartScreen(panel, 0)->controller()->message().level,
+                 RestartMessage::Level::Error);
+    }
+
+    void searchNotFoundKeepsTheCursorAndTheWindow() {
+        PanelFixture panel;
+        openRestart(panel, 0, 1);
+        panel.press(Qt::Key_End);
+        panel.press(Qt::Key_F3);
+        typeAndEnter(panel, "PASS");
+        QVERIFY(status(panel).startsWith("Target P1 N0047"));
+        QVERIFY(labelText(panel, 0, "restartMessage").contains("not found after N0047"));
+        auto* prompt = restartScreen(panel, 0)->findChild<mtc::screens::RestartPrompt*>();
+        QVERIFY(prompt->isVisible());
+        panel.press(Qt::Key_Escape);  // closes the window, stays on the screen
+        QVERIFY(!prompt->isVisible());
+        QCOMPARE(panel.window->currentScreenName(), QString("restart"));
+        panel.press(Qt::Key_Home);
+        panel.press(Qt::Key_F3);  // the last text is offered again
+        QCOMPARE(static_cast<QLineEdit*>(QApplication::focusWidget())->text(), QString("PASS"));
+        panel.press(Qt::Key_Return);
+        // The first hit is the comment line above N0007 ("depth passes").
+        QVERIFY(status(panel).startsWith("Target P1 N0007"));
+    }
+
+    void numberOfRunsIsValidatedAndResetOnEntry() {
+        PanelFixture panel;
+        openRestart(panel, 0, 1);
+        auto* prompt = restartScreen(panel, 0)->findChild<mtc::screens::RestartPrompt*>();
+        panel.press(Qt::Key_F5);
+        QVERIFY(prompt->isVisible());
+        for (const char* bad : {"0", "65537", "abc"}) {
+            auto* field = static_cast<QLineEdit*>(QApplication::focusWidget());
+            field->clear();
+            typeAndEnter(panel, bad);
+            QVERIFY(prompt->isVisible());
+            QCOMPARE(restartScreen(panel, 0)->controller()->message().level,
+                     RestartMessage::Level::Error);
+            QVERIFY(status(panel).endsWith("runs 1"));
+        }
+        QVERIFY(labelText(panel, 0, "restartMessage").contains("not a whole number"));
+        panel.press(Qt::Key_Escape);
+        QVERIFY(!prompt->isVisible());
+        QVERIFY(status(panel).endsWith("runs 1"));
+        panel.press(Qt::Key_F5);
+        typeAndEnter(panel, "3");
+        QVERIFY(!prompt->isVisible());
+        QVERIFY(status(panel).endsWith("runs 3"));
+        // Each entry starts with 1 again (seed 000, 2.6).
+        panel.press(Qt::Key_Escape);
+        QCOMPARE(panel.window->currentScreenName(), QString("menu"));
+        panel.press(Qt::Key_F1, Qt::ShiftModifier);
+        QCOMPARE(panel.window->currentScreenName(), QString("restart"));
+        QVERIFY(status(panel).endsWith("runs 1"));
+    }
+
+    void lastPrimaryBlockAndEnter() {
+        PanelFixture panel;
+        openRestart(panel, 0, 1);
+        panel.press(Qt::Key_F4);  // on N0000: no primary block before it
+        QCOMPARE(restartScreen(panel, 0)->controller()->message().level,
+                 RestartMessage::Level::Error);
+        QVERIFY(labelText(panel, 0, "restartMessage").contains("no primary block"));
+        for (int i = 0; i < 20; ++i)
+            panel.press(Qt::Key_Down);
+        QVERIFY(status(panel).startsWith("Target P1 N0020"));
+        panel.press(Qt::Key_F4);
+        QVERIFY(status(panel).contains("start P1 N0015 (last primary block)"));
+        panel.press(Qt::Key_Return);
+        const auto& accepted = restartScreen(panel, 0)->controller()->accepted();
+        QVERIFY(accepted.ok);
+        QCOMPARE(accepted.selection.target.block, 20u);
+        QVERIFY(accepted.selection.fromLastPrimary);
+        QCOMPARE(accepted.start.block.block, 15u);
+        QVERIFY(labelText(panel, 0, "restartMessage").startsWith("Target accepted"));
+    }
+
+    void variableAndEventWindowsByKeys() {
+        PanelFixture panel;
+        panel.session->addProgram(0, 20, "windows.nc", kWindowsProgram);
+        openRestart(panel, 0, 20);
+        auto* prompt = restartScreen(panel, 0)->findChild<mtc::screens::RestartPrompt*>();
+        panel.press(Qt::Key_Down);
+        panel.press(Qt::Key_Down);  // N0002 JSR @30
+        panel.press(Qt::Key_F1);
+        QVERIFY(prompt->isVisible());
+        QCOMPARE(prompt->kind(), mtc::screens::RestartPrompt::Kind::Variable);
+        auto* field = static_cast<QLineEdit*>(QApplication::focusWidget());
+        QCOMPARE(field->text(), QString("0"));  // @30 was never written
+        field->clear();
+        typeAndEnter(panel, "77");  // no program 77: window stays open
+        QVERIFY(prompt->isVisible());
+        QVERIFY(labelText(panel, 0, "restartMessage").contains("program 77 does not exist"));
+        field->clear();
+        typeAndEnter(panel, "1");
+        QVERIFY(!prompt->isVisible());
+        QVERIFY(status(panel).startsWith("Target P1 N0000"));
+        QVERIFY(labelText(panel, 0, "restartBreadcrumb").contains("JSR @30"));
+        panel.press(Qt::Key_F2);
+        panel.press(Qt::Key_Down);  // N0003 BES .LATER 0:12
+        panel.press(Qt::Key_F1);
+        QCOMPARE(prompt->kind(), mtc::screens::RestartPrompt::Kind::Event);
+        field = static_cast<QLineEdit*>(QApplication::focusWidget());
+        QVERIFY(field->text().startsWith("0"));
+        panel.press(Qt::Key_Escape);  // abort: no jump
+        QVERIFY(status(panel).startsWith("Target P20 N0003"));
+        panel.press(Qt::Key_F1);
+        panel.press(Qt::Key_Space);  // set the event
+        panel.press(Qt::Key_Return);
+        QVERIFY(status(panel).startsWith("Target P20 N0005"));
+        panel.press(Qt::Key_Return);
+        const auto& s = restartScreen(panel, 0)->controller()->accepted().selection;
+        QCOMPARE(s.variableChanges.at(30), 1.0);
+        QCOMPARE(s.eventChanges.at(mtc::core::EventRef{0, 12}), true);
+        QCOMPARE(s.path.size(), std::size_t(1));  // JSR @30 was left with Plane-
+        QVERIFY(status(panel).contains("@30=1"));
+    }
+
+    void enterIsRefusedOutsideAutomaticMode() {
+        PanelFixture panel;
+        panel.session->selectProgram(0, 1);
+        panel.press(Qt::Key_F3, Qt::ShiftModifier);  // Manual
+        QVERIFY(panel.window->showScreen("restart"));
+        QVERIFY(labelText(panel, 0, "restartMessage").contains("automatic mode"));
+        panel.press(Qt::Key_Return);
+        QVERIFY(!restartScreen(panel, 0)->controller()->accepted().ok);
+        QCOMPARE(restartScreen(panel, 0)->controller()->message().level,
+                 RestartMessage::Level::Error);
+    }
+
+    void eachStationKeepsItsSelection() {
+        PanelFixture panel;
+        openRestart(panel, 0, 1);
+        panel.press(Qt::Key_F3);
+        typeAndEnter(panel, "BSR .CONTUR");
+        panel.press(Qt::Key_F1);
+        panel.press(Qt::Key_Down);
+        const QString mill = status(panel, 0);
+        QVERIFY(mill.startsWith("Target P1 N0039"));
+        panel.press(Qt::Key_PageDown, Qt::ControlModifier);  // lathe
+        QCOMPARE(panel.window->currentStation(), 1);
+        openRestart(panel, 1, 1);
+        QCOMPARE(panel.window->currentScreenName(), QString("restart"));
+        panel.press(Qt::Key_End);
+        panel.press(Qt::Key_F5);
+        typeAndEnter(panel, "2");
+        const QString lathe = status(panel, 1);
+        QVERIFY(lathe.startsWith("Target P1 N0048"));
+        QVERIFY(lathe.endsWith("runs 2"));
+        panel.press(Qt::Key_PageUp, Qt::ControlModifier);  // back to the mill
+        QCOMPARE(panel.window->currentScreenName(), QString("restart"));
+        QCOMPARE(status(panel, 0), mill);
+        QVERIFY(labelText(panel, 0, "restartBreadcrumb").contains("BSR .CONTUR"));
+        panel.press(Qt::Key_F2);
+        QVERIFY(status(panel, 0).startsWith("Target P1 N0012"));
+        panel.press(Qt::Key_PageDown, Qt::ControlModifier);
+        QCOMPARE(status(panel, 1), lathe);
+    }
+
+    void keysAnswerWithinAFrameOnAMillionBlocks() {
+        PanelFixture panel;
+        std::string text;
+        text.reserve(36'000'000);
+        char line[96];
+        for (int i = 0; i < 1'000'000; ++i) {
+            const int n = std::snprintf(line, sizeof line, "N%04d %sG1 X%d Y%d F900%s\n", i % 10000,
+                                        i % 1000 == 0 ? ": " : "", i % 500, i % 77,
+                                        i % 10 == 0 ? " ;contour pass" : "");
+            text.append(line, static_cast<std::size_t>(n));
+        }
+        text += "N9998 G0 Z50 ;last one\nN9999 M30\n";
+        panel.session->addProgram(0, 30, "million.nc", std::move(text));
+        QElapsedTimer open;
+        open.start();
+        openRestart(panel, 0, 30);
+        const qint64 openMs = open.elapsed();
+        auto* list = restartScreen(panel, 0)->findChild<QListView*>("restartListing");
+        QCOMPARE(list->model()->rowCount(), 1'000'002);
+        auto timeKey = [&](int key) {
+            QElapsedTimer timer;
+            timer.start();
+            panel.press(key);
+            list->viewport()->repaint();  // include the repaint of the page
+            return timer.nsecsElapsed() / 1e6;
+        };
+        const double down = timeKey(Qt::Key_Down);
+        const double pageDown = timeKey(Qt::Key_PageDown);
+        const double end = timeKey(Qt::Key_End);
+        QVERIFY(status(panel).startsWith("Target P30 N9999"));
+        const double home = timeKey(Qt::Key_Home);
+        panel.press(Qt::Key_F3);
+        QTest::keyClicks(QApplication::focusWidget(), "last ONE");
+        const double search = timeKey(Qt::Key_Return);
+        QVERIFY(status(panel).startsWith("Target P30 N9998"));
+        qInfo(
+            "1,000,000 blocks: open %lld ms; Down %.2f ms, PgDn %.2f ms, End %.2f ms, "
+            "Home %.2f ms, Search %.2f ms",
+            openMs, down, pageDown, end, home, search);
+        // Loose bound against O(n) work per key (the target is one frame,
+        // 16 ms; bench/RestartScreenBench.cpp measures the core alone).
+        for (double ms : {down, pageDown, end, home, search})
+            QVERIFY(ms < 250.0);
+    }
+};
+
+QTEST_MAIN(RestartScreenTest)
+#include "test_restart_screen.moc"
