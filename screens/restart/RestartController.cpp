@@ -152,7 +152,10 @@ void RestartController::end() {
 
 void RestartController::clickRow(int row) {
     if (!pointer_.active()) return;
-    pointer_.moveTo(listing_->blockOfRow(row));
+    // A comment row belongs to the block after it, as in the search.
+    std::uint32_t block = listing_->blockOfRow(row);
+    if (row >= listing_->rowOfBlock(block) + listing_->rowsOfBlock(block)) ++block;
+    pointer_.moveTo(block);
     cursorMoved();
     emit changed();
 }

@@ -98,6 +98,15 @@ class RestartScreenTest : public QObject {
         auto* list = restartScreen(panel, 0)->findChild<QListView*>("restartListing");
         QVERIFY(list->model()->index(0, 0).data(Qt::BackgroundRole).isValid());
         QVERIFY(!list->model()->index(1, 0).data(Qt::BackgroundRole).isValid());
+        // A mouse click on a comment row selects the block below it.
+        int commentRow = -1;
+        for (int row = 0; row < list->model()->rowCount() && commentRow < 0; ++row)
+            if (list->model()->index(row, 0).data().toString().startsWith(";----- outer"))
+                commentRow = row;
+        QVERIFY(commentRow > 0);
+        const QRect rect = list->visualRect(list->model()->index(commentRow, 0));
+        QTest::mouseClick(list->viewport(), Qt::LeftButton, {}, rect.center());
+        QVERIFY(status(panel).startsWith("Target P1 N0007"));
     }
 
     void searchPlanePlusAndPlaneMinus() {
