@@ -81,6 +81,15 @@ bool BlockDecoder::gWord(const Word& w) const {
         in.speedLimit = true;
         return true;
     }
+    if (info.kind == GKind::AxisFunction) {
+        if (in.axisFunction != 0 && in.axisFunction != number)
+            return error(w, "G_GROUP_CONFLICT",
+                         "G" + std::to_string(in.axisFunction) + " and G" + std::to_string(number) +
+                             " cannot share a block");
+        in.axisFunction = static_cast<std::uint8_t>(number);
+        in.axisFunctionColumn = w.column;
+        return true;
+    }
     return badG(w, number, info, -1);
 }
 

@@ -1,5 +1,8 @@
 #include "cnc_core/interp/BlockExecutor.h"
 
+#include <algorithm>
+#include <cmath>
+#include <string>
 #include <vector>
 
 namespace mtc::core {
@@ -34,12 +37,13 @@ bool BlockExecutor::plan(const BlockContext& c, const BlockInput& in, const Inte
     plan.auxChanged = false;
     ModalState& next = plan.next;
     if (in.gMask != 0 || in.hasRadius) {
-        if (!modalGroups(c, in, state.modal, next)) return false;
+        if (!modalGroups(c, in, state.modal, next, state.reentry.valid)) return false;
     }
     const bool scalarWords = in.dwell || in.hasFeed || in.hasTool || in.hasEdge ||
                              in.hasCorrection || in.spindleMask != 0;
     if (scalarWords && !scalars(c, in, plan)) return false;
     if ((in.mCount != 0 || in.qCount != 0) && !auxiliaries(c, in, state, plan)) return false;
+    if (in.axisFunction != 0) return axisFunction(c, in, state, plan);
     if (in.axisMask == 0 || in.g[kGroupPlane] == 20) return true;
     if (in.dwell)
         return c.error("DWELL_WITH_AXES", "G4 cannot be combined with axis words", in.dwellColumn);
@@ -47,7 +51,7 @@ bool BlockExecutor::plan(const BlockContext& c, const BlockInput& in, const Inte
 }
 
 bool BlockExecutor::modalGroups(const BlockContext& c, const BlockInput& in,
-                                const ModalState& current, ModalState& next) const {
+                                const ModalState& current, ModalState& next, bool restoring) const {
     constexpr std::uint32_t kPlainMask = (1u << kGroupToolPath) | (1u << kGroupFeedType) |
                                          (1u << kGroupDimension) | (1u << kGroupUnits) |
                                          (1u << kGroupAcceleration) | (1u << kGroupExactStop) |
@@ -60,7 +64,7 @@ bool BlockExecutor::modalGroups(const BlockContext& c, const BlockInput& in,
                 next.g[static_cast<size_t>(group)] = in.g[static_cast<size_t>(group)];
     if ((in.gMask & kGeometryMask) || in.hasRadius) {
         if (!transformationOff(c, in, next) || !planeChange(c, in, current, next) ||
-            !transformationOn(c, in, next))
+            !transformationOn(c, in, next, restoring))
             return false;
     }
     explicitGroups(in, next);
@@ -114,24 +118,28 @@ bool BlockExecutor::planeChange(const BlockContext& c, const BlockInput& in,
     return true;
 }
 
-bool BlockExecutor::transformationOn(const BlockContext& c, const BlockInput& in,
-                                     ModalState& next) const {
+bool BlockExecutor::transformationOn(const BlockContext& c, const BlockInput& in, ModalState& next,
+                                     bool restoring) const {
     const int wanted = in.g[kGroupTransformation];
     if (in.hasRadius && wanted != 32)
         return c.error("RI_WITHOUT_G32", "RI (effective radius) belongs to G32", in.radiusColumn);
     if (wanted != 31 && wanted != 32) return true;
     const int column = in.gColumn[kGroupTransformation];
     const bool already = next.transformation.kind() == wanted;
+    // ADJUST / REPOS (a re-entry point is set) may write G32 without RI, as
+    // seed 000, 7.2 does: the RI of the last G32 of the computing process.
+    const bool reuseRadius = restoring && !in.hasRadius && next.lastEffectiveRadius > 0.0;
+    const double radius = reuseRadius ? next.lastEffectiveRadius : in.radius;
     std::vector<PlaneProblem> problems =
-        wanted == 32
-            ? next.transformation.selectCylinder(*setup_.axes, next.plane, in.hasRadius, in.radius)
-            : next.transformation.selectFacing(*setup_.axes, next.plane);
+        wanted == 32 ? next.transformation.selectCylinder(*setup_.axes, next.plane,
+                                                          in.hasRadius || reuseRadius, radius)
+                     : next.transformation.selectFacing(*setup_.axes, next.plane);
     if (!reportProblems(c, problems, column)) return false;
     if (already) return true;
     next.g[kGroupTransformation] = static_cast<std::int16_t>(wanted);
     next.g[kGroupZeroOffset] = 53;      // seed 003, 4.4: all zero shifts off on select
     next.g[kGroupRadiusDiameter] = 15;  // radius programming while active
-    if (wanted == 32) next.lastEffectiveRadius = in.radius;
+    if (wanted == 32) next.lastEffectiveRadius = radius;
     return true;
 }
 
@@ -211,6 +219,90 @@ bool BlockExecutor::auxiliaries(const BlockContext& c, const BlockInput& in,
     }
     if (in.qCount > 0) plan.lastQ = in.q[static_cast<size_t>(in.qCount - 1)].value;
     return true;
+}
+
+bool BlockExecutor::axisFunction(const BlockContext& c, const BlockInput& in,
+                                 const InterpreterState& state, BlockPlan& plan) const {
+    const int g = in.axisFunction;
+    const int column = in.axisFunctionColumn;
+    const std::string name = "G" + std::to_string(g);
+    if (in.g[kGroupPlane] == 20 || in.centerMask != 0 || in.dwell)
+        return c.error("AXIS_FUNCTION_COMBINATION",
+                       name + " cannot be combined with G20, G4 or circle centres", column);
+    if (g == 77) return reposition(c, in, state, plan);
+    if (in.axisMask == 0)
+        return c.error("AXIS_FUNCTION_NO_AXIS", name + " needs the axes it acts on", column);
+    ModalState& next = plan.next;
+    if (g == 75) {  // the simulated drive meets no stop: it reaches the programmed point
+        const auto interpolation = next.g[kGroupInterpolation];
+        next.g[kGroupInterpolation] = 1;
+        const bool ok = motion_.plan(c, in, state.modal, plan, setup_.arcTolerance);
+        next.g[kGroupInterpolation] = interpolation;
+        return ok;
+    }
+    for (int a = 0; in.axisMask >> a; ++a) {  // G74: reference point = machine 0 (in range)
+        if (!((in.axisMask >> a) & 1u)) continue;
+        const AxisModel& m = setup_.axes->axis(a);
+        double home = 0.0;
+        if (m.limited()) home = std::min(std::max(home, m.minPosition), m.maxPosition);
+        next.machine[static_cast<size_t>(a)] = home;
+        if (m.spindle) next.rotaryAxisMode[static_cast<size_t>(m.spindleIndex)] = 1;
+    }
+    motion_.recomputeWork(next);
+    machineMove(state.modal, in.axisMask, 0.0, plan);
+    return true;
+}
+
+bool BlockExecutor::reposition(const BlockContext& c, const BlockInput& in,
+                               const InterpreterState& state, BlockPlan& plan) const {
+    const ReentryPoint& r = state.reentry;
+    const int column = in.axisFunctionColumn;
+    if (!r.valid)
+        return c.error("REPOS_NO_REENTRY_POINT",
+                       "G77 needs a re-entry point: it runs in the REPOS subroutine after an NC "
+                       "program restart",
+                       column);
+    if (in.axisMask == 0 && in.spindleMask == 0)
+        return c.error("AXIS_FUNCTION_NO_AXIS", "G77 needs the axes or spindles to re-establish",
+                       column);
+    ModalState& next = plan.next;
+    for (int slot = 0; slot < kSpindleSlots; ++slot) {  // G77 S0 / S1=0: spindle mode, old speed
+        if (!((in.spindleMask >> slot) & 1u)) continue;
+        const auto j = static_cast<size_t>(slot == 0 ? next.referenceSpindle : slot);
+        next.spindleSpeed[j] = r.spindleSpeed[j];
+        next.rotaryAxisMode[j] = 0;
+    }
+    const double unit = next.g[kGroupUnits] == 70 ? kInch : 1.0;
+    const double feed = in.hasFeed ? in.feed * unit : state.modal.feed;
+    next.feed = state.modal.feed;  // F of a G77 block is the repositioning feed only
+    for (int a = 0; in.axisMask >> a; ++a) {
+        if (!((in.axisMask >> a) & 1u)) continue;
+        const AxisModel& m = setup_.axes->axis(a);
+        next.machine[static_cast<size_t>(a)] = r.machine[static_cast<size_t>(a)];
+        if (m.spindle) next.rotaryAxisMode[static_cast<size_t>(m.spindleIndex)] = 1;
+    }
+    motion_.recomputeWork(next);
+    if (in.axisMask != 0) machineMove(state.modal, in.axisMask, feed, plan);
+    return true;
+}
+
+void BlockExecutor::machineMove(const ModalState& current, std::uint32_t moved, double feed,
+                                BlockPlan& plan) const {
+    ModalState& next = plan.next;
+    double squares = 0.0, rapidSeconds = 0.0;
+    for (int a = 0; moved >> a; ++a) {
+        if (!((moved >> a) & 1u)) continue;
+        const double d =
+            next.machine[static_cast<size_t>(a)] - current.machine[static_cast<size_t>(a)];
+        squares += d * d;
+        rapidSeconds =
+            std::max(rapidSeconds, std::fabs(d) * setup_.axes->axis(a).rapidSecondsPerUnit);
+    }
+    plan.hasMotion = true;
+    plan.motionType = feed > 0.0 ? MotionType::Linear : MotionType::Rapid;
+    plan.feedRate = feed > 0.0 ? feed : 0.0;
+    plan.planeAxis1 = plan.planeAxis2 = -1;
+    next.time += feed > 0.0 ? std::sqrt(squares) / feed * 60.0 : rapidSeconds;
 }
 
 }  // namespace mtc::core

@@ -45,16 +45,30 @@ class BlockExecutor {
 
   private:
     /// G words (and RI): plain groups, G30, plane, G31/G32, explicit groups.
+    /// `restoring`: a re-entry point is set (ADJUST / REPOS), G32 may omit RI.
     bool modalGroups(const BlockContext& c, const BlockInput& in, const ModalState& current,
-                     ModalState& next) const;
+                     ModalState& next, bool restoring) const;
     bool transformationOff(const BlockContext& c, const BlockInput& in, ModalState& next) const;
     bool planeChange(const BlockContext& c, const BlockInput& in, const ModalState& current,
                      ModalState& next) const;
-    bool transformationOn(const BlockContext& c, const BlockInput& in, ModalState& next) const;
+    bool transformationOn(const BlockContext& c, const BlockInput& in, ModalState& next,
+                          bool restoring) const;
     void explicitGroups(const BlockInput& in, ModalState& next) const;
     bool scalars(const BlockContext& c, const BlockInput& in, BlockPlan& plan) const;
     bool spindles(const BlockContext& c, const BlockInput& in, ModalState& next) const;
     bool auxiliaries(const BlockContext& c, const BlockInput& in, const InterpreterState& state,
+                     BlockPlan& plan) const;
+    /// G74 (homing: to machine 0 within the travel range), G75 (hard stop: a
+    /// G1 move to the programmed point) and G77 (REPOS) of the block.
+    bool axisFunction(const BlockContext& c, const BlockInput& in, const InterpreterState& state,
+                      BlockPlan& plan) const;
+    /// G77: programmed axes to state.reentry (the axis values are placeholders),
+    /// programmed spindles back to spindle mode with their re-entry speed.
+    bool reposition(const BlockContext& c, const BlockInput& in, const InterpreterState& state,
+                    BlockPlan& plan) const;
+    /// A straight move of the `moved` axes from current.machine to plan.next.machine
+    /// (rapid when feed <= 0), with its simulated time.
+    void machineMove(const ModalState& current, std::uint32_t moved, double feed,
                      BlockPlan& plan) const;
 
     Setup setup_;

@@ -38,6 +38,9 @@ struct BlockInput {
     bool dwell = false;       ///< G4
     bool speedLimit = false;  ///< G92
     std::uint16_t dwellColumn = 0;
+    /// G74 / G75 / G77 programmed in the block (the G number), 0 = none.
+    std::uint8_t axisFunction = 0;
+    std::uint16_t axisFunctionColumn = 0;
 
     std::uint16_t axisMask = 0;  ///< bit i: machine axis i programmed
     std::array<double, kMaxAxes> axisValue{};
@@ -86,6 +89,7 @@ struct BlockInput {
         g.fill(-1);
         gMask = 0;
         dwell = speedLimit = false;
+        axisFunction = 0;
         axisMask = 0;
         axisCount = 0;
         repeatedAxisColumn = 0;

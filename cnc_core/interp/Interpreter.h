@@ -163,6 +163,10 @@ class Interpreter {
     /// Workpiece coordinate of `axis` as the program sees it now (the
     /// inverse of the conversions of MotionPlanner: mm, degrees, diameter).
     double programmedPosition(int axis) const;
+    /// The axes stand at `machine` (machine positions; e.g. after a restart
+    /// computing process, which moves nothing): the commanded positions become
+    /// these and the programmed coordinates are re-derived. Nothing else changes.
+    void takeMachinePositions(const std::array<double, kMaxAxes>& machine);
     /// Writes the page 60 elements (rotary axis modes, transformation, tool
     /// spindles) of this process into the machine data (restart target reached).
     void publishPage60();

@@ -140,9 +140,14 @@ void Interpreter::emitAux(const Program& program, std::uint32_t index) {
     const OutputOptions& out = options_.output;
     if (!in.speedLimit)
         for (int slot = 0; slot < kSpindleSlots; ++slot)
-            if ((in.spindleMask >> slot) & 1u)
-                sendAux('S', slot == 0 ? state_.modal.referenceSpindle : slot,
-                        in.spindle[static_cast<size_t>(slot)], where, out.s);
+            if ((in.spindleMask >> slot) & 1u) {
+                const int spindle = slot == 0 ? state_.modal.referenceSpindle : slot;
+                // G77 S: the re-established speed goes to the SPS, not the placeholder.
+                const double speed = in.axisFunction == 77
+                                         ? state_.modal.spindleSpeed[static_cast<size_t>(spindle)]
+                                         : in.spindle[static_cast<size_t>(slot)];
+                sendAux('S', spindle, speed, where, out.s);
+            }
     if (in.hasTool) sendAux('T', 0, in.tool, where, out.te);
     if (in.hasEdge) sendAux('E', 0, in.edge, where, out.te);
     for (int i = 0; i < in.mCount; ++i)
@@ -259,6 +264,7 @@ void Interpreter::programEnd() {
         if (group.number >= 1 && group.number <= 15)
             state_.mGroups[static_cast<size_t>(group.number)] = group.resetValue;
     state_.lastQ = -1;
+    state_.reentry.valid = false;
     state_.callStack.clear();
     state_.program = state_.selected;
     state_.block = 0;
@@ -302,6 +308,12 @@ double Interpreter::programmedPosition(int axis) const {
         v *= 2.0;
     if (m.g[kGroupUnits] == 70) v /= kInch;
     return v;
+}
+
+void Interpreter::takeMachinePositions(const std::array<double, kMaxAxes>& machine) {
+    state_.modal.machine = machine;
+    MotionPlanner(&axes_, &zeroOffsets_).recomputeWork(state_.modal);
+    modalChanged();
 }
 
 void Interpreter::publishPage60() {

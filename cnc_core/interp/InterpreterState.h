@@ -58,6 +58,16 @@ struct Variables {
     std::bitset<kVariableCount> written;
 };
 
+/// Where G77 (REPOS) brings axes and spindles back to: the commanded state
+/// at the re-entry point (the target block of an NC program restart, seed
+/// 000, 2.9). Set by the restart sequence; cleared by program end and control reset.
+struct ReentryPoint {
+    bool valid = false;
+    std::array<double, kMaxAxes> machine{};                   ///< machine positions (mm, degrees)
+    std::array<double, kSpindleSlots> spindleSpeed{};         ///< S per spindle
+    std::array<std::int8_t, kSpindleSlots> rotaryAxisMode{};  ///< page 60 el. 1..3
+};
+
 /// The complete state of one interpreter: copy it to snapshot a run, assign
 /// it back with Interpreter::restoreState. No pointers into the interpreter.
 struct InterpreterState {
@@ -73,6 +83,7 @@ struct InterpreterState {
     std::vector<CallFrame> callStack;  ///< saved return points, innermost last
     bool ended = false;                ///< the selected program reached its end
     ProgramPtr selected;               ///< program chosen with select(); program end returns to it
+    ReentryPoint reentry;              ///< target of G77 (REPOS)
 };
 
 }  // namespace mtc::core

@@ -57,6 +57,10 @@ GCodeInfo classify(int number) {
             return {GKind::Modal, kGroupDimension};
         case 92:
             return {GKind::SpeedLimit, 0};
+        case 74:  // homing
+        case 75:  // driving against hard stop
+        case 77:  // REPOS: back to the re-entry point (seed 000, 2.9 / 7)
+            return {GKind::AxisFunction, 0};
         case 94:
         case 95:
             return {GKind::Modal, kGroupFeedType};
@@ -75,10 +79,7 @@ GCodeInfo classify(int number) {
         case 52:  // programmable / incremental zero offsets
         case 72:
         case 73:
-        case 74:
-        case 75:
         case 76:
-        case 77:
         case 78:
         case 79:
             return {GKind::Unsupported, 0};

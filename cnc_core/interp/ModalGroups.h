@@ -30,11 +30,12 @@ inline constexpr int kGroupSlots = 18;  ///< group numbers 1..17 index the array
 
 /// What a G number does.
 enum class GKind : std::uint8_t {
-    Unknown,      ///< not a G function of the MTC200 dialect we know
-    Unsupported,  ///< a real MTC200 G function this simulator does not execute
-    Modal,        ///< member of a modal group
-    Dwell,        ///< G4 (non-modal, time in F)
-    SpeedLimit,   ///< G92 (non-modal, S words are limits)
+    Unknown,       ///< not a G function of the MTC200 dialect we know
+    Unsupported,   ///< a real MTC200 G function this simulator does not execute
+    Modal,         ///< member of a modal group
+    Dwell,         ///< G4 (non-modal, time in F)
+    SpeedLimit,    ///< G92 (non-modal, S words are limits)
+    AxisFunction,  ///< G74 homing, G75 hard stop, G77 REPOS (non-modal, act on the axis words)
 };
 
 struct GCodeInfo {
