@@ -49,6 +49,9 @@ std::string ProcessControl::signalPrefix() const {
 }
 
 bool ProcessControl::press(ControlKey key) {
+    if (keyHandler_) {
+        if (const std::optional<bool> handled = keyHandler_->handleKey(key)) return *handled;
+    }
     const std::string p = signalPrefix();
     switch (key) {
         case ControlKey::Manual:
@@ -89,11 +92,15 @@ bool ProcessControl::setMode(OperatingMode mode) {
         alarm_ = "Mode change refused: a program is active (press Stop first)";
         return false;
     }
+    setModeBySps(mode);
+    return true;
+}
+
+void ProcessControl::setModeBySps(OperatingMode mode) {
     mode_ = mode;
     const std::string p = signalPrefix();
     signals_.set(p + "SAUTO", mode == OperatingMode::Automatic ? 1 : 0);
     signals_.set(p + "SMANU", mode == OperatingMode::Manual ? 1 : 0);
-    return true;
 }
 
 bool ProcessControl::start() {

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <optional>
 #include <string>
 
 #include "cnc_core/machine/SignalTable.h"
@@ -30,6 +31,16 @@ class ProgramRunner {
     virtual void hold() = 0;
     /// Control reset: the run is abandoned, the interpreter reset.
     virtual void reset() = 0;
+};
+
+/// Takes the machine control keys before ProcessControl handles them (the
+/// NC program restart sequence installs itself while it is active).
+class ControlKeyHandler {
+  public:
+    virtual ~ControlKeyHandler() = default;
+    /// Returns the key's result (what press() returns) when it handled the
+    /// key, std::nullopt to let ProcessControl handle it as usual.
+    virtual std::optional<bool> handleKey(ControlKey key) = 0;
 };
 
 /// What a process (station) of the cell is doing, seen from the panel:
@@ -77,6 +88,16 @@ class ProcessControl {
     /// active and held until Start.
     void programStopped(std::string message);
 
+    /// Installs (or with nullptr removes) the handler that sees every key
+    /// first. Not owned; it must remove itself before it is destroyed.
+    void setKeyHandler(ControlKeyHandler* handler) { keyHandler_ = handler; }
+    ControlKeyHandler* keyHandler() const { return keyHandler_; }
+    /// The SPS selects the operating mode (QMANUAL / QAUTO, e.g. on Q9500 /
+    /// Q9501 at the end of ADJUST, seed 000, 2.9 and 7): unlike the Manual and
+    /// Automatic keys this is allowed while a program is active (interrupted).
+    /// Sets PxxSAUTO / PxxSMANU; never fails.
+    void setModeBySps(OperatingMode mode);
+
     /// "P00" for process 0: the prefix of this process's signal names.
     std::string signalPrefix() const;
 
@@ -89,6 +110,7 @@ class ProcessControl {
     bool active_ = false;
     bool held_ = false;
     ProgramRunner* runner_ = nullptr;
+    ControlKeyHandler* keyHandler_ = nullptr;
     int selectedProgram_ = 0;
     std::string currentBlock_;
     std::string alarm_;

@@ -1,0 +1,230 @@
+#include "cnc_core/restart/ComputingProcess.h"
+
+#include <algorithm>
+#include <string>
+
+namespace mtc::core {
+
+namespace {
+
+/// Blocks between two looks at the abort flag (a few milliseconds).
+constexpr std::uint64_t kSlice = std::uint64_t{1} << 16;
+
+/// Output of the computing process: no motion, no dwell; an aux type only
+/// when its process parameter Bxx.058..061 says Yes (seed 000, 3.1).
+OutputOptions restartOutput(const ProcessConfig& config) {
+    OutputOptions out;
+    out.motion = false;
+    out.dwell = false;
+    out.m = config.flag("B058");
+    out.q = config.flag("B059");
+    out.s = config.flag("B060");
+    out.te = config.flag("B061");
+    out.commands = true;  // RestartOutputFilter holds back what is not performed
+    return out;
+}
+
+}  // namespace
+
+const char* computingStatusName(ComputingStatus status) {
+    switch (status) {
+        case ComputingStatus::Idle:
+            return "idle";
+        case ComputingStatus::Running:
+            return "running";
+        case ComputingStatus::Stopped:
+            return "stopped";
+        case ComputingStatus::TargetReached:
+            return "target";
+        case ComputingStatus::Failed:
+            return "failed";
+        case ComputingStatus::Aborted:
+            return "aborted";
+    }
+    return "failed";
+}
+
+ComputingProcess::ComputingProcess(const ProcessConfig& config, const ProgramStore& programs,
+                                   MachineSink& sps, InterpreterServices services)
+    : config_(config),
+      programs_(programs),
+      filter_(sps),
+      collector_(config),
+      interpreter_(config, programs, filter_, std::move(services)) {}
+
+bool ComputingProcess::begin(const RestartSelection& selection, const InterpreterState& current,
+                             const InterpreterOptions& operatorOptions, std::uint64_t budget,
+                             DiagnosticList& diagnostics) {
+    DiagnosticList local;
+    RestartRoute route;
+    if (interpreter_.configurationDiagnostics().hasErrors()) {
+        local.error(
+            "RESTART_MACHINE_INVALID", {},
+            "the machine configuration cannot run process " + std::to_string(config_.index));
+        local.append(interpreter_.configurationDiagnostics());
+    } else if (selection.process != config_.index) {
+        local.error("RESTART_PROCESS", {},
+                    "the selection is for process " + std::to_string(selection.process) +
+                        ", this is process " + std::to_string(config_.index));
+    } else {
+        planRestartRoute(selection, programs_, route, local);
+    }
+    for (const auto& [variable, value] : selection.variableChanges)
+        if (variable < 0 || variable >= kVariableCount)
+            local.error("RESTART_VARIABLE_RANGE", {selection.mainProgram, "", 0, 0},
+                        "variable @" + std::to_string(variable) + " does not exist (0..999)");
+    for (const auto& [event, value] : selection.eventChanges)
+        if (!EventTable::valid(event.process, event.event))
+            local.error("RESTART_EVENT_INVALID", {selection.mainProgram, "", 0, 0},
+                        "event " + std::to_string(event.process) + ":" +
+                            std::to_string(event.event) + " does not exist");
+    diagnostics.append(local);
+    if (local.hasErrors() || budget == 0) {
+        progress_ = {};
+        return false;
+    }
+    selection_ = selection;
+    route_ = std::move(route);
+    budget_ = budget;
+    diagnostics_ = std::move(local);
+    progress_ = {ComputingStatus::Running, 0, 0};
+    abortRequested_.store(false);
+    blocksSoFar_.store(0);
+
+    interpreter_.restoreState(current);
+    interpreter_.controlReset();
+    interpreter_.select(route_.selected, 0);
+    InterpreterState start = interpreter_.state();
+    for (const auto& [variable, value] : selection.variableChanges) {
+        start.variables.values[static_cast<std::size_t>(variable)] = value;
+        start.variables.written.set(static_cast<std::size_t>(variable));
+    }
+    start.program = route_.startProgram;
+    start.block = route_.startBlock;
+    start.callStack = route_.startFrames;
+    interpreter_.restoreState(start);
+    for (const auto& [event, value] : selection.eventChanges)
+        interpreter_.events().set(event.process, event.event, value);
+
+    InterpreterOptions options = operatorOptions;
+    options.continueAfterError = false;
+    options.output = restartOutput(config_);
+    interpreter_.options() = options;
+    collector_.clear();
+    filter_.resetCounters();
+    interpreter_.setObserver(&collector_);
+    publishBuffers();  // zeroed at the start (seed 000, 4.2)
+    target_ = {route_.targetProgram->number, selection.target.block, 1};
+    interpreter_.setStopTarget(target_);
+    return true;
+}
+
+ComputingProgress ComputingProcess::advance(std::uint64_t maxBlocks) {
+    if (progress_.status != ComputingStatus::Running &&
+        progress_.status != ComputingStatus::Stopped)
+        return progress_;
+    progress_.status = ComputingStatus::Running;
+    std::uint64_t left = maxBlocks;
+    while (left > 0) {
+        if (abortRequested_.load(std::memory_order_relaxed)) {
+            finish(ComputingStatus::Aborted);
+            return progress_;
+        }
+        if (progress_.blocksInterpreted >= budget_) {
+            const std::vector<StackLevel> levels = interpreter_.callStack();
+            const StackLevel at = levels.empty() ? StackLevel{} : levels.back();
+            diagnostics_.error("BLOCK_BUDGET", {at.program, at.block, at.line, 0},
+                               "the computing process was stopped after " +
+                                   std::to_string(budget_) +
+                                   " interpreted blocks (block budget) before it reached the "
+                                   "target block");
+            finish(ComputingStatus::Failed);
+            return progress_;
+        }
+        const std::uint64_t slice = std::min({left, kSlice, budget_ - progress_.blocksInterpreted});
+        const RunResult result = interpreter_.run(slice);
+        left -= std::min(left, result.blocksInterpreted);
+        count(result.blocksInterpreted);
+        if (handle(result) == Next::Return) return progress_;
+    }
+    return progress_;
+}
+
+ComputingProcess::Next ComputingProcess::handle(const RunResult& result) {
+    for (const Diagnostic& d : result.diagnostics.items())
+        if (!(result.status == RunStatus::BudgetExceeded && d.code == "BLOCK_BUDGET"))
+            diagnostics_.add(d);
+    switch (result.status) {
+        case RunStatus::Running:
+        case RunStatus::BudgetExceeded:  // end of a slice; the real budget is checked above
+            return Next::Continue;
+        case RunStatus::TargetReached:
+            return targetArrival();
+        case RunStatus::Stopped:
+            publishRotaryAxisModes();  // page 60 el. 1..3 are updated at a program stop
+            progress_.status = ComputingStatus::Stopped;
+            return Next::Return;
+        case RunStatus::Ended: {
+            const Program& p = *route_.targetProgram;
+            diagnostics_.error(
+                "RESTART_TARGET_NOT_FOUND", locationOf(p, selection_.target.block),
+                "target block cannot be found: the program ended (BST, RET, M02, M30 or its last "
+                "block) before the target block was reached",
+                {"arrivals with the selected call chain: " + std::to_string(progress_.arrivals) +
+                 " of " + std::to_string(selection_.runs)});
+            finish(ComputingStatus::Failed);
+            return Next::Return;
+        }
+        case RunStatus::Error:
+            finish(ComputingStatus::Failed);
+            return Next::Return;
+    }
+    return Next::Return;
+}
+
+ComputingProcess::Next ComputingProcess::targetArrival() {
+    if (callStackMatches(interpreter_.state().callStack, route_.targetChain) &&
+        ++progress_.arrivals >= selection_.runs) {
+        finish(ComputingStatus::TargetReached);
+        return Next::Return;
+    }
+    // Not yet: the target block is executed this time, the next arrival counts.
+    interpreter_.setStopTarget(std::nullopt);
+    const RunResult result = interpreter_.step();
+    count(result.blocksInterpreted);
+    interpreter_.setStopTarget(target_);
+    return handle(result);
+}
+
+void ComputingProcess::finish(ComputingStatus status) {
+    progress_.status = status;
+    if (status != ComputingStatus::TargetReached) return;
+    interpreter_.publishPage60();
+    publishBuffers();
+}
+
+void ComputingProcess::publishBuffers() {
+    const std::array<int, FunctionBuffer::kLength> m16 = collector_.m16().elements();
+    const std::array<int, FunctionBuffer::kLength> q = collector_.q().elements();
+    MachineDataProvider& data = interpreter_.machineData();
+    for (int element = 1; element <= FunctionBuffer::kLength; ++element) {
+        const auto i = static_cast<std::size_t>(element - 1);
+        data.write({61, config_.index, 1, element}, m16[i], MachineDataWriter::Nc);
+        data.write({61, config_.index, 2, element}, q[i], MachineDataWriter::Nc);
+    }
+}
+
+void ComputingProcess::publishRotaryAxisModes() {
+    const ModalState& modal = interpreter_.state().modal;
+    for (int spindle = 1; spindle <= 3; ++spindle)
+        interpreter_.machineData().write({60, config_.index, 0, spindle},
+                                         modal.rotaryAxisMode[static_cast<std::size_t>(spindle)],
+                                         MachineDataWriter::Nc);
+}
+
+void ComputingProcess::count(std::uint64_t blocks) {
+    progress_.blocksInterpreted += blocks;
+    blocksSoFar_.store(progress_.blocksInterpreted, std::memory_order_relaxed);
+}
+
+}  // namespace mtc::core

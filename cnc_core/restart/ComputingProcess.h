@@ -1,0 +1,115 @@
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+#include <memory>
+
+#include "cnc_core/interp/Interpreter.h"
+#include "cnc_core/restart/RestartAuxCollector.h"
+#include "cnc_core/restart/RestartOutputFilter.h"
+#include "cnc_core/restart/RestartRoute.h"
+#include "cnc_core/restart/RestartSelection.h"
+
+namespace mtc::core {
+
+/// Where a computing process stands.
+enum class ComputingStatus {
+    Idle,           ///< begin() not called (or it failed)
+    Running,        ///< more blocks to interpret: call advance() again
+    Stopped,        ///< M00 (or M01 with optional stop): advance() again continues (Start)
+    TargetReached,  ///< stopped before the target block on its N-th arrival: done
+    Failed,         ///< an error ended it (diagnostics): target not found, rejected block, budget
+    Aborted,        ///< requestAbort() (Control reset) ended it
+};
+
+/// "idle", "running", "stopped", "target", "failed", "aborted".
+const char* computingStatusName(ComputingStatus status);
+
+struct ComputingProgress {
+    ComputingStatus status = ComputingStatus::Idle;
+    std::uint64_t blocksInterpreted = 0;  ///< since begin()
+    std::uint32_t arrivals = 0;           ///< arrivals at the target with the selected call chain
+};
+
+/// The computing process of NC program restart (seed 000, 2.7, 2.8, 3.1, 4,
+/// 5.2, 5.4): interprets the selected program from the start block to the
+/// target block without motion and, unless Bxx.058..061 say Yes for the
+/// function type, without auxiliary output, and collects the state the
+/// machine must have at the target: modal G groups, M groups 1..15, the
+/// M(16) and Q buffers of page 61, S/T/E, variables and page 60.
+///
+/// It runs on an interpreter of its own (same configuration, program memory,
+/// machine data and event table as the process's interpreter), started from
+/// a copy of the process's state, so an abort leaves the process untouched.
+/// It runs in slices (advance) so that a screen stays responsive; abort from
+/// any thread with requestAbort(). Never throws.
+class ComputingProcess {
+  public:
+    /// `sps` receives what passes to the SPS (see RestartOutputFilter). The
+    /// references must outlive this object. `services` should be those of the
+    /// process's interpreter (machine data pages 60/61, events).
+    ComputingProcess(const ProcessConfig& config, const ProgramStore& programs, MachineSink& sps,
+                     InterpreterServices services);
+    ComputingProcess(const ComputingProcess&) = delete;
+    ComputingProcess& operator=(const ComputingProcess&) = delete;
+
+    /// Prepares a computing process for `selection` from the process state
+    /// `current` (variables and positions carry over; modal groups start as
+    /// after a control reset). `operatorOptions` gives the skip-block and
+    /// optional-stop switches. Checks the selection (planRestartRoute),
+    /// applies the operator's variable and event changes, zeroes page 61 and
+    /// puts the program pointer on the start block. Fails (false, errors in
+    /// `diagnostics`, status Idle, nothing changed) on a bad selection.
+    bool begin(const RestartSelection& selection, const InterpreterState& current,
+               const InterpreterOptions& operatorOptions, std::uint64_t budget,
+               DiagnosticList& diagnostics);
+    /// Interprets at most `maxBlocks` blocks (Running / Stopped continue).
+    /// Ends with TargetReached (page 60 and 61 written), Failed (BST, RET,
+    /// M02, M30 before the target: RESTART_TARGET_NOT_FOUND; a rejected block;
+    /// the block budget), Aborted, or Stopped at M00. Returns the progress.
+    ComputingProgress advance(std::uint64_t maxBlocks);
+    /// Asks a running advance() (any thread) to stop at its next check (every
+    /// few thousand blocks); the status becomes Aborted. Pages 60/61 keep
+    /// what begin() wrote; the process's interpreter was never touched.
+    void requestAbort() { abortRequested_.store(true, std::memory_order_relaxed); }
+
+    const ComputingProgress& progress() const { return progress_; }
+    /// Blocks interpreted so far; safe to read from another thread.
+    std::uint64_t blocksSoFar() const { return blocksSoFar_.load(std::memory_order_relaxed); }
+    /// Diagnostics since begin() (warnings of the run, the error that ended it).
+    const DiagnosticList& diagnostics() const { return diagnostics_; }
+    const RestartSelection& selection() const { return selection_; }
+    const RestartRoute& route() const { return route_; }
+    /// The state computed so far; at TargetReached the state at the target
+    /// (program pointer on the target block, call stack as at the target).
+    const InterpreterState& state() const { return interpreter_.state(); }
+    const Interpreter& interpreter() const { return interpreter_; }
+    const RestartAuxCollector& collector() const { return collector_; }
+    const RestartOutputFilter& filter() const { return filter_; }
+
+  private:
+    enum class Next { Continue, Return };
+
+    Next handle(const RunResult& result);
+    Next targetArrival();
+    void publishBuffers();
+    void publishRotaryAxisModes();
+    void finish(ComputingStatus status);
+    void count(std::uint64_t blocks);
+
+    const ProcessConfig& config_;
+    const ProgramStore& programs_;
+    RestartOutputFilter filter_;
+    RestartAuxCollector collector_;
+    Interpreter interpreter_;
+    RestartSelection selection_;
+    RestartRoute route_;
+    StopTarget target_;
+    std::uint64_t budget_ = 0;
+    ComputingProgress progress_;
+    DiagnosticList diagnostics_;
+    std::atomic<bool> abortRequested_{false};
+    std::atomic<std::uint64_t> blocksSoFar_{0};
+};
+
+}  // namespace mtc::core

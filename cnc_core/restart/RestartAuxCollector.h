@@ -1,0 +1,43 @@
+#pragma once
+
+#include <array>
+#include <cstdint>
+
+#include "cnc_core/interp/Interpreter.h"
+#include "cnc_core/machine/MachineConfig.h"
+#include "cnc_core/restart/FunctionBuffer.h"
+
+namespace mtc::core {
+
+/// Watches every auxiliary function of the computing process (forwarded to
+/// the SPS or not) and fills the two buffers of page 61 (seed 000, 3.1 / 4.2 /
+/// 5.2): M functions of group 16 (every M that is not in a configured group
+/// 1..15) and Q functions. M19, M119, M219 and M319 are never stored, nor are
+/// the program control functions M00, M01, M02 and M30. The M groups 1..15,
+/// S, T and E are collected by the interpreter itself.
+class RestartAuxCollector : public AuxObserver {
+  public:
+    explicit RestartAuxCollector(const ProcessConfig& config);
+
+    void auxiliary(const AuxOutput& output, bool forwarded) override;
+    /// Empties both buffers and the counters (start of a computing process).
+    void clear();
+
+    const FunctionBuffer& m16() const { return m16_; }
+    const FunctionBuffer& q() const { return q_; }
+    /// Functions seen / forwarded to the SPS since clear().
+    std::uint64_t seen() const { return seen_; }
+    std::uint64_t forwarded() const { return forwarded_; }
+
+    /// True when M function `m` belongs in the M(16) buffer of this process.
+    bool storesInM16(int m) const;
+
+  private:
+    std::array<bool, 1000> m16Member_{};
+    FunctionBuffer m16_;
+    FunctionBuffer q_;
+    std::uint64_t seen_ = 0;
+    std::uint64_t forwarded_ = 0;
+};
+
+}  // namespace mtc::core
