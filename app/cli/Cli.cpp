@@ -6,6 +6,7 @@
 #include "cli/CheckCommand.h"
 #include "cli/CliOptions.h"
 #include "cli/CliOutput.h"
+#include "cli/RestartCommand.h"
 #include "cli/RunCommand.h"
 
 namespace mtc::cli {
@@ -16,9 +17,10 @@ constexpr const char* kVersion = "mtc200-cli 0.1.0";
 
 /// Commands of the contract that this build does not implement yet.
 int notYetAvailable(const CliOptions& options) {
-    return reportUsageError("command '" + options.commandName +
-                                "' is not yet available in this build (available: check, run)",
-                            options.json);
+    return reportUsageError(
+        "command '" + options.commandName +
+            "' is not yet available in this build (available: check, run, restart)",
+        options.json);
 }
 
 }  // namespace
@@ -39,6 +41,7 @@ int runCli(int argc, char** argv) {
         case Command::Run:
             return runRunCommand(options);
         case Command::Restart:
+            return runRestartCommand(options);
         case Command::Compile:
         case Command::MachineData:
             return notYetAvailable(options);

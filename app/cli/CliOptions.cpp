@@ -3,9 +3,14 @@
 #include <charconv>
 #include <string_view>
 
+#include "cnc_core/restart/RestartSelection.h"
+
 namespace mtc::cli {
 
 namespace {
+
+using core::kMaxRuns;
+using core::kMinRuns;
 
 constexpr std::uint64_t kMaxBlocksLimit = 1'000'000'000'000ULL;
 constexpr int kMaxProcess = 99;
@@ -81,7 +86,7 @@ class CommandLineReader {
         CliOptions& o = out_.options;
         std::string value;
         if (name == "--json" || name == "--no-motion" || name == "--help" || name == "-h" ||
-            name == "--version") {
+            name == "--version" || name == "--from-primary" || name == "--adjust") {
             if (hasInline) {
                 out_.error = "option " + std::string(name) + " takes no value";
                 return;
@@ -98,6 +103,12 @@ class CommandLineReader {
             if (optionValue(name, inlineValue, hasInline, value)) processValue(value);
         } else if (name == "--max-blocks") {
             if (optionValue(name, inlineValue, hasInline, value)) maxBlocksValue(value);
+        } else if (name == "--target") {
+            if (optionValue(name, inlineValue, hasInline, value)) o.target = value;
+            if (out_.error.empty() && o.target.empty()) out_.error = "--target needs a path";
+            o.restartOption = true;
+        } else if (name == "--runs") {
+            if (optionValue(name, inlineValue, hasInline, value)) runsValue(value);
         } else {
             out_.error = "unknown option '" + std::string(arg) + "'";
         }
@@ -109,6 +120,20 @@ class CommandLineReader {
         if (name == "--no-motion") o.noMotion = true;
         if (name == "--help" || name == "-h") helpRequested_ = true;
         if (name == "--version") versionRequested_ = true;
+        if (name == "--from-primary") o.fromPrimary = o.restartOption = true;
+        if (name == "--adjust") o.adjust = o.restartOption = true;
+    }
+
+    /// Number of runs (seed 000, 2.6): 1..65536.
+    void runsValue(const std::string& value) {
+        std::uint64_t number = 0;
+        out_.options.restartOption = true;
+        if (!parseUnsigned(value, number) || number < kMinRuns || number > kMaxRuns) {
+            out_.error = "bad value '" + value + "' for --runs (the number of runs is 1.." +
+                         std::to_string(kMaxRuns) + ")";
+            return;
+        }
+        out_.options.runs = static_cast<std::uint32_t>(number);
     }
 
     void processValue(const std::string& value) {
@@ -147,6 +172,14 @@ class CommandLineReader {
             out_.error = "'" + o.commandName + "' needs a program (number or file)";
         } else if (o.command == Command::Run && o.arguments.size() > 1) {
             out_.error = "'run' takes exactly one program";
+        } else if (o.restartOption && o.command != Command::Restart && o.command != Command::Help &&
+                   o.command != Command::Version) {
+            out_.error =
+                "options --target, --runs, --from-primary and --adjust belong to 'restart'";
+        } else if (o.command == Command::Restart && o.arguments.size() != 1) {
+            out_.error = "'restart' takes exactly one program";
+        } else if (o.command == Command::Restart && o.target.empty()) {
+            out_.error = "'restart' needs --target PATH";
         }
     }
 
@@ -175,6 +208,14 @@ Commands available:
   run   FILE|PROG [--no-motion]
                               execute one program in simulated time;
                               --no-motion leaves the motion list out
+  restart FILE|PROG --target PATH [--runs K] [--from-primary] [--adjust]
+                              NC program restart: the computing process up to
+                              the target block (PATH: N<number> or L<line>
+                              references, optionally P<program>:, joined by
+                              '>' where a jump or call is followed); K runs
+                              (1..65536); start at the last primary block;
+                              --adjust goes on with ADJUST, manual mode,
+                              automatic, REPOS and the re-entry
   help                        this text
 
 Global options:

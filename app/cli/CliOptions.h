@@ -25,6 +25,12 @@ struct CliOptions {
     bool json = false;
     std::uint64_t maxBlocks = kDefaultMaxBlocks;
     bool noMotion = false;
+    // restart (CLI-CONTRACT.md):
+    std::string target;          ///< --target PATH
+    std::uint32_t runs = 1;      ///< --runs K, 1..65536
+    bool fromPrimary = false;    ///< --from-primary
+    bool adjust = false;         ///< --adjust
+    bool restartOption = false;  ///< one of the four was given
 };
 
 /// Result of reading argv: the options, or the usage error that stops the run

@@ -57,18 +57,6 @@ bool prepareRun(const CliOptions& options, PreparedRun& run, core::DiagnosticLis
     return true;
 }
 
-/// Axis names for motion and position as the interpreter names the axes
-/// (Interpreter::axisName); spindles without rotary axis capability are left out.
-std::vector<std::string> reportedAxisNames(const core::Interpreter& interpreter) {
-    std::vector<std::string> names;
-    const core::ProcessAxes& axes = interpreter.axes();
-    for (int i = 0; i < axes.count(); ++i) {
-        const core::AxisModel& axis = axes.axis(i);
-        names.push_back(axis.spindle && !axis.rotary ? std::string() : interpreter.axisName(i));
-    }
-    return names;
-}
-
 /// Runs the program to its end. M00 / M01 stops are continued as the
 /// operator would with the Start key (noted as a warning); the block bound
 /// covers the whole run.
@@ -97,29 +85,6 @@ RunOutcome execute(core::Interpreter& interpreter, const PreparedRun& run, std::
             return outcome;
         }
     }
-}
-
-Page61Buffers readPage61(core::Interpreter& interpreter, int process) {
-    Page61Buffers buffers;
-    for (int element = 1; element <= 40; ++element) {
-        double value = 0.0;
-        const auto index = static_cast<std::size_t>(element - 1);
-        if (interpreter.machineData().read({61, process, 1, element}, value) ==
-            core::MachineDataStatus::Ok)
-            buffers.m16[index] = value;
-        value = 0.0;
-        if (interpreter.machineData().read({61, process, 2, element}, value) ==
-            core::MachineDataStatus::Ok)
-            buffers.q[index] = value;
-    }
-    return buffers;
-}
-
-std::vector<double> programmedPositions(const core::Interpreter& interpreter) {
-    std::vector<double> positions;
-    for (int i = 0; i < interpreter.axes().count(); ++i)
-        positions.push_back(interpreter.programmedPosition(i));
-    return positions;
 }
 
 /// How the run ended: the interpreter's word, or "not_started" when the
@@ -167,7 +132,7 @@ void writeTextTail(const MotionOutput& sink, const RunOutcome& outcome,
 void writeReport(core::Interpreter& interpreter, const PreparedRun& run, const MotionOutput& sink,
                  const RunOutcome& outcome, const core::DiagnosticList& diagnostics,
                  JsonWriter* json) {
-    const Page61Buffers page61 = readPage61(interpreter, run.request.process);
+    const Page61Buffers page61 = readPage61(interpreter.machineData(), run.request.process);
     const std::vector<double> positions = programmedPositions(interpreter);
     const std::vector<std::string> names = reportedAxisNames(interpreter);
     const StateView view{

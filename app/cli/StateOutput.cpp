@@ -110,6 +110,37 @@ void writeCallStack(JsonWriter& json, const core::InterpreterState& state) {
 
 }  // namespace
 
+std::vector<std::string> reportedAxisNames(const core::Interpreter& interpreter) {
+    std::vector<std::string> names;
+    const core::ProcessAxes& axes = interpreter.axes();
+    for (int i = 0; i < axes.count(); ++i) {
+        const core::AxisModel& axis = axes.axis(i);
+        names.push_back(axis.spindle && !axis.rotary ? std::string() : interpreter.axisName(i));
+    }
+    return names;
+}
+
+std::vector<double> programmedPositions(const core::Interpreter& interpreter) {
+    std::vector<double> positions;
+    for (int i = 0; i < interpreter.axes().count(); ++i)
+        positions.push_back(interpreter.programmedPosition(i));
+    return positions;
+}
+
+Page61Buffers readPage61(const core::MachineDataProvider& machineData, int process) {
+    Page61Buffers buffers;
+    for (int element = 1; element <= 40; ++element) {
+        const auto index = static_cast<std::size_t>(element - 1);
+        double value = 0.0;
+        if (machineData.read({61, process, 1, element}, value) == core::MachineDataStatus::Ok)
+            buffers.m16[index] = value;
+        value = 0.0;
+        if (machineData.read({61, process, 2, element}, value) == core::MachineDataStatus::Ok)
+            buffers.q[index] = value;
+    }
+    return buffers;
+}
+
 void writeStateJson(JsonWriter& json, const StateView& view) {
     const core::ModalState& modal = view.state.modal;
     json.beginObject();

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "cli/JsonWriter.h"
+#include "cnc_core/interp/Interpreter.h"
 #include "cnc_core/interp/InterpreterState.h"
 #include "cnc_core/machine/MachineConfig.h"
 #include "cnc_core/machine/ProcessAxes.h"
@@ -27,6 +28,16 @@ struct StateView {
     const std::vector<std::string>& axisNames;  ///< per machine axis; "" = not reported
     const std::vector<double>& positions;       ///< programmed position per machine axis
 };
+
+/// Axis names for motion and position as the interpreter names the axes
+/// (Interpreter::axisName); spindles without rotary axis capability are "".
+std::vector<std::string> reportedAxisNames(const core::Interpreter& interpreter);
+
+/// The programmed position of every machine axis (Interpreter::programmedPosition).
+std::vector<double> programmedPositions(const core::Interpreter& interpreter);
+
+/// Reads the page 61 buffers of `process` from `machineData` (0 where unreadable).
+Page61Buffers readPage61(const core::MachineDataProvider& machineData, int process);
 
 /// Writes the contract's State object (g, m_groups, page61, page60, s, t, e,
 /// f, variables, position, call_stack) as the next JSON value.

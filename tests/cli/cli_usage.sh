@@ -5,10 +5,11 @@ demo="$MTC_SOURCE_DIR/resources/programs/N1010001.DAT"
 
 expect_rc 0 "--help" --help
 text_check "help lists check and run" "check FILE|PROG"
-if printf '%s' "$OUT" | grep -Eq '^ +(restart|compile|md) '; then
+text_check "help lists restart" "restart FILE|PROG --target PATH"
+if printf '%s' "$OUT" | grep -Eq '^ +(compile|md) '; then
   fail "help lists commands that are not available"
 else
-  pass "help does not offer restart/compile/md"
+  pass "help does not offer compile/md"
 fi
 expect_rc 0 "help command" help
 expect_rc 0 "--version" --version
@@ -52,7 +53,7 @@ fi
 chmod 644 "$TEST_TMP/locked.nc"
 
 # Commands of the contract that do not exist yet say so honestly.
-for command in restart compile md; do
+for command in compile md; do
   expect_rc 2 "$command not yet available" "$command" x
   text_check "$command message" "not yet available"
 done
