@@ -1,6 +1,7 @@
 #include "screens/restart/RestartScreen.h"
 
 #include <QFontDatabase>
+#include <QFontInfo>
 #include <QKeyEvent>
 #include <QLabel>
 #include <QLineEdit>
@@ -20,6 +21,17 @@ QString eventText(bool set) {
     return set ? "1  (set)" : "0  (not set)";
 }
 
+/// A fixed-pitch font for the listing (the platform's, else fontconfig's "Monospace").
+QFont listingFont() {
+    QFont font = QFontDatabase::systemFont(QFontDatabase::FixedFont);
+    if (!QFontInfo(font).fixedPitch()) {
+        font.setFamily("Monospace");
+        font.setStyleHint(QFont::TypeWriter);
+        font.setFixedPitch(true);
+    }
+    return font;
+}
+
 QString messageStyle(RestartMessage::Level level) {
     switch (level) {
         case RestartMessage::Level::Error:
@@ -37,19 +49,20 @@ RestartScreen::RestartScreen(const mtc::hmi::ScreenContext& context, RestartCont
     : Screen(context), controller_(controller) {
     breadcrumb_ = new QLabel(this);
     breadcrumb_->setObjectName("restartBreadcrumb");
-    breadcrumb_->setStyleSheet("background: #dfe6ef; padding: 3px;");
+    breadcrumb_->setStyleSheet("background: #dfe6ef; padding: 3px; font-weight: bold;");
     list_ = new QListView(this);
     list_->setObjectName("restartListing");
     list_->setUniformItemSizes(true);
     list_->setSelectionMode(QAbstractItemView::NoSelection);
     list_->setEditTriggers(QAbstractItemView::NoEditTriggers);
-    list_->setFont(QFontDatabase::systemFont(QFontDatabase::FixedFont));
+    list_->setFont(listingFont());
     list_->setModel(controller_->listing());
     list_->installEventFilter(this);
     prompt_ = new RestartPrompt(this);
     prompt_->field()->installEventFilter(this);
     status_ = new QLabel(this);
     status_->setObjectName("restartStatus");
+    status_->setStyleSheet("background: #f4f4f4; border: 1px solid #a0a0a0; padding: 3px;");
     message_ = new QLabel(this);
     message_->setObjectName("restartMessage");
     message_->setWordWrap(true);
