@@ -56,7 +56,10 @@ int spindleArgument(std::string_view args) {
     const auto comma = args.find(',');
     if (comma == std::string_view::npos) return 1;
     int spindle = 0;
-    for (std::size_t i = comma + 1; i < args.size() && args[i] >= '0' && args[i] <= '9'; ++i)
+    std::size_t first = comma + 1;
+    while (first < args.size() && args[first] == ' ')
+        ++first;  // "TCH(1, 2)": blanks after the comma
+    for (std::size_t i = first; i < args.size() && args[i] >= '0' && args[i] <= '9'; ++i)
         spindle = spindle * 10 + (args[i] - '0');
     return spindle >= 1 && spindle <= 4 ? spindle : 1;
 }

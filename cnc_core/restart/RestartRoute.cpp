@@ -31,11 +31,18 @@ class RoutePlanner {
         ProgramPtr main = program({s_.mainProgram, 0}, false);
         if (!main) return false;
         levels_.push_back({main, 0, std::nullopt});
+        current_ = main;
         for (std::size_t i = 0; i < s_.path.size(); ++i)
             if (!step(s_.path[i], i + 1 < s_.path.size() ? s_.path[i + 1] : s_.target))
                 return false;
         route_.targetProgram = program(s_.target, true);
         if (!route_.targetProgram) return false;
+        if (route_.targetProgram != current_)
+            return fail("RESTART_PATH_INCONSISTENT",
+                        locationOf(*route_.targetProgram, s_.target.block),
+                        "the target lies in program " + std::to_string(s_.target.program) +
+                            ", but the path ends in program " + std::to_string(current_->number) +
+                            " (a block of another program is reached through a jump or call)");
         route_.selected = levels_.front().program;
         route_.targetChain.clear();
         for (std::size_t k = 1; k < levels_.size(); ++k)
@@ -89,7 +96,12 @@ class RoutePlanner {
             return fail("RESTART_PATH_NOT_A_CALL", locationOf(*p, ref.block),
                         "the path goes on from a block without a jump or call that <Plane+> "
                         "can follow");
+        if (p != current_)
+            return fail("RESTART_PATH_INCONSISTENT", locationOf(*p, ref.block),
+                        "the path is in program " + std::to_string(current_->number) +
+                            " here, not in program " + std::to_string(p->number));
         if (!consistent(*p, ref, *word, destination)) return false;
+        current_ = destination;
         if (kind == PathStepKind::Jump) {
             levels_.assign(1, {destination, 0, std::nullopt});
             return true;
@@ -172,6 +184,7 @@ class RoutePlanner {
     RestartRoute& route_;
     DiagnosticList& d_;
     std::vector<Level> levels_;
+    ProgramPtr current_;  ///< program the path is in after the steps so far
 };
 
 }  // namespace
