@@ -6,6 +6,7 @@
 #include "cli/CheckCommand.h"
 #include "cli/CliOptions.h"
 #include "cli/CliOutput.h"
+#include "cli/MachineDataCommand.h"
 #include "cli/RestartCommand.h"
 #include "cli/RunCommand.h"
 
@@ -19,7 +20,7 @@ constexpr const char* kVersion = "mtc200-cli 0.1.0";
 int notYetAvailable(const CliOptions& options) {
     return reportUsageError(
         "command '" + options.commandName +
-            "' is not yet available in this build (available: check, run, restart)",
+            "' is not yet available in this build (available: check, run, restart, md)",
         options.json);
 }
 
@@ -42,8 +43,9 @@ int runCli(int argc, char** argv) {
             return runRunCommand(options);
         case Command::Restart:
             return runRestartCommand(options);
-        case Command::Compile:
         case Command::MachineData:
+            return runMachineDataCommand(options);
+        case Command::Compile:
             return notYetAvailable(options);
         case Command::None:
             break;

@@ -109,6 +109,9 @@ class CommandLineReader {
             o.restartOption = true;
         } else if (name == "--runs") {
             if (optionValue(name, inlineValue, hasInline, value)) runsValue(value);
+        } else if (isMachineDataOption(name)) {
+            if (optionValue(name, inlineValue, hasInline, value))
+                out_.error = o.machineData.take(name, value);
         } else {
             out_.error = "unknown option '" + std::string(arg) + "'";
         }
@@ -176,6 +179,9 @@ class CommandLineReader {
                    o.command != Command::Version) {
             out_.error =
                 "options --target, --runs, --from-primary and --adjust belong to 'restart'";
+        } else if (o.machineData.given && o.command != Command::MachineData &&
+                   o.command != Command::Help && o.command != Command::Version) {
+            out_.error = "options --as, --password, --data and --sub belong to 'md'";
         } else if (o.command == Command::Restart && o.arguments.size() != 1) {
             out_.error = "'restart' takes exactly one program";
         } else if (o.command == Command::Restart && o.target.empty()) {
@@ -216,6 +222,14 @@ Commands available:
                               (1..65536); start at the last primary block;
                               --adjust goes on with ADJUST, manual mode,
                               automatic, REPOS and the re-entry
+  md get [PAGE]               machine data page PAGE of --process as a table
+                              (without PAGE: the pages of the process)
+  md set PAGE ELEMENT VALUE [--as nc|sps|gui] [--password PW] [--sub N]
+                              write one element as NC program, SPS or the
+                              operator (default gui; password-protected
+                              elements need --password); --sub N for page 61
+                              (1 = M(16), 2 = Q); the value is kept in the
+                              data file
   help                        this text
 
 Global options:
@@ -226,12 +240,16 @@ Global options:
   --json              print exactly one JSON document on stdout
   --max-blocks N      bound of a run in interpreted blocks (default 10000000)
   --version           print the version
+  --data FILE         machine data file of md (default:
+                      $XDG_STATE_HOME/mtc200/machine-data/<cell>.mdt, or
+                      ~/.local/state/...; '-' keeps nothing)
 
 A program is a program number (looked up in the program directory for the
 selected process) or a path to a source file (.DAT with %NPG header or a
 plain file of blocks).
 
-Exit codes: 0 success, 1 the program or run has errors, 2 usage or file error.
+Exit codes: 0 success, 1 the program or run has errors (md: the machine data
+refused the request), 2 usage or file error (md: also text in a number).
 )";
 }
 

@@ -4,6 +4,8 @@
 #include <string>
 #include <vector>
 
+#include "cli/MachineDataOptions.h"
+
 namespace mtc::cli {
 
 /// The sub-command of mtc200-cli (CLI-CONTRACT.md).
@@ -26,11 +28,12 @@ struct CliOptions {
     std::uint64_t maxBlocks = kDefaultMaxBlocks;
     bool noMotion = false;
     // restart (CLI-CONTRACT.md):
-    std::string target;          ///< --target PATH
-    std::uint32_t runs = 1;      ///< --runs K, 1..65536
-    bool fromPrimary = false;    ///< --from-primary
-    bool adjust = false;         ///< --adjust
-    bool restartOption = false;  ///< one of the four was given
+    std::string target;              ///< --target PATH
+    std::uint32_t runs = 1;          ///< --runs K, 1..65536
+    bool fromPrimary = false;        ///< --from-primary
+    bool adjust = false;             ///< --adjust
+    bool restartOption = false;      ///< one of the four was given
+    MachineDataOptions machineData;  ///< md: --as, --password, --data, --sub
 };
 
 /// Result of reading argv: the options, or the usage error that stops the run
