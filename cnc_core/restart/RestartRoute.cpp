@@ -37,6 +37,10 @@ class RoutePlanner {
                 return false;
         route_.targetProgram = program(s_.target, true);
         if (!route_.targetProgram) return false;
+        if (route_.targetProgram->blocks[s_.target.block].flags & kBlockProgramEnd)
+            return fail("RESTART_BLOCK_RANGE", locationOf(*route_.targetProgram, s_.target.block),
+                        "PROGRAMMENDE cannot be the target block: the last target is the block "
+                        "before the end of the program (seed 000, 2.3)");
         if (route_.targetProgram != current_)
             return fail("RESTART_PATH_INCONSISTENT",
                         locationOf(*route_.targetProgram, s_.target.block),
