@@ -4,9 +4,12 @@
 
 #include "hmi/ScreenRegistry.h"
 #include "screens/help/HelpScreen.h"
+#include "screens/machine_data/MachineDataScreen.h"
 #include "screens/menu/MenuScreen.h"
 #include "screens/programs/ProgramsScreen.h"
+#include "screens/restart/ReposScreen.h"
 #include "screens/restart/RestartControllers.h"
+#include "screens/restart/RestartResultScreen.h"
 #include "screens/restart/RestartScreen.h"
 #include "screens/signals/SignalsScreen.h"
 
@@ -20,6 +23,8 @@ void registerAllScreens(mtc::hmi::ScreenRegistry& registry) {
                  [](const ScreenContext& c) { return new ProgramsScreen(c); });
     registry.add("signals", "Interface signals",
                  [](const ScreenContext& c) { return new SignalsScreen(c); });
+    registry.add("machine-data", "Machine data",
+                 [](const ScreenContext& c) { return new MachineDataScreen(c); });
     registry.add("help", "Key assignments",
                  [](const ScreenContext& c) { return new HelpScreen(c); });
     // The restart screens of a station share one controller (selection,
@@ -28,6 +33,16 @@ void registerAllScreens(mtc::hmi::ScreenRegistry& registry) {
     registry.add("restart", "NC program restart", [restart](const ScreenContext& c) {
         return new RestartScreen(c, restart->forStation(c));
     });
+    registry.add(
+        "restart-result", "NC program restart: result",
+        [restart](const ScreenContext& c) {
+            return new RestartResultScreen(c, restart->forStation(c));
+        },
+        false);
+    registry.add(
+        "repos", "Repositioning",
+        [restart](const ScreenContext& c) { return new ReposScreen(c, restart->forStation(c)); },
+        false);
 }
 
 }  // namespace mtc::screens

@@ -1,8 +1,11 @@
 #include "screens/restart/RestartController.h"
 
+#include <QLocale>
+
 #include "cnc_core/interp/Interpreter.h"
 #include "hmi/CellSession.h"
 #include "screens/restart/ProgramListingModel.h"
+#include "screens/restart/RestartRun.h"
 
 namespace mtc::screens {
 
@@ -38,7 +41,11 @@ RestartController::RestartController(mtc::hmi::CellSession* session, int slot, Q
       session_(session),
       slot_(slot),
       pointer_(session->store(), session->processConfig(slot).index, stationSources(session, slot)),
-      listing_(new ProgramListingModel(this)) {}
+      listing_(new ProgramListingModel(this)),
+      run_(new RestartRun(session, slot, this)) {
+    connect(run_, &RestartRun::phaseChanged, this, &RestartController::phaseChanged);
+    connect(run_, &RestartRun::progressed, this, &RestartController::changed);
+}
 
 RestartController::~RestartController() = default;
 
@@ -76,6 +83,11 @@ QString RestartController::refusalReason() const {
 }
 
 void RestartController::enter() {
+    if (run_->active()) {  // the restart runs: show it, keep its selection
+        setMessage(RestartMessage::Level::Info, phaseText());
+        emit changed();
+        return;
+    }
     const int number = session_->control(slot_).selectedProgram();
     const mtc::core::SearchReply started = pointer_.begin(number);
     shownProgram_ = nullptr;
@@ -230,6 +242,12 @@ void RestartController::toggleFromLastPrimary() {
 }
 
 bool RestartController::accept() {
+    if (run_->active()) {
+        setMessage(RestartMessage::Level::Error,
+                   "An NC program restart is already active: " + phaseText());
+        emit changed();
+        return false;
+    }
     const QString reason = refusalReason();
     if (!reason.isEmpty()) {
         setMessage(RestartMessage::Level::Error, reason);
@@ -245,13 +263,102 @@ bool RestartController::accept() {
         emit changed();
         return false;
     }
+    mtc::core::DiagnosticList refused;
+    if (!run_->start(result.selection, refused)) {
+        QStringList reasons;
+        for (const auto& d : refused.items())
+            reasons << describe(d);
+        setMessage(RestartMessage::Level::Error, reasons.join("  "));
+        emit changed();
+        return false;
+    }
+    for (const auto& d : refused.items())
+        notes << describe(d);  // warnings of the NC
     accepted_ = std::move(result);
     if (notes.isEmpty())
-        setMessage(RestartMessage::Level::Info, "Target accepted: " + status());
+        setMessage(RestartMessage::Level::Info, "Target accepted: " + phaseText());
     else
         setMessage(RestartMessage::Level::Warning, "Target accepted. " + notes.join("  "));
     emit changed();
     return true;
+}
+
+void RestartController::abort() {
+    run_->abort();
+}
+
+void RestartController::phaseChanged(mtc::core::RestartPhase phase) {
+    using mtc::core::RestartPhase;
+    // After each computing process the number of runs is 1 again (seed 000, 2.6).
+    if (phase != RestartPhase::Active && phase != RestartPhase::Computing)
+        pointer_.computingProcessDone();
+    emit changed();
+}
+
+QString RestartController::acceptedTarget() const {
+    if (!accepted_.ok) return {};
+    const auto& target = accepted_.selection.target;
+    const auto program = session_->store().find(pointer_.process(), target.program);
+    if (!program || target.block >= program->blocks.size()) return {};
+    return QString("P%1 %2 (line %3)")
+        .arg(target.program)
+        .arg(QString::fromStdString(program->blockId(target.block)))
+        .arg(program->blocks[target.block].line);
+}
+
+QString RestartController::phaseText() const {
+    using mtc::core::RestartPhase;
+    if (!run_->started()) return {};
+    const QString blocks = QLocale::c().toString(static_cast<qulonglong>(run_->computedBlocks()));
+    QString text;
+    switch (run_->phase()) {
+        case RestartPhase::Idle:
+            return {};
+        case RestartPhase::Active:
+            text =
+                "NC program restart active (PxxSBPACT = 1): the SPS starts the computing process.";
+            break;
+        case RestartPhase::Computing:
+            text = QString("Computing process: %1 blocks interpreted. F7 or Control reset aborts.")
+                       .arg(blocks);
+            break;
+        case RestartPhase::TargetReached:
+            text = QString(
+                       "Target block reached after %1 blocks (%2 ms). Check the result, then "
+                       "Start runs ADJUST.")
+                       .arg(blocks)
+                       .arg(run_->computingMs(), 0, 'f', 0);
+            break;
+        case RestartPhase::Adjusting:
+            text = "ADJUST establishes the machine states.";
+            break;
+        case RestartPhase::ManualMode:
+            text = "Manual mode: jog the axes near the re-entry point, then Automatic and Start.";
+            break;
+        case RestartPhase::AutomaticAgain:
+            text = "Automatic mode again: Start continues with REPOS.";
+            break;
+        case RestartPhase::Repositioning:
+            text = "REPOS moves the axes back to the re-entry point.";
+            break;
+        case RestartPhase::Reestablished:
+            text = "State re-established: machining continues at the target block.";
+            break;
+        case RestartPhase::Failed: {
+            text = "NC program restart failed.";
+            for (const auto& d : run_->sequence().diagnostics().items())
+                if (d.severity == mtc::core::Severity::Error) {
+                    text += " " + describe(d);
+                    break;
+                }
+            break;
+        }
+        case RestartPhase::Aborted:
+            text = "NC program restart aborted: every restart signal is reset.";
+            break;
+    }
+    if (run_->held()) text += " Held: Start continues.";
+    return text;
 }
 
 QString RestartController::breadcrumb() const {

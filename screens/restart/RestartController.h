@@ -4,6 +4,7 @@
 #include <QString>
 #include <memory>
 
+#include "cnc_core/restart/RestartSequence.h"
 #include "cnc_core/restart/SearchPointer.h"
 
 namespace mtc::hmi {
@@ -13,6 +14,7 @@ class CellSession;
 namespace mtc::screens {
 
 class ProgramListingModel;
+class RestartRun;
 
 /// A line the restart screens show under their content.
 struct RestartMessage {
@@ -39,6 +41,12 @@ class RestartController : public QObject {
     const RestartMessage& message() const { return message_; }
     /// The last accepted selection (valid after accept() returned true).
     const mtc::core::AcceptResult& accepted() const { return accepted_; }
+    /// The restart of the station after Enter (computing process, ADJUST, REPOS).
+    RestartRun* run() const { return run_; }
+    /// "P1 N0020 (line 37)" of the accepted target; "" before the first Enter.
+    QString acceptedTarget() const;
+    /// What the restart is doing now, for the operator ("" before the first Enter).
+    QString phaseText() const;
 
     /// Entry into the restart screen (seed 000, 2.2): the search starts on
     /// N0000 of the selected program, number of runs 1. Says why when it
@@ -70,8 +78,11 @@ class RestartController : public QObject {
     /// Number of runs from the operator's text; false (old value kept) if refused.
     bool setRuns(const QString& text);
     void toggleFromLastPrimary();
-    /// <Enter>: validates the selection. True when accepted (accepted()).
+    /// <Enter>: validates the selection and hands it to the NC (PxxSBPACT;
+    /// the SPS starts the computing process). True when accepted (accepted()).
     bool accept();
+    /// Abort soft key: ends the computing process (or ADJUST/REPOS).
+    void abort();
 
     /// "P1 COVER PLATE ▸ N0012 BSR .CONTUR ▸ P1 .CONTUR": the levels.
     QString breadcrumb() const;
@@ -90,6 +101,7 @@ class RestartController : public QObject {
     void showLevel();
     void cursorMoved();
     QString refusalReason() const;
+    void phaseChanged(mtc::core::RestartPhase phase);
 
     mtc::hmi::CellSession* session_;
     int slot_;
@@ -99,6 +111,7 @@ class RestartController : public QObject {
     RestartMessage message_;
     QString lastSearch_;
     mtc::core::AcceptResult accepted_;
+    RestartRun* run_;
 };
 
 }  // namespace mtc::screens

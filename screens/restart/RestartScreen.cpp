@@ -12,6 +12,7 @@
 #include "screens/restart/ProgramListingModel.h"
 #include "screens/restart/RestartController.h"
 #include "screens/restart/RestartPrompt.h"
+#include "screens/restart/RestartRun.h"
 
 namespace mtc::screens {
 
@@ -66,6 +67,11 @@ RestartScreen::RestartScreen(const mtc::hmi::ScreenContext& context, RestartCont
     message_ = new QLabel(this);
     message_->setObjectName("restartMessage");
     message_->setWordWrap(true);
+    progress_ = new QLabel(this);
+    progress_->setObjectName("restartProgress");
+    progress_->setWordWrap(true);
+    progress_->setStyleSheet("background: #00307a; color: white; padding: 4px;");
+    progress_->hide();
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
     layout->addWidget(breadcrumb_);
@@ -73,11 +79,19 @@ RestartScreen::RestartScreen(const mtc::hmi::ScreenContext& context, RestartCont
     layout->addWidget(prompt_);
     layout->addWidget(status_);
     layout->addWidget(message_);
+    layout->addWidget(progress_);
     setFocusProxy(list_);
     connect(list_, &QListView::clicked, this,
             [this](const QModelIndex& index) { controller_->clickRow(index.row()); });
     connect(controller_->listing(), &ProgramListingModel::marksChanged, list_->viewport(),
             [this] { list_->viewport()->update(); });
+    connect(controller_->run(), &RestartRun::phaseChanged, this,
+            [this](mtc::core::RestartPhase phase) {
+                emit softKeysChanged();
+                // The computing process is done: the operator checks its result.
+                if (phase == mtc::core::RestartPhase::TargetReached && isVisible())
+                    emit navigateTo("restart-result");
+            });
     connect(controller_, &RestartController::changed, this, [this] {
         if (isVisible()) render();
     });
@@ -123,6 +137,7 @@ mtc::hmi::SoftKeys RestartScreen::softKeys() {
                    closePrompt();
                    controller_->accept();
                }};
+    keys[6] = {"Abort", [this] { controller_->abort(); }, controller_->run()->active()};
     keys[7] = {"Back", [this] { emit navigateTo("menu"); }};
     return keys;
 }
@@ -279,6 +294,9 @@ void RestartScreen::render() {
     const RestartMessage& message = controller_->message();
     message_->setText(message.text);
     message_->setStyleSheet(messageStyle(message.level));
+    const QString phase = controller_->phaseText();
+    progress_->setText(phase);
+    progress_->setVisible(!phase.isEmpty());
     scrollToCursor();
 }
 

@@ -49,6 +49,7 @@ class RestartScreen : public mtc::hmi::Screen {
     RestartPrompt* prompt_;
     QLabel* status_;
     QLabel* message_;
+    QLabel* progress_;
     bool entered_ = false;   ///< the current visit has started its selection
     bool eventSet_ = false;  ///< state shown in the event window
 };

@@ -7,10 +7,15 @@
 #include <QLineEdit>
 #include <QListView>
 
+#include <QTableView>
 #include "PanelFixture.h"
+
 #include "screens/restart/ProgramListingModel.h"
+#include "screens/restart/ReposModel.h"
 #include "screens/restart/RestartController.h"
 #include "screens/restart/RestartPrompt.h"
+#include "screens/restart/RestartResultModel.h"
+#include "screens/restart/RestartRun.h"
 #include "screens/restart/RestartScreen.h"
 
 using mtc::screens::RestartController;
@@ -45,6 +50,32 @@ void typeAndEnter(PanelFixture& panel, const QString& text) {
     QWidget* field = QApplication::focusWidget();
     QTest::keyClicks(field, text);
     panel.press(Qt::Key_Return);
+}
+
+/// The row of `item` in a table: {restored, before, differs}.
+QStringList tableRow(QAbstractItemModel* model, const QString& item) {
+    for (int row = 0; row < model->rowCount(); ++row)
+        if (model->index(row, 0).data().toString() == item)
+            return {
+                model->index(row, 1).data().toString(), model->index(row, 2).data().toString(),
+                model->index(row, 0).data(mtc::screens::RestartResultModel::DiffersRole).toBool()
+                    ? "differs"
+                    : "same"};
+    return {};
+}
+
+/// Distance column of every axis on the repositioning screen.
+QVector<double> distances(QAbstractItemModel* model) {
+    QVector<double> list;
+    for (int row = 0; row < model->rowCount(); ++row)
+        list << model->index(row, 3).data(mtc::screens::ReposModel::DistanceRole).toDouble();
+    return list;
+}
+
+bool signalWasSet(PanelFixture& panel, int slot, const std::string& name) {
+    for (const auto& change : panel.session->control(slot).signalTable().log())
+        if (change.name == name && change.value == 1) return true;
+    return false;
 }
 
 /// Opens the restart screen of the current station with the M key.
@@ -290,6 +321,90 @@ class RestartScreenTest : public QObject {
         QVERIFY(status(panel, 0).startsWith("Target P1 N0012"));
         panel.press(Qt::Key_PageDown, Qt::ControlModifier);
         QCOMPARE(status(panel, 1), lathe);
+    }
+
+    /// Enter starts the computing process; the result review, Start (ADJUST),
+    /// manual mode with jogging on the repositioning screen, Automatic, Start
+    /// (REPOS) up to "state re-established" — by keys on `slot`.
+    void runWholeRestart(PanelFixture& panel, int slot) {
+        auto* controller = restartScreen(panel, slot)->controller();
+        auto* run = controller->run();
+        panel.press(Qt::Key_Return);
+        QVERIFY2(run->started(), qPrintable(controller->message().text));
+        QTRY_COMPARE(run->phase(), mtc::core::RestartPhase::TargetReached);
+        QCOMPARE(panel.window->currentScreenName(), QString("restart-result"));
+        const std::string p = slot == 0 ? "P00" : "P01";
+        QVERIFY(signalWasSet(panel, slot, p + "SBPACT"));
+        QVERIFY(signalWasSet(panel, slot, p + "CBPSTR"));
+        QCOMPARE(panel.session->control(slot).signalTable().get(p + "SREPOS"), 1);
+        QVERIFY(status(panel, slot).endsWith("runs 1"));  // back to 1 after the computing process
+        panel.press(Qt::Key_F5, Qt::ShiftModifier);       // Start: ADJUST
+        QTRY_COMPARE(run->phase(), mtc::core::RestartPhase::ManualMode);
+        QCOMPARE(panel.session->control(slot).mode(), mtc::core::OperatingMode::Manual);
+        panel.press(Qt::Key_F1);  // Reposition
+        QCOMPARE(panel.window->currentScreenName(), QString("repos"));
+        auto* repos = panel.window->screen(slot, "repos")->findChild<QTableView*>("reposTable");
+        const QVector<double> beforeJog = distances(repos->model());
+        panel.press(Qt::Key_Plus);  // jog the first axis by 1
+        const QVector<double> afterJog = distances(repos->model());
+        QVERIFY(qAbs(afterJog[0] - (beforeJog[0] - 1.0)) < 1e-9);
+        QVector<double> atReentry;
+        auto capture = connect(run, &mtc::screens::RestartRun::phaseChanged, this,
+                               [&](mtc::core::RestartPhase phase) {
+                                   if (phase == mtc::core::RestartPhase::Reestablished)
+                                       atReentry = distances(repos->model());
+                               });
+        panel.press(Qt::Key_F4, Qt::ShiftModifier);  // Automatic
+        QCOMPARE(run->phase(), mtc::core::RestartPhase::AutomaticAgain);
+        panel.press(Qt::Key_F5, Qt::ShiftModifier);  // Start: REPOS
+        QTRY_COMPARE(run->phase(), mtc::core::RestartPhase::Reestablished);
+        disconnect(capture);
+        QVERIFY(!atReentry.isEmpty());
+        for (double d : atReentry)
+            QVERIFY2(qAbs(d) < 1e-6, qPrintable(QString::number(d)));
+        QVERIFY(signalWasSet(panel, slot, p + "SCREST"));
+        QCOMPARE(panel.session->control(slot).signalTable().get(p + "SBPACT"), 0);
+    }
+
+    void wholeRestartByKeysOnTheMill() {
+        PanelFixture panel;
+        openRestart(panel, 0, 1);
+        for (int i = 0; i < 20; ++i)
+            panel.press(Qt::Key_Down);
+        QVERIFY(status(panel).startsWith("Target P1 N0020"));
+        panel.press(Qt::Key_F5);
+        typeAndEnter(panel, "1");
+        auto* table = panel.window->screen(0, "restart-result")->findChild<QTableView*>();
+        runWholeRestart(panel, 0);
+        // The result review showed the state at N0020 against the idle machine.
+        panel.window->showScreen("restart-result");
+        QCOMPARE(tableRow(table->model(), "G group 1 interpolation"),
+                 (QStringList{"G2", "G0", "differs"}));
+        QCOMPARE(tableRow(table->model(), "M group 2"), (QStringList{"M3", "M5", "differs"}));
+        QCOMPARE(tableRow(table->model(), "T in tool spindle 1"),
+                 (QStringList{"4", "0", "differs"}));
+        QCOMPARE(tableRow(table->model(), "M(16) buffer").value(0), QString("1: 62"));
+        QCOMPARE(tableRow(table->model(), "G group 6 dimension"),
+                 (QStringList{"G90", "G90", "same"}));
+    }
+
+    void wholeRestartByKeysOnTheLathe() {
+        PanelFixture panel;
+        panel.press(Qt::Key_PageDown, Qt::ControlModifier);
+        openRestart(panel, 1, 1);
+        panel.press(Qt::Key_F3);
+        typeAndEnter(panel, "G1 Y1 30");  // the groove under G32
+        QVERIFY(status(panel, 1).startsWith("Target P1 N0031"));
+        panel.press(Qt::Key_F4);  // from the last primary block (N0022)
+        QVERIFY(status(panel, 1).contains("start P1 N0022 (last primary block)"));
+        runWholeRestart(panel, 1);
+        panel.window->showScreen("restart-result");
+        auto* table = panel.window->screen(1, "restart-result")->findChild<QTableView*>();
+        QCOMPARE(tableRow(table->model(), "Transformation selection").value(0), QString("32"));
+        QCOMPARE(tableRow(table->model(), "Rotary axis mode S1").value(0), QString("1"));
+        // The mill was never touched.
+        QCOMPARE(restartScreen(panel, 0)->controller()->run()->started(), false);
+        QCOMPARE(panel.session->control(0).signalTable().get("P00SBPACT"), 0);
     }
 
     void keysAnswerWithinAFrameOnAMillionBlocks() {

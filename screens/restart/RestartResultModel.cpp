@@ -1,0 +1,185 @@
+#include "screens/restart/RestartResultModel.h"
+
+#include <QBrush>
+#include <QColor>
+#include <QFont>
+
+#include "cnc_core/interp/ModalGroups.h"
+#include "screens/restart/RestartRun.h"
+
+namespace mtc::screens {
+
+namespace {
+
+const char* groupName(int group) {
+    switch (group) {
+        case mtc::core::kGroupInterpolation:
+            return "interpolation";
+        case mtc::core::kGroupPlane:
+            return "plane";
+        case mtc::core::kGroupToolPath:
+            return "tool path compensation";
+        case mtc::core::kGroupZeroOffset:
+            return "zero offset";
+        case mtc::core::kGroupFeedType:
+            return "feed type";
+        case mtc::core::kGroupDimension:
+            return "dimension";
+        case mtc::core::kGroupRadiusDiameter:
+            return "radius / diameter";
+        case mtc::core::kGroupUnits:
+            return "units";
+        case mtc::core::kGroupSurfaceSpeed:
+            return "surface speed";
+        case mtc::core::kGroupToolLength:
+            return "tool length compensation";
+        case mtc::core::kGroupTransformation:
+            return "transformation";
+        default:
+            return "";
+    }
+}
+
+QString function(char letter, int value) {
+    return value < 0 ? QString("none (−1)") : QString("%1%2").arg(letter).arg(value);
+}
+
+QString number(double value) {
+    return QString::number(value, 'g', 10);
+}
+
+QString buffer(const std::array<int, 40>& elements, int count) {
+    if (count == 0) return "empty";
+    QStringList list;
+    for (int i = 0; i < count; ++i)
+        list << QString::number(elements[static_cast<std::size_t>(i)]);
+    return QString("%1: %2").arg(count).arg(list.join(' '));
+}
+
+}  // namespace
+
+RestartResultModel::RestartResultModel(const RestartRun* run, QObject* parent)
+    : QAbstractTableModel(parent), run_(run) {}
+
+void RestartResultModel::buildRows(QVector<Row>& rows) const {
+    using namespace mtc::core;
+    const ComputingProcess& computing = run_->sequence().computing();
+    const InterpreterState& at = computing.state();
+    const InterpreterState& before = run_->before();
+    auto add = [&rows](const QString& item, const QString& restored, const QString& was) {
+        rows.push_back({item, restored, was, false});
+    };
+    auto section = [&rows](const QString& title) { rows.push_back({title, {}, {}, true}); };
+
+    section("G functions (modal groups)");
+    for (int group : usedGGroups()) {
+        const auto g = static_cast<std::size_t>(group);
+        add(QString("G group %1 %2").arg(group).arg(groupName(group)).trimmed(),
+            function('G', at.modal.g[g]), function('G', before.modal.g[g]));
+    }
+    section("Auxiliary functions");
+    for (int group = 1; group <= 15; ++group) {
+        const auto m = static_cast<std::size_t>(group);
+        add(QString("M group %1").arg(group), function('M', at.mGroups[m]),
+            function('M', before.mGroups[m]));
+    }
+    add("M(16), last output", function('M', at.mGroups[16]), function('M', before.mGroups[16]));
+    add("Q, last output", function('Q', at.lastQ), function('Q', before.lastQ));
+    for (int s = 1; s < kSpindleSlots; ++s) {
+        const auto i = static_cast<std::size_t>(s);
+        add(QString("S%1 speed").arg(s), number(at.modal.spindleSpeed[i]),
+            number(before.modal.spindleSpeed[i]));
+    }
+    add("T (tool)", QString::number(at.modal.tool), QString::number(before.modal.tool));
+    add("E", QString::number(at.modal.edge), QString::number(before.modal.edge));
+    add("D (correction)", QString::number(at.modal.correction),
+        QString::number(before.modal.correction));
+    add("F (feed)", number(at.modal.feed), number(before.modal.feed));
+    section("Page 60 'NC program restart and REPOS'");
+    for (int s = 1; s < kSpindleSlots; ++s) {
+        const auto i = static_cast<std::size_t>(s);
+        add(QString("Rotary axis mode S%1").arg(s), QString::number(at.modal.rotaryAxisMode[i]),
+            QString::number(before.modal.rotaryAxisMode[i]));
+    }
+    const auto t = static_cast<std::size_t>(kGroupTransformation);
+    add("Transformation selection", QString::number(at.modal.g[t]),
+        QString::number(before.modal.g[t]));
+    for (int s = 0; s < kToolSpindles; ++s) {
+        const auto i = static_cast<std::size_t>(s);
+        add(QString("T in tool spindle %1").arg(s + 1), QString::number(at.modal.toolSpindle[i]),
+            QString::number(before.modal.toolSpindle[i]));
+    }
+    section("Page 61 buffers (oldest first)");
+    const RestartAuxCollector& collector = computing.collector();
+    add("M(16) buffer", buffer(collector.m16().elements(), collector.m16().size()), "—");
+    add("Q buffer", buffer(collector.q().elements(), collector.q().size()), "—");
+}
+
+void RestartResultModel::reload() {
+    beginResetModel();
+    all_.clear();
+    if (run_->started()) buildRows(all_);
+    shown_.clear();
+    for (const Row& row : all_)
+        if (!differencesOnly_ || row.section || row.restored != row.before) shown_.push_back(row);
+    endResetModel();
+}
+
+void RestartResultModel::setDifferencesOnly(bool only) {
+    differencesOnly_ = only;
+    reload();
+}
+
+int RestartResultModel::differenceCount() const {
+    int count = 0;
+    for (const Row& row : all_)
+        if (!row.section && row.restored != row.before) ++count;
+    return count;
+}
+
+int RestartResultModel::rowCount(const QModelIndex& parent) const {
+    return parent.isValid() ? 0 : shown_.size();
+}
+
+int RestartResultModel::columnCount(const QModelIndex& parent) const {
+    return parent.isValid() ? 0 : 3;
+}
+
+QVariant RestartResultModel::data(const QModelIndex& index, int role) const {
+    if (!index.isValid() || index.row() >= shown_.size()) return {};
+    const Row& row = shown_[index.row()];
+    const bool differs = !row.section && row.restored != row.before;
+    switch (role) {
+        case Qt::DisplayRole:
+            return index.column() == 0 ? row.item : index.column() == 1 ? row.restored : row.before;
+        case DiffersRole:
+            return differs;
+        case Qt::BackgroundRole:
+            if (row.section) return QBrush(QColor(0xdf, 0xe6, 0xef));
+            return differs ? QBrush(QColor(0xff, 0xe8, 0x90)) : QVariant();
+        case Qt::FontRole: {
+            if (!row.section && !differs) return {};
+            QFont font;
+            font.setBold(true);
+            return font;
+        }
+        default:
+            return {};
+    }
+}
+
+QVariant RestartResultModel::headerData(int section, Qt::Orientation orientation, int role) const {
+    if (orientation != Qt::Horizontal || role != Qt::DisplayRole) return {};
+    switch (section) {
+        case 0:
+            return "Item";
+        case 1:
+            return "Restored at the target";
+        case 2:
+            return "Machine before the restart";
+        default:
+            return {};
+    }
+}
+
+}  // namespace mtc::screens

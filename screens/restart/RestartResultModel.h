@@ -1,0 +1,51 @@
+#pragma once
+
+#include <QAbstractTableModel>
+#include <QVector>
+
+namespace mtc::screens {
+
+class RestartRun;
+
+/// The state the computing process restored at the target block next to the
+/// state the machine had when the restart was accepted (seed 000, 2.8, 3.1,
+/// 4.1, 4.2): G groups, M groups 1..15, last M(16) and Q, S / T / E / D / F,
+/// page 60 and the M(16) and Q buffers of page 61. Rows that differ are
+/// highlighted. Columns: item, restored at the target, machine before.
+class RestartResultModel : public QAbstractTableModel {
+    Q_OBJECT
+  public:
+    /// Role: true when the row's two values differ.
+    static constexpr int DiffersRole = Qt::UserRole + 1;
+
+    explicit RestartResultModel(const RestartRun* run, QObject* parent = nullptr);
+
+    /// Re-reads the run (after a computing process).
+    void reload();
+    /// Shows only the rows that differ (or all).
+    void setDifferencesOnly(bool only);
+    bool differencesOnly() const { return differencesOnly_; }
+    /// Number of rows that differ (whatever the filter).
+    int differenceCount() const;
+
+    int rowCount(const QModelIndex& parent = {}) const override;
+    int columnCount(const QModelIndex& parent = {}) const override;
+    QVariant data(const QModelIndex& index, int role) const override;
+    QVariant headerData(int section, Qt::Orientation orientation, int role) const override;
+
+  private:
+    struct Row {
+        QString item;
+        QString restored;
+        QString before;
+        bool section = false;  ///< a heading row ("G functions", "Page 60", ...)
+    };
+    void buildRows(QVector<Row>& rows) const;
+
+    const RestartRun* run_;
+    QVector<Row> all_;
+    QVector<Row> shown_;
+    bool differencesOnly_ = false;
+};
+
+}  // namespace mtc::screens

@@ -1,0 +1,78 @@
+#include "screens/restart/RestartResultScreen.h"
+
+#include <QHeaderView>
+#include <QLabel>
+#include <QTableView>
+#include <QVBoxLayout>
+
+#include "screens/restart/RestartController.h"
+#include "screens/restart/RestartResultModel.h"
+#include "screens/restart/RestartRun.h"
+
+namespace mtc::screens {
+
+RestartResultScreen::RestartResultScreen(const mtc::hmi::ScreenContext& context,
+                                         RestartController* controller)
+    : Screen(context), controller_(controller) {
+    model_ = new RestartResultModel(controller->run(), this);
+    summary_ = new QLabel(this);
+    summary_->setObjectName("resultSummary");
+    summary_->setWordWrap(true);
+    summary_->setStyleSheet("background: #dfe6ef; padding: 3px; font-weight: bold;");
+    table_ = new QTableView(this);
+    table_->setObjectName("resultTable");
+    table_->setModel(model_);
+    table_->verticalHeader()->hide();
+    table_->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
+    table_->setSelectionBehavior(QAbstractItemView::SelectRows);
+    table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    hint_ = new QLabel(this);
+    hint_->setObjectName("resultHint");
+    hint_->setWordWrap(true);
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->addWidget(summary_);
+    layout->addWidget(table_, 1);
+    layout->addWidget(hint_);
+    setFocusProxy(table_);
+    connect(controller_->run(), &RestartRun::phaseChanged, this, [this] {
+        if (isVisible()) activated();
+    });
+}
+
+void RestartResultScreen::activated() {
+    model_->reload();
+    render();
+    emit softKeysChanged();
+}
+
+void RestartResultScreen::render() {
+    const RestartRun* run = controller_->run();
+    if (!run->started()) {
+        summary_->setText("No computing process yet: select the target on the restart screen.");
+        hint_->clear();
+        return;
+    }
+    const auto& s = controller_->accepted();
+    summary_->setText(
+        QString("Target %1  ·  %2 blocks interpreted  ·  %3 differences")
+            .arg(controller_->acceptedTarget())
+            .arg(run->computedBlocks())
+            .arg(model_->differenceCount()) +
+        (s.selection.runs > 1 ? QString("  ·  arrival %1").arg(s.selection.runs) : QString()));
+    hint_->setText(controller_->phaseText());
+}
+
+mtc::hmi::SoftKeys RestartResultScreen::softKeys() {
+    mtc::hmi::SoftKeys keys(8);
+    keys[0] = {"Reposition", [this] { emit navigateTo("repos"); }};
+    keys[1] = {"Target\nselection", [this] { emit navigateTo("restart"); }};
+    keys[2] = {model_->differencesOnly() ? "All\nitems" : "Differences\nonly", [this] {
+                   model_->setDifferencesOnly(!model_->differencesOnly());
+                   emit softKeysChanged();
+               }};
+    keys[7] = {"Back", [this] { emit navigateTo("menu"); }};
+    return keys;
+}
+
+}  // namespace mtc::screens
