@@ -129,6 +129,7 @@ class RestartDriver {
     bool press(core::ControlKey key) {
         if (++actions_ > kMaxOperatorActions) return false;
         if (control_.press(key)) return true;
+        if (!sequence_.active()) return false;  // the sequence failed: its diagnostic says why
         operatorNotes_.error("RESTART_KEY_REFUSED", {},
                              std::string(core::keyName(key)) + " refused: " + control_.alarm());
         return false;

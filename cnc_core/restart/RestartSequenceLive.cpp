@@ -129,6 +129,7 @@ void RestartSequence::fail(const std::string& code, const std::string& message) 
     const StackLevel at = levels.empty() ? StackLevel{} : levels.back();
     diagnostics_.error(code, {at.program, at.block, at.line, 0}, message);
     resetAll(RestartPhase::Failed);
+    control_.setAlarm(message);
 }
 
 void RestartSequence::resetAll(RestartPhase phase) {

@@ -1,0 +1,11 @@
+; Dwell, homing, hard stop, commands not performed, tool transfer remembered.
+N0001 G0 G54 X10 Y10 Z5 T5
+N0002 G4 F30
+N0003 G74 Z0
+N0004 G75 X40 F100
+N0005 MTP MRY PMP NMP
+N0006 TCH(1, 2) TSE TPE
+N0007 GAX(X1) AXD (X:S-0-0104)=7000
+N0008 DP 1 WES 1:5
+N0009 @1=1 ;target
+N0010 M30
