@@ -82,6 +82,9 @@ void RestartRun::tick() {
 
 void RestartRun::follow() {
     const mtc::core::RestartPhase phase = sequence_->phase();
+    // Back-to-back slices while blocks are interpreted (the event loop runs
+    // between them), a slow scan while the sequence waits for the operator.
+    timer_.setInterval(runsBlocks(phase) && !sequence_->held() ? 0 : kTickMs);
     if (sequence_->active() && !timer_.isActive()) timer_.start();
     if (!sequence_->active()) timer_.stop();
     if (phase == lastPhase_) return;
