@@ -95,7 +95,7 @@ void RestartResultModel::buildRows(QVector<Row>& rows) const {
     add("D (correction)", QString::number(at.modal.correction),
         QString::number(before.modal.correction));
     add("F (feed)", number(at.modal.feed), number(before.modal.feed));
-    section("Page 60 'NC program restart and REPOS'");
+    section("Page 60 (restart and REPOS)");
     for (int s = 1; s < kSpindleSlots; ++s) {
         const auto i = static_cast<std::size_t>(s);
         add(QString("Rotary axis mode S%1").arg(s), QString::number(at.modal.rotaryAxisMode[i]),
@@ -109,7 +109,7 @@ void RestartResultModel::buildRows(QVector<Row>& rows) const {
         add(QString("T in tool spindle %1").arg(s + 1), QString::number(at.modal.toolSpindle[i]),
             QString::number(before.modal.toolSpindle[i]));
     }
-    section("Page 61 buffers (oldest first)");
+    section("Page 61 buffers, oldest first");
     const RestartAuxCollector& collector = computing.collector();
     add("M(16) buffer", buffer(collector.m16().elements(), collector.m16().size()), "—");
     add("Q buffer", buffer(collector.q().elements(), collector.q().size()), "—");
@@ -174,9 +174,9 @@ QVariant RestartResultModel::headerData(int section, Qt::Orientation orientation
         case 0:
             return "Item";
         case 1:
-            return "Restored at the target";
+            return "At the target";
         case 2:
-            return "Machine before the restart";
+            return "Machine before";
         default:
             return {};
     }

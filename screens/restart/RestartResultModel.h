@@ -11,7 +11,7 @@ class RestartRun;
 /// state the machine had when the restart was accepted (seed 000, 2.8, 3.1,
 /// 4.1, 4.2): G groups, M groups 1..15, last M(16) and Q, S / T / E / D / F,
 /// page 60 and the M(16) and Q buffers of page 61. Rows that differ are
-/// highlighted. Columns: item, restored at the target, machine before.
+/// highlighted. Columns: item, at the target, machine before the restart.
 class RestartResultModel : public QAbstractTableModel {
     Q_OBJECT
   public:

@@ -78,6 +78,12 @@ bool signalWasSet(PanelFixture& panel, int slot, const std::string& name) {
     return false;
 }
 
+/// With MTC_SCREENSHOT_DIR set, saves the panel as DIR/`name`.png (for the docs).
+void maybeScreenshot(PanelFixture& panel, const QString& name) {
+    const QString dir = qEnvironmentVariable("MTC_SCREENSHOT_DIR");
+    if (!dir.isEmpty()) panel.window->grab().save(dir + "/" + name + ".png");
+}
+
 /// Opens the restart screen of the current station with the M key.
 void openRestart(PanelFixture& panel, int slot, int program) {
     panel.session->selectProgram(slot, program);
@@ -333,6 +339,7 @@ class RestartScreenTest : public QObject {
         QVERIFY2(run->started(), qPrintable(controller->message().text));
         QTRY_COMPARE(run->phase(), mtc::core::RestartPhase::TargetReached);
         QCOMPARE(panel.window->currentScreenName(), QString("restart-result"));
+        maybeScreenshot(panel, QString("restart-result-%1").arg(slot));
         const std::string p = slot == 0 ? "P00" : "P01";
         QVERIFY(signalWasSet(panel, slot, p + "SBPACT"));
         QVERIFY(signalWasSet(panel, slot, p + "CBPSTR"));
@@ -348,6 +355,7 @@ class RestartScreenTest : public QObject {
         panel.press(Qt::Key_Plus);  // jog the first axis by 1
         const QVector<double> afterJog = distances(repos->model());
         QVERIFY(qAbs(afterJog[0] - (beforeJog[0] - 1.0)) < 1e-9);
+        maybeScreenshot(panel, QString("repos-%1").arg(slot));
         QVector<double> atReentry;
         auto capture = connect(run, &mtc::screens::RestartRun::phaseChanged, this,
                                [&](mtc::core::RestartPhase phase) {
