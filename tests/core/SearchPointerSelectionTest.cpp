@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "SearchPointerTestSupport.h"
+#include "cnc_core/restart/RestartRoute.h"
 
 using namespace mtc::core;
 using namespace mtc::core::testing;
@@ -229,4 +230,44 @@ TEST_F(SearchSelectionTest, WarnsWhenTheStartBlockLiesAfterG91OrG51) {
     EXPECT_TRUE(pointer.accept().diagnostics.empty());
     pointer.moveTo(8);  // start N0007 after G51 in N0006
     EXPECT_EQ(codes(pointer.accept()), std::vector<std::string>{"RESTART_START_AFTER_G51"});
+}
+
+TEST_F(SearchSelectionTest, StartBlockAndSelectionAgreeWithTheComputingProcessRoute) {
+    // What the screen shows as start block is where the computing process
+    // starts (RestartRoute, docs/decisions/restart.md R-002), for every target
+    // of program 5 and of the subroutines reached with Plane+.
+    auto check = [&](const std::string& where) {
+        const AcceptResult accepted = pointer.accept();
+        if (!accepted.ok) {
+            EXPECT_EQ(accepted.diagnostics.items().front().code, "RESTART_NO_PRIMARY") << where;
+            return;
+        }
+        RestartRoute route;
+        DiagnosticList diagnostics;
+        ASSERT_TRUE(planRestartRoute(accepted.selection, cell.store, route, diagnostics))
+            << where << ": " << diagnostics.items().front().message;
+        EXPECT_EQ(accepted.start.block.program, route.startProgram->number) << where;
+        EXPECT_EQ(accepted.start.block.block, route.startBlock) << where;
+        EXPECT_EQ(accepted.start.primary, route.primary) << where;
+        EXPECT_EQ(static_cast<std::size_t>(accepted.start.level), route.startFrames.size())
+            << where;
+    };
+    for (bool primary : {false, true}) {
+        for (int calling : {-1, 2, 5, 6, 8}) {
+            ASSERT_TRUE(pointer.begin(5).ok);
+            if (calling >= 0) {
+                cursorOn(calling);
+                ASSERT_TRUE(pointer.planePlus().ok) << calling;
+            }
+            pointer.home();
+            if (calling >= 0) pointer.moveTo(pointer.current().entry);
+            const std::uint32_t last = pointer.currentScan().lastSelectableBlock();
+            for (std::uint32_t block = pointer.current().cursor; block <= last; ++block) {
+                pointer.moveTo(block);
+                pointer.setFromLastPrimary(primary);
+                check("via " + std::to_string(calling) + " target " + cursorText(pointer) +
+                      (primary ? " primary" : ""));
+            }
+        }
+    }
 }
