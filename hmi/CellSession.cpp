@@ -3,16 +3,19 @@
 #include "cnc_core/interp/Interpreter.h"
 #include "cnc_core/language/Parser.h"
 #include "cnc_core/machine/SimulatedMachine.h"
+#include "cnc_core/machine_data/MachineDataFile.h"
+#include "cnc_core/machine_data/MachineDataStore.h"
 #include "hmi/SimulationClock.h"
 
 namespace mtc::hmi {
 
 /// Everything one process of the cell runs on.
 struct CellSession::Station {
-    Station(const mtc::core::ProcessConfig& config, const mtc::core::ProgramStore& store)
+    Station(const mtc::core::ProcessConfig& config, const mtc::core::ProgramStore& store,
+            const mtc::core::InterpreterServices& services)
         : control(config.index),
           machine(config),
-          interpreter(config, store, machine),
+          interpreter(config, store, machine, services),
           clock(interpreter, machine, control) {
         control.setRunner(&clock);
     }
@@ -23,9 +26,13 @@ struct CellSession::Station {
 };
 
 CellSession::CellSession(mtc::core::MachineConfig config, QObject* parent)
-    : QObject(parent), config_(std::move(config)) {
+    : QObject(parent),
+      config_(std::move(config)),
+      machineData_(std::make_shared<mtc::core::MachineDataStore>(config_)) {
+    mtc::core::InterpreterServices services;
+    services.machineData = machineData_;
     for (int slot = 0; slot < processCount(); ++slot) {
-        stations_.push_back(std::make_unique<Station>(processConfig(slot), store_));
+        stations_.push_back(std::make_unique<Station>(processConfig(slot), store_, services));
         connect(&stations_.back()->clock, &SimulationClock::changed, this,
                 [this, slot] { emit processChanged(slot); });
     }
@@ -99,6 +106,34 @@ bool CellSession::selectProgram(int slot, int number) {
     bool ok = control(slot).selectProgram(number);
     emit processChanged(slot);
     return ok;
+}
+
+QStringList CellSession::openMachineDataFile(const QString& path) {
+    machineDataFile_ = path;
+    machineDataWritable_ = true;
+    machineDataMessages_.clear();
+    if (path.isEmpty()) return machineDataMessages_;
+    const mtc::core::MachineDataLoadResult result =
+        mtc::core::MachineDataFile(path.toStdString()).load(*machineData_);
+    machineDataWritable_ = result.mayOverwrite;
+    for (const mtc::core::Diagnostic& d : result.diagnostics.items())
+        machineDataMessages_ << QString::fromStdString(d.message);
+    for (int slot = 0; slot < processCount(); ++slot)
+        emit processChanged(slot);
+    return machineDataMessages_;
+}
+
+bool CellSession::saveMachineData(QString& error) {
+    if (machineDataFile_.isEmpty()) return true;
+    if (!machineDataWritable_) {
+        error = "the damaged machine data file could not be kept aside; not overwritten";
+        return false;
+    }
+    std::string reason;
+    if (mtc::core::MachineDataFile(machineDataFile_.toStdString()).save(*machineData_, reason))
+        return true;
+    error = QString::fromStdString(reason);
+    return false;
 }
 
 }  // namespace mtc::hmi

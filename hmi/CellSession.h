@@ -2,6 +2,7 @@
 
 #include <QObject>
 #include <QString>
+#include <QStringList>
 #include <memory>
 #include <vector>
 
@@ -12,6 +13,7 @@
 
 namespace mtc::core {
 class Interpreter;
+class MachineDataStore;
 class SimulatedMachine;
 }  // namespace mtc::core
 
@@ -60,6 +62,20 @@ class CellSession : public QObject {
     /// Announce that something of the station changed (screens refresh).
     void notifyChanged(int slot) { emit processChanged(slot); }
 
+    /// The machine data of the cell, shared by every station's interpreter.
+    mtc::core::MachineDataStore& machineData() { return *machineData_; }
+    /// Keeps the machine data in `path` from now on: loads it (a damaged
+    /// file is kept aside, the defaults stay) and returns what the user must
+    /// be told (also kept in machineDataMessages()). Empty path: nothing is kept.
+    QStringList openMachineDataFile(const QString& path);
+    /// Writes the machine data to its file (no-op without one). False with
+    /// `error` when it cannot (then the file on disk is the old one).
+    bool saveMachineData(QString& error);
+    /// The file the machine data is kept in ("" = none).
+    QString machineDataFile() const { return machineDataFile_; }
+    /// Messages of the last openMachineDataFile() (damaged file, ignored values).
+    const QStringList& machineDataMessages() const { return machineDataMessages_; }
+
   signals:
     void processChanged(int slot);
 
@@ -67,6 +83,10 @@ class CellSession : public QObject {
     struct Station;
     mtc::core::MachineConfig config_;
     mtc::core::ProgramStore store_;
+    std::shared_ptr<mtc::core::MachineDataStore> machineData_;
+    QString machineDataFile_;
+    bool machineDataWritable_ = true;
+    QStringList machineDataMessages_;
     std::vector<std::unique_ptr<Station>> stations_;
 };
 

@@ -17,6 +17,10 @@ bool parsePanelOptions(const QStringList& arguments, PanelOptions& options, QStr
         {"program", "Program to select: a number or a source file.", "FILE|NUM"},
         {"screen", "Screen shown first (restart, programs, signals, help, ...).", "NAME"},
         {"screenshot", "Render the screen once, write a PNG to FILE and exit.", "FILE"},
+        {"data",
+         "Machine data file (default: $XDG_STATE_HOME/mtc200/machine-data/<cell>.mdt; "
+         "'-' keeps nothing).",
+         "FILE"},
     });
     if (!parser.parse(arguments)) {
         error = parser.errorText();
@@ -36,6 +40,12 @@ bool parsePanelOptions(const QStringList& arguments, PanelOptions& options, QStr
     options.program = parser.value("program");
     options.screen = parser.value("screen");
     options.screenshot = parser.value("screenshot");
+    options.dataFile = parser.value("data");
+    options.dataDefault = !parser.isSet("data");
+    if (parser.isSet("data") && options.dataFile.isEmpty()) {
+        error = "--data needs a file (or '-' for none)";
+        return false;
+    }
     if (parser.isSet("process")) {
         bool ok = false;
         options.process = parser.value("process").toInt(&ok);

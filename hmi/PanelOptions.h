@@ -13,6 +13,12 @@ struct PanelOptions {
     QString program;      ///< --program FILE|NUM
     QString screen;       ///< --screen NAME
     QString screenshot;   ///< --screenshot FILE
+    /// --data FILE: machine data file ("-" = keep nothing). When
+    /// `dataDefault` is true (set by parsePanelOptions without --data), the
+    /// default location of docs/CLI.md is used; a default-constructed
+    /// PanelOptions (tests) keeps nothing.
+    QString dataFile;
+    bool dataDefault = false;
 };
 
 /// Parses the arguments (argv[0] included). On a usage error returns false

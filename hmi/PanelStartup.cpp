@@ -6,6 +6,7 @@
 #include <QTextStream>
 
 #include "cnc_core/machine/MachineConfigReader.h"
+#include "cnc_core/machine_data/MachineDataLocation.h"
 #include "cnc_core/program/DatFileName.h"
 #include "cnc_core/program/ProgramLoader.h"
 #include "hmi/CellSession.h"
@@ -39,6 +40,23 @@ void reportLoaderProblems(const mtc::core::DiagnosticList& diagnostics) {
     for (const auto& d : diagnostics.items())
         QTextStream(stderr) << "mtc200-panel: " << QString::fromStdString(formatDiagnostic(d))
                             << "\n";
+}
+
+/// Loads the machine data file the options name (or the default one);
+/// what went wrong with it is printed and kept for the machine data screen.
+void openMachineData(const PanelOptions& options, CellSession& session) {
+    QString path = options.dataFile == "-" ? QString() : options.dataFile;
+    if (options.dataDefault) {
+        const std::string fallback = mtc::core::defaultMachineDataPath(session.config().name);
+        std::string error;
+        if (!fallback.empty() && mtc::core::makeParentDirectories(fallback, error))
+            path = QString::fromStdString(fallback);
+        else if (!fallback.empty())
+            QTextStream(stderr) << "mtc200-panel: " << QString::fromStdString(error)
+                                << "; machine data is not kept\n";
+    }
+    for (const QString& message : session.openMachineDataFile(path))
+        QTextStream(stderr) << "mtc200-panel: " << message << "\n";
 }
 
 }  // namespace
@@ -76,6 +94,7 @@ std::unique_ptr<CellSession> createSession(const PanelOptions& options, QString&
         loader.loadDirectory(options.programsDir.toStdString());
     }
     reportLoaderProblems(loader.diagnostics());
+    openMachineData(options, *session);
     return session;
 }
 
