@@ -9,6 +9,7 @@
 
 #include <QTableView>
 #include "PanelFixture.h"
+#include "cnc_core/language/Parser.h"
 
 #include "screens/restart/ProgramListingModel.h"
 #include "screens/restart/ReposModel.h"
@@ -413,6 +414,58 @@ class RestartScreenTest : public QObject {
         // The mill was never touched.
         QCOMPARE(restartScreen(panel, 0)->controller()->run()->started(), false);
         QCOMPARE(panel.session->control(0).signalTable().get("P00SBPACT"), 0);
+    }
+
+    void refusalsShowClearMessages() {
+        PanelFixture panel;
+        auto cycle = std::make_shared<mtc::core::Program>(
+            mtc::core::parseProgram("N0000 .*GROOVE G1 X1 F100\nN0001 RTS\n", {}));
+        cycle->isCycle = true;
+        panel.session->mutableStore().putCycle("GROOVE", cycle);
+        panel.session->addProgram(0, 21, "calls.nc",
+                                  "N0000 BSR .*GROOVE ;cycle\nN0001 JSR 77\nN0002 M30\n");
+        openRestart(panel, 0, 21);
+        panel.press(Qt::Key_F1);
+        QVERIFY(labelText(panel, 0, "restartMessage").contains("cycle"));
+        QVERIFY(status(panel).startsWith("Target P21 N0000"));
+        panel.press(Qt::Key_Down);
+        panel.press(Qt::Key_F1);
+        QVERIFY(labelText(panel, 0, "restartMessage").contains("program 77 does not exist"));
+        QVERIFY(labelText(panel, 0, "restartMessage").startsWith("P21 N0001 line 2:"));
+        panel.press(Qt::Key_F2);
+        QVERIFY(labelText(panel, 0, "restartMessage").contains("first level"));
+    }
+
+    void abortAndControlResetLeaveTheSignalsConsistent() {
+        PanelFixture panel;
+        std::string text;
+        for (int i = 0; i < 300'000; ++i)
+            text += "G1 X" + std::to_string(i % 100) + " F500\n";
+        text += "N9999 M30\n";
+        panel.session->addProgram(0, 22, "long.nc", std::move(text));
+        for (bool softKey : {true, false}) {  // F7 Abort, then Control reset
+            openRestart(panel, 0, 22);
+            panel.press(Qt::Key_End);
+            auto* run = restartScreen(panel, 0)->controller()->run();
+            panel.press(Qt::Key_Return);
+            QCOMPARE(run->phase(), mtc::core::RestartPhase::Computing);  // the SPS answered
+            QCoreApplication::processEvents();  // one slice of at most 8 ms
+            QCOMPARE(run->phase(), mtc::core::RestartPhase::Computing);
+            panel.press(Qt::Key_F7, softKey ? Qt::NoModifier : Qt::ShiftModifier);
+            QTRY_COMPARE(run->phase(), mtc::core::RestartPhase::Aborted);
+            QVERIFY(run->computedBlocks() > 0);
+            QVERIFY(run->computedBlocks() < 300'001);
+            const auto& table = panel.session->control(0).signalTable();
+            for (const char* name : {"P00SBPACT", "P00CBPSTR", "P00SACTIV", "P00SREPOS",
+                                     "P00CREPOS", "P00SCREST", "P00SHOLD"})
+                QVERIFY2(table.get(name) == 0, name);
+            QVERIFY(!panel.session->control(0).programActive());
+            QVERIFY(restartScreen(panel, 0)
+                        ->findChild<QLabel*>("restartProgress")
+                        ->text()
+                        .contains("aborted"));
+            panel.press(Qt::Key_Escape);  // leave; the next entry is a new selection
+        }
     }
 
     void keysAnswerWithinAFrameOnAMillionBlocks() {
