@@ -200,25 +200,26 @@ SearchReply SearchPointer::planePlus() {
         return refuse("RESTART_LEVEL_LIMIT",
                       "at most " + std::to_string(kMaxPlaneSteps) +
                           " <Plane+> steps are kept: go back with <Plane-> first");
-    if (jump.hasEvent) {
-        if (!EventTable::valid(jump.event.process, jump.event.event))
-            return refuse("RESTART_EVENT_INVALID",
-                          "event " + std::to_string(jump.event.process) + ":" +
-                              std::to_string(jump.event.event) +
-                              " does not exist (process 0..6, event 0..255)");
-        auto changed = eventChanges_.find(jump.event);
-        window_ = {};
-        window_.kind = PlaneWindow::Kind::Event;
-        window_.jump = jump.kind;
-        window_.event = jump.event;
-        window_.eventSet =
-            changed != eventChanges_.end()
-                ? changed->second
-                : (sources_.readEvent && sources_.readEvent(jump.event.process, jump.event.event));
-        pending_ = jump;
-        return {};
-    }
+    if (jump.hasEvent) return openEventWindow(jump);
     return follow(jump);
+}
+
+SearchReply SearchPointer::openEventWindow(const SearchJump& jump) {
+    if (!EventTable::valid(jump.event.process, jump.event.event))
+        return refuse("RESTART_EVENT_INVALID", "event " + std::to_string(jump.event.process) + ":" +
+                                                   std::to_string(jump.event.event) +
+                                                   " does not exist (process 0..6, event 0..255)");
+    auto changed = eventChanges_.find(jump.event);
+    window_ = {};
+    window_.kind = PlaneWindow::Kind::Event;
+    window_.jump = jump.kind;
+    window_.event = jump.event;
+    window_.eventSet =
+        changed != eventChanges_.end()
+            ? changed->second
+            : (sources_.readEvent && sources_.readEvent(jump.event.process, jump.event.event));
+    pending_ = jump;
+    return {};
 }
 
 SearchReply SearchPointer::follow(const SearchJump& jump) {

@@ -121,11 +121,13 @@ class SearchPointer {
     bool active() const { return !levels_.empty(); }
 
     // ---- cursor (seed 000, 2.3); each closes an open Plane+ window
-    /// One block up / down; stops at N0000 / at the <End> block.
+    /// One block up; stops at N0000.
     void up();
+    /// One block down; stops at the <End> block.
     void down();
-    /// `rows` blocks up / down (a screen page), clamped.
+    /// `rows` blocks up (a screen page), clamped to N0000.
     void pageUp(std::uint32_t rows);
+    /// `rows` blocks down (a screen page), clamped to the <End> block.
     void pageDown(std::uint32_t rows);
     /// <Pos1>: N0000 (the first block). O(1).
     void home();
@@ -197,11 +199,11 @@ class SearchPointer {
     const ProgramScan& scan(const ProgramPtr& program) const;
     SourceLocation where(const SearchLevel& level, std::uint32_t block) const;
     SearchReply refuse(std::string code, std::string message) const;
+    SearchReply openEventWindow(const SearchJump& jump);
     SearchReply follow(const SearchJump& jump);
     SearchReply enterLabel(const SearchJump& jump);
     SearchReply enterProgram(const SearchJump& jump, int number);
     SearchReply openLevel(const SearchJump& jump, ProgramPtr program, std::uint32_t block);
-    SearchReply afterEvent(const SearchJump& jump);
     bool readJump(const ProgramPtr& program, std::uint32_t block, SearchJump& jump) const;
     bool resolveLabel(std::string_view name, const ProgramPtr& current, ProgramPtr& program,
                       std::uint32_t& block) const;

@@ -24,6 +24,7 @@ class ProgramListingModel : public QAbstractListModel {
     /// Role with the block index (uint) a row belongs to.
     static constexpr int BlockRole = Qt::UserRole + 1;
 
+    /// An empty listing; setProgram() fills it.
     explicit ProgramListingModel(QObject* parent = nullptr);
     ~ProgramListingModel() override;
 

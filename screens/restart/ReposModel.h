@@ -27,6 +27,7 @@ class ReposModel : public QAbstractTableModel {
     void refresh();
     /// Distance of axis `row` to the re-entry point (0 without a re-entry point).
     double distance(int row) const;
+    /// True once the computing process has reached the target (re-entry point known).
     bool hasReentry() const;
 
     int rowCount(const QModelIndex& parent = {}) const override;

@@ -17,6 +17,7 @@ class ReposModel;
 class ReposScreen : public mtc::hmi::Screen {
     Q_OBJECT
   public:
+    /// The screen of `context`'s station, rendering the station's `controller`.
     ReposScreen(const mtc::hmi::ScreenContext& context, RestartController* controller);
     QString screenName() const override { return "repos"; }
     QString title() const override { return "Repositioning"; }

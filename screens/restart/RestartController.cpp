@@ -306,56 +306,56 @@ QString RestartController::acceptedTarget() const {
         .arg(program->blocks[target.block].line);
 }
 
-QString RestartController::phaseText() const {
+namespace {
+
+/// What the operator reads about `phase` (seed 000, Fig. 6-8).
+QString describePhase(mtc::core::RestartPhase phase, const QString& blocks, double ms) {
     using mtc::core::RestartPhase;
-    if (!run_->started()) return {};
-    const QString blocks = QLocale::c().toString(static_cast<qulonglong>(run_->computedBlocks()));
-    QString text;
-    switch (run_->phase()) {
+    switch (phase) {
         case RestartPhase::Idle:
             return {};
         case RestartPhase::Active:
-            text =
-                "NC program restart active (PxxSBPACT = 1): the SPS starts the computing process.";
-            break;
+            return "NC program restart active (PxxSBPACT = 1): the SPS starts the computing "
+                   "process.";
         case RestartPhase::Computing:
-            text = QString("Computing process: %1 blocks interpreted. F7 or Control reset aborts.")
-                       .arg(blocks);
-            break;
+            return QString("Computing process: %1 blocks interpreted. F7 or Control reset aborts.")
+                .arg(blocks);
         case RestartPhase::TargetReached:
-            text = QString(
+            return QString(
                        "Target block reached after %1 blocks (%2 ms). Check the result, then "
                        "Start runs ADJUST.")
-                       .arg(blocks)
-                       .arg(run_->computingMs(), 0, 'f', 0);
-            break;
+                .arg(blocks)
+                .arg(ms, 0, 'f', 0);
         case RestartPhase::Adjusting:
-            text = "ADJUST establishes the machine states.";
-            break;
+            return "ADJUST establishes the machine states.";
         case RestartPhase::ManualMode:
-            text = "Manual mode: jog the axes near the re-entry point, then Automatic and Start.";
-            break;
+            return "Manual mode: jog the axes near the re-entry point, then Automatic and Start.";
         case RestartPhase::AutomaticAgain:
-            text = "Automatic mode again: Start continues with REPOS.";
-            break;
+            return "Automatic mode again: Start continues with REPOS.";
         case RestartPhase::Repositioning:
-            text = "REPOS moves the axes back to the re-entry point.";
-            break;
+            return "REPOS moves the axes back to the re-entry point.";
         case RestartPhase::Reestablished:
-            text = "State re-established: machining continues at the target block.";
-            break;
-        case RestartPhase::Failed: {
-            text = "NC program restart failed.";
-            for (const auto& d : run_->sequence().diagnostics().items())
-                if (d.severity == mtc::core::Severity::Error) {
-                    text += " " + describe(d);
-                    break;
-                }
-            break;
-        }
+            return "State re-established: machining continues at the target block.";
+        case RestartPhase::Failed:
+            return "NC program restart failed.";
         case RestartPhase::Aborted:
-            text = "NC program restart aborted: every restart signal is reset.";
-            break;
+            return "NC program restart aborted: every restart signal is reset.";
+    }
+    return {};
+}
+
+}  // namespace
+
+QString RestartController::phaseText() const {
+    if (!run_->started()) return {};
+    const QString blocks = QLocale::c().toString(static_cast<qulonglong>(run_->computedBlocks()));
+    QString text = describePhase(run_->phase(), blocks, run_->computingMs());
+    if (run_->phase() == mtc::core::RestartPhase::Failed) {
+        for (const auto& d : run_->sequence().diagnostics().items())
+            if (d.severity == mtc::core::Severity::Error) {
+                text += " " + describe(d);
+                break;
+            }
     }
     if (run_->held()) text += " Held: Start continues.";
     return text;

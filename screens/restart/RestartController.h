@@ -31,6 +31,7 @@ struct RestartMessage {
 class RestartController : public QObject {
     Q_OBJECT
   public:
+    /// The controller of station `slot` of `session` (which must outlive it).
     RestartController(mtc::hmi::CellSession* session, int slot, QObject* parent = nullptr);
     ~RestartController() override;
 
@@ -56,27 +57,38 @@ class RestartController : public QObject {
     bool active() const { return pointer_.active(); }
 
     // ---- keys of the selection (each emits changed())
+    /// Cursor one block up.
     void up();
+    /// Cursor one block down.
     void down();
+    /// Cursor `rows` blocks up (the rows the listing shows).
     void pageUp(int rows);
+    /// Cursor `rows` blocks down.
     void pageDown(int rows);
+    /// Cursor on N0000.
     void home();
+    /// Cursor on the block before the end of the program.
     void end();
     /// Mouse: cursor on the block shown on listing row `row`.
     void clickRow(int row);
+    /// Follows the jump or call of the cursor block (or opens its window);
+    /// a refusal becomes the error message.
     void planePlus();
+    /// Back to the calling point; refused on the first level.
     void planeMinus();
     /// Event window: follow with the event `set` / not set.
     void confirmEvent(bool set);
     /// Variable window: follow with the program number typed as `text`.
     /// Returns false (window stays open) when refused.
     bool confirmVariable(const QString& text);
+    /// Closes the event / variable window without jumping.
     void cancelWindow();
     /// Search string; false when not found (cursor stays).
     bool search(const QString& text);
     const QString& lastSearch() const { return lastSearch_; }
     /// Number of runs from the operator's text; false (old value kept) if refused.
     bool setRuns(const QString& text);
+    /// Switches "restart from last primary block" (refused without one).
     void toggleFromLastPrimary();
     /// <Enter>: validates the selection and hands it to the NC (PxxSBPACT;
     /// the SPS starts the computing process). True when accepted (accepted()).

@@ -16,6 +16,7 @@ class RestartPrompt : public QFrame {
   public:
     enum class Kind { None, Search, Runs, Variable, Event };
 
+    /// A hidden prompt; open() shows it.
     explicit RestartPrompt(QWidget* parent = nullptr);
 
     /// Opens the window: `title` above the field, `text` in it (selected),
@@ -25,7 +26,9 @@ class RestartPrompt : public QFrame {
     /// Hides the window.
     void close();
     Kind kind() const { return kind_; }
+    /// The text in the field.
     QString text() const;
+    /// Replaces the text in the field (the event window's state).
     void setText(const QString& text);
     /// The input field (the screen filters its keys).
     QLineEdit* field() const { return field_; }

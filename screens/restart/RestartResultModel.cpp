@@ -61,58 +61,82 @@ QString buffer(const std::array<int, 40>& elements, int count) {
 RestartResultModel::RestartResultModel(const RestartRun* run, QObject* parent)
     : QAbstractTableModel(parent), run_(run) {}
 
-void RestartResultModel::buildRows(QVector<Row>& rows) const {
-    using namespace mtc::core;
-    const ComputingProcess& computing = run_->sequence().computing();
-    const InterpreterState& at = computing.state();
-    const InterpreterState& before = run_->before();
-    auto add = [&rows](const QString& item, const QString& restored, const QString& was) {
-        rows.push_back({item, restored, was, false});
-    };
-    auto section = [&rows](const QString& title) { rows.push_back({title, {}, {}, true}); };
+namespace {
 
-    section("G functions (modal groups)");
-    for (int group : usedGGroups()) {
+/// Adds a row (item, value at the target, value before the restart).
+void addRow(QVector<RestartResultModel::Row>& rows, const QString& item, const QString& restored,
+            const QString& before) {
+    rows.push_back({item, restored, before, false});
+}
+
+void addSection(QVector<RestartResultModel::Row>& rows, const QString& title) {
+    rows.push_back({title, {}, {}, true});
+}
+
+void addGFunctions(QVector<RestartResultModel::Row>& rows, const mtc::core::InterpreterState& at,
+                   const mtc::core::InterpreterState& before) {
+    addSection(rows, "G functions (modal groups)");
+    for (int group : mtc::core::usedGGroups()) {
         const auto g = static_cast<std::size_t>(group);
-        add(QString("G group %1 %2").arg(group).arg(groupName(group)).trimmed(),
-            function('G', at.modal.g[g]), function('G', before.modal.g[g]));
+        addRow(rows, QString("G group %1 %2").arg(group).arg(groupName(group)).trimmed(),
+               function('G', at.modal.g[g]), function('G', before.modal.g[g]));
     }
-    section("Auxiliary functions");
+}
+
+void addAuxiliary(QVector<RestartResultModel::Row>& rows, const mtc::core::InterpreterState& at,
+                  const mtc::core::InterpreterState& before) {
+    addSection(rows, "Auxiliary functions");
     for (int group = 1; group <= 15; ++group) {
         const auto m = static_cast<std::size_t>(group);
-        add(QString("M group %1").arg(group), function('M', at.mGroups[m]),
-            function('M', before.mGroups[m]));
+        addRow(rows, QString("M group %1").arg(group), function('M', at.mGroups[m]),
+               function('M', before.mGroups[m]));
     }
-    add("M(16), last output", function('M', at.mGroups[16]), function('M', before.mGroups[16]));
-    add("Q, last output", function('Q', at.lastQ), function('Q', before.lastQ));
-    for (int s = 1; s < kSpindleSlots; ++s) {
+    addRow(rows, "M(16), last output", function('M', at.mGroups[16]),
+           function('M', before.mGroups[16]));
+    addRow(rows, "Q, last output", function('Q', at.lastQ), function('Q', before.lastQ));
+    for (int s = 1; s < mtc::core::kSpindleSlots; ++s) {
         const auto i = static_cast<std::size_t>(s);
-        add(QString("S%1 speed").arg(s), number(at.modal.spindleSpeed[i]),
-            number(before.modal.spindleSpeed[i]));
+        addRow(rows, QString("S%1 speed").arg(s), number(at.modal.spindleSpeed[i]),
+               number(before.modal.spindleSpeed[i]));
     }
-    add("T (tool)", QString::number(at.modal.tool), QString::number(before.modal.tool));
-    add("E", QString::number(at.modal.edge), QString::number(before.modal.edge));
-    add("D (correction)", QString::number(at.modal.correction),
-        QString::number(before.modal.correction));
-    add("F (feed)", number(at.modal.feed), number(before.modal.feed));
-    section("Page 60 (restart and REPOS)");
-    for (int s = 1; s < kSpindleSlots; ++s) {
+    addRow(rows, "T (tool)", QString::number(at.modal.tool), QString::number(before.modal.tool));
+    addRow(rows, "E", QString::number(at.modal.edge), QString::number(before.modal.edge));
+    addRow(rows, "D (correction)", QString::number(at.modal.correction),
+           QString::number(before.modal.correction));
+    addRow(rows, "F (feed)", number(at.modal.feed), number(before.modal.feed));
+}
+
+void addPage60(QVector<RestartResultModel::Row>& rows, const mtc::core::InterpreterState& at,
+               const mtc::core::InterpreterState& before) {
+    addSection(rows, "Page 60 (restart and REPOS)");
+    for (int s = 1; s < mtc::core::kSpindleSlots; ++s) {
         const auto i = static_cast<std::size_t>(s);
-        add(QString("Rotary axis mode S%1").arg(s), QString::number(at.modal.rotaryAxisMode[i]),
-            QString::number(before.modal.rotaryAxisMode[i]));
+        addRow(rows, QString("Rotary axis mode S%1").arg(s),
+               QString::number(at.modal.rotaryAxisMode[i]),
+               QString::number(before.modal.rotaryAxisMode[i]));
     }
-    const auto t = static_cast<std::size_t>(kGroupTransformation);
-    add("Transformation selection", QString::number(at.modal.g[t]),
-        QString::number(before.modal.g[t]));
-    for (int s = 0; s < kToolSpindles; ++s) {
+    const auto t = static_cast<std::size_t>(mtc::core::kGroupTransformation);
+    addRow(rows, "Transformation selection", QString::number(at.modal.g[t]),
+           QString::number(before.modal.g[t]));
+    for (int s = 0; s < mtc::core::kToolSpindles; ++s) {
         const auto i = static_cast<std::size_t>(s);
-        add(QString("T in tool spindle %1").arg(s + 1), QString::number(at.modal.toolSpindle[i]),
-            QString::number(before.modal.toolSpindle[i]));
+        addRow(rows, QString("T in tool spindle %1").arg(s + 1),
+               QString::number(at.modal.toolSpindle[i]),
+               QString::number(before.modal.toolSpindle[i]));
     }
-    section("Page 61 buffers, oldest first");
-    const RestartAuxCollector& collector = computing.collector();
-    add("M(16) buffer", buffer(collector.m16().elements(), collector.m16().size()), "—");
-    add("Q buffer", buffer(collector.q().elements(), collector.q().size()), "—");
+}
+
+}  // namespace
+
+void RestartResultModel::buildRows(QVector<Row>& rows) const {
+    const mtc::core::ComputingProcess& computing = run_->sequence().computing();
+    addGFunctions(rows, computing.state(), run_->before());
+    addAuxiliary(rows, computing.state(), run_->before());
+    addPage60(rows, computing.state(), run_->before());
+    addSection(rows, "Page 61 buffers, oldest first");
+    const mtc::core::RestartAuxCollector& collector = computing.collector();
+    addRow(rows, "M(16) buffer", buffer(collector.m16().elements(), collector.m16().size()), "—");
+    addRow(rows, "Q buffer", buffer(collector.q().elements(), collector.q().size()), "—");
 }
 
 void RestartResultModel::reload() {

@@ -18,6 +18,7 @@ class RestartResultModel : public QAbstractTableModel {
     /// Role: true when the row's two values differ.
     static constexpr int DiffersRole = Qt::UserRole + 1;
 
+    /// Rows of `run` (which must outlive the model); empty until reload().
     explicit RestartResultModel(const RestartRun* run, QObject* parent = nullptr);
 
     /// Re-reads the run (after a computing process).
@@ -33,13 +34,15 @@ class RestartResultModel : public QAbstractTableModel {
     QVariant data(const QModelIndex& index, int role) const override;
     QVariant headerData(int section, Qt::Orientation orientation, int role) const override;
 
-  private:
+    /// One line of the table.
     struct Row {
         QString item;
         QString restored;
         QString before;
         bool section = false;  ///< a heading row ("G functions", "Page 60", ...)
     };
+
+  private:
     void buildRows(QVector<Row>& rows) const;
 
     const RestartRun* run_;

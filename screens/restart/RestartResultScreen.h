@@ -18,6 +18,7 @@ class RestartResultModel;
 class RestartResultScreen : public mtc::hmi::Screen {
     Q_OBJECT
   public:
+    /// The screen of `context`'s station, rendering the station's `controller`.
     RestartResultScreen(const mtc::hmi::ScreenContext& context, RestartController* controller);
     QString screenName() const override { return "restart-result"; }
     QString title() const override { return "NC program restart: result"; }

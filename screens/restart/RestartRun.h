@@ -25,6 +25,7 @@ namespace mtc::screens {
 class RestartRun : public QObject {
     Q_OBJECT
   public:
+    /// The restart of station `slot`; `session` must outlive it.
     RestartRun(mtc::hmi::CellSession* session, int slot, QObject* parent = nullptr);
     ~RestartRun() override;
 

@@ -18,6 +18,7 @@ class RestartPrompt;
 class RestartScreen : public mtc::hmi::Screen {
     Q_OBJECT
   public:
+    /// The screen of `context`'s station, rendering the station's `controller`.
     RestartScreen(const mtc::hmi::ScreenContext& context, RestartController* controller);
     QString screenName() const override { return "restart"; }
     QString title() const override { return "NC program restart"; }
