@@ -12,8 +12,8 @@
 #include "cli/RestartRecorder.h"
 #include "cli/RestartReport.h"
 #include "cnc_core/interp/Interpreter.h"
-#include "cnc_core/machine/InMemoryMachineData.h"
 #include "cnc_core/machine/ProcessControl.h"
+#include "cnc_core/machine_data/MachineDataStore.h"
 #include "cnc_core/restart/RestartSequence.h"
 #include "cnc_core/restart/SimulatedSps.h"
 #include "cnc_core/restart/TargetPath.h"
@@ -64,7 +64,7 @@ class RestartDriver {
     RestartDriver(const CliOptions& options, PreparedRestart& prepared)
         : options_(options),
           prepared_(prepared),
-          machineData_(std::make_shared<core::InMemoryMachineData>(prepared.setup.machine)),
+          machineData_(std::make_shared<core::MachineDataStore>(prepared.setup.machine)),
           live_(*prepared.process, prepared.store, recorder_,
                 {machineData_, std::make_shared<core::EventTable>(), nullptr}),
           control_(prepared.request.process),
@@ -164,7 +164,7 @@ class RestartDriver {
     const CliOptions& options_;
     PreparedRestart& prepared_;
     RestartRecorder recorder_;
-    std::shared_ptr<core::InMemoryMachineData> machineData_;
+    std::shared_ptr<core::MachineDataStore> machineData_;  ///< the cell's pages, as in the panel
     core::Interpreter live_;
     core::ProcessControl control_;
     core::SimulatedSps sps_;
