@@ -436,6 +436,26 @@ class RestartScreenTest : public QObject {
         QVERIFY(labelText(panel, 0, "restartMessage").contains("first level"));
     }
 
+    void missingAdjustIsReportedAndResetsTheSignals() {
+        PanelFixture panel;
+        panel.session->addProgram(0, 99, "library.nc", "N0000 (NO ADJUST HERE)\nN0001 M30\n");
+        panel.session->addProgram(0, 23, "plain.nc",
+                                  "N0000 G0 X0\nN0001 G1 X10 F100\nN0002 X20\nN0003 M30\n");
+        openRestart(panel, 0, 23);
+        panel.press(Qt::Key_Down);
+        panel.press(Qt::Key_Down);
+        panel.press(Qt::Key_Return);
+        QVERIFY(labelText(panel, 0, "restartMessage").contains("no ADJUST subroutine"));
+        auto* run = restartScreen(panel, 0)->controller()->run();
+        QTRY_COMPARE(run->phase(), mtc::core::RestartPhase::TargetReached);
+        panel.press(Qt::Key_F5, Qt::ShiftModifier);  // Start: ADJUST is missing
+        QTRY_COMPARE(run->phase(), mtc::core::RestartPhase::Failed);
+        QVERIFY(restartScreen(panel, 0)->controller()->phaseText().contains("ADJUST subroutine"));
+        const auto& table = panel.session->control(0).signalTable();
+        for (const char* name : {"P00SBPACT", "P00SREPOS", "P00CREPOS", "P00SACTIV"})
+            QVERIFY2(table.get(name) == 0, name);
+    }
+
     void abortAndControlResetLeaveTheSignalsConsistent() {
         PanelFixture panel;
         std::string text;
