@@ -1,0 +1,272 @@
+#include "cnc_core/afc/AdaptiveFeedControl.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "cnc_core/machine_data/StandardPages.h"
+
+namespace mtc::core {
+namespace {
+
+constexpr double kZeroFeedLimitSeconds = 0.020;  // error 510 after 20 ms at 0 feed
+constexpr double kSampleSeconds = 0.001;         // measurement cycle of ITM and P-7-3651
+constexpr std::size_t kTrendLimit = 200000;      // samples kept for the trend
+
+std::string percent(double value) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.1f %%", value);
+    return text;
+}
+
+}  // namespace
+
+const char* afcStatusCode(AfcStatus status) {
+    switch (status) {
+        case AfcStatus::Ok:
+            return "";
+        case AfcStatus::NotAvailable:
+            return "AFC_NOT_AVAILABLE";
+        case AfcStatus::NoReferenceAxis:
+            return "AFC_NO_REFERENCE_AXIS";
+        case AfcStatus::Incompatible:
+            return "AFC_INCOMPATIBLE";
+        case AfcStatus::ErrorPending:
+            return "AFC_ERROR_PENDING";
+        case AfcStatus::Error508:
+            return "AFC_ERROR_508";
+        case AfcStatus::Error509:
+            return "AFC_ERROR_509";
+        case AfcStatus::Error510:
+            return "AFC_ERROR_510";
+        case AfcStatus::BadPeriod:
+            return "AFC_BAD_PERIOD";
+    }
+    return "AFC_ERROR";
+}
+
+AdaptiveFeedControl::AdaptiveFeedControl(const ProcessConfig& process, MachineDataStore& store,
+                                         TorqueModelParameters model, SignalTable* signals)
+    : process_(process),
+      store_(store),
+      signals_(signals),
+      parameters_(readAfcParameters(process, parameterDiagnostics_)),
+      model_(model) {}
+
+double AdaptiveFeedControl::element(int number) const {
+    double value = 0.0;
+    store_.read({kAdaptiveFeedPage, process_.index, 0, number}, value);
+    return value;
+}
+
+void AdaptiveFeedControl::setStatus(int element, double value) {
+    const double top = element >= 11 && element <= 13 ? 100.0 : 999.9;
+    store_.update({kAdaptiveFeedPage, process_.index, 0, element}, std::clamp(value, 0.0, top));
+}
+
+void AdaptiveFeedControl::setSignal(const char* name, int value) {
+    if (!signals_) return;
+    char signal[32];
+    std::snprintf(signal, sizeof signal, "P%02dS%s", process_.index, name);
+    signals_->set(signal, value);
+}
+
+AfcSettings AdaptiveFeedControl::effectiveSettings() const {
+    if (element(2) != 0.0) return settingsFromPage30(store_, process_.index);
+    return parameters_.settings;
+}
+
+bool AdaptiveFeedControl::referenceAxisExists(int significance) const {
+    const std::string name = afcAxisName(significance);
+    if (name.empty()) return false;
+    for (const AxisConfig& axis : process_.axes) {
+        if (significance >= 10) {
+            if (axis.kind == AxisKind::Spindle && axis.spindleIndex == significance - 9)
+                return true;
+        } else if (axis.name == name ||
+                   (!axis.definitions.empty() && axis.definitions.front() == name)) {
+            return true;
+        }
+    }
+    return false;
+}
+
+AfcStatus AdaptiveFeedControl::refuse(AfcStatus status, std::string message) {
+    message_ = std::move(message);
+    return status;
+}
+
+const char* AdaptiveFeedControl::incompatibleFunction(int gCode) {
+    switch (gCode) {
+        case 74:
+            return "axis homing cycle (G74)";
+        case 75:
+            return "feed to positive stop (G75)";
+        case 33:
+            return "thread cutting (G33)";
+        case 63:
+        case 64:
+            return "tapping without compensation chuck (G63/G64)";
+        case 65:
+            return "tapping with the spindle as lead axis (G65)";
+        case 77:
+            return "repositioning and NC program restart (G77)";
+        case 31:
+            return "face milling (G31)";
+        case 32:
+            return "cylinder interpolation (G32)";
+        default:
+            return nullptr;
+    }
+}
+
+AfcStatus AdaptiveFeedControl::checkBlock(const std::vector<int>& gCodes) {
+    if (!active_) return AfcStatus::Ok;
+    for (int g : gCodes)
+        if (const char* function = incompatibleFunction(g))
+            return refuse(AfcStatus::Incompatible, std::string(function) +
+                                                       " is not possible while adaptive feed "
+                                                       "control (G26) is active");
+    return AfcStatus::Ok;
+}
+
+AfcStatus AdaptiveFeedControl::switchOn(const std::vector<int>& activeGCodes) {
+    if (active_) return AfcStatus::Ok;
+    if (!parameters_.available)
+        return refuse(AfcStatus::NotAvailable,
+                      "adaptive feed control is not available (process parameter Bxx.062 = no)");
+    if (error510_)
+        return refuse(AfcStatus::ErrorPending, "error 510 must be cleared first (Clear Error)");
+    for (int g : activeGCodes)
+        if (const char* function = incompatibleFunction(g))
+            return refuse(AfcStatus::Incompatible,
+                          std::string("G26 is not possible with ") + function);
+    const int axis =
+        element(2) != 0.0 ? static_cast<int>(element(2)) : parameters_.settings.referenceAxis;
+    if (!referenceAxisExists(axis))
+        return refuse(AfcStatus::NoReferenceAxis,
+                      "reference axis " + std::to_string(axis) + " (" + afcAxisName(axis) +
+                          ") is not an axis of process " + std::to_string(process_.index));
+    if (element(2) == 0.0) copySettingsToPage30(parameters_.settings, store_, process_.index);
+    active_ = true;
+    reduction_ = peakMachining_ = peakReduction_ = zeroFeedSeconds_ = 0.0;
+    minimumExceeded_ = false;
+    setStatus(1, 1);
+    setStatus(11, 0);
+    setSignal("THMIS", 0);
+    return AfcStatus::Ok;
+}
+
+void AdaptiveFeedControl::deactivate() {
+    if (!active_) return;
+    active_ = false;
+    setStatus(1, 0);
+    setStatus(8, peakMachining_);
+    setStatus(12, peakReduction_);
+}
+
+void AdaptiveFeedControl::switchOff() {
+    const bool wasActive = active_;
+    const double minimum = effectiveSettings().minimumTorque;
+    deactivate();
+    if (wasActive && minimum != 0.0) setSignal("THMIS", minimumExceeded_ ? 0 : 1);
+}
+
+void AdaptiveFeedControl::programEnd() {
+    deactivate();
+    setSignal("THMIS", 0);
+    setSignal("EXCTH", 0);
+}
+
+void AdaptiveFeedControl::controlReset() {
+    programEnd();
+}
+
+void AdaptiveFeedControl::clearError() {
+    error510_ = false;
+    zeroFeedSeconds_ = 0.0;
+}
+
+AfcStatus AdaptiveFeedControl::measureIdleTorque(double feed, double speedFraction,
+                                                 double constantSeconds, bool speedConstant) {
+    if (!parameters_.available)
+        return refuse(AfcStatus::NotAvailable,
+                      "ITM: adaptive feed control is not available (Bxx.062 = no)");
+    const AfcSettings s = effectiveSettings();
+    if (!referenceAxisExists(s.referenceAxis))
+        return refuse(AfcStatus::NoReferenceAxis, "ITM: no reference axis in this process");
+    const double period = s.measuringPeriodMs / 1000.0;
+    if (!speedConstant || feed <= 0.0 || constantSeconds < period)
+        return refuse(AfcStatus::Error508,
+                      "error 508: idling torque recording " +
+                          std::string(afcAxisName(s.referenceAxis)) +
+                          ": the block runs at constant speed for " +
+                          std::to_string(static_cast<int>(constantSeconds * 1000)) +
+                          " ms, the measuring period is " +
+                          std::to_string(static_cast<int>(s.measuringPeriodMs)) + " ms");
+    const int samples = std::max(1, static_cast<int>(std::lround(period / kSampleSeconds)));
+    double sum = 0.0;
+    for (int i = 0; i < samples; ++i)
+        sum += model_.actualTorque(feed, speedFraction, 0.0);
+    const double idle = sum / samples - element(14);
+    setStatus(5, idle);
+    if (s.maximumIdleTorque != 0.0 && idle > s.maximumIdleTorque)
+        return refuse(AfcStatus::Error509,
+                      "error 509: idling torque " + percent(idle) + " > max. idling torque " +
+                          percent(s.maximumIdleTorque) + " " + afcAxisName(s.referenceAxis));
+    return AfcStatus::Ok;
+}
+
+AfcStatus AdaptiveFeedControl::recordStallTorque(const std::string& axis, double periodMs,
+                                                 double feedWhileRecording) {
+    if (!(periodMs >= 0.0 && periodMs <= 60000.0))
+        return refuse(AfcStatus::BadPeriod, "P-7-3651: the period must be 0.0 ... 60000 ms");
+    const int samples =
+        std::max(1, static_cast<int>(std::lround(periodMs / 1000.0 / kSampleSeconds)));
+    double sum = 0.0;
+    for (int i = 0; i < samples; ++i)
+        sum += model_.actualTorque(feedWhileRecording, feedWhileRecording > 0 ? 0.5 : 0.0, 0.0);
+    const double stall = sum / samples;
+    stallTorques_[axis] = std::round(stall * 10.0);
+    if (axis == afcAxisName(effectiveSettings().referenceAxis)) setStatus(14, std::fabs(stall));
+    return AfcStatus::Ok;
+}
+
+double AdaptiveFeedControl::measuredStallTorque(const std::string& axis) const {
+    auto found = stallTorques_.find(axis);
+    return found == stallTorques_.end() ? 0.0 : found->second;
+}
+
+void AdaptiveFeedControl::raise510() {
+    error510_ = true;
+    message_ = "error 510: 100% feed reduction " +
+               std::string(afcAxisName(effectiveSettings().referenceAxis));
+}
+
+double AdaptiveFeedControl::advance(double dt, double programmedFeed, double speedFraction,
+                                    double engagement) {
+    time_ += dt;
+    if (error510_) return 0.0;
+    if (!active_) return programmedFeed;
+    const AfcSettings s = effectiveSettings();
+    const double factor = 1.0 - reduction_ / 100.0;
+    const double feed = programmedFeed * factor;
+    const double actual = model_.actualTorque(feed, speedFraction * factor, engagement);
+    const double machining = actual - element(5) - element(14);
+    reduction_ =
+        std::clamp(reduction_ + s.amplification * (machining - s.limitingTorque) * dt, 0.0, 100.0);
+    peakMachining_ = std::max(peakMachining_, machining);
+    peakReduction_ = std::max(peakReduction_, reduction_);
+    if (machining > s.minimumTorque) minimumExceeded_ = true;
+    setStatus(7, machining);
+    setStatus(11, reduction_);
+    setSignal("EXCTH", reduction_ > s.maximumReduction ? 1 : 0);
+    zeroFeedSeconds_ = reduction_ >= 100.0 ? zeroFeedSeconds_ + dt : 0.0;
+    if (zeroFeedSeconds_ >= kZeroFeedLimitSeconds && s.maximumReduction < 100.0) raise510();
+    const double effective = programmedFeed * (1.0 - reduction_ / 100.0);
+    if (trend_.size() < kTrendLimit)
+        trend_.push_back({time_, actual, machining, reduction_, effective});
+    return error510_ ? 0.0 : effective;
+}
+
+}  // namespace mtc::core

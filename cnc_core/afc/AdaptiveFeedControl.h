@@ -1,0 +1,134 @@
+#pragma once
+
+#include <map>
+#include <string>
+#include <vector>
+
+#include "cnc_core/afc/AfcSettings.h"
+#include "cnc_core/afc/TorqueModel.h"
+#include "cnc_core/machine/SignalTable.h"
+
+namespace mtc::core {
+
+/// Outcome of an adaptive feed control request.
+enum class AfcStatus {
+    Ok,
+    NotAvailable,     ///< Bxx.062 = no
+    NoReferenceAxis,  ///< reference axis 0 or not an axis of the process
+    Incompatible,     ///< G74, G75, G33, G63..G65, G77, G31, G32 with G26
+    ErrorPending,     ///< error 510 waits for Clear Error
+    Error508,         ///< idling torque recording: block too short or speed not constant
+    Error509,         ///< idling torque > maximum idling torque
+    Error510,         ///< 100 % feed reduction for 20 ms
+    BadPeriod,        ///< P-7-3651 period outside 0..60000 ms
+};
+
+/// "AFC_ERROR_510", "AFC_INCOMPATIBLE", ... ("" for Ok).
+const char* afcStatusCode(AfcStatus status);
+
+/// One controller cycle, for the trend (seed 002 Fig. 2-1).
+struct AfcSample {
+    double time = 0.0;             ///< s since the control was made
+    double torqueActual = 0.0;     ///< S-0-0084, %
+    double machiningTorque = 0.0;  ///< 007, %
+    double feedReduction = 0.0;    ///< 011, %
+    double effectiveFeed = 0.0;    ///< mm/min
+};
+
+/// Adaptive feed control of one process (seed 002): G26/G25, ITM, the I
+/// controller that reduces the feed when the machining torque of the
+/// reference axis exceeds the limiting machining torque, the status elements
+/// of page 30, the signals PxxS.THMIS / PxxS.EXCTH, errors 508/509/510, stall
+/// torque recording (AXD P-7-3651/3652). The reference axis is simulated by
+/// a TorqueModel. Never throws; refusals are statuses with a message().
+class AdaptiveFeedControl {
+  public:
+    /// Reads Bxx.062..069 of `process` (bad values: parameterDiagnostics()).
+    /// `signals` (may be null) receives PxxSTHMIS and PxxSEXCTH.
+    AdaptiveFeedControl(const ProcessConfig& process, MachineDataStore& store,
+                        TorqueModelParameters model = {}, SignalTable* signals = nullptr);
+
+    const DiagnosticList& parameterDiagnostics() const { return parameterDiagnostics_; }
+    /// The settings in force now: page 30 when its element 002 is not 0,
+    /// else the process parameters (the precedence rule of seed 002 ch. 5).
+    AfcSettings effectiveSettings() const;
+
+    /// G26 with the G codes now active. With 002 = 0 the process parameters
+    /// are copied into page 30 first (002 = Bxx.063). Sets 001 = 1, 011 = 0,
+    /// THMIS = 0. Refused (nothing changes) when Bxx.062 = no, without a
+    /// reference axis of the process, with an incompatible function active,
+    /// or while error 510 is pending.
+    AfcStatus switchOn(const std::vector<int>& activeGCodes = {});
+    /// G25: 001 = 0, 008 = peak machining torque, 012 = peak feed reduction,
+    /// THMIS = 1 if the machining torque never exceeded 009 (not when 009 = 0).
+    void switchOff();
+    /// End of program: as G25, then THMIS = EXCTH = 0.
+    void programEnd();
+    /// Control reset: as end of program; a pending error 510 stays.
+    void controlReset();
+    /// Clear Error: error 510 goes away.
+    void clearError();
+    /// A block while G26 is active: refused when it has an incompatible G code.
+    AfcStatus checkBlock(const std::vector<int>& gCodes);
+    /// The NC function a G code stands for when it excludes adaptive feed
+    /// control ("thread cutting (G33)", ...), nullptr otherwise.
+    static const char* incompatibleFunction(int gCode);
+
+    /// ITM: idling torque of the reference axis over the measuring period
+    /// (004 / Bxx.069) at `feed` after the acceleration phase; the block has
+    /// `constantSeconds` at constant speed. 005 = mean(M_act - M_stall).
+    /// Error 508 when the constant-speed part is shorter than the period or
+    /// `speedConstant` is false; error 509 when 005 > 006 (006 != 0).
+    AfcStatus measureIdleTorque(double feed, double speedFraction, double constantSeconds,
+                                bool speedConstant = true);
+    /// AXD(axis:P-7-3651)=period: stall torque of `axis` over `periodMs`
+    /// (correct only when the axis stands still: `feedWhileRecording` 0).
+    /// For the reference axis 014 = |result|.
+    AfcStatus recordStallTorque(const std::string& axis, double periodMs,
+                                double feedWhileRecording = 0.0);
+    /// AXD(axis:P-7-3652): the last recorded stall torque in 0.1 % (0 if none).
+    double measuredStallTorque(const std::string& axis) const;
+
+    /// One controller cycle of `dt` seconds while the axes move at
+    /// `programmedFeed` (mm/min, already with override) with `engagement`
+    /// of the tool. Returns the feed the axes get (the programmed feed when
+    /// the control is off, 0 while error 510 is pending).
+    double advance(double dt, double programmedFeed, double speedFraction, double engagement);
+
+    bool active() const { return active_; }
+    bool errorPending() const { return error510_; }
+    double feedReduction() const { return reduction_; }
+    /// Text of the last refusal or error.
+    const std::string& message() const { return message_; }
+    const std::vector<AfcSample>& trend() const { return trend_; }
+    TorqueModel& model() { return model_; }
+
+  private:
+    bool referenceAxisExists(int significance) const;
+    AfcStatus refuse(AfcStatus status, std::string message);
+    void deactivate();
+    void setSignal(const char* name, int value);
+    void setStatus(int element, double value);
+    double element(int number) const;
+    void raise510();
+
+    const ProcessConfig& process_;
+    MachineDataStore& store_;
+    SignalTable* signals_;
+    AfcParameters parameters_;
+    DiagnosticList parameterDiagnostics_;
+    TorqueModel model_;
+    std::map<std::string, double> stallTorques_;  ///< axis -> P-7-3652 value in 0.1 %
+    bool active_ = false;
+    bool error510_ = false;
+    bool minimumExceeded_ = false;
+    double reduction_ = 0.0;
+    double peakMachining_ = 0.0;
+    double peakReduction_ = 0.0;
+    double zeroFeedSeconds_ = 0.0;
+    double time_ = 0.0;
+    std::string message_;
+    std::vector<AfcSample> trend_;
+};
+
+}  // namespace mtc::core
