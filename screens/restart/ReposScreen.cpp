@@ -13,9 +13,10 @@
 
 namespace mtc::screens {
 
-ReposScreen::ReposScreen(const mtc::hmi::ScreenContext& context, RestartController* controller)
-    : Screen(context), controller_(controller) {
-    model_ = new ReposModel(context.session, context.process, controller->run(), this);
+ReposScreen::ReposScreen(const mtc::hmi::ScreenContext& context,
+                         std::shared_ptr<RestartController> controller)
+    : Screen(context), controller_(std::move(controller)) {
+    model_ = new ReposModel(context.session, context.process, controller_->run(), this);
     phase_ = new QLabel(this);
     phase_->setObjectName("reposPhase");
     phase_->setWordWrap(true);

@@ -1,5 +1,7 @@
 #pragma once
 
+#include <memory>
+
 #include "hmi/Screen.h"
 
 class QLabel;
@@ -18,7 +20,8 @@ class ReposScreen : public mtc::hmi::Screen {
     Q_OBJECT
   public:
     /// The screen of `context`'s station, rendering the station's `controller`.
-    ReposScreen(const mtc::hmi::ScreenContext& context, RestartController* controller);
+    ReposScreen(const mtc::hmi::ScreenContext& context,
+                std::shared_ptr<RestartController> controller);
     QString screenName() const override { return "repos"; }
     QString title() const override { return "Repositioning"; }
     mtc::hmi::SoftKeys softKeys() override;
@@ -31,7 +34,7 @@ class ReposScreen : public mtc::hmi::Screen {
     void jog(double direction);
     void render();
 
-    RestartController* controller_;
+    std::shared_ptr<RestartController> controller_;
     ReposModel* model_;
     QLabel* phase_;
     QTableView* table_;

@@ -5,10 +5,15 @@
 
 namespace mtc::screens {
 
-RestartController* RestartControllers::forStation(const mtc::hmi::ScreenContext& context) {
-    QPointer<RestartController>& slot = controllers_[{context.session, context.process}];
-    if (!slot) slot = new RestartController(context.session, context.process, context.session);
-    return slot;
+std::shared_ptr<RestartController> RestartControllers::forStation(
+    const mtc::hmi::ScreenContext& context) {
+    std::weak_ptr<RestartController>& slot = controllers_[{context.session, context.process}];
+    std::shared_ptr<RestartController> controller = slot.lock();
+    if (!controller) {
+        controller = std::make_shared<RestartController>(context.session, context.process);
+        slot = controller;
+    }
+    return controller;
 }
 
 }  // namespace mtc::screens

@@ -2,7 +2,7 @@
 
 #include <QMap>
 #include <QPair>
-#include <QPointer>
+#include <memory>
 
 #include "hmi/Screen.h"
 
@@ -13,14 +13,15 @@ class RestartController;
 /// Hands every restart screen of a station the same RestartController, so
 /// the selection, the computing process and its result are shared by the
 /// restart, restart-result and repos screens of that station (and kept per
-/// station). The controllers belong to the cell session (QObject children).
+/// station). The screens own it together: it goes with the last of them,
+/// i.e. with the window, before the cell session it works on.
 class RestartControllers {
   public:
     /// The controller of the context's station; created on first use.
-    RestartController* forStation(const mtc::hmi::ScreenContext& context);
+    std::shared_ptr<RestartController> forStation(const mtc::hmi::ScreenContext& context);
 
   private:
-    QMap<QPair<const void*, int>, QPointer<RestartController>> controllers_;
+    QMap<QPair<const void*, int>, std::weak_ptr<RestartController>> controllers_;
 };
 
 }  // namespace mtc::screens

@@ -12,9 +12,9 @@
 namespace mtc::screens {
 
 RestartResultScreen::RestartResultScreen(const mtc::hmi::ScreenContext& context,
-                                         RestartController* controller)
-    : Screen(context), controller_(controller) {
-    model_ = new RestartResultModel(controller->run(), this);
+                                         std::shared_ptr<RestartController> controller)
+    : Screen(context), controller_(std::move(controller)) {
+    model_ = new RestartResultModel(controller_->run(), this);
     summary_ = new QLabel(this);
     summary_->setObjectName("resultSummary");
     summary_->setWordWrap(true);

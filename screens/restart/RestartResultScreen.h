@@ -1,5 +1,7 @@
 #pragma once
 
+#include <memory>
+
 #include "hmi/Screen.h"
 
 class QLabel;
@@ -19,7 +21,8 @@ class RestartResultScreen : public mtc::hmi::Screen {
     Q_OBJECT
   public:
     /// The screen of `context`'s station, rendering the station's `controller`.
-    RestartResultScreen(const mtc::hmi::ScreenContext& context, RestartController* controller);
+    RestartResultScreen(const mtc::hmi::ScreenContext& context,
+                        std::shared_ptr<RestartController> controller);
     QString screenName() const override { return "restart-result"; }
     QString title() const override { return "NC program restart: result"; }
     mtc::hmi::SoftKeys softKeys() override;
@@ -28,7 +31,7 @@ class RestartResultScreen : public mtc::hmi::Screen {
   private:
     void render();
 
-    RestartController* controller_;
+    std::shared_ptr<RestartController> controller_;
     RestartResultModel* model_;
     QLabel* summary_;
     QTableView* table_;

@@ -46,8 +46,9 @@ QString messageStyle(RestartMessage::Level level) {
 
 }  // namespace
 
-RestartScreen::RestartScreen(const mtc::hmi::ScreenContext& context, RestartController* controller)
-    : Screen(context), controller_(controller) {
+RestartScreen::RestartScreen(const mtc::hmi::ScreenContext& context,
+                             std::shared_ptr<RestartController> controller)
+    : Screen(context), controller_(std::move(controller)) {
     breadcrumb_ = new QLabel(this);
     breadcrumb_->setObjectName("restartBreadcrumb");
     breadcrumb_->setStyleSheet("background: #dfe6ef; padding: 3px; font-weight: bold;");
@@ -92,7 +93,7 @@ RestartScreen::RestartScreen(const mtc::hmi::ScreenContext& context, RestartCont
                 if (phase == mtc::core::RestartPhase::TargetReached && isVisible())
                     emit navigateTo("restart-result");
             });
-    connect(controller_, &RestartController::changed, this, [this] {
+    connect(controller_.get(), &RestartController::changed, this, [this] {
         if (isVisible()) render();
     });
 }

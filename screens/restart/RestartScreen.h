@@ -1,5 +1,7 @@
 #pragma once
 
+#include <memory>
+
 #include "hmi/Screen.h"
 
 class QLabel;
@@ -19,7 +21,8 @@ class RestartScreen : public mtc::hmi::Screen {
     Q_OBJECT
   public:
     /// The screen of `context`'s station, rendering the station's `controller`.
-    RestartScreen(const mtc::hmi::ScreenContext& context, RestartController* controller);
+    RestartScreen(const mtc::hmi::ScreenContext& context,
+                  std::shared_ptr<RestartController> controller);
     QString screenName() const override { return "restart"; }
     QString title() const override { return "NC program restart"; }
     mtc::hmi::SoftKeys softKeys() override;
@@ -27,7 +30,7 @@ class RestartScreen : public mtc::hmi::Screen {
     /// selection; coming back from another station keeps it (seed 000, 2.2).
     void activated() override;
     /// The model this screen renders (shared with the station's other restart screens).
-    RestartController* controller() const { return controller_; }
+    RestartController* controller() const { return controller_.get(); }
 
   protected:
     bool eventFilter(QObject* watched, QEvent* event) override;
@@ -44,7 +47,7 @@ class RestartScreen : public mtc::hmi::Screen {
     void scrollToCursor();
     int pageRows() const;
 
-    RestartController* controller_;
+    std::shared_ptr<RestartController> controller_;
     QLabel* breadcrumb_;
     QListView* list_;
     RestartPrompt* prompt_;
