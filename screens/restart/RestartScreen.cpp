@@ -295,9 +295,11 @@ void RestartScreen::render() {
     const RestartMessage& message = controller_->message();
     message_->setText(message.text);
     message_->setStyleSheet(messageStyle(message.level));
+    // The restart of this visit (or one still running), not the one before.
     const QString phase = controller_->phaseText();
+    const bool current = controller_->run()->active() || controller_->accepted().ok;
     progress_->setText(phase);
-    progress_->setVisible(!phase.isEmpty());
+    progress_->setVisible(current && !phase.isEmpty());
     scrollToCursor();
 }
 
