@@ -22,13 +22,16 @@ class RestartRecorder : public core::MachineSink {
     /// The sequence whose phase tags the records (not owned; may be null).
     void setSequence(const core::RestartSequence* sequence) { sequence_ = sequence; }
 
+    /// Keeps a move of ADJUST or REPOS (others, e.g. jogs, are not reported).
     void motion(const core::Motion& motion) override;
+    /// Keeps every auxiliary function with the phase it came in.
     void auxiliary(const core::AuxOutput& output) override;
     void dwell(const core::SourceLocation&, double) override {}
     void command(const core::SourceLocation&, const std::string&, const std::string&) override {
         ++commands_;
     }
 
+    /// What was recorded, in order.
     const std::vector<Aux>& aux() const { return aux_; }
     const std::vector<core::Motion>& adjustMotion() const { return adjustMotion_; }
     const std::vector<core::Motion>& reposMotion() const { return reposMotion_; }

@@ -73,18 +73,24 @@ class ComputingProcess {
     /// what begin() wrote; the process's interpreter was never touched.
     void requestAbort() { abortRequested_.store(true, std::memory_order_relaxed); }
 
+    /// Status, blocks and arrivals after the last begin() / advance().
     const ComputingProgress& progress() const { return progress_; }
     /// Blocks interpreted so far; safe to read from another thread.
     std::uint64_t blocksSoFar() const { return blocksSoFar_.load(std::memory_order_relaxed); }
     /// Diagnostics since begin() (warnings of the run, the error that ended it).
     const DiagnosticList& diagnostics() const { return diagnostics_; }
+    /// The selection of the last successful begin().
     const RestartSelection& selection() const { return selection_; }
+    /// Start block and call chain worked out by begin().
     const RestartRoute& route() const { return route_; }
     /// The state computed so far; at TargetReached the state at the target
     /// (program pointer on the target block, call stack as at the target).
     const InterpreterState& state() const { return interpreter_.state(); }
+    /// The computing process's own interpreter (axes, positions, call stack).
     const Interpreter& interpreter() const { return interpreter_; }
+    /// The M(16) / Q buffers as collected so far.
     const RestartAuxCollector& collector() const { return collector_; }
+    /// Commands passed to and held back from the SPS.
     const RestartOutputFilter& filter() const { return filter_; }
 
   private:

@@ -19,10 +19,12 @@ class RestartAuxCollector : public AuxObserver {
   public:
     explicit RestartAuxCollector(const ProcessConfig& config);
 
+    /// Counts `output`; stores an M of group 16 (not M19 family) or a Q.
     void auxiliary(const AuxOutput& output, bool forwarded) override;
     /// Empties both buffers and the counters (start of a computing process).
     void clear();
 
+    /// The M(16) buffer (page 61, sub 1) and the Q buffer (sub 2).
     const FunctionBuffer& m16() const { return m16_; }
     const FunctionBuffer& q() const { return q_; }
     /// Functions seen / forwarded to the SPS since clear().

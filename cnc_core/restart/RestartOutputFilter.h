@@ -24,9 +24,12 @@ class RestartOutputFilter : public MachineSink {
     /// `sps` receives what passes (not owned).
     explicit RestartOutputFilter(MachineSink& sps) : sps_(sps) {}
 
+    /// Motion and dwells are dropped (the computing process moves nothing).
     void motion(const Motion&) override {}
     void dwell(const SourceLocation&, double) override {}
+    /// Auxiliary functions the interpreter forwards go to the SPS.
     void auxiliary(const AuxOutput& output) override { sps_.auxiliary(output); }
+    /// Passes the command to the SPS unless suppressed() says otherwise.
     void command(const SourceLocation& where, const std::string& keyword,
                  const std::string& arguments) override;
 

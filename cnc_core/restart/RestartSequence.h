@@ -72,12 +72,15 @@ class RestartSequence : public ControlKeyHandler, private AuxObserver {
     /// Control reset would.
     void requestAbort();
 
+    /// Where the restart stands.
     RestartPhase phase() const { return phase_; }
     /// Stop key or M00 / M01: Start continues.
     bool held() const { return held_; }
     /// Between accept() and the end (re-established, failed or aborted).
     bool active() const;
+    /// Warnings and the error that ended the restart, since accept().
     const DiagnosticList& diagnostics() const { return diagnostics_; }
+    /// The computing process (progress, route, the state at the target).
     const ComputingProcess& computing() const { return computing_; }
     /// The commanded state at the target (valid from TargetReached on).
     const ReentryPoint& reentry() const { return reentry_; }
