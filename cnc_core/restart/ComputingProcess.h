@@ -68,6 +68,9 @@ class ComputingProcess {
     /// M02, M30 before the target: RESTART_TARGET_NOT_FOUND; a rejected block;
     /// the block budget), Aborted, or Stopped at M00. Returns the progress.
     ComputingProgress advance(std::uint64_t maxBlocks);
+    /// advance() without a slice limit (the CLI): runs until the target, a
+    /// failure, an abort or a programmed stop (Stopped: call it again to go on).
+    ComputingProgress runToEnd() { return advance(~std::uint64_t{0}); }
     /// Asks a running advance() (any thread) to stop at its next check (every
     /// few thousand blocks); the status becomes Aborted. Pages 60/61 keep
     /// what begin() wrote; the process's interpreter was never touched.

@@ -23,7 +23,7 @@ std::unique_ptr<ComputingProcess> compute(RestartCell& cell, const RestartSelect
     const bool begun = process->begin(selection, cell.live.state(), cell.live.options(), budget, d);
     if (failure) *failure = d;
     if (!begun) return process;
-    while (process->advance(1'000'000).status == ComputingStatus::Stopped) {
+    while (process->runToEnd().status == ComputingStatus::Stopped) {
     }
     return process;
 }
