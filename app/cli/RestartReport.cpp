@@ -171,13 +171,17 @@ void printRestartText(const RestartReport& r) {
                     static_cast<unsigned long long>(c.progress().blocksInterpreted));
     }
     const std::vector<std::string> names = reportedAxisNames(*r.interpreter);
-    if (r.computed) std::printf("state at the target:\n");
     if (r.computed)
-        printStateText(stdout, {r.computed->state, *r.process, r.interpreter->axes(),
-                                r.computed->page61, names, r.computed->positions});
-    for (const RestartRecorder::Aux& aux : r.recorder->aux())
-        std::printf("aux %s %c%g (%s)\n", aux.output.where.block.c_str(), aux.output.type,
-                    aux.output.value, aux.phase.c_str());
+        printStateText(stdout,
+                       {r.computed->state, *r.process, r.interpreter->axes(), r.computed->page61,
+                        names, r.computed->positions},
+                       "target");
+    for (const RestartRecorder::Aux& aux : r.recorder->aux()) {
+        const core::AuxOutput& a = aux.output;
+        const std::string spindle = a.type == 'S' ? std::to_string(a.spindle) + "=" : "";
+        std::printf("aux P%d %s %c%s%g (%s)\n", a.where.program, a.where.block.c_str(), a.type,
+                    spindle.c_str(), a.value, aux.phase.c_str());
+    }
     int step = 0;
     for (const core::SignalChange& change : r.signals->log())
         std::printf("signal %d %s=%d\n", ++step, change.name.c_str(), change.value);

@@ -159,9 +159,9 @@ void writeStateJson(JsonWriter& json, const StateView& view) {
     json.endObject();
 }
 
-void printStateText(std::FILE* stream, const StateView& view) {
+void printStateText(std::FILE* stream, const StateView& view, const char* label) {
     const core::ModalState& modal = view.state.modal;
-    std::string line = "final: G";
+    std::string line = std::string(label) + ": G";
     for (int group : core::usedGGroups()) {
         const int value = modal.g[static_cast<std::size_t>(group)];
         if (value >= 0) line += " " + std::to_string(group) + ":G" + std::to_string(value);

@@ -43,7 +43,8 @@ Page61Buffers readPage61(const core::MachineDataProvider& machineData, int proce
 /// f, variables, position, call_stack) as the next JSON value.
 void writeStateJson(JsonWriter& json, const StateView& view);
 
-/// Prints the same state as readable lines to `stream`.
-void printStateText(std::FILE* stream, const StateView& view);
+/// Prints the same state as readable lines to `stream`, the first one
+/// starting with `label` ("final: G ...").
+void printStateText(std::FILE* stream, const StateView& view, const char* label = "final");
 
 }  // namespace mtc::cli
