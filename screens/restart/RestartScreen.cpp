@@ -148,7 +148,9 @@ mtc::hmi::SoftKeys RestartScreen::softKeys() {
 bool RestartScreen::eventFilter(QObject* watched, QEvent* event) {
     const bool onList = watched == list_;
     const bool onPrompt = watched == prompt_->field();
-    if (!onList && !onPrompt) return Screen::eventFilter(watched, event);
+    const bool keyEvent =
+        event->type() == QEvent::KeyPress || event->type() == QEvent::ShortcutOverride;
+    if ((!onList && !onPrompt) || !keyEvent) return Screen::eventFilter(watched, event);
     auto* key = static_cast<QKeyEvent*>(event);
     if (onPrompt && event->type() == QEvent::ShortcutOverride && key->key() == Qt::Key_Escape) {
         event->accept();  // Esc closes the window instead of leaving the screen
