@@ -36,8 +36,8 @@ struct RestartSelection {
     /// Blocks whose jump or call <Plane+> followed, outermost first (at most
     /// 9: the target may be on the 10th level, seed 000, 2.5).
     std::vector<BlockRef> path;
-    BlockRef target;          ///< the target block (not interpreted)
-    std::uint32_t runs = 1;   ///< number of runs 1..65536 (seed 000, 2.6)
+    BlockRef target;               ///< the target block (not interpreted)
+    std::uint32_t runs = 1;        ///< number of runs 1..65536 (seed 000, 2.6)
     bool fromLastPrimary = false;  ///< start at the last ':' block before the target
     /// Variables the operator changed in the JMP/JSR variable window (@n -> value).
     std::map<int, double> variableChanges;
