@@ -2,4 +2,6 @@
 
 #include "cli/Cli.h"
 
-int main(int argc, char** argv) { return mtc::cli::runCli(argc, argv); }
+int main(int argc, char** argv) {
+    return mtc::cli::runCli(argc, argv);
+}

@@ -13,7 +13,7 @@ namespace mtc::core {
 /// every process can reach. Programs are immutable once stored (shared_ptr to
 /// const), so a computing process and a live run can share them.
 class ProgramStore {
-public:
+  public:
     /// Stores (or replaces) program `number` of `process`.
     void put(int process, int number, ProgramPtr program);
     /// Stores a cycle (cycle memory, shared by all processes).
@@ -25,7 +25,7 @@ public:
     const std::map<std::string, ProgramPtr>& cycles() const { return cycles_; }
     const std::map<std::pair<int, int>, ProgramPtr>& programs() const { return programs_; }
 
-private:
+  private:
     std::map<std::pair<int, int>, ProgramPtr> programs_;
     std::map<std::string, ProgramPtr> cycles_;
 };
