@@ -62,15 +62,13 @@ void openMachineData(const PanelOptions& options, CellSession& session) {
 }  // namespace
 
 std::unique_ptr<CellSession> createSession(const PanelOptions& options, QString& error) {
-    QString configText;
-    if (options.machineFile.isEmpty()) {
-        configText = QString::fromUtf8(
-            mtc::resources::find(mtc::resources::kDemoCellName).data(),
-            static_cast<int>(mtc::resources::find(mtc::resources::kDemoCellName).size()));
-    } else if (!readFile(options.machineFile, configText, error)) {
-        return nullptr;
+    std::string configText(mtc::resources::find(mtc::resources::kDemoCellName));
+    if (!options.machineFile.isEmpty()) {
+        QString fileText;
+        if (!readFile(options.machineFile, fileText, error)) return nullptr;
+        configText = fileText.toStdString();
     }
-    auto result = mtc::core::readMachineConfig(configText.toStdString());
+    auto result = mtc::core::readMachineConfig(configText);
     if (!result.ok()) {
         const auto& first = result.diagnostics.items().front();
         error = QString("machine configuration %1 line %2: %3")
@@ -82,10 +80,7 @@ std::unique_ptr<CellSession> createSession(const PanelOptions& options, QString&
     auto session = std::make_unique<CellSession>(std::move(result.config));
     mtc::core::ProgramLoader loader(session->mutableStore());
     if (options.programsDir.isEmpty()) {
-        std::vector<std::pair<std::string, std::string>> files;
-        for (const auto& name : mtc::resources::list("programs/"))
-            files.emplace_back(name, std::string(mtc::resources::find(name)));
-        loader.loadTexts(files);
+        loader.loadTexts(mtc::resources::demoPrograms());
     } else {
         if (!QDir(options.programsDir).exists()) {
             error = "program directory does not exist: " + options.programsDir;

@@ -28,4 +28,11 @@ std::vector<std::string> list(std::string_view prefix) {
     return names;
 }
 
+std::vector<std::pair<std::string, std::string>> demoPrograms() {
+    std::vector<std::pair<std::string, std::string>> files;
+    for (const std::string& name : list("programs/"))
+        files.emplace_back(name, std::string(find(name)));
+    return files;
+}
+
 }  // namespace mtc::resources

@@ -3,6 +3,7 @@
 #include <cstddef>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 /// Files compiled into the binaries: the demo cell and the demo programs.
@@ -20,6 +21,10 @@ std::string_view find(std::string_view name, bool* found = nullptr);
 
 /// Names of every embedded file whose name starts with `prefix`, sorted.
 std::vector<std::string> list(std::string_view prefix);
+
+/// The built-in demo programs as (file name, text) pairs, ready for
+/// mtc::core::ProgramLoader::loadTexts. Shared by the panel and the CLI.
+std::vector<std::pair<std::string, std::string>> demoPrograms();
 
 /// The built-in demo cell of MACHINES.md.
 inline constexpr std::string_view kDemoCellName = "machines/demo-cell.cfg";

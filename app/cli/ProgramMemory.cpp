@@ -18,8 +18,6 @@ namespace mtc::cli {
 
 namespace {
 
-constexpr std::string_view kEmbeddedPrefix = "programs/";
-
 bool allDigits(std::string_view text) {
     return !text.empty() && std::all_of(text.begin(), text.end(), [](char c) {
         return std::isdigit(static_cast<unsigned char>(c)) != 0;
@@ -91,10 +89,7 @@ bool loadProgramMemory(const std::string& directory, ProgramMemory& memory,
     core::ProgramLoader loader(memory.store);
     if (directory.empty()) {
         memory.origin = "built-in demo programs";
-        std::vector<std::pair<std::string, std::string>> files;
-        for (const std::string& name : resources::list(kEmbeddedPrefix))
-            files.emplace_back(name, std::string(resources::find(name)));
-        loader.loadTexts(files);
+        loader.loadTexts(resources::demoPrograms());
     } else {
         memory.origin = "program directory '" + directory + "'";
         std::error_code ec;

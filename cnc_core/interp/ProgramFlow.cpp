@@ -24,18 +24,7 @@ bool branchTaken(JumpKind kind, double condition) {
 
 bool ProgramFlow::findLabel(const ProgramPtr& current, std::string_view name, ProgramPtr& program,
                             std::uint32_t& block) const {
-    auto search = [&](const ProgramPtr& candidate) {
-        if (!candidate) return false;
-        const long found = candidate->findLabel(name);
-        if (found < 0) return false;
-        program = candidate;
-        block = static_cast<std::uint32_t>(found);
-        return true;
-    };
-    if (search(current) || search(store_.library(process_))) return true;
-    for (const auto& entry : store_.cycles())
-        if (search(entry.second)) return true;
-    return false;
+    return store_.findLabel(process_, current, name, program, block);
 }
 
 bool ProgramFlow::label(const BlockContext& c, const InterpreterState& state,

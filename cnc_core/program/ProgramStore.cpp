@@ -15,4 +15,20 @@ ProgramPtr ProgramStore::find(int process, int number) const {
     return it == programs_.end() ? nullptr : it->second;
 }
 
+bool ProgramStore::findLabel(int process, const ProgramPtr& current, std::string_view label,
+                             ProgramPtr& program, std::uint32_t& block) const {
+    auto search = [&](const ProgramPtr& candidate) {
+        if (!candidate) return false;
+        const long found = candidate->findLabel(label);
+        if (found < 0) return false;
+        program = candidate;
+        block = static_cast<std::uint32_t>(found);
+        return true;
+    };
+    if (search(current) || search(library(process))) return true;
+    for (const auto& entry : cycles_)
+        if (search(entry.second)) return true;
+    return false;
+}
+
 }  // namespace mtc::core

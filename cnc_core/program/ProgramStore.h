@@ -1,7 +1,9 @@
 #pragma once
 
+#include <cstdint>
 #include <map>
 #include <string>
+#include <string_view>
 #include <utility>
 
 #include "cnc_core/language/Program.h"
@@ -22,6 +24,12 @@ class ProgramStore {
     ProgramPtr find(int process, int number) const;
     /// Program 99 of the process (label library), or nullptr.
     ProgramPtr library(int process) const { return find(process, 99); }
+    /// Finds `label` in the control's search order (seed 000, 2.5): the
+    /// program `current`, then program 99 of `process`, then the cycle
+    /// memory. Sets `program` and `block` (index) and returns true, or
+    /// returns false when the label is nowhere. The one place that order lives.
+    bool findLabel(int process, const ProgramPtr& current, std::string_view label,
+                   ProgramPtr& program, std::uint32_t& block) const;
     const std::map<std::string, ProgramPtr>& cycles() const { return cycles_; }
     const std::map<std::pair<int, int>, ProgramPtr>& programs() const { return programs_; }
 

@@ -298,18 +298,7 @@ SearchReply SearchPointer::confirmVariable(double value) {
 
 bool SearchPointer::resolveLabel(std::string_view name, const ProgramPtr& current,
                                  ProgramPtr& program, std::uint32_t& block) const {
-    auto search = [&](const ProgramPtr& candidate) {
-        if (!candidate) return false;
-        const long found = candidate->findLabel(name);
-        if (found < 0) return false;
-        program = candidate;
-        block = static_cast<std::uint32_t>(found);
-        return true;
-    };
-    if (search(current) || search(store_.library(process_))) return true;
-    for (const auto& entry : store_.cycles())
-        if (search(entry.second)) return true;
-    return false;
+    return store_.findLabel(process_, current, name, program, block);
 }
 
 SearchReply SearchPointer::enterLabel(const SearchJump& jump) {

@@ -125,20 +125,20 @@ class PathFollower {
                  ProgramPtr& destination) {
         const std::string_view label = program.text(word.text);
         ProgramPtr self = store_.find(process_, program.number);
-        if (self && self->findLabel(label) >= 0) {
-            destination = self;
-            return true;
+        std::uint32_t block = 0;
+        ProgramPtr found;
+        if (store_.findLabel(process_, self, label, found, block)) {
+            if (found == self || found == store_.library(process_)) {
+                destination = found;
+                return true;
+            }
+            std::string cycle;
+            for (const auto& entry : store_.cycles())
+                if (entry.second == found) cycle = entry.first;
+            return fail("RESTART_IN_CYCLE", where,
+                        "label ." + std::string(label) + " lies in the cycle " + cycle +
+                            ": target and start block cannot be selected inside a cycle");
         }
-        ProgramPtr library = store_.library(process_);
-        if (library && library->findLabel(label) >= 0) {
-            destination = library;
-            return true;
-        }
-        for (const auto& entry : store_.cycles())
-            if (entry.second && entry.second->findLabel(label) >= 0)
-                return fail("RESTART_IN_CYCLE", where,
-                            "label ." + std::string(label) + " lies in the cycle " + entry.first +
-                                ": target and start block cannot be selected inside a cycle");
         return fail("RESTART_PATH_LABEL_NOT_FOUND", where,
                     "label ." + std::string(label) + " is neither in program " +
                         std::to_string(program.number) + " nor in program 99");
