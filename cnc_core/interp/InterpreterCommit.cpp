@@ -161,7 +161,7 @@ void Interpreter::emitAux(const Program& program, std::uint32_t index) {
 
 void Interpreter::emitMotion(const Program& program, std::uint32_t index) {
     Motion& m = motion_;
-    (void)index;
+    m.blockIndex = index;
     m.where.program = program.number;
     formatBlockId(block_, m.where.block);
     m.where.line = static_cast<int>(block_.line);
@@ -177,6 +177,10 @@ void Interpreter::emitMotion(const Program& program, std::uint32_t index) {
     m.feed = plan_.feedRate;
     m.transformation = state_.modal.transformation.kind();
     m.effectiveRadius = state_.modal.transformation.effectiveRadius();
+    m.transformAxis1 =
+        state_.modal.transformation.active() ? state_.modal.transformation.planeAxis(0) : -1;
+    m.transformAxis2 =
+        state_.modal.transformation.active() ? state_.modal.transformation.planeAxis(1) : -1;
     sink_.motion(m);
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -32,6 +33,9 @@ struct Motion {
     double feed = 0.0;                     ///< mm/min (0 for rapid)
     int transformation = 30;               ///< 30 none, 31 facing, 32 lateral cylinder
     double effectiveRadius = 0.0;          ///< RI while G32 is active
+    /// G31/G32: machine axis indices spanning the transformed plane (-1 otherwise).
+    int transformAxis1 = -1, transformAxis2 = -1;
+    std::uint32_t blockIndex = 0;  ///< index of the block in Program::blocks
 };
 
 /// An auxiliary function sent to the SPS (M, Q, S, T, E).
