@@ -1,0 +1,161 @@
+#include "cnc_core/compiler/Compiler.h"
+
+#include <algorithm>
+#include <set>
+
+#include "cnc_core/compiler/CompilerText.h"
+#include "cnc_core/compiler/MacroPass.h"
+#include "cnc_core/compiler/ObjectWriter.h"
+#include "cnc_core/compiler/SourceBlocks.h"
+#include "cnc_core/language/Keywords.h"
+#include "cnc_core/language/Parser.h"
+
+namespace mtc::core {
+
+namespace {
+
+/// The keyword of a compiler command word ("CF", "MODF_ON", "F<axis>").
+std::string keywordOf(std::string_view wordText) {
+    std::size_t end = 0;
+    while (end < wordText.size() && isNameChar(wordText[end]))
+        ++end;
+    std::string name(wordText.substr(0, end));
+    if (name.size() >= 2 && name[0] == 'F' &&
+        lookupKeyword(name).keywordClass == KeywordClass::AxisFeed)
+        return "F<axis>";
+    return name;
+}
+
+/// Block id of an object line for a message ("N0053", "N0053:0001", "").
+std::string objectBlockId(const ObjectLine& line) {
+    if (line.sourceNumber < 0) return std::string();
+    std::string id = formatBlockNumber(line.sourceNumber);
+    if (line.subNumber > 0) id += ":" + formatFourDigits(line.subNumber);
+    return id;
+}
+
+CompilerError errorAtObjectLine(const ObjectText& object, int line,
+                                const CompilerOptions& options) {
+    CompilerError error;
+    error.program = options.programNumber;
+    if (line >= 1 && static_cast<std::size_t>(line) <= object.lineMap.size()) {
+        const ObjectLine& entry = object.lineMap[static_cast<std::size_t>(line - 1)];
+        error.block = objectBlockId(entry);
+        error.sourceLine = static_cast<int>(entry.sourceLine);
+    }
+    return error;
+}
+
+/// Syntax of the object program and compiler keywords left in it that no
+/// pass handles (seed 001 ch. 7: keywords of functions this compiler lacks).
+void checkObject(const ObjectText& object, const std::set<std::string>& handled,
+                 CompileContext& context) {
+    const CompilerOptions& options = context.options();
+    Program program = parseProgram(object.text, {options.programNumber, options.programName});
+    for (const Diagnostic& d : program.diagnostics.items()) {
+        if (d.severity != Severity::Error) continue;
+        CompilerError error = errorAtObjectLine(object, d.where.line, options);
+        error.code = d.code;
+        error.message = "Syntax: " + d.message;
+        error.details = {d.message};
+        error.details.insert(error.details.end(), d.details.begin(), d.details.end());
+        if (!context.submit(std::move(error))) return;
+    }
+    for (std::size_t b = 0; b < program.blocks.size(); ++b) {
+        const Block block = program.blocks[b];
+        for (std::uint32_t w = block.firstWord; w < block.firstWord + block.wordCount; ++w) {
+            const Word word = program.words[w];
+            if (!(word.flags & kWordNeedsCompiler)) continue;
+            const std::string keyword = keywordOf(program.text(word.text));
+            if (handled.count(keyword)) continue;
+            CompilerError error = errorAtObjectLine(object, static_cast<int>(block.line), options);
+            error.code = "COMPILER_KEYWORD_UNSUPPORTED";
+            error.message = "Keyword " + keyword + " not supported.";
+            error.details = {"This compiler has no function for the keyword " + keyword + ".",
+                             "Measure: remove the keyword or use a compiler that has it."};
+            if (!context.submit(std::move(error))) return;
+        }
+    }
+}
+
+}  // namespace
+
+char statusLetter(CompileStatus status) {
+    switch (status) {
+        case CompileStatus::NotNeeded:
+            return ' ';
+        case CompileStatus::NotCompiled:
+            return 'N';
+        case CompileStatus::Compiled:
+            return 'C';
+        case CompileStatus::Error:
+            return 'E';
+    }
+    return ' ';
+}
+
+bool CompileResult::hasErrors() const {
+    return std::any_of(errors.begin(), errors.end(),
+                       [](const CompilerError& e) { return e.severity == Severity::Error; });
+}
+
+Compiler::Compiler() : Compiler(standardCompilerPasses()) {}
+
+Compiler::Compiler(CompilerPassList passes) : passes_(std::move(passes)) {
+    std::stable_sort(passes_.begin(), passes_.end(),
+                     [](const auto& a, const auto& b) { return a->order() < b->order(); });
+}
+
+void Compiler::addPass(std::shared_ptr<const CompilerPass> pass) {
+    passes_.push_back(std::move(pass));
+    std::stable_sort(passes_.begin(), passes_.end(),
+                     [](const auto& a, const auto& b) { return a->order() < b->order(); });
+}
+
+CompileResult Compiler::compile(std::string_view source, const CompilerOptions& options) const {
+    return compile(parseProgram(std::string(source), {options.programNumber, options.programName}),
+                   options);
+}
+
+CompileResult Compiler::compile(const Program& program, const CompilerOptions& options) const {
+    CompileResult result;
+    CompileContext context(options, result.errors);
+    SourceFrame frame;
+    BlockSequence blocks = splitSourceBlocks(program, frame);
+    std::set<std::string> handled;
+    for (const auto& pass : passes_) {
+        for (const std::string& keyword : pass->keywords())
+            handled.insert(keyword);
+        if (context.stopped()) break;
+        pass->run(blocks, context);
+        context.invalidate();
+    }
+    if (!context.stopped()) {
+        ObjectText object = writeObjectText(frame, blocks, context);
+        if (!context.stopped()) checkObject(object, handled, context);
+        result.objectText = std::move(object.text);
+        result.lineMap = std::move(object.lineMap);
+        result.objectBlocks = object.blocks;
+    }
+    result.status = result.hasErrors() ? CompileStatus::Error : CompileStatus::Compiled;
+    if (result.status == CompileStatus::Error) result.objectText.clear();
+    return result;
+}
+
+}  // namespace mtc::core
+
+namespace mtc::core {
+
+bool needsCompilation(const Program& program, const CompilerOptions& options) {
+    if (!options.compilerActive) return false;
+    if (program.usesCompilerKeywords) return true;
+    if (options.globalMacros.empty()) return false;
+    MacroTable table;
+    for (const MacroDefinition& macro : options.globalMacros)
+        table[macro.name] = macro.body;
+    for (std::size_t b = 0; b < program.blocks.size(); ++b)
+        if (!findMacroUse(program.text(program.blocks[b].sourceText), table).empty()) return true;
+    return false;
+}
+
+}  // namespace mtc::core

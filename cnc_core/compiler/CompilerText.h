@@ -1,0 +1,43 @@
+#pragma once
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+/// Small text helpers of the NC compiler (block numbers, message limits,
+/// names in block texts).
+namespace mtc::core {
+
+constexpr std::size_t kMaxBriefMessage = 52;    ///< seed 001 ch. 9
+constexpr std::size_t kMaxDetailLines = 14;     ///< seed 001 ch. 9
+constexpr std::size_t kMaxDetailLength = 65;    ///< seed 001 ch. 9
+constexpr std::size_t kMaxObjectLine = 71;      ///< seed 001 ch. 10/11
+constexpr std::size_t kMaxBlockChars = 230;     ///< seed 001 ch. 10/11
+constexpr std::size_t kMaxBlockLines = 4;       ///< seed 001 ch. 10/11
+constexpr std::size_t kMaxObjectLines = 10000;  ///< seed 001 ch. 11
+
+/// "0053" (four digits, more when the number is larger).
+std::string formatFourDigits(int number);
+/// "N0053".
+std::string formatBlockNumber(int number);
+/// The message cut to 52 characters.
+std::string limitMessage(std::string_view message);
+/// Detail lines wrapped at blanks to <= 65 characters, at most 14 lines.
+std::vector<std::string> limitDetails(const std::vector<std::string>& details);
+/// Wraps `text` at blanks into lines of at most `width` characters (a word
+/// longer than `width` is cut).
+std::vector<std::string> wrapWords(std::string_view text, std::size_t width);
+
+/// True for A-Z, 0-9 and '_'.
+inline bool isNameChar(char c) {
+    return (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_';
+}
+
+/// Offset of the ';' comment of a block text outside brackets, or text.size().
+std::size_t commentOffset(std::string_view text);
+
+/// The number formatted for a block text: up to 4 decimals, no trailing
+/// zeros, "-0" written as "0".
+std::string formatCoordinate(double value);
+
+}  // namespace mtc::core

@@ -1,0 +1,217 @@
+#include "cnc_core/compiler/MacroPass.h"
+
+#include "cnc_core/compiler/CompilerText.h"
+#include "cnc_core/language/Keywords.h"
+
+namespace mtc::core {
+
+namespace {
+
+constexpr std::size_t kMaxMacroName = 20;         // seed 001 ch. 4
+constexpr std::size_t kMaxGlobalMacroBody = 156;  // seed 001 ch. 4: 2 lines of 78
+
+bool isLetter(char c) {
+    return c >= 'A' && c <= 'Z';
+}
+
+/// Calls `visit(begin, end)` for every name in `text` that may be a macro:
+/// a run of A-Z 0-9 _ starting with a letter, not after '.', '*' or '@',
+/// outside the comment and outside free texts (a bracket not directly
+/// after a name, e.g. "(TOOL CHANGE)"); inside keyword arguments
+/// ("MODF_ON(QUICK)", "MTD(...)") names count.
+template <typename Visit>
+void forEachName(std::string_view text, Visit visit) {
+    const std::size_t end = commentOffset(text);
+    std::size_t i = 0;
+    int freeTextDepth = 0;
+    char lastSignificant = ' ';
+    while (i < end) {
+        const char c = text[i];
+        if (c == '(' || c == '[') {
+            if (freeTextDepth > 0 || !isNameChar(lastSignificant)) ++freeTextDepth;
+            lastSignificant = c;
+            ++i;
+            continue;
+        }
+        if ((c == ')' || c == ']') && freeTextDepth > 0) {
+            --freeTextDepth;
+            lastSignificant = c;
+            ++i;
+            continue;
+        }
+        if (!isNameChar(c)) {
+            if (c != ' ') lastSignificant = c;
+            ++i;
+            continue;
+        }
+        const std::size_t start = i;
+        while (i < end && isNameChar(text[i]))
+            ++i;
+        const char before = start > 0 ? text[start - 1] : ' ';
+        if (freeTextDepth == 0 && isLetter(text[start]) && before != '.' && before != '*' &&
+            before != '@')
+            visit(start, i);
+        lastSignificant = text[i - 1];
+    }
+}
+
+struct Definition {
+    std::string name;
+    std::string body;
+    std::string problem;  // "" = well formed
+};
+
+/// "DEFINE name AS body" at the start of `text` (after a label); `found`
+/// false when the block has no DEFINE.
+Definition readDefinition(std::string_view text, bool& found, std::size_t& labelEnd) {
+    Definition d;
+    std::size_t i = 0;
+    while (i < text.size() && text[i] == ' ')
+        ++i;
+    labelEnd = 0;
+    if (i < text.size() && text[i] == '.') {  // a label may stand before DEFINE
+        while (i < text.size() && text[i] != ' ')
+            ++i;
+        labelEnd = i;
+        while (i < text.size() && text[i] == ' ')
+            ++i;
+    }
+    const std::size_t end = commentOffset(text);
+    found = text.substr(i, 6) == "DEFINE" && (i + 6 >= end || text[i + 6] == ' ');
+    if (!found) {
+        forEachName(text, [&](std::size_t begin, std::size_t stop) {
+            if (text.substr(begin, stop - begin) == "DEFINE") found = true;
+        });
+        if (found) d.problem = "DEFINE must be the first instruction of its block";
+        return d;
+    }
+    i += 6;
+    while (i < end && text[i] == ' ')
+        ++i;
+    const std::size_t nameBegin = i;
+    while (i < end && text[i] != ' ')
+        ++i;
+    d.name = std::string(text.substr(nameBegin, i - nameBegin));
+    while (i < end && text[i] == ' ')
+        ++i;
+    if (text.substr(i, 2) != "AS" || (i + 2 < end && text[i + 2] != ' ')) {
+        d.problem = "macro definition: DEFINE <name> AS <instructions>";
+        return d;
+    }
+    i += 2;
+    std::string_view body = text.substr(i, end - i);
+    while (!body.empty() && body.front() == ' ')
+        body.remove_prefix(1);
+    while (!body.empty() && body.back() == ' ')
+        body.remove_suffix(1);
+    d.body = std::string(body);
+    if (d.body.empty()) d.problem = "the macro has no instructions after AS";
+    return d;
+}
+
+}  // namespace
+
+std::string checkMacroName(std::string_view name) {
+    if (name.empty() || !isLetter(name[0])) return "a macro name starts with a letter";
+    for (char c : name)
+        if (!isNameChar(c)) return "a macro name has only A-Z, 0-9 and '_'";
+    if (name.size() > kMaxMacroName) return "a macro name has at most 20 characters";
+    if (lookupKeyword(name).keywordClass != KeywordClass::None)
+        return "the keyword " + std::string(name) + " cannot be redefined";
+    return std::string();
+}
+
+std::string findMacroUse(std::string_view text, const MacroTable& table) {
+    std::string found;
+    forEachName(text, [&](std::size_t begin, std::size_t end) {
+        if (found.empty() && table.count(std::string(text.substr(begin, end - begin))))
+            found = std::string(text.substr(begin, end - begin));
+    });
+    return found;
+}
+
+bool expandMacros(const std::string& text, const MacroTable& table, std::string& out) {
+    bool replaced = false;
+    std::size_t copied = 0;
+    std::string result;
+    forEachName(text, [&](std::size_t begin, std::size_t end) {
+        auto it = table.find(text.substr(begin, end - begin));
+        if (it == table.end()) return;
+        if (!replaced) result.reserve(text.size() + it->second.size());
+        result.append(text, copied, begin - copied);
+        result += it->second;
+        copied = end;
+        replaced = true;
+    });
+    if (!replaced) return false;
+    result.append(text, copied, std::string::npos);
+    out = std::move(result);
+    return true;
+}
+
+void MacroPass::run(BlockSequence& blocks, CompileContext& context) const {
+    MacroTable table;
+    for (const MacroDefinition& global : context.options().globalMacros) {
+        std::string problem = checkMacroName(global.name);
+        if (problem.empty() && global.body.size() > kMaxGlobalMacroBody)
+            problem = "the instructions have more than 156 characters";
+        if (problem.empty() && !findMacroUse(global.body, table).empty())
+            problem = "macros must not be nested";
+        if (problem.empty() && global.body.empty()) problem = "the macro has no instructions";
+        if (!problem.empty()) {
+            if (!context.reportGeneral("COMPILER_BAD_GLOBAL_MACRO",
+                                       "Global macro " + global.name.substr(0, 20) + " invalid.",
+                                       {problem, "Measure: correct it in the NC options."}))
+                return;
+            continue;
+        }
+        table[global.name] = global.body;
+    }
+    for (std::size_t i = 0; i < blocks.size() && !context.stopped(); ++i) {
+        CompileBlock& block = blocks[i];
+        if (block.programEnd) continue;
+        bool isDefine = false;
+        std::size_t labelEnd = 0;
+        Definition d = readDefinition(block.text, isDefine, labelEnd);
+        if (!isDefine) {
+            std::string expanded;
+            if (!table.empty() && expandMacros(block.text, table, expanded)) {
+                block.text = std::move(expanded);
+                block.changed = true;
+            }
+            continue;
+        }
+        if (d.problem.empty()) d.problem = checkMacroName(d.name);
+        if (d.problem.empty()) {
+            MacroTable withSelf = table;
+            withSelf[d.name] = d.body;
+            const std::string nested = findMacroUse(d.body, withSelf);
+            if (!nested.empty()) d.problem = "macros must not be nested (" + nested + ")";
+        }
+        if (!d.problem.empty()) {
+            if (!context.report(block, Severity::Error, "COMPILER_BAD_MACRO",
+                                "Invalid macro definition.",
+                                {d.problem,
+                                 "Syntax: DEFINE <name> AS <instructions>; nothing "
+                                 "may follow the instructions in the block."}))
+                return;
+            continue;
+        }
+        if (table.count(d.name) &&
+            !context.report(block, Severity::Warning, "COMPILER_MACRO_REDEFINED",
+                            "Macro " + d.name + " redefined.",
+                            {"From this block on, " + d.name + " stands for: " + d.body}))
+            return;
+        table[d.name] = d.body;
+        const std::string_view text(block.text);
+        const std::size_t comment = commentOffset(text);
+        block.text = std::string(text.substr(0, labelEnd));
+        if (comment < text.size()) {
+            if (!block.text.empty()) block.text += ' ';
+            block.text += std::string(text.substr(comment));
+        }
+        block.changed = true;
+    }
+}
+
+}  // namespace mtc::core

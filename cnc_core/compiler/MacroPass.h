@@ -1,0 +1,36 @@
+#pragma once
+
+#include <string>
+#include <string_view>
+#include <unordered_map>
+
+#include "cnc_core/compiler/CompilerPass.h"
+
+namespace mtc::core {
+
+/// Macro technique (seed 001, ch. 4): `DEFINE name AS instructions` defines
+/// a local macro valid in the following blocks; global macros come from the
+/// NC options. Every later use of a macro name (as a whole word, outside
+/// comments, labels and free texts) is replaced by its instructions. The
+/// DEFINE block stays as an empty block (label and comment kept).
+class MacroPass : public CompilerPass {
+  public:
+    std::string_view name() const override { return "macros"; }
+    int order() const override { return 100; }
+    std::vector<std::string> keywords() const override { return {"DEFINE"}; }
+    void run(BlockSequence& blocks, CompileContext& context) const override;
+};
+
+using MacroTable = std::unordered_map<std::string, std::string>;
+
+/// Replaces every macro name of `table` in `text` (whole words outside the
+/// comment, labels, variables and free texts). Returns true when something
+/// was replaced; `usedName` then names the first macro replaced.
+bool expandMacros(const std::string& text, const MacroTable& table, std::string& out);
+/// First macro name of `table` used in `text`, or "" (for the nesting check).
+std::string findMacroUse(std::string_view text, const MacroTable& table);
+/// Problem with a macro name ("" when the name is fine): length (<= 20),
+/// characters, keyword.
+std::string checkMacroName(std::string_view name);
+
+}  // namespace mtc::core

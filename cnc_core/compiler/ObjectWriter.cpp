@@ -1,0 +1,168 @@
+#include "cnc_core/compiler/ObjectWriter.h"
+
+#include "cnc_core/compiler/CompilerText.h"
+
+namespace mtc::core {
+
+namespace {
+
+constexpr const char* kIndent = "      ";  // six blanks mark a continuation line
+
+/// Pieces of `text` between blanks outside brackets; each piece keeps the
+/// blanks in front of it (so the source's blanks are transferred).
+std::vector<std::string> splitPieces(std::string_view text) {
+    std::vector<std::string> pieces;
+    std::string piece;
+    int depth = 0;
+    bool comment = false;
+    for (char c : text) {
+        if (!comment && (c == '(' || c == '[')) ++depth;
+        if (!comment && (c == ')' || c == ']') && depth > 0) --depth;
+        if (c == ';' && depth == 0) comment = true;
+        if (c == ' ' && depth == 0 && !piece.empty() && piece.back() != ' ') {
+            pieces.push_back(std::move(piece));
+            piece.clear();
+        }
+        piece += c;
+    }
+    if (!piece.empty()) pieces.push_back(std::move(piece));
+    return pieces;
+}
+
+/// Lines of one block: `lead` ("N0053:0001") then `text` wrapped at blanks.
+std::vector<std::string> wrapBlock(const std::string& lead, std::string_view text) {
+    std::vector<std::string> lines{lead};
+    for (std::string& piece : splitPieces(text)) {
+        std::string& line = lines.back();
+        const bool first = line == lead && lines.size() == 1;
+        std::string_view trimmed(piece);
+        while (!trimmed.empty() && trimmed.front() == ' ')
+            trimmed.remove_prefix(1);
+        if (first) {
+            line += ' ';
+            line += trimmed;
+        } else if (line.size() + piece.size() <= kMaxObjectLine || line == kIndent) {
+            line += line == kIndent ? std::string(trimmed) : piece;
+        } else {
+            lines.emplace_back(std::string(kIndent) + std::string(trimmed));
+        }
+    }
+    if (lines.front() == lead && text.empty()) return lines;
+    return lines;
+}
+
+std::size_t blockChars(const std::vector<std::string>& lines) {
+    std::size_t n = 0;
+    for (const std::string& line : lines)
+        n += line.size();
+    return n;
+}
+
+bool fits(const std::vector<std::string>& lines) {
+    if (lines.size() > kMaxBlockLines || blockChars(lines) > kMaxBlockChars) return false;
+    for (const std::string& line : lines)
+        if (line.size() > kMaxObjectLine) return false;
+    return true;
+}
+
+/// The lines of an unchanged source block: its own layout with the
+/// enhanced number inserted, when that still fits.
+bool sourceLayoutLines(const std::string& lead, const CompileBlock& block,
+                       std::vector<std::string>& lines) {
+    lines.clear();
+    std::string_view layout(block.sourceLayout);
+    std::size_t start = 0;
+    while (start <= layout.size()) {
+        std::size_t end = layout.find('\n', start);
+        if (end == std::string_view::npos) end = layout.size();
+        std::string_view line = layout.substr(start, end - start);
+        if (lines.empty())
+            lines.push_back(line.empty() ? lead : lead + " " + std::string(line));
+        else if (!line.empty())
+            lines.emplace_back(line);
+        start = end + 1;
+    }
+    return fits(lines);
+}
+
+std::string blockLead(const CompileBlock& block, int number, int sub) {
+    std::string lead = block.prefix;
+    if (number >= 0) lead += formatBlockNumber(number) + ":" + formatFourDigits(sub);
+    return lead;
+}
+
+}  // namespace
+
+ObjectText writeObjectText(const SourceFrame& frame, const BlockSequence& blocks,
+                           CompileContext& context) {
+    ObjectText out;
+    auto addLine = [&out](const std::string& line, ObjectLine entry) {
+        out.text += line;
+        out.text += '\n';
+        out.lineMap.push_back(entry);
+    };
+    if (!frame.identification.empty())
+        addLine(frame.identification, {ObjectLineKind::Identification, 1, -1, 0, false});
+    if (!frame.header.empty()) {
+        std::uint32_t line = frame.headerFirstLine;
+        std::size_t start = 0;
+        while (start <= frame.header.size()) {
+            std::size_t end = frame.header.find('\n', start);
+            if (end == std::string::npos) end = frame.header.size();
+            addLine(frame.header.substr(start, end - start),
+                    {ObjectLineKind::Header, line++, -1, 0, false});
+            start = end + 1;
+        }
+    }
+    int number = -1, sub = 0;
+    std::vector<std::string> lines;
+    bool endWritten = false;
+    for (std::size_t i = 0; i < blocks.size(); ++i) {
+        const CompileBlock& block = blocks[i];
+        if (block.intermediate) {
+            ++sub;
+        } else {
+            number = block.number;
+            sub = 0;
+        }
+        const std::string lead = blockLead(block, number, sub);
+        if (block.intermediate || block.changed || !sourceLayoutLines(lead, block, lines)) {
+            lines = wrapBlock(lead, block.text);
+            if (!fits(lines)) {
+                const std::string_view text(block.text);
+                lines = wrapBlock(lead, text.substr(0, commentOffset(text)));
+            }
+            if (!fits(lines) &&
+                !context.reportAt(blocks, i, Severity::Error, "COMPILER_BLOCK_TOO_LONG",
+                                  "Compiled block too long.",
+                                  {"After compilation the block needs more than 230 characters "
+                                   "or 4 lines of 71 characters.",
+                                   "Measure: split the block or shorten its macros."}))
+                break;
+        }
+        const ObjectLineKind kind =
+            block.programEnd ? ObjectLineKind::ProgramEnd : ObjectLineKind::Block;
+        for (std::size_t l = 0; l < lines.size(); ++l)
+            addLine(lines[l], {l == 0 ? kind : ObjectLineKind::Continuation,
+                               block.sourceLine + (block.intermediate ? 0u : 0u), number, sub,
+                               block.intermediate});
+        if (block.programEnd) {
+            endWritten = true;
+            break;
+        }
+        ++out.blocks;
+    }
+    if (!endWritten) {
+        const int endNumber = frame.lastNumber >= 0 ? frame.lastNumber + 1 : -1;
+        std::string line = endNumber >= 0 ? formatBlockNumber(endNumber) + ":0000 " : "";
+        addLine(line + "PROGRAMMENDE", {ObjectLineKind::ProgramEnd, 0, endNumber, 0, true});
+    }
+    if (out.lineMap.size() > kMaxObjectLines)
+        context.reportGeneral("COMPILER_TOO_MANY_LINES", "Maximum number of NC blocks exceeded.",
+                              {"The compiled program needs " + std::to_string(out.lineMap.size()) +
+                                   " lines; an object file may have at most 10,000.",
+                               "Measure: split the NC program."});
+    return out;
+}
+
+}  // namespace mtc::core

@@ -1,0 +1,92 @@
+#include "cnc_core/compiler/SourceBlocks.h"
+
+#include <algorithm>
+
+namespace mtc::core {
+
+namespace {
+
+bool isDigit(char c) {
+    return c >= '0' && c <= '9';
+}
+
+/// The text without '\r'.
+std::string withoutCarriageReturns(std::string_view text) {
+    std::string out;
+    out.reserve(text.size());
+    for (char c : text)
+        if (c != '\r') out += c;
+    return out;
+}
+
+/// One logical line: each line break and the blanks after it become one blank.
+std::string joinContinuationLines(std::string_view layout) {
+    std::string out;
+    out.reserve(layout.size());
+    for (std::size_t i = 0; i < layout.size(); ++i) {
+        if (layout[i] != '\n') {
+            out += layout[i];
+            continue;
+        }
+        while (i + 1 < layout.size() && layout[i + 1] == ' ')
+            ++i;
+        if (!out.empty() && out.back() != ' ') out += ' ';
+    }
+    while (!out.empty() && out.back() == ' ')
+        out.pop_back();
+    return out;
+}
+
+/// Reads "[/][:] Nxxxx[:yyyy] " off the front of `raw`.
+void splitNumber(const std::string& raw, CompileBlock& block) {
+    std::size_t i = 0;
+    while (i < raw.size() && (raw[i] == ' ' || raw[i] == '/' || raw[i] == ':')) {
+        if (raw[i] != ' ') block.prefix += raw[i];
+        ++i;
+    }
+    std::size_t digits = i + 1;
+    while (digits < raw.size() && isDigit(raw[digits]))
+        ++digits;
+    if (i < raw.size() && raw[i] == 'N' && digits > i + 1 && digits - i - 1 <= 6) {
+        block.number = std::stoi(raw.substr(i + 1, digits - i - 1));
+        i = digits;
+        if (i + 4 < raw.size() + 0 && raw[i] == ':' &&
+            std::all_of(raw.begin() + static_cast<long>(i) + 1,
+                        raw.begin() + static_cast<long>(i) + 5, isDigit))
+            i += 5;  // an enhanced number of an already compiled program is dropped
+        if (i < raw.size() && raw[i] == ' ') ++i;
+    } else if (!block.prefix.empty()) {
+        // prefix without a block number: keep it in the text as written
+        block.prefix.clear();
+        i = 0;
+        while (i < raw.size() && raw[i] == ' ')
+            ++i;
+    }
+    block.sourceLayout = raw.substr(i);
+    block.text = joinContinuationLines(block.sourceLayout);
+}
+
+}  // namespace
+
+BlockSequence splitSourceBlocks(const Program& program, SourceFrame& frame) {
+    frame.identification = withoutCarriageReturns(program.identification);
+    frame.header = withoutCarriageReturns(program.header);
+    frame.headerFirstLine = program.identification.empty() ? 1 : 2;
+    BlockSequence blocks;
+    blocks.reserve(program.blocks.size());
+    for (std::size_t b = 0; b < program.blocks.size(); ++b) {
+        const Block block = program.blocks[b];
+        CompileBlock out;
+        out.sourceIndex = static_cast<std::uint32_t>(b);
+        out.sourceLine = block.line;
+        out.programEnd = (block.flags & kBlockProgramEnd) != 0;
+        splitNumber(withoutCarriageReturns(program.text(block.sourceText)), out);
+        if (out.number < 0 && block.number >= 0) out.number = block.number;
+        frame.lastNumber = std::max(frame.lastNumber, out.number);
+        if (out.programEnd) frame.hasProgramEnd = true;
+        blocks.push_back(std::move(out));
+    }
+    return blocks;
+}
+
+}  // namespace mtc::core

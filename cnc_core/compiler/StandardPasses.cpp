@@ -1,0 +1,16 @@
+// The passes of the standard compiler. Modules that add a compiler function
+// (look-ahead, graphical NC editor contours) add one line here.
+#include "cnc_core/compiler/Compiler.h"
+#include "cnc_core/compiler/MacroPass.h"
+#include "cnc_core/compiler/ModalFunctionPass.h"
+
+namespace mtc::core {
+
+CompilerPassList standardCompilerPasses() {
+    return {
+        std::make_shared<MacroPass>(),
+        std::make_shared<ModalFunctionPass>(),
+    };
+}
+
+}  // namespace mtc::core
