@@ -122,6 +122,23 @@ std::vector<double> splitCandidates(const ElementProfile& p,
     return cuts;
 }
 
+/// Feed to program for a peak velocity: mm/min rounded down to 0.1.
+double programmedFeed(double peakMmPerSecond) {
+    return std::max(0.1, std::floor(peakMmPerSecond * 600.0 + 1e-9) / 10.0);
+}
+
+/// Drops cuts between two pieces that would get the same F.
+std::vector<double> mergeEqualFeeds(const ElementProfile& p, const std::vector<double>& cuts) {
+    std::vector<double> kept{cuts.front()};
+    for (size_t i = 1; i + 1 < cuts.size(); ++i) {
+        const double left = programmedFeed(p.peakOn(kept.back(), cuts[i]));
+        const double right = programmedFeed(p.peakOn(cuts[i], cuts[i + 1]));
+        if (left != right) kept.push_back(cuts[i]);
+    }
+    kept.push_back(cuts.back());
+    return kept;
+}
+
 /// Merges candidate pieces until every piece lasts at least METB at its F.
 std::vector<double> mergeShortPieces(const ElementProfile& p, const std::vector<double>& cuts,
                                      double metbSeconds) {
@@ -138,19 +155,14 @@ std::vector<double> mergeShortPieces(const ElementProfile& p, const std::vector<
     return kept;
 }
 
-/// Feed to program for a peak velocity: mm/min rounded down to 0.1.
-double programmedFeed(double peakMmPerSecond) {
-    return std::max(0.1, std::floor(peakMmPerSecond * 600.0 + 1e-9) / 10.0);
-}
-
 void emitBlocks(const std::vector<PathElement>& elements, const LookAheadParameters& parameters,
                 LookAheadPlan& plan) {
     double sOffset = 0.0;
     for (size_t k = 0; k < elements.size(); ++k) {
         const ElementProfile& p = plan.profiles[k];
         const ElementGeometry& g = plan.geometry[k];
-        const std::vector<double> cuts =
-            mergeShortPieces(p, splitCandidates(p, parameters), parameters.metbMs / 1000.0);
+        const std::vector<double> cuts = mergeEqualFeeds(
+            p, mergeShortPieces(p, splitCandidates(p, parameters), parameters.metbMs / 1000.0));
         const int count = static_cast<int>(cuts.size()) - 1;
         for (int m = 0; m < count; ++m) {
             PlannedBlock b;
