@@ -7,8 +7,10 @@
 
 #include "cli/CliOutput.h"
 #include "cli/CommandSetup.h"
+#include "cli/CompileCommand.h"
 #include "cli/JsonWriter.h"
 #include "cli/ProgramMemory.h"
+#include "cnc_core/compiler/Compiler.h"
 #include "cnc_core/program/ProgramStore.h"
 
 namespace mtc::cli {
@@ -32,6 +34,23 @@ void countSeverities(const core::DiagnosticList& diagnostics, CheckedProgram& ch
         (d.severity == core::Severity::Error ? checked.errors : checked.warnings) += 1;
 }
 
+/// The NC compiler's own findings (COMPILER_* codes; syntax errors are
+/// already in the parse diagnostics) for a program with compiler keywords.
+core::DiagnosticList compileCheck(const core::Program& program, const CommandSetup& setup,
+                                  const ProgramRequest& request) {
+    core::CompilerOptions options;
+    options.compilerActive = true;
+    options.process = setup.machine.process(request.process);
+    options.programNumber = request.number;
+    options.programName = request.displayName;
+    core::DiagnosticList found;
+    const core::CompileResult result = core::Compiler().compile(program, options);
+    const core::DiagnosticList all = compilerDiagnostics(result.errors);
+    for (const core::Diagnostic& d : all.items())
+        if (d.code.rfind("COMPILER_", 0) == 0) found.add(d);
+    return found;
+}
+
 CheckedProgram checkOne(const std::string& argument, const CommandSetup& setup,
                         const CliOptions& options, core::DiagnosticList& all) {
     CheckedProgram checked;
@@ -53,6 +72,7 @@ CheckedProgram checkOne(const std::string& argument, const CommandSetup& setup,
     checked.blocks = program->blocks.size();
     found.append(program->diagnostics);
     found.append(checkProgramReferences(*program, store, request.process));
+    if (program->usesCompilerKeywords) found.append(compileCheck(*program, setup, request));
     countSeverities(found, checked);
     all.append(found);
     return checked;

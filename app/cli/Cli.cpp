@@ -6,6 +6,7 @@
 #include "cli/CheckCommand.h"
 #include "cli/CliOptions.h"
 #include "cli/CliOutput.h"
+#include "cli/CompileCommand.h"
 #include "cli/MachineDataCommand.h"
 #include "cli/RestartCommand.h"
 #include "cli/RunCommand.h"
@@ -15,14 +16,6 @@ namespace mtc::cli {
 namespace {
 
 constexpr const char* kVersion = "mtc200-cli 0.1.0";
-
-/// Commands of the contract that this build does not implement yet.
-int notYetAvailable(const CliOptions& options) {
-    return reportUsageError(
-        "command '" + options.commandName +
-            "' is not yet available in this build (available: check, run, restart, md)",
-        options.json);
-}
 
 }  // namespace
 
@@ -46,7 +39,7 @@ int runCli(int argc, char** argv) {
         case Command::MachineData:
             return runMachineDataCommand(options);
         case Command::Compile:
-            return notYetAvailable(options);
+            return runCompileCommand(options);
         case Command::None:
             break;
     }

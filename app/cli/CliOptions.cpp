@@ -103,6 +103,9 @@ class CommandLineReader {
             if (optionValue(name, inlineValue, hasInline, value)) processValue(value);
         } else if (name == "--max-blocks") {
             if (optionValue(name, inlineValue, hasInline, value)) maxBlocksValue(value);
+        } else if (name == "-o" || name == "--output") {
+            if (optionValue(name, inlineValue, hasInline, value)) o.outputPath = value;
+            if (out_.error.empty() && o.outputPath.empty()) out_.error = "-o needs a file";
         } else if (name == "--target") {
             if (optionValue(name, inlineValue, hasInline, value)) o.target = value;
             if (out_.error.empty() && o.target.empty()) out_.error = "--target needs a path";
@@ -173,6 +176,8 @@ class CommandLineReader {
         } else if ((o.command == Command::Check || o.command == Command::Run) &&
                    o.arguments.empty()) {
             out_.error = "'" + o.commandName + "' needs a program (number or file)";
+        } else if (!o.outputPath.empty() && o.command != Command::Compile) {
+            out_.error = "option -o belongs to 'compile'";
         } else if (o.command == Command::Run && o.arguments.size() > 1) {
             out_.error = "'run' takes exactly one program";
         } else if (o.restartOption && o.command != Command::Restart && o.command != Command::Help &&
@@ -230,6 +235,10 @@ Commands available:
                               elements need --password); --sub N for page 61
                               (1 = M(16), 2 = Q); the value is kept in the
                               data file
+  compile FILE|PROG [-o OUT.NCO]
+                              NC compiler (macros, MODF, CF/RD): writes the
+                              object file (.NCO), or the error file (.ERR)
+                              on errors (warnings: .NCO and .ERR)
   help                        this text
 
 Global options:

@@ -27,6 +27,7 @@ struct CliOptions {
     bool json = false;
     std::uint64_t maxBlocks = kDefaultMaxBlocks;
     bool noMotion = false;
+    std::string outputPath;  ///< compile: -o OUT.NCO
     // restart (CLI-CONTRACT.md):
     std::string target;              ///< --target PATH
     std::uint32_t runs = 1;          ///< --runs K, 1..65536

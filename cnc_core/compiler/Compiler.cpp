@@ -122,6 +122,7 @@ CompileResult Compiler::compile(const Program& program, const CompilerOptions& o
     CompileContext context(options, result.errors);
     SourceFrame frame;
     BlockSequence blocks = splitSourceBlocks(program, frame);
+    result.identification = frame.identification;
     std::set<std::string> handled;
     for (const auto& pass : passes_) {
         for (const std::string& keyword : pass->keywords())
@@ -138,7 +139,10 @@ CompileResult Compiler::compile(const Program& program, const CompilerOptions& o
         result.objectBlocks = object.blocks;
     }
     result.status = result.hasErrors() ? CompileStatus::Error : CompileStatus::Compiled;
-    if (result.status == CompileStatus::Error) result.objectText.clear();
+    if (result.status == CompileStatus::Error) {
+        result.objectText.clear();
+        result.lineMap.clear();
+    }
     return result;
 }
 

@@ -75,6 +75,7 @@ char statusLetter(CompileStatus status);
 /// Result of one compile.
 struct CompileResult {
     CompileStatus status = CompileStatus::NotCompiled;  ///< Compiled or Error
+    std::string identification;         ///< the source's identification line ("" if none)
     std::string objectText;             ///< the .NCO text; empty when status == Error
     std::vector<CompilerError> errors;  ///< errors and warnings in order found
     std::vector<ObjectLine> lineMap;    ///< per object line

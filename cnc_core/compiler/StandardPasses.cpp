@@ -1,5 +1,6 @@
 // The passes of the standard compiler. Modules that add a compiler function
 // (look-ahead, graphical NC editor contours) add one line here.
+#include "cnc_core/compiler/ChamferRoundPass.h"
 #include "cnc_core/compiler/Compiler.h"
 #include "cnc_core/compiler/MacroPass.h"
 #include "cnc_core/compiler/ModalFunctionPass.h"
@@ -10,6 +11,7 @@ CompilerPassList standardCompilerPasses() {
     return {
         std::make_shared<MacroPass>(),
         std::make_shared<ModalFunctionPass>(),
+        std::make_shared<ChamferRoundPass>(),
     };
 }
 

@@ -1,0 +1,256 @@
+#include "cnc_core/compiler/ChamferRoundScan.h"
+
+#include <cmath>
+#include <cstdlib>
+
+namespace mtc::core {
+
+namespace {
+
+/// Functions that may not be selected or deselected between the two motion
+/// blocks of a chamfer or rounding (seed 001, ch. 2 "Illegal commands").
+const char* illegalG(int g) {
+    if (g == 15 || g == 16) return "radius/diameter programming";
+    if (g >= 17 && g <= 20) return "a change of plane";
+    if (g >= 30 && g <= 32) return "a transformation";
+    if (g >= 50 && g <= 59) return "a zero offset";
+    if (g == 70 || g == 71) return "inch/mm";
+    if (g == 72 || g == 73) return "the mirror function";
+    if (g == 74) return "homing";
+    if (g == 75 || g == 76) return "travel to dead stop";
+    if (g == 77) return "repositioning";
+    if (g == 78 || g == 79) return "scaling";
+    if (g == 90 || g == 91) return "absolute/incremental dimension";
+    return nullptr;
+}
+
+/// Name of the axis with base definition `definition` ("X", "Y", "Z").
+std::string baseAxisName(const ProcessConfig* process, const char* definition) {
+    if (process)
+        for (const AxisConfig& axis : process->axes)
+            if (!axis.definitions.empty() && axis.definitions.front() == definition)
+                return axis.name;
+    return definition;
+}
+
+CompilerPlane standardPlane(int code, const ProcessConfig* process) {
+    CompilerPlane plane;
+    plane.code = code;
+    const std::string x = baseAxisName(process, "X"), y = baseAxisName(process, "Y"),
+                      z = baseAxisName(process, "Z");
+    if (code == 18) {
+        plane.axis[0] = z, plane.axis[1] = x, plane.centre[0] = 'K', plane.centre[1] = 'I';
+    } else if (code == 19) {
+        plane.axis[0] = y, plane.axis[1] = z, plane.centre[0] = 'J', plane.centre[1] = 'K';
+    } else {
+        plane.code = 17;
+        plane.axis[0] = x, plane.axis[1] = y, plane.centre[0] = 'I', plane.centre[1] = 'J';
+    }
+    return plane;
+}
+
+/// End of the value of a word starting at `begin` ("X12.5", "X = -3", "Z1=4").
+std::size_t wordEnd(const std::string& text, std::size_t begin) {
+    std::size_t i = begin + 1;
+    if (i + 1 < text.size() && text[i] >= '1' && text[i] <= '3' &&
+        (text[i + 1] == '=' || text[i + 1] == ' '))
+        ++i;
+    while (i < text.size() && text[i] == ' ')
+        ++i;
+    if (i < text.size() && text[i] == '=') ++i;
+    while (i < text.size() && text[i] == ' ')
+        ++i;
+    if (i < text.size() && (text[i] == '-' || text[i] == '+')) ++i;
+    while (i < text.size() && ((text[i] >= '0' && text[i] <= '9') || text[i] == '.'))
+        ++i;
+    return i;
+}
+
+/// CF/RD value from its raw arguments ("2", "=2.5", " = 1").
+bool cornerValue(std::string_view args, double& value) {
+    std::string s(args);
+    std::size_t i = 0;
+    while (i < s.size() && s[i] == ' ')
+        ++i;
+    if (i < s.size() && s[i] == '=') ++i;
+    while (i < s.size() && s[i] == ' ')
+        ++i;
+    if (i >= s.size()) return false;
+    char* end = nullptr;
+    value = std::strtod(s.c_str() + i, &end);
+    while (*end == ' ')
+        ++end;
+    return *end == '\0' && std::isfinite(value);
+}
+
+struct AxisPosition {
+    std::string name;
+    double value = 0.0;  // geometric units
+    bool known = false;
+};
+
+/// Modal state carried from block to block.
+struct ScanState {
+    int motionG = 0;
+    bool absolute = true;
+    bool diameter = false;
+    CompilerPlane plane;
+    std::vector<AxisPosition> positions;
+
+    AxisPosition& position(const std::string& name) {
+        for (AxisPosition& p : positions)
+            if (p.name == name) return p;
+        positions.push_back({name, 0.0, false});
+        return positions.back();
+    }
+};
+
+std::string wordName(const Word& word) {
+    std::string name(1, word.letter);
+    if (word.axisIndex > 0) name += static_cast<char>('0' + word.axisIndex);
+    return name;
+}
+
+/// Reads the words of one parsed block into `out`, updating the G state.
+void readWords(const Program& program, const Block& block, std::size_t prefixSize,
+               const std::string& text, ScanState& state, ScannedBlock& out,
+               const CompilerOptions& options) {
+    bool g20 = false;
+    for (std::uint32_t w = block.firstWord; w < block.firstWord + block.wordCount; ++w) {
+        const Word word = program.words[w];
+        const std::size_t begin = word.column > prefixSize ? word.column - 1 - prefixSize : 0;
+        switch (word.kind) {
+            case WordKind::G: {
+                const int g = word.expr < 0 ? static_cast<int>(word.number) : -1;
+                if (g >= 0 && g <= 3) {
+                    state.motionG = g;
+                    out.explicitMotionG = true;
+                }
+                if (g == 90 || g == 91) state.absolute = g == 90;
+                if (g == 15 || g == 16) state.diameter = g == 16;
+                if (g >= 17 && g <= 19) state.plane = standardPlane(g, options.process);
+                if (g == 20) g20 = true;
+                if (const char* why = g < 0 ? "a computed G function" : illegalG(g))
+                    if (out.illegal.empty())
+                        out.illegal =
+                            why + std::string(" (G") + (g < 0 ? "=" : std::to_string(g)) + ")";
+                break;
+            }
+            case WordKind::Axis:
+            case WordKind::CircleCenter: {
+                ScannedWord s{wordName(word), word.number, word.expr >= 0, begin,
+                              wordEnd(text, begin)};
+                (word.kind == WordKind::Axis ? out.axes : out.centres).push_back(s);
+                break;
+            }
+            case WordKind::Jump:
+                if (out.illegal.empty()) out.illegal = "a jump instruction";
+                break;
+            case WordKind::Command: {
+                const std::string_view raw = program.text(word.text);
+                if (raw.size() >= 2 && (raw.substr(0, 2) == "CF" || raw.substr(0, 2) == "RD") &&
+                    (raw.size() == 2 || !isalpha(static_cast<unsigned char>(raw[2])) ||
+                     raw[2] == '=')) {
+                    ++out.cornerCount;
+                    out.kind = raw[0] == 'C' ? CornerKind::Chamfer : CornerKind::Rounding;
+                    out.cornerBegin = begin;
+                    out.cornerEnd = begin + raw.size();
+                    if (!cornerValue(program.text(word.args), out.size))
+                        out.sizeProblem = "the value must be a number (no variable)";
+                    else if (out.size < 0.0)
+                        out.sizeProblem = "the value must not be negative";
+                }
+                break;
+            }
+            default:
+                break;
+        }
+    }
+    if (!block.label.empty() && out.illegal.empty()) out.illegal = "a jump label";
+    if (g20) {  // G20 a b [c]: the words name the plane axes, nothing moves
+        if (out.axes.size() >= 2) {
+            state.plane.code = 20;
+            state.plane.axis[0] = out.axes[0].name;
+            state.plane.axis[1] = out.axes[1].name;
+            state.plane.centre[0] = 'I';
+            state.plane.centre[1] = 'J';
+        }
+        out.axes.clear();
+    }
+}
+
+/// Builds the plane element of a motion block and advances the positions.
+void buildMotion(ScanState& state, ScannedBlock& out) {
+    const CompilerPlane& plane = state.plane;
+    Point2 start, end, centre;
+    out.startKnown = true;
+    for (int k = 0; k < 2; ++k) {
+        AxisPosition& p = state.position(plane.axis[k]);
+        out.startKnown = out.startKnown && p.known;
+        start[k] = p.value;
+    }
+    end = start;
+    centre = start;
+    for (const ScannedWord& w : out.axes) {
+        const int k = w.name == plane.axis[0] ? 0 : w.name == plane.axis[1] ? 1 : -1;
+        if (k < 0) out.outOfPlane = true;
+        if (k >= 0 && w.variable) out.planeVariable = true;
+        const double v = w.value * axisScale(w.name, state.diameter);
+        if (k >= 0) end[k] = state.absolute ? v : start[k] + v;
+        AxisPosition& p = state.position(w.name);
+        p.known = !w.variable && (state.absolute || p.known);
+        p.value = state.absolute ? v : p.value + v;
+    }
+    for (const ScannedWord& w : out.centres) {
+        const int k = w.name[0] == plane.centre[0] ? 0 : w.name[0] == plane.centre[1] ? 1 : -1;
+        if (k < 0) continue;  // the interpreter reports a centre outside the plane
+        if (w.variable) out.planeVariable = true;
+        const double v = w.value * axisScale(plane.axis[k], state.diameter);
+        centre[k] = state.absolute ? v : start[k] + v;
+    }
+    if (out.motionG == 2 || out.motionG == 3) {
+        out.element = PathElement::circle(start, end, centre, out.motionG == 3);
+        const double r1 = (start - centre).norm(), r2 = (end - centre).norm();
+        if (r1 < 1e-9)
+            out.elementProblem = "the circle's start point is its centre";
+        else if (std::fabs(r1 - r2) > 0.002)
+            out.elementProblem = "start and end point are not on one circle";
+    } else {
+        out.element = PathElement::line(start, end);
+        if (out.element.length() < 1e-9)
+            out.elementProblem = "the block does not move in the plane";
+    }
+    out.validElement = out.elementProblem.empty();
+}
+
+}  // namespace
+
+double axisScale(const std::string& name, bool diameter) {
+    return diameter && !name.empty() && name[0] == 'X' ? 0.5 : 1.0;
+}
+
+std::vector<ScannedBlock> scanBlocks(const BlockSequence& blocks, const ParsedSequence& parsed,
+                                     const CompilerOptions& options) {
+    std::vector<ScannedBlock> out(blocks.size());
+    ScanState state;
+    state.plane =
+        standardPlane(options.process ? options.process->defaultPlane() : 17, options.process);
+    for (std::size_t i = 0; i < blocks.size(); ++i) {
+        ScannedBlock& s = out[i];
+        const std::int32_t p = parsed.parsedOf[i];
+        if (p >= 0) {
+            const Block block = parsed.program.blocks[static_cast<std::size_t>(p)];
+            readWords(parsed.program, block, blocks[i].prefix.size(), blocks[i].text, state, s,
+                      options);
+        }
+        s.motionG = state.motionG;
+        s.absolute = state.absolute;
+        s.diameter = state.diameter;
+        s.plane = state.plane;
+        s.motion = !s.axes.empty();
+        if (s.motion) buildMotion(state, s);
+    }
+    return out;
+}
+
+}  // namespace mtc::core

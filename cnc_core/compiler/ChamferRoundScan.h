@@ -1,0 +1,62 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "cnc_core/compiler/CompilerPass.h"
+#include "cnc_core/compiler/CornerGeometry.h"
+
+namespace mtc::core {
+
+/// An axis or centre word of a block, with its place in the block text.
+struct ScannedWord {
+    std::string name;       ///< "X", "Z2", "I"
+    double value = 0.0;     ///< programmed value (when !variable)
+    bool variable = false;  ///< given by a variable or an expression
+    std::size_t begin = 0;  ///< span in CompileBlock::text
+    std::size_t end = 0;
+};
+
+/// The active plane as the compiler sees it: axis names and centre letters.
+struct CompilerPlane {
+    int code = 17;
+    std::string axis[2] = {"X", "Y"};  ///< 1st and 2nd plane axis
+    char centre[2] = {'I', 'J'};       ///< centre letters of the two axes
+};
+
+/// What the CF/RD pass needs to know of one block of the sequence.
+struct ScannedBlock {
+    bool motion = false;           ///< has axis words (not a G20 plane definition)
+    int motionG = 0;               ///< active G0..G3 for this block
+    bool explicitMotionG = false;  ///< the block writes its G0..G3
+    bool absolute = true;          ///< G90
+    bool diameter = false;         ///< G16 (X values are diameters)
+    CompilerPlane plane;           ///< plane active for this block
+    std::string illegal;           ///< first function that forbids CF/RD across it ("" = none)
+    bool outOfPlane = false;       ///< moves an axis outside the plane
+    bool planeVariable = false;    ///< plane end point / centre given by a variable
+    bool startKnown = false;       ///< start point in the plane known
+    PathElement element;           ///< the plane motion (if motion && valid)
+    bool validElement = false;
+    std::string elementProblem;        ///< why not (radius mismatch, zero length)
+    std::vector<ScannedWord> axes;     ///< axis words
+    std::vector<ScannedWord> centres;  ///< I J K words
+    // CF / RD instruction of the block
+    int cornerCount = 0;  ///< CF/RD words in the block
+    CornerKind kind = CornerKind::Chamfer;
+    double size = 0.0;
+    std::string sizeProblem;                     ///< "" = constant value
+    std::size_t cornerBegin = 0, cornerEnd = 0;  ///< span of the CF/RD word
+};
+
+/// Scans every block of the sequence in program order, tracking the modal
+/// state the geometry needs (G0-G3, plane G17-G20, G90/G91, G15/G16, the
+/// positions of the plane axes). `initialPlane` is the process's default.
+std::vector<ScannedBlock> scanBlocks(const BlockSequence& blocks, const ParsedSequence& parsed,
+                                     const CompilerOptions& options);
+
+/// The scale from programmed to geometric units of axis `name` (0.5 for the
+/// X axis under diameter programming).
+double axisScale(const std::string& name, bool diameter);
+
+}  // namespace mtc::core
