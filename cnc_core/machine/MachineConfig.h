@@ -84,6 +84,8 @@ struct ProcessConfig {
     std::map<std::string, std::string> parameters;
     int toolPlaces = 0;                    ///< magazine / turret places
     std::string toolStorage = "magazine";  ///< "magazine" or "turret"
+    /// `stock = ...`: the raw part the toolpath view draws (toolpath/Stock.h); "" = none.
+    std::string stock;
 
     const AxisConfig* axis(const std::string& name) const;
     const ToolConfig* tool(int number) const;

@@ -4,6 +4,8 @@
 #include <functional>
 #include <sstream>
 
+#include "cnc_core/toolpath/Stock.h"
+
 namespace mtc::core {
 namespace {
 
@@ -146,11 +148,21 @@ class Reader {
             else if (k == "tool_places" && parseInt(v, p.toolPlaces)) {
             } else if (k == "tool_storage" && (v == "magazine" || v == "turret"))
                 p.toolStorage = v;
+            else if (k == "stock")
+                readStock(p, v);
             else if (k.size() == 4 && k[0] == 'B')
                 p.parameters[k] = v;
             else
                 error("CFG_KEY", "unknown key or bad value '" + k + " = " + v + "' in [process]");
         };
+    }
+
+    /// `stock = block ...` / `cylinder ...` / `none` (cnc_core/toolpath/Stock.h).
+    void readStock(ProcessConfig& p, const std::string& value) {
+        Stock stock;
+        std::string problem;
+        if (!parseStock(value, stock, problem)) return error("CFG_STOCK", problem);
+        p.stock = value;
     }
 
     void openAxis(ProcessConfig& p, const std::string& name, bool spindle) {

@@ -1,0 +1,71 @@
+#include "cnc_core/toolpath/CurveMath.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace mtc::core::curve {
+
+double sagitta(double radius, double angle) {
+    return radius * (1.0 - std::cos(angle / 2.0));
+}
+
+int arcChords(double radius, double sweep, double tolerance) {
+    const double tol = tolerance > 0.0 ? tolerance : 0.001;
+    const double quarter = std::ceil(std::fabs(sweep) / (kPi / 2.0) - 1e-12);
+    if (radius <= tol) return std::max(1, static_cast<int>(quarter));
+    // Largest angle whose sagitta is the tolerance: 2 acos(1 - tol / r).
+    const double step = 2.0 * std::acos(1.0 - tol / radius);
+    const double chords = std::ceil(std::fabs(sweep) / step - 1e-12);
+    return std::max({1, static_cast<int>(chords), static_cast<int>(quarter)});
+}
+
+double arcSweep(double s1, double s2, double e1, double e2, double c1, double c2, bool clockwise,
+                double fullCircle) {
+    const double d1 = e1 - s1, d2 = e2 - s2;
+    if (d1 * d1 + d2 * d2 <= fullCircle * fullCircle) return 2.0 * kPi;
+    const double u1 = s1 - c1, u2 = s2 - c2, v1 = e1 - c1, v2 = e2 - c2;
+    double angle = std::atan2(u1 * v2 - u2 * v1, u1 * v1 + u2 * v2);  // counter-clockwise
+    if (clockwise) angle = -angle;
+    if (angle <= 0.0) angle += 2.0 * kPi;
+    return angle;
+}
+
+double developedFromDegrees(double degrees, double radius, int polarDirection) {
+    const double sign = polarDirection == 1 ? -1.0 : 1.0;
+    return sign * degrees * kPi / 180.0 * radius;
+}
+
+double degreesFromDeveloped(double millimetres, double radius, int polarDirection) {
+    const double sign = polarDirection == 1 ? -1.0 : 1.0;
+    return sign * millimetres / radius * 180.0 / kPi;
+}
+
+std::array<double, 3> cylinderPoint(int axial, double radius, double along, double degrees) {
+    const double a = degrees * kPi / 180.0;
+    std::array<double, 3> p{};
+    p[static_cast<std::size_t>(axial)] = along;
+    p[static_cast<std::size_t>((axial + 1) % 3)] = radius * std::cos(a);
+    p[static_cast<std::size_t>((axial + 2) % 3)] = radius * std::sin(a);
+    return p;
+}
+
+double distanceToSegment(const std::array<double, 3>& p, const std::array<double, 3>& a,
+                         const std::array<double, 3>& b) {
+    double ab[3], ap[3], len2 = 0.0, dot = 0.0;
+    for (int i = 0; i < 3; ++i) {
+        const auto k = static_cast<std::size_t>(i);
+        ab[i] = b[k] - a[k];
+        ap[i] = p[k] - a[k];
+        len2 += ab[i] * ab[i];
+        dot += ab[i] * ap[i];
+    }
+    const double t = len2 > 0.0 ? std::clamp(dot / len2, 0.0, 1.0) : 0.0;
+    double d2 = 0.0;
+    for (int i = 0; i < 3; ++i) {
+        const double d = ap[i] - t * ab[i];
+        d2 += d * d;
+    }
+    return std::sqrt(d2);
+}
+
+}  // namespace mtc::core::curve

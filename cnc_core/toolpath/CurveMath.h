@@ -1,0 +1,45 @@
+#pragma once
+
+#include <array>
+
+/// The geometry the toolpath builder needs, free of state so that tests can
+/// check it directly: chordal tessellation of arcs and the wrap of the
+/// developed plane of lateral cylinder surface machining (seed 003, ch. 4)
+/// onto its cylinder.
+namespace mtc::core::curve {
+
+inline constexpr double kPi = 3.14159265358979323846;
+
+/// Greatest distance between an arc of `radius` and the chord spanning
+/// `angle` radians of it (the sagitta r (1 - cos(angle / 2))).
+double sagitta(double radius, double angle);
+
+/// Chords an arc of `radius` sweeping `sweep` radians is drawn with so that
+/// no chord is farther than `tolerance` from the arc: at least 1, at least one
+/// per quarter turn. A tolerance <= 0 is treated as 0.001 mm.
+int arcChords(double radius, double sweep, double tolerance);
+
+/// Angle in radians (> 0) swept from start (s1, s2) to end (e1, e2) around
+/// the centre (c1, c2), clockwise or counter-clockwise in the (1, 2) plane;
+/// a full circle (2 pi) when start and end are closer than `fullCircle`.
+double arcSweep(double s1, double s2, double e1, double e2, double c1, double c2, bool clockwise,
+                double fullCircle);
+
+/// Developed coordinate (mm on the cylinder surface) of a rotary axis at
+/// `degrees` with effective radius RI `radius`. The polar direction Cxx.076 = 1
+/// reverses the sense (as Transformation does).
+double developedFromDegrees(double degrees, double radius, int polarDirection);
+/// The rotary axis position (degrees) of developed coordinate `millimetres`.
+double degreesFromDeveloped(double millimetres, double radius, int polarDirection);
+
+/// Point of the wrapped cylinder: the cylinder axis is scene axis `axial`
+/// (0 X, 1 Y, 2 Z) through the origin, the angle `degrees` turns from the next
+/// scene axis (axial + 1) towards the one after it (axial + 2), right-handed
+/// about the cylinder axis; `along` is the position on the cylinder axis.
+std::array<double, 3> cylinderPoint(int axial, double radius, double along, double degrees);
+
+/// Distance of point p from the segment a-b (3D).
+double distanceToSegment(const std::array<double, 3>& p, const std::array<double, 3>& a,
+                         const std::array<double, 3>& b);
+
+}  // namespace mtc::core::curve

@@ -1,0 +1,75 @@
+#pragma once
+
+#include <array>
+#include <cstddef>
+
+#include "cnc_core/interp/MachineSink.h"
+#include "cnc_core/machine/ProcessAxes.h"
+#include "cnc_core/toolpath/ToolpathGeometry.h"
+
+namespace mtc::core {
+
+/// Settings of the toolpath geometry.
+struct ToolpathSettings {
+    /// Chordal tolerance (mm): no chord of a tessellated arc, and no chord of
+    /// a G32 move wrapped onto its cylinder, is farther than this from the
+    /// true path. Arcs under G32 split it between the arc and the wrap.
+    double tolerance = 0.01;
+    /// Start and end of an arc closer than this make a full circle (the
+    /// interpreter's arc tolerance, InterpreterOptions::arcTolerance).
+    double fullCircle = 0.002;
+    /// The path stops growing at this many segments (both layers together);
+    /// ToolpathGeometry::truncated then says so.
+    std::size_t segmentLimit = 20'000'000;
+};
+
+/// The toolpath sink: turns the interpreter's moves into ToolpathGeometry
+/// (no display dependency). Rapid, feed and arc moves keep their kind and
+/// their program, block and line. Scene coordinates are machine positions of
+/// the linear axes whose base definition is X, Y or Z; other axes (rotary
+/// axes outside G31/G32, U/V/W axes, spindles) do not move the picture.
+/// G31 moves are drawn in their fictitious cartesian plane; G32 moves in the
+/// developed plane (developed layer) and wrapped onto the cylinder of radius
+/// RI around the linear plane axis (scene layer). Decisions: docs/decisions/toolpath.md.
+class ToolpathBuilder : public MachineSink {
+  public:
+    ToolpathBuilder(const ProcessAxes& axes, ToolpathSettings settings = {});
+
+    /// Adds one move (segments to the scene layer, G32 moves also to the
+    /// developed layer). Never fails; beyond the segment limit only the move
+    /// record is kept and the geometry is marked truncated.
+    void motion(const Motion& motion) override;
+    void auxiliary(const AuxOutput&) override {}
+    void dwell(const SourceLocation&, double) override {}
+    void command(const SourceLocation&, const std::string&, const std::string&) override {}
+
+    const ToolpathGeometry& geometry() const { return geometry_; }
+    /// Hands the geometry over (the builder starts empty again).
+    ToolpathGeometry take();
+    /// Scene point of machine positions without transformation (re-entry
+    /// point, actual position).
+    std::array<double, 3> scenePoint(const std::array<double, kMaxAxes>& machine) const;
+    /// Scene axis (0 X, 1 Y, 2 Z) machine axis `axis` draws on, or -1.
+    int sceneAxis(int axis) const;
+
+  private:
+    using Position = std::array<double, kMaxAxes>;
+    struct Transform;
+    Transform transformOf(const Motion& m) const;
+    void toPlaneSpace(const Transform& t, const Position& machine, Position& plane) const;
+    bool scenePointOf(const Transform& t, const Position& plane, std::array<double, 3>& p) const;
+    enum class Layers { Scene, Developed, Both };
+    /// One chord from `from` to `to` (plane space) into the layers asked for
+    /// (the developed layer takes G32 moves only).
+    void emit(const Transform& t, const Position& from, const Position& to, Layers layers);
+    void addLine(const Transform& t, const Position& start, const Position& end);
+    void addArc(const Motion& m, const Transform& t, const Position& start, const Position& end);
+    int wrapChords(const Transform& t, double circumferentialTravel, double tolerance) const;
+
+    ProcessAxes axes_;
+    ToolpathSettings settings_;
+    std::array<int, 3> machineAxisOfScene_{-1, -1, -1};
+    ToolpathGeometry geometry_;
+};
+
+}  // namespace mtc::core
