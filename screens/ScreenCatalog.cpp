@@ -12,6 +12,7 @@
 #include "screens/restart/RestartResultScreen.h"
 #include "screens/restart/RestartScreen.h"
 #include "screens/signals/SignalsScreen.h"
+#include "screens/toolpath/ToolpathScreen.h"
 
 namespace mtc::screens {
 
@@ -43,6 +44,10 @@ void registerAllScreens(mtc::hmi::ScreenRegistry& registry) {
         "repos", "Repositioning",
         [restart](const ScreenContext& c) { return new ReposScreen(c, restart->forStation(c)); },
         false);
+    // The toolpath view follows (and moves) the restart screen's cursor.
+    registry.add("toolpath", "Toolpath graphics", [restart](const ScreenContext& c) {
+        return new ToolpathScreen(c, restart->forStation(c));
+    });
 }
 
 }  // namespace mtc::screens

@@ -20,10 +20,14 @@ std::string keywordOf(std::string_view wordText) {
     while (end < wordText.size() && isNameChar(wordText[end]))
         ++end;
     std::string name(wordText.substr(0, end));
-    if (name.size() >= 2 && name[0] == 'F' &&
-        lookupKeyword(name).keywordClass == KeywordClass::AxisFeed)
-        return "F<axis>";
-    return name;
+    const KeywordClass found = lookupKeyword(name).keywordClass;
+    if (name.size() >= 2 && name[0] == 'F' && found == KeywordClass::AxisFeed) return "F<axis>";
+    if (found != KeywordClass::None) return name;
+    std::size_t letters = 0;  // "CF2": the keyword with its value attached
+    while (letters < name.size() &&
+           ((name[letters] >= 'A' && name[letters] <= 'Z') || name[letters] == '_'))
+        ++letters;
+    return name.substr(0, letters);
 }
 
 /// Block id of an object line for a message ("N0053", "N0053:0001", "").
@@ -49,12 +53,13 @@ CompilerError errorAtObjectLine(const ObjectText& object, int line,
 /// Syntax of the object program and compiler keywords left in it that no
 /// pass handles (seed 001 ch. 7: keywords of functions this compiler lacks).
 void checkObject(const ObjectText& object, const std::set<std::string>& handled,
-                 CompileContext& context) {
+                 const std::set<int>& reported, CompileContext& context) {
     const CompilerOptions& options = context.options();
     Program program = parseProgram(object.text, {options.programNumber, options.programName});
     for (const Diagnostic& d : program.diagnostics.items()) {
         if (d.severity != Severity::Error) continue;
         CompilerError error = errorAtObjectLine(object, d.where.line, options);
+        if (reported.count(error.sourceLine)) continue;  // a pass reported this block already
         error.code = d.code;
         error.message = "Syntax: " + d.message;
         error.details = {d.message};
@@ -133,7 +138,10 @@ CompileResult Compiler::compile(const Program& program, const CompilerOptions& o
     }
     if (!context.stopped()) {
         ObjectText object = writeObjectText(frame, blocks, context);
-        if (!context.stopped()) checkObject(object, handled, context);
+        std::set<int> reported;
+        for (const CompilerError& e : result.errors)
+            if (e.severity == Severity::Error && e.sourceLine > 0) reported.insert(e.sourceLine);
+        if (!context.stopped()) checkObject(object, handled, reported, context);
         result.objectText = std::move(object.text);
         result.lineMap = std::move(object.lineMap);
         result.objectBlocks = object.blocks;

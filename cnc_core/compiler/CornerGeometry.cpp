@@ -214,7 +214,7 @@ CornerFit fitCorner(CornerKind kind, const PathElement& a, double aMinimum, cons
         else
             high = mid;
     }
-    double applied = std::floor(low / kStep + 1e-6) * kStep;
+    double applied = std::floor(high / kStep + 1e-6) * kStep;  // the largest step that fits
     CornerFit reduced;
     while (applied >= kStep && !tryCorner(kind, a, aMinimum, b, applied, reduced))
         applied -= kStep;

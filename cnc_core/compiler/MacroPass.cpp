@@ -1,5 +1,7 @@
 #include "cnc_core/compiler/MacroPass.h"
 
+#include <vector>
+
 #include "cnc_core/compiler/CompilerText.h"
 #include "cnc_core/language/Keywords.h"
 
@@ -22,25 +24,30 @@ bool isLetter(char c) {
 template <typename Visit>
 void forEachName(std::string_view text, Visit visit) {
     const std::size_t end = commentOffset(text);
+    std::vector<bool> freeText;  // open brackets: true = a free text
+    std::string_view lastName;   // the name before a bracket
+    bool blankAfterName = false;
     std::size_t i = 0;
-    int freeTextDepth = 0;
-    char lastSignificant = ' ';
     while (i < end) {
         const char c = text[i];
         if (c == '(' || c == '[') {
-            if (freeTextDepth > 0 || !isNameChar(lastSignificant)) ++freeTextDepth;
-            lastSignificant = c;
-            ++i;
-            continue;
-        }
-        if ((c == ')' || c == ']') && freeTextDepth > 0) {
-            --freeTextDepth;
-            lastSignificant = c;
+            const bool arguments =
+                !lastName.empty() &&
+                (!blankAfterName || lookupKeyword(lastName).keywordClass != KeywordClass::None);
+            freeText.push_back(freeText.empty() ? !arguments : freeText.back());
+            lastName = {};
             ++i;
             continue;
         }
         if (!isNameChar(c)) {
-            if (c != ' ') lastSignificant = c;
+            if (c == ')' || c == ']') {
+                if (!freeText.empty()) freeText.pop_back();
+                lastName = {};
+            } else if (c == ' ') {
+                blankAfterName = true;
+            } else {
+                lastName = {};
+            }
             ++i;
             continue;
         }
@@ -48,10 +55,11 @@ void forEachName(std::string_view text, Visit visit) {
         while (i < end && isNameChar(text[i]))
             ++i;
         const char before = start > 0 ? text[start - 1] : ' ';
-        if (freeTextDepth == 0 && isLetter(text[start]) && before != '.' && before != '*' &&
-            before != '@')
+        const bool inFreeText = !freeText.empty() && freeText.back();
+        if (!inFreeText && isLetter(text[start]) && before != '.' && before != '*' && before != '@')
             visit(start, i);
-        lastSignificant = text[i - 1];
+        lastName = text.substr(start, i - start);
+        blankAfterName = false;
     }
 }
 

@@ -1,5 +1,7 @@
 #include "cnc_core/compiler/ObjectWriter.h"
 
+#include <algorithm>
+
 #include "cnc_core/compiler/CompilerText.h"
 
 namespace mtc::core {
@@ -153,7 +155,7 @@ ObjectText writeObjectText(const SourceFrame& frame, const BlockSequence& blocks
         ++out.blocks;
     }
     if (!endWritten) {
-        const int endNumber = frame.lastNumber >= 0 ? frame.lastNumber + 1 : -1;
+        const int endNumber = frame.lastNumber >= 0 ? std::min(frame.lastNumber + 1, 9999) : -1;
         std::string line = endNumber >= 0 ? formatBlockNumber(endNumber) + ":0000 " : "";
         addLine(line + "PROGRAMMENDE", {ObjectLineKind::ProgramEnd, 0, endNumber, 0, true});
     }
