@@ -280,7 +280,7 @@ void ChamferRoundPass::run(BlockSequence& blocks, CompileContext& context) const
         scanBlocks(blocks, context.parsed(blocks), context.options());
     CornerJob job(blocks, context, scanned);
     for (std::size_t i = 0; i < blocks.size(); ++i)
-        if (scanned[i].cornerCount > 0 && !job.corner(i)) return;
+        if (scanned[i].cornerCount > 0 && !context.hasError(blocks[i]) && !job.corner(i)) return;
     if (context.stopped()) return;
     job.apply();
 }

@@ -56,6 +56,7 @@ bool CompileContext::submit(CompilerError error) {
         errors_.push_back(std::move(error));
         return true;
     }
+    if (error.sourceLine > 0) errorLines_.insert(static_cast<std::uint32_t>(error.sourceLine));
     errors_.push_back(std::move(error));
     if (++errorCount_ >= options_.maxErrors) stopped_ = true;
     return !stopped_;

@@ -1,6 +1,7 @@
 #include "cnc_core/compiler/Compiler.h"
 
 #include <algorithm>
+#include <climits>
 #include <set>
 
 #include "cnc_core/compiler/CompilerText.h"
@@ -146,6 +147,13 @@ CompileResult Compiler::compile(const Program& program, const CompilerOptions& o
         result.lineMap = std::move(object.lineMap);
         result.objectBlocks = object.blocks;
     }
+    // the error window lists the messages in program order, general ones last
+    std::stable_sort(result.errors.begin(), result.errors.end(),
+                     [](const CompilerError& a, const CompilerError& b) {
+                         const int la = a.sourceLine > 0 ? a.sourceLine : INT_MAX;
+                         const int lb = b.sourceLine > 0 ? b.sourceLine : INT_MAX;
+                         return la < lb;
+                     });
     result.status = result.hasErrors() ? CompileStatus::Error : CompileStatus::Compiled;
     if (result.status == CompileStatus::Error) {
         result.objectText.clear();

@@ -2,6 +2,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <set>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -63,6 +64,11 @@ class CompileContext {
     /// A general error (Auuuu, not tied to a block), numbered from 1.
     bool reportGeneral(std::string code, std::string message,
                        std::vector<std::string> details = {});
+    /// True when an error was reported for the source block of `block`
+    /// (later passes leave such a block alone: one error per cause).
+    bool hasError(const CompileBlock& block) const {
+        return errorLines_.count(block.sourceLine) > 0;
+    }
     /// True once the error limit is reached (no pass may continue).
     bool stopped() const { return stopped_; }
     int errorCount() const { return errorCount_; }
@@ -84,6 +90,7 @@ class CompileContext {
     const CompilerOptions& options_;
     std::vector<CompilerError>& errors_;
     int errorCount_ = 0;
+    std::set<std::uint32_t> errorLines_;
     int warningCount_ = 0;
     int generalCount_ = 0;
     bool stopped_ = false;

@@ -105,7 +105,7 @@ void ModalFunctionPass::run(BlockSequence& blocks, CompileContext& context) cons
     std::string active;
     for (std::size_t i = 0; i < blocks.size() && !context.stopped(); ++i) {
         CompileBlock& block = blocks[i];
-        if (block.programEnd) continue;
+        if (block.programEnd || context.hasError(block)) continue;
         std::vector<ModalWord> words;
         if (block.text.find("MODF_") != std::string::npos) words = findModalWords(block.text);
         bool offHere = false;

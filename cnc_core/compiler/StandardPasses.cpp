@@ -4,6 +4,7 @@
 #include "cnc_core/compiler/Compiler.h"
 #include "cnc_core/compiler/MacroPass.h"
 #include "cnc_core/compiler/ModalFunctionPass.h"
+#include "cnc_core/compiler/lookahead/LookAheadPass.h"
 
 namespace mtc::core {
 
@@ -12,6 +13,7 @@ CompilerPassList standardCompilerPasses() {
         std::make_shared<MacroPass>(),
         std::make_shared<ModalFunctionPass>(),
         std::make_shared<ChamferRoundPass>(),
+        std::make_shared<lookahead::LookAheadPass>(),
     };
 }
 
