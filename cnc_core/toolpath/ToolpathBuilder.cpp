@@ -131,8 +131,8 @@ bool ToolpathBuilder::scenePointOf(const Transform& t, const Position& plane,
     return true;
 }
 
-void ToolpathBuilder::emit(const Transform& t, const Position& from, const Position& to,
-                           Layers layers) {
+void ToolpathBuilder::addChord(const Transform& t, const Position& from, const Position& to,
+                               Layers layers) {
     std::array<double, 3> a{}, b{};
     if (layers != Layers::Developed && scenePointOf(t, from, a) && scenePointOf(t, to, b))
         geometry_.scene.addSegment(a, b);
@@ -162,10 +162,10 @@ void ToolpathBuilder::addLine(const Transform& t, const Position& start, const P
             const auto k = static_cast<std::size_t>(a);
             current[k] = i == chords ? end[k] : start[k] + (end[k] - start[k]) * f;
         }
-        emit(t, previous, current, Layers::Scene);
+        addChord(t, previous, current, Layers::Scene);
         previous = current;
     }
-    emit(t, start, end, Layers::Developed);  // straight in the developed plane
+    addChord(t, start, end, Layers::Developed);  // straight in the developed plane
 }
 
 void ToolpathBuilder::addArc(const Motion& m, const Transform& t, const Position& start,
@@ -208,7 +208,7 @@ void ToolpathBuilder::addArc(const Motion& m, const Transform& t, const Position
             current[k1] = c1 + r * std::cos(angle);
             current[k2] = c2 + r * std::sin(angle);
         }
-        emit(t, previous, current, Layers::Both);
+        addChord(t, previous, current, Layers::Both);
         previous = current;
     }
 }

@@ -61,7 +61,7 @@ class ToolpathBuilder : public MachineSink {
     enum class Layers { Scene, Developed, Both };
     /// One chord from `from` to `to` (plane space) into the layers asked for
     /// (the developed layer takes G32 moves only).
-    void emit(const Transform& t, const Position& from, const Position& to, Layers layers);
+    void addChord(const Transform& t, const Position& from, const Position& to, Layers layers);
     void addLine(const Transform& t, const Position& start, const Position& end);
     void addArc(const Motion& m, const Transform& t, const Position& start, const Position& end);
     int wrapChords(const Transform& t, double circumferentialTravel, double tolerance) const;
