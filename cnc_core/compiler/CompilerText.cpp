@@ -6,9 +6,10 @@
 namespace mtc::core {
 
 std::string formatFourDigits(int number) {
-    char buffer[16];
-    std::snprintf(buffer, sizeof buffer, "%04d", number < 0 ? 0 : number);
-    return buffer;
+    if (number < 0) number = 0;
+    if (number > 9999) return std::to_string(number);
+    return {static_cast<char>('0' + number / 1000), static_cast<char>('0' + number / 100 % 10),
+            static_cast<char>('0' + number / 10 % 10), static_cast<char>('0' + number % 10)};
 }
 
 std::string formatBlockNumber(int number) {
@@ -58,6 +59,7 @@ std::vector<std::string> limitDetails(const std::vector<std::string>& details) {
 }
 
 std::size_t commentOffset(std::string_view text) {
+    if (text.find(';') == std::string_view::npos) return text.size();
     int round = 0, square = 0;
     for (std::size_t i = 0; i < text.size(); ++i) {
         const char c = text[i];
@@ -71,15 +73,25 @@ std::size_t commentOffset(std::string_view text) {
 }
 
 std::string formatCoordinate(double value) {
-    if (!std::isfinite(value)) value = 0.0;
-    double rounded = std::round(value * 10000.0) / 10000.0;
-    if (rounded == 0.0) rounded = 0.0;  // no "-0"
-    char buffer[48];
-    std::snprintf(buffer, sizeof buffer, "%.4f", rounded);
-    std::string text(buffer);
-    while (!text.empty() && text.back() == '0')
-        text.pop_back();
-    if (!text.empty() && text.back() == '.') text.pop_back();
+    if (!std::isfinite(value) || std::fabs(value) > 1e14) value = 0.0;
+    long long scaled = std::llround(value * 10000.0);
+    std::string text;
+    if (scaled < 0) {
+        text += '-';
+        scaled = -scaled;
+    }
+    text += std::to_string(scaled / 10000);
+    int fraction = static_cast<int>(scaled % 10000);
+    if (fraction != 0) {
+        char digits[5] = {
+            static_cast<char>('0' + fraction / 1000), static_cast<char>('0' + fraction / 100 % 10),
+            static_cast<char>('0' + fraction / 10 % 10), static_cast<char>('0' + fraction % 10), 0};
+        int length = 4;
+        while (length > 0 && digits[length - 1] == '0')
+            --length;
+        text += '.';
+        text.append(digits, static_cast<std::size_t>(length));
+    }
     if (text == "-0") text = "0";
     return text;
 }

@@ -101,6 +101,10 @@ std::string rewrite(std::string_view text, const std::vector<ModalWord>& modal,
 }  // namespace
 
 void ModalFunctionPass::run(BlockSequence& blocks, CompileContext& context) const {
+    bool any = false;
+    for (const CompileBlock& block : blocks)
+        any = any || block.text.find("MODF_") != std::string::npos;
+    if (!any) return;
     const ParsedSequence& parsed = context.parsed(blocks);
     std::string active;
     for (std::size_t i = 0; i < blocks.size() && !context.stopped(); ++i) {

@@ -34,6 +34,13 @@ std::vector<std::string> splitPieces(std::string_view text) {
 /// Lines of one block: `lead` ("N0053:0001") then `text` wrapped at blanks.
 std::vector<std::string> wrapBlock(const std::string& lead, std::string_view text) {
     std::vector<std::string> lines{lead};
+    if (text.empty()) return lines;
+    if (lead.size() + 1 + text.size() <= kMaxObjectLine) {  // the common case: one line
+        lines[0].reserve(lead.size() + 1 + text.size());
+        if (!lead.empty()) lines[0] += ' ';
+        lines[0] += text;
+        return lines;
+    }
     for (std::string& piece : splitPieces(text)) {
         std::string& line = lines.back();
         const bool first = line == lead && lines.size() == 1;
@@ -41,7 +48,7 @@ std::vector<std::string> wrapBlock(const std::string& lead, std::string_view tex
         while (!trimmed.empty() && trimmed.front() == ' ')
             trimmed.remove_prefix(1);
         if (first) {
-            line += ' ';
+            if (!lead.empty()) line += ' ';
             line += trimmed;
         } else if (line.size() + piece.size() <= kMaxObjectLine || line == kIndent) {
             line += line == kIndent ? std::string(trimmed) : piece;
@@ -49,7 +56,6 @@ std::vector<std::string> wrapBlock(const std::string& lead, std::string_view tex
             lines.emplace_back(std::string(kIndent) + std::string(trimmed));
         }
     }
-    if (lines.front() == lead && text.empty()) return lines;
     return lines;
 }
 
@@ -159,7 +165,7 @@ ObjectText writeObjectText(const SourceFrame& frame, const BlockSequence& blocks
         std::string line = endNumber >= 0 ? formatBlockNumber(endNumber) + ":0000 " : "";
         addLine(line + "PROGRAMMENDE", {ObjectLineKind::ProgramEnd, 0, endNumber, 0, true});
     }
-    if (out.lineMap.size() > kMaxObjectLines)
+    if (frame.dat && out.lineMap.size() > kMaxObjectLines)
         context.reportGeneral("COMPILER_TOO_MANY_LINES", "Maximum number of NC blocks exceeded.",
                               {"The compiled program needs " + std::to_string(out.lineMap.size()) +
                                    " lines; an object file may have at most 10,000.",

@@ -21,7 +21,8 @@ struct ObjectText {
 /// characters with six-blank continuation lines, at most 230 characters and
 /// 4 lines per block (comments are dropped first when a block is too long),
 /// the PROGRAMMENDE block last. Problems are reported through `context`:
-/// a block that does not fit, and more than 10,000 lines (general error).
+/// a block that does not fit, and more than 10,000 lines (general error;
+/// for .DAT programs, as the parser's file limits).
 ObjectText writeObjectText(const SourceFrame& frame, const BlockSequence& blocks,
                            CompileContext& context);
 

@@ -12,6 +12,7 @@ bool isDigit(char c) {
 
 /// The text without '\r'.
 std::string withoutCarriageReturns(std::string_view text) {
+    if (text.find('\r') == std::string_view::npos) return std::string(text);
     std::string out;
     out.reserve(text.size());
     for (char c : text)
@@ -21,6 +22,11 @@ std::string withoutCarriageReturns(std::string_view text) {
 
 /// One logical line: each line break and the blanks after it become one blank.
 std::string joinContinuationLines(std::string_view layout) {
+    if (layout.find('\n') == std::string_view::npos) {
+        while (!layout.empty() && layout.back() == ' ')
+            layout.remove_suffix(1);
+        return std::string(layout);
+    }
     std::string out;
     out.reserve(layout.size());
     for (std::size_t i = 0; i < layout.size(); ++i) {
@@ -72,6 +78,7 @@ BlockSequence splitSourceBlocks(const Program& program, SourceFrame& frame) {
     frame.identification = withoutCarriageReturns(program.identification);
     frame.header = withoutCarriageReturns(program.header);
     frame.headerFirstLine = program.identification.empty() ? 1 : 2;
+    frame.dat = program.hasDatHeader;
     BlockSequence blocks;
     blocks.reserve(program.blocks.size());
     for (std::size_t b = 0; b < program.blocks.size(); ++b) {

@@ -12,6 +12,7 @@ struct SourceFrame {
     std::string identification;         ///< first line of a .DAT file ("" for a loose file)
     std::string header;                 ///< %NPG ... %NPG lines, '\n'-separated ("" if none)
     std::uint32_t headerFirstLine = 0;  ///< source line of the first header line
+    bool dat = false;                   ///< a .DAT text (limits apply)
     bool hasProgramEnd = false;         ///< the source ends with a PROGRAMMENDE block
     std::int32_t lastNumber = -1;       ///< highest block number seen
 };

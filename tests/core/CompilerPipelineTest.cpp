@@ -71,6 +71,15 @@ TEST(CompilerPipeline, ObjectProgramParsesWithoutDiagnostics) {
     EXPECT_EQ(object.blockId(2), "N0001:0001");
 }
 
+TEST(CompilerPipeline, LooseFilesHaveNoLineLimit) {
+    std::string source;
+    for (int i = 0; i < 10001; ++i)
+        source += "N" + formatFourDigits(i % 10000) + " M8\n";
+    const CompileResult r = compileText(source);
+    EXPECT_EQ(r.status, CompileStatus::Compiled);
+    EXPECT_EQ(r.lineMap.size(), 10002u);
+}
+
 TEST(CompilerPipeline, LooseFileGetsProgramEndAfterTheLastNumber) {
     const CompileResult r = compileText("N0007 G1 X1\nN0009 X2\n");
     ASSERT_EQ(r.status, CompileStatus::Compiled);
@@ -95,9 +104,11 @@ TEST(CompilerPipeline, LongBlocksWrapAtSeventyOneWithSixBlanks) {
 }
 
 TEST(CompilerPipeline, MoreThanTenThousandObjectLinesIsAGeneralError) {
-    std::string source;
-    for (int i = 0; i < 10000; ++i)
-        source += "N" + formatFourDigits(i % 10000) + " M8\n";
+    // 8,001 source blocks, a rounding at every second corner: ~12,000 lines
+    std::string source = "iMTc/x\n%NPG:0:01:0:009\n*staircase\n%NPG\nN0000 G1 X0 Y0 F900\n";
+    for (int i = 1; i <= 8000; ++i)
+        source += "N" + formatFourDigits(i % 10000) + (i % 2 ? " X" : " Y") +
+                  std::to_string((i + 1) / 2) + (i % 2 ? " RD0.2\n" : "\n");
     const CompileResult r = compileText(source);
     ASSERT_EQ(r.status, CompileStatus::Error);
     ASSERT_EQ(codes(r), std::vector<std::string>{"COMPILER_TOO_MANY_LINES"});
