@@ -1,0 +1,321 @@
+#include "screens/toolpath/PainterToolpathCanvas.h"
+
+#include <QMouseEvent>
+#include <QPainter>
+#include <QPainterPath>
+#include <algorithm>
+#include <cmath>
+
+#include "screens/toolpath/ToolpathModel.h"
+
+namespace mtc::screens {
+
+namespace {
+using Vec = std::array<double, 3>;
+constexpr std::size_t kMaxDrawnSegments = 400000;  ///< more are thinned out (level of detail)
+
+double dot(const Vec& a, const Vec& b) {
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+/// The eight corners of a box.
+std::array<Vec, 8> corners(const Vec& lo, const Vec& hi) {
+    std::array<Vec, 8> c;
+    for (int i = 0; i < 8; ++i)
+        c[static_cast<std::size_t>(i)] = {(i & 1) ? hi[0] : lo[0], (i & 2) ? hi[1] : lo[1],
+                                          (i & 4) ? hi[2] : lo[2]};
+    return c;
+}
+
+double segmentDistance(QPointF p, QPointF a, QPointF b) {
+    const QPointF ab = b - a, ap = p - a;
+    const double len2 = QPointF::dotProduct(ab, ab);
+    const double t = len2 > 0 ? std::clamp(QPointF::dotProduct(ap, ab) / len2, 0.0, 1.0) : 0.0;
+    const QPointF d = ap - t * ab;
+    return std::hypot(d.x(), d.y());
+}
+}  // namespace
+
+PainterToolpathCanvas::PainterToolpathCanvas(ToolpathModel* model, QWidget* parent)
+    : ToolpathCanvas(model, parent) {
+    setObjectName("toolpathPainter");
+    setMinimumSize(320, 240);
+    setFocusPolicy(Qt::NoFocus);
+    developed_.developed = true;
+    developed_.pose = presetPose(ToolpathPreset::G17);
+    scene_.pose = presetPose(ToolpathPreset::Isometric);
+    connect(model_, &ToolpathModel::geometryChanged, this, [this] {
+        layout();
+        fit();
+    });
+    connect(model_, &ToolpathModel::marksChanged, this, qOverload<>(&QWidget::update));
+}
+
+void PainterToolpathCanvas::layout() {
+    const auto g = model_->geometry();
+    split_ = g && g->developed.segmentCount() > 0;
+    const QRect all = rect();
+    if (split_) {
+        developed_.rect = QRect(all.left(), all.top(), all.width() / 2, all.height());
+        scene_.rect = QRect(all.left() + all.width() / 2, all.top(), all.width() - all.width() / 2,
+                            all.height());
+    } else {
+        scene_.rect = all;
+    }
+}
+
+void PainterToolpathCanvas::resizeEvent(QResizeEvent* event) {
+    ToolpathCanvas::resizeEvent(event);
+    layout();
+    fit();
+}
+
+const mtc::core::ToolpathLayer* PainterToolpathCanvas::layerOf(const View& view) const {
+    const auto g = model_->geometry();
+    if (!g) return nullptr;
+    return view.developed ? &g->developed : &g->scene;
+}
+
+QPointF PainterToolpathCanvas::project(const View& view, const Vec& p) const {
+    const Vec d{p[0] - view.focal[0], p[1] - view.focal[1], p[2] - view.focal[2]};
+    const QPointF centre = QRectF(view.rect).center();
+    return {centre.x() + view.scale * dot(d, view.pose.right()),
+            centre.y() - view.scale * dot(d, view.pose.up)};
+}
+
+void PainterToolpathCanvas::fitView(View& view) {
+    const auto* layer = layerOf(view);
+    mtc::core::ToolpathBounds box = layer ? layer->bounds : mtc::core::ToolpathBounds{};
+    const auto& stock = model_->stock();
+    if (!view.developed && stock.shape == mtc::core::Stock::Shape::Block) {
+        box.add(stock.min[0], stock.min[1], stock.min[2]);
+        box.add(stock.max[0], stock.max[1], stock.max[2]);
+    }
+    if (box.empty) box.add(0, 0, 0);
+    view.focal = {(box.min[0] + box.max[0]) / 2, (box.min[1] + box.max[1]) / 2,
+                  (box.min[2] + box.max[2]) / 2};
+    double w = 1e-3, h = 1e-3;
+    for (const Vec& c :
+         corners({box.min[0], box.min[1], box.min[2]}, {box.max[0], box.max[1], box.max[2]})) {
+        const Vec d{c[0] - view.focal[0], c[1] - view.focal[1], c[2] - view.focal[2]};
+        w = std::max(w, 2 * std::fabs(dot(d, view.pose.right())));
+        h = std::max(h, 2 * std::fabs(dot(d, view.pose.up)));
+    }
+    view.scale = 0.85 * std::min(view.rect.width() / w, view.rect.height() / h);
+}
+
+void PainterToolpathCanvas::showPreset(ToolpathPreset preset) {
+    scene_.pose = presetPose(preset);
+    fit();
+}
+
+void PainterToolpathCanvas::fit() {
+    fitView(scene_);
+    if (split_) fitView(developed_);
+    update();
+}
+
+void PainterToolpathCanvas::zoom(double factor) {
+    scene_.scale *= factor;
+    developed_.scale *= factor;
+    update();
+}
+
+void PainterToolpathCanvas::pan(double right, double up) {
+    for (View* v : {&scene_, &developed_}) {
+        const double dx = right * v->rect.width() / v->scale, dy = up * v->rect.height() / v->scale;
+        const Vec r = v->pose.right();
+        for (std::size_t i = 0; i < 3; ++i)
+            v->focal[i] -= dx * r[i] + dy * v->pose.up[i];
+    }
+    update();
+}
+
+void PainterToolpathCanvas::rotate(double azimuth, double elevation) {
+    scene_.pose.rotate(azimuth, elevation);
+    update();
+}
+
+QImage PainterToolpathCanvas::picture() {
+    return grab().toImage();
+}
+
+void PainterToolpathCanvas::paintEvent(QPaintEvent*) {
+    QPainter painter(this);
+    painter.fillRect(rect(), model_->palette().background);
+    if (!model_->geometry()) {
+        painter.setPen(Qt::white);
+        painter.drawText(rect(), Qt::AlignCenter | Qt::TextWordWrap, model_->summary());
+        return;
+    }
+    if (split_) drawView(painter, developed_);
+    drawView(painter, scene_);
+    if (split_) {
+        painter.setPen(model_->palette().grid);
+        painter.drawLine(scene_.rect.topLeft(), scene_.rect.bottomLeft());
+    }
+}
+
+void PainterToolpathCanvas::drawView(QPainter& painter, const View& view) {
+    painter.save();
+    painter.setClipRect(view.rect);
+    painter.setRenderHint(QPainter::Antialiasing, false);
+    if (!view.developed) drawStock(painter, view);
+    drawLayer(painter, view);
+    drawHighlight(painter, view);
+    if (!view.developed) drawMarks(painter, view);
+    drawTriad(painter, view);
+    const auto* layer = layerOf(view);
+    painter.setPen(Qt::white);
+    QString caption = view.developed ? "Developed plane (G32)" : "Toolpath (2D view, no OpenGL)";
+    if (layer && !layer->bounds.empty) {
+        const auto& b = layer->bounds;
+        caption += QString("\nextents %1 x %2 x %3 mm")
+                       .arg(b.max[0] - b.min[0], 0, 'f', 1)
+                       .arg(b.max[1] - b.min[1], 0, 'f', 1)
+                       .arg(b.max[2] - b.min[2], 0, 'f', 1);
+    }
+    painter.drawText(view.rect.adjusted(6, 4, -6, -4), Qt::AlignTop | Qt::AlignLeft, caption);
+    painter.restore();
+}
+
+void PainterToolpathCanvas::drawLayer(QPainter& painter, const View& view) {
+    const auto g = model_->geometry();
+    const auto* layer = layerOf(view);
+    if (!layer || layer->segmentCount() == 0) return;
+    const std::size_t stride = std::max<std::size_t>(1, layer->segmentCount() / kMaxDrawnSegments);
+    QVector<QLineF> lines[mtc::core::kToolpathKinds];
+    for (std::size_t m = 0; m < g->moves.size(); ++m) {
+        const auto [first, last] = view.developed ? g->developedRange(m) : g->sceneRange(m);
+        auto& out = lines[static_cast<int>(g->moves[m].kind)];
+        for (std::uint32_t s = first; s < last; s += static_cast<std::uint32_t>(stride)) {
+            const std::uint32_t v = layer->segmentStart[s];
+            const std::uint32_t end =
+                std::min<std::uint32_t>(s + static_cast<std::uint32_t>(stride), last);
+            const std::uint32_t w = layer->segmentStart[end - 1] + 1;
+            out.push_back({project(view, layer->vertex(v)), project(view, layer->vertex(w))});
+        }
+    }
+    for (int k = 0; k < mtc::core::kToolpathKinds; ++k) {
+        painter.setPen(QPen(model_->palette().colour(static_cast<mtc::core::ToolpathKind>(k)), 1));
+        painter.drawLines(lines[k]);
+    }
+}
+
+void PainterToolpathCanvas::drawHighlight(QPainter& painter, const View& view) {
+    const auto g = model_->geometry();
+    const auto* layer = layerOf(view);
+    painter.setPen(QPen(model_->palette().highlight, 4, Qt::SolidLine, Qt::RoundCap));
+    for (std::uint32_t m : model_->highlighted()) {
+        const auto [first, last] = view.developed ? g->developedRange(m) : g->sceneRange(m);
+        for (std::uint32_t s = first; s < last; ++s) {
+            const std::uint32_t v = layer->segmentStart[s];
+            painter.drawLine(project(view, layer->vertex(v)), project(view, layer->vertex(v + 1)));
+        }
+    }
+}
+
+void PainterToolpathCanvas::drawMarks(QPainter& painter, const View& view) {
+    const ToolpathMarks marks = model_->marks();
+    const auto& palette = model_->palette();
+    auto dot = [&](bool shown, const Vec& p, const QColor& colour) {
+        if (!shown) return;
+        painter.setPen(QPen(Qt::black, 1));
+        painter.setBrush(colour);
+        painter.drawEllipse(project(view, p), 6, 6);
+    };
+    if (marks.hasRepos) {
+        painter.setPen(QPen(palette.repos, 2, Qt::DashLine));
+        painter.drawLine(project(view, marks.actual), project(view, marks.reentry));
+    }
+    dot(marks.hasStart, marks.start, palette.start);
+    dot(marks.hasTarget, marks.target, palette.target);
+    dot(marks.hasReentry, marks.reentry, palette.reentry);
+    painter.setBrush(Qt::NoBrush);
+}
+
+void PainterToolpathCanvas::drawStock(QPainter& painter, const View& view) {
+    const auto& stock = model_->stock();
+    painter.setPen(QPen(model_->palette().stock, 1, Qt::DotLine));
+    if (stock.shape == mtc::core::Stock::Shape::Block) {
+        const auto c = corners(stock.min, stock.max);
+        for (int i = 0; i < 8; ++i)
+            for (int bit : {1, 2, 4})
+                if (!(i & bit))
+                    painter.drawLine(project(view, c[static_cast<std::size_t>(i)]),
+                                     project(view, c[static_cast<std::size_t>(i | bit)]));
+    } else if (stock.shape == mtc::core::Stock::Shape::Cylinder) {
+        for (double along : {stock.from, stock.to}) {
+            QPainterPath ring;
+            for (int i = 0; i <= 72; ++i) {
+                Vec p{};
+                const double a = i * 5.0 * 3.14159265358979323846 / 180.0;
+                p[static_cast<std::size_t>(stock.axis)] = along;
+                p[static_cast<std::size_t>((stock.axis + 1) % 3)] = stock.radius * std::cos(a);
+                p[static_cast<std::size_t>((stock.axis + 2) % 3)] = stock.radius * std::sin(a);
+                i == 0 ? ring.moveTo(project(view, p)) : ring.lineTo(project(view, p));
+            }
+            painter.drawPath(ring);
+        }
+    }
+}
+
+void PainterToolpathCanvas::drawTriad(QPainter& painter, const View& view) {
+    const QPointF origin(view.rect.left() + 40, view.rect.bottom() - 40);
+    const char* names[3] = {"X", "Y", "Z"};
+    const QColor colours[3] = {Qt::red, Qt::green, QColor(80, 140, 255)};
+    for (int axis = 0; axis < 3; ++axis) {
+        Vec unit{0, 0, 0};
+        unit[static_cast<std::size_t>(axis)] = 1.0;
+        const QPointF tip =
+            origin + QPointF(28 * dot(unit, view.pose.right()), -28 * dot(unit, view.pose.up));
+        painter.setPen(QPen(colours[axis], 2));
+        painter.drawLine(origin, tip);
+        painter.drawText(tip + QPointF(3, 3), view.developed && axis < 2
+                                                  ? QString(axis == 0 ? "axial" : "circ.")
+                                                  : QString(names[axis]));
+    }
+}
+
+long PainterToolpathCanvas::pickIn(const View& view, QPointF at) const {
+    const auto g = model_->geometry();
+    const auto* layer = layerOf(view);
+    if (!layer) return -1;
+    double best = 6.0;  // pixels
+    long bestSegment = -1;
+    for (std::size_t s = 0; s < layer->segmentCount(); ++s) {
+        const std::uint32_t v = layer->segmentStart[s];
+        const double d = segmentDistance(at, project(view, layer->vertex(v)),
+                                         project(view, layer->vertex(v + 1)));
+        if (d < best) {
+            best = d;
+            bestSegment = static_cast<long>(s);
+        }
+    }
+    if (bestSegment < 0) return -1;
+    const auto segment = static_cast<std::uint32_t>(bestSegment);
+    return view.developed ? g->moveOfDevelopedSegment(segment) : g->moveOfSceneSegment(segment);
+}
+
+void PainterToolpathCanvas::mousePressEvent(QMouseEvent* event) {
+    const View& view = split_ && developed_.rect.contains(event->pos()) ? developed_ : scene_;
+    const long move = pickIn(view, event->pos());
+    if (move >= 0) model_->pick(move);
+}
+
+std::optional<QPoint> PainterToolpathCanvas::positionOfMove(long move) {
+    const auto g = model_->geometry();
+    if (!g || move < 0 || static_cast<std::size_t>(move) >= g->moves.size()) return std::nullopt;
+    const auto m = static_cast<std::size_t>(move);
+    const bool inScene = g->sceneRange(m).first < g->sceneRange(m).second;
+    const View& view = inScene ? scene_ : developed_;
+    const auto [first, last] = inScene ? g->sceneRange(m) : g->developedRange(m);
+    if (first == last) return std::nullopt;
+    const auto* layer = layerOf(view);
+    const std::uint32_t v = layer->segmentStart[first];
+    const QPointF mid = (project(view, layer->vertex(v)) + project(view, layer->vertex(v + 1))) / 2;
+    if (!view.rect.contains(mid.toPoint())) return std::nullopt;
+    return mid.toPoint();
+}
+
+}  // namespace mtc::screens

@@ -1,0 +1,63 @@
+#pragma once
+
+#include <array>
+
+#include "screens/toolpath/ToolpathCanvas.h"
+
+namespace mtc::core {
+struct ToolpathLayer;
+}
+
+namespace mtc::screens {
+
+/// The toolpath view without OpenGL: an orthographic 2D drawing with
+/// QPainter (same presets, zoom, pan, rotation, picking, highlight and marks
+/// as the VTK view; no shading). Used where no OpenGL context can be made
+/// (QT_QPA_PLATFORM=offscreen, no X server), where VTK would abort.
+class PainterToolpathCanvas : public ToolpathCanvas {
+    Q_OBJECT
+  public:
+    PainterToolpathCanvas(ToolpathModel* model, QWidget* parent = nullptr);
+
+    void showPreset(ToolpathPreset preset) override;
+    void fit() override;
+    void zoom(double factor) override;
+    void pan(double right, double up) override;
+    void rotate(double azimuth, double elevation) override;
+    QImage picture() override;
+    bool threeD() const override { return false; }
+    std::optional<QPoint> positionOfMove(long move) override;
+
+  protected:
+    void paintEvent(QPaintEvent* event) override;
+    void mousePressEvent(QMouseEvent* event) override;
+    void resizeEvent(QResizeEvent* event) override;
+
+  private:
+    using Vec = std::array<double, 3>;
+    /// One picture area: the scene (3D, orbiting) or the developed plane (flat).
+    struct View {
+        CameraPose pose;
+        Vec focal{0, 0, 0};
+        double scale = 1.0;  ///< pixels per mm
+        QRect rect;
+        bool developed = false;
+    };
+    void layout();
+    void fitView(View& view);
+    QPointF project(const View& view, const Vec& p) const;
+    const mtc::core::ToolpathLayer* layerOf(const View& view) const;
+    void drawView(QPainter& painter, const View& view);
+    void drawLayer(QPainter& painter, const View& view);
+    void drawHighlight(QPainter& painter, const View& view);
+    void drawMarks(QPainter& painter, const View& view);
+    void drawStock(QPainter& painter, const View& view);
+    void drawTriad(QPainter& painter, const View& view);
+    long pickIn(const View& view, QPointF at) const;
+
+    View scene_;
+    View developed_;
+    bool split_ = false;
+};
+
+}  // namespace mtc::screens

@@ -1,0 +1,47 @@
+#pragma once
+
+#include <QImage>
+#include <QPoint>
+#include <QWidget>
+#include <optional>
+
+#include "screens/toolpath/ToolpathCamera.h"
+
+namespace mtc::screens {
+
+class ToolpathModel;
+
+/// The drawing surface of the toolpath view. Two implementations: the VTK
+/// view (VtkToolpathCanvas, needs an OpenGL context) and the 2D QPainter
+/// view (PainterToolpathCanvas) for platforms without one. Both show the
+/// model's geometry, highlight and marks, both pick with the mouse (a click
+/// selects the move under it through ToolpathModel::pick).
+class ToolpathCanvas : public QWidget {
+    Q_OBJECT
+  public:
+    explicit ToolpathCanvas(ToolpathModel* model, QWidget* parent = nullptr)
+        : QWidget(parent), model_(model) {}
+
+    /// Looks at the path from a preset direction and fits it into the view.
+    virtual void showPreset(ToolpathPreset preset) = 0;
+    /// Shows the whole path (and stock).
+    virtual void fit() = 0;
+    /// Magnifies by `factor` (> 1 closer).
+    virtual void zoom(double factor) = 0;
+    /// Moves the picture by fractions of the view's width and height.
+    virtual void pan(double right, double up) = 0;
+    /// Orbits the 3D view (degrees); the developed plane stays flat.
+    virtual void rotate(double azimuth, double elevation) = 0;
+    /// The picture as it is now (for the PNG export).
+    virtual QImage picture() = 0;
+    /// True for the 3D (VTK) view.
+    virtual bool threeD() const = 0;
+    /// Widget position of the middle of move `move`'s first scene segment
+    /// (developed segment when the move has no scene segment), if visible.
+    virtual std::optional<QPoint> positionOfMove(long move) = 0;
+
+  protected:
+    ToolpathModel* model_;
+};
+
+}  // namespace mtc::screens

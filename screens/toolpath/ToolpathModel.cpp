@@ -1,0 +1,179 @@
+#include "screens/toolpath/ToolpathModel.h"
+
+#include "cnc_core/interp/Interpreter.h"
+#include "hmi/CellSession.h"
+#include "screens/restart/ProgramListingModel.h"
+#include "screens/restart/RestartController.h"
+#include "screens/restart/RestartRun.h"
+
+namespace mtc::screens {
+
+ToolpathModel::ToolpathModel(mtc::hmi::CellSession* session, int slot,
+                             std::shared_ptr<RestartController> restart, QObject* parent)
+    : QObject(parent), session_(session), slot_(slot), restart_(std::move(restart)) {
+    mtc::core::DiagnosticList ignored;  // the interpreter reports configuration problems
+    mapping_ = std::make_unique<mtc::core::ToolpathBuilder>(
+        mtc::core::ProcessAxes::build(session_->processConfig(slot_), ignored));
+    stock_ = mtc::core::stockOf(session_->processConfig(slot_));
+    connect(restart_.get(), &RestartController::changed, this, [this] {
+        followRestartCursor();
+        emit marksChanged();
+    });
+}
+
+ToolpathModel::~ToolpathModel() = default;
+
+void ToolpathModel::setTolerance(double millimetres) {
+    if (millimetres > 0) settings_.tolerance = millimetres;
+}
+
+void ToolpathModel::refresh() {
+    const int number = session_->control(slot_).selectedProgram();
+    const mtc::core::ProgramPtr program = number ? session_->program(slot_, number) : nullptr;
+    if (program != built_ || number != number_) build(number);
+    followRestartCursor();
+    emit marksChanged();
+}
+
+void ToolpathModel::build(int number) {
+    number_ = number;
+    built_ = number ? session_->program(slot_, number) : nullptr;
+    problem_.clear();
+    complete_ = false;
+    highlighted_.clear();
+    highlightProgram_ = -1;
+    if (!built_) {
+        geometry_.reset();
+        problem_ = number ? QString("Program %1 does not exist.").arg(number)
+                          : "No program is selected: select one in the program directory.";
+        emit geometryChanged();
+        return;
+    }
+    auto result = mtc::core::buildToolpath(session_->processConfig(slot_), session_->store(),
+                                           number, settings_);
+    complete_ = result.complete;
+    for (const auto& d : result.diagnostics.items())
+        if (d.severity == mtc::core::Severity::Error) {
+            problem_ = RestartController::describe(d);
+            break;
+        }
+    geometry_ = std::make_shared<const mtc::core::ToolpathGeometry>(std::move(result.geometry));
+    emit geometryChanged();
+}
+
+QString ToolpathModel::summary() const {
+    if (!geometry_) return problem_;
+    QString text = QString("P%1").arg(number_);
+    if (built_ && !built_->title.empty()) text += " " + QString::fromStdString(built_->title);
+    text += QString(" · %1 moves · %2 segments · tolerance %3 mm")
+                .arg(geometry_->moves.size())
+                .arg(geometry_->scene.segmentCount() + geometry_->developed.segmentCount())
+                .arg(geometry_->tolerance);
+    if (geometry_->cylinderAxis >= 0)
+        text += QString(" · G32 RI %1: developed plane | cylinder").arg(geometry_->cylinderRadius);
+    if (geometry_->truncated) text += " · path cut at the segment limit";
+    if (!complete_) text += " · program end not reached";
+    return text;
+}
+
+std::array<double, 3> ToolpathModel::firstPointOf(int program, std::uint32_t block,
+                                                  bool& found) const {
+    found = false;
+    if (!geometry_) return {};
+    const auto& g = *geometry_;
+    // The first move of the block (or, for a block without motion, the first
+    // move after it in the same program): where the tool is when it starts.
+    for (std::size_t m = 0; m < g.moves.size(); ++m) {
+        if (g.moves[m].program != program || g.moves[m].block < block) continue;
+        const auto [first, last] = g.sceneRange(m);
+        if (first == last) continue;
+        found = true;
+        return g.scene.vertex(g.scene.segmentStart[first]);
+    }
+    return {};
+}
+
+ToolpathMarks ToolpathModel::marks() const {
+    ToolpathMarks marks;
+    const auto& pointer = restart_->pointer();
+    if (restart_->accepted().ok) {
+        const auto& accepted = restart_->accepted();
+        marks.start =
+            firstPointOf(accepted.start.block.program, accepted.start.block.block, marks.hasStart);
+        marks.target = firstPointOf(accepted.selection.target.program,
+                                    accepted.selection.target.block, marks.hasTarget);
+    } else if (pointer.active()) {
+        if (const auto start = pointer.startBlock())
+            marks.start = firstPointOf(start->block.program, start->block.block, marks.hasStart);
+        marks.target = firstPointOf(pointer.current().program->number, pointer.current().cursor,
+                                    marks.hasTarget);
+    }
+    const auto& reentry = restart_->run()->sequence().reentry();
+    if (reentry.valid) {
+        marks.hasReentry = true;
+        marks.reentry = mapping_->scenePoint(reentry.machine);
+        if (restart_->run()->active()) {
+            std::array<double, mtc::core::kMaxAxes> actual{};
+            const int count = session_->interpreter(slot_).axes().count();
+            for (int a = 0; a < count && a < mtc::core::kMaxAxes; ++a)
+                actual[static_cast<std::size_t>(a)] = restart_->run()->actualPosition(a);
+            marks.actual = mapping_->scenePoint(actual);
+            marks.hasRepos = true;
+        }
+    }
+    return marks;
+}
+
+void ToolpathModel::followRestartCursor() {
+    const auto& pointer = restart_->pointer();
+    if (pointer.active() && !restart_->run()->active())
+        setHighlight(pointer.current().program->number, pointer.current().cursor);
+    else if (session_->control(slot_).programActive()) {
+        const auto& state = session_->interpreter(slot_).state();
+        if (state.program) setHighlight(state.program->number, state.block);
+    }
+}
+
+void ToolpathModel::setHighlight(int program, std::uint32_t block) {
+    if (program == highlightProgram_ && block == highlightBlock_ && !highlighted_.empty()) return;
+    highlightProgram_ = program;
+    highlightBlock_ = block;
+    highlighted_ =
+        geometry_ ? geometry_->movesOfBlock(program, block) : std::vector<std::uint32_t>{};
+    highlightText_.clear();
+    if (const auto p = session_->program(slot_, program); p && block < p->blocks.size()) {
+        const std::string id = p->blockId(block);
+        highlightText_ = QString("P%1 %2 (line %3)")
+                             .arg(program)
+                             .arg(QString::fromStdString(id.empty() ? "-" : id))
+                             .arg(p->blocks[block].line);
+    }
+}
+
+void ToolpathModel::showInRestartListing(int program, std::uint32_t block) {
+    const auto& pointer = restart_->pointer();
+    if (!pointer.active() || restart_->run()->active() ||
+        pointer.current().program->number != program)
+        return;  // the restart screen shows another program (or runs): its cursor stays
+    restart_->clickRow(restart_->listing()->rowOfBlock(block));
+}
+
+void ToolpathModel::pick(long move) {
+    if (!geometry_ || move < 0 || static_cast<std::size_t>(move) >= geometry_->moves.size()) return;
+    const auto& m = geometry_->moves[static_cast<std::size_t>(move)];
+    setHighlight(m.program, m.block);
+    showInRestartListing(m.program, m.block);
+    emit blockPicked(m.program, m.block);
+    emit marksChanged();
+}
+
+void ToolpathModel::step(int direction) {
+    if (!geometry_ || geometry_->moves.empty()) return;
+    long move = highlighted_.empty() ? -1 : static_cast<long>(highlighted_.front());
+    if (direction > 0 && !highlighted_.empty()) move = static_cast<long>(highlighted_.back());
+    move += direction > 0 ? 1 : -1;
+    const long last = static_cast<long>(geometry_->moves.size()) - 1;
+    pick(std::max(0L, std::min(move, last)));
+}
+
+}  // namespace mtc::screens

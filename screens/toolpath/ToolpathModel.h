@@ -1,0 +1,106 @@
+#pragma once
+
+#include <QObject>
+#include <QString>
+#include <array>
+#include <memory>
+#include <vector>
+
+#include "cnc_core/language/Program.h"
+#include "cnc_core/toolpath/Stock.h"
+#include "cnc_core/toolpath/ToolpathRun.h"
+#include "screens/toolpath/ToolpathPalette.h"
+
+namespace mtc::hmi {
+class CellSession;
+}
+
+namespace mtc::screens {
+
+class RestartController;
+
+/// The marks the restart screen contributes to the picture (scene coordinates).
+struct ToolpathMarks {
+    bool hasStart = false, hasTarget = false, hasReentry = false, hasRepos = false;
+    std::array<double, 3> start{}, target{}, reentry{}, actual{};
+};
+
+/// The model behind the toolpath view of one station (no display code):
+/// the geometry of the station's selected program (built by running it on
+/// a private interpreter into a ToolpathBuilder), the stock of the machine
+/// configuration, the highlighted block and the marks of the restart
+/// screen (start block, target block, re-entry point, REPOS path). It
+/// follows the station's restart controller: moving its cursor highlights
+/// the block; picking a segment here puts the cursor there.
+class ToolpathModel : public QObject {
+    Q_OBJECT
+  public:
+    /// The model of station `slot`; `session` and `restart` must outlive it.
+    ToolpathModel(mtc::hmi::CellSession* session, int slot,
+                  std::shared_ptr<RestartController> restart, QObject* parent = nullptr);
+    ~ToolpathModel() override;
+
+    /// Rebuilds the geometry when the selected program changed since the last
+    /// build (emits geometryChanged) and re-reads highlight and marks.
+    void refresh();
+    /// Builds the geometry of program `number` now, whether it changed or not.
+    void build(int number);
+
+    std::shared_ptr<const mtc::core::ToolpathGeometry> geometry() const { return geometry_; }
+    int programNumber() const { return number_; }
+    /// "P1 DRIVE SHAFT · 1234 moves · 5678 segments · tolerance 0.01 mm" or why nothing is shown.
+    QString summary() const;
+    /// The first problem of the last build ("" when it ran cleanly).
+    QString problem() const { return problem_; }
+    const mtc::core::Stock& stock() const { return stock_; }
+    const ToolpathPalette& palette() const { return palette_; }
+    ToolpathMarks marks() const;
+    /// Moves of the highlighted block (empty = none).
+    const std::vector<std::uint32_t>& highlighted() const { return highlighted_; }
+    /// "P1 N0012 (line 14)" of the highlighted block, or "".
+    QString highlightText() const { return highlightText_; }
+    /// The tolerance the next build tessellates with (mm).
+    void setTolerance(double millimetres);
+    double tolerance() const { return settings_.tolerance; }
+
+    /// The operator picked move `move` (a segment of it) in the view: its
+    /// block is highlighted and becomes the restart screen's cursor when that
+    /// program is displayed there. Out of range: nothing happens.
+    void pick(long move);
+    /// Highlights the move after (step +1) or before (-1) the highlighted one.
+    void step(int direction);
+
+  signals:
+    /// A new geometry (or none).
+    void geometryChanged();
+    /// The highlighted block or a mark changed.
+    void marksChanged();
+    /// The operator picked a segment of block `block` of program `program`.
+    void blockPicked(int program, std::uint32_t block);
+
+  private:
+    void followRestartCursor();
+    void setHighlight(int program, std::uint32_t block);
+    /// Puts the restart screen's cursor on the block when it shows that program.
+    void showInRestartListing(int program, std::uint32_t block);
+    std::array<double, 3> firstPointOf(int program, std::uint32_t block, bool& found) const;
+
+    mtc::hmi::CellSession* session_;
+    int slot_;
+    std::shared_ptr<RestartController> restart_;
+    mtc::core::ToolpathSettings settings_;
+    std::shared_ptr<const mtc::core::ToolpathGeometry> geometry_;
+    std::unique_ptr<mtc::core::ToolpathBuilder> mapping_;  ///< scene points of positions
+    mtc::core::ProgramPtr built_;
+    int number_ = 0;
+    QString problem_;
+    bool complete_ = false;
+    mtc::core::Stock stock_;
+    ToolpathPalette palette_;
+    std::vector<std::uint32_t> highlighted_;
+    QString highlightText_;
+    int highlightProgram_ = -1;
+    std::uint32_t highlightBlock_ = 0;
+};
+
+}  // namespace mtc::screens

@@ -1,0 +1,177 @@
+#include "screens/toolpath/ToolpathScreen.h"
+
+#include <QBuffer>
+#include <QDir>
+#include <QGuiApplication>
+#include <QKeyEvent>
+#include <QLabel>
+#include <QOffscreenSurface>
+#include <QOpenGLContext>
+#include <QStandardPaths>
+#include <QVBoxLayout>
+
+#include "cnc_core/program/AtomicWrite.h"
+#include "hmi/CellSession.h"
+#include "screens/restart/RestartController.h"
+#include "screens/toolpath/PainterToolpathCanvas.h"
+#include "screens/toolpath/ToolpathModel.h"
+#include "screens/toolpath/VtkToolpathCanvas.h"
+
+namespace mtc::screens {
+
+bool openGlAvailable(QString& reason) {
+    const QString platform = QGuiApplication::platformName();
+    if (qEnvironmentVariableIsSet("MTC_TOOLPATH_2D")) {
+        reason = "MTC_TOOLPATH_2D is set";
+        return false;
+    }
+    if (platform == "offscreen" || platform == "minimal") {
+        reason = QString("the Qt platform '%1' has no OpenGL").arg(platform);
+        return false;
+    }
+    QOpenGLContext context;
+    if (!context.create()) {
+        reason = "no OpenGL context can be created";
+        return false;
+    }
+    QOffscreenSurface surface;
+    surface.setFormat(context.format());
+    surface.create();
+    if (!surface.isValid() || !context.makeCurrent(&surface)) {
+        reason = "the OpenGL context cannot be made current";
+        return false;
+    }
+    context.doneCurrent();
+    return true;
+}
+
+ToolpathScreen::ToolpathScreen(const mtc::hmi::ScreenContext& context,
+                               std::shared_ptr<RestartController> restart)
+    : Screen(context), restart_(std::move(restart)) {
+    model_ = new ToolpathModel(context.session, context.process, restart_, this);
+    summary_ = new QLabel(this);
+    summary_->setObjectName("toolpathSummary");
+    summary_->setWordWrap(true);
+    summary_->setStyleSheet("background: #dfe6ef; padding: 3px; font-weight: bold;");
+    if (openGlAvailable(glReason_))
+        canvas_ = new VtkToolpathCanvas(model_, this);
+    else
+        canvas_ = new PainterToolpathCanvas(model_, this);
+    message_ = new QLabel(this);
+    message_->setObjectName("toolpathMessage");
+    message_->setWordWrap(true);
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->addWidget(summary_);
+    layout->addWidget(canvas_, 1);
+    layout->addWidget(message_);
+    setFocusPolicy(Qt::StrongFocus);
+    connect(model_, &ToolpathModel::marksChanged, this, &ToolpathScreen::renderText);
+    connect(model_, &ToolpathModel::geometryChanged, this, &ToolpathScreen::renderText);
+    connect(context.session, &mtc::hmi::CellSession::processChanged, this, [this](int slot) {
+        if (slot == this->context().process && isVisible()) model_->refresh();
+    });
+    if (!glReason_.isEmpty())
+        message_->setText("2D view: " + glReason_ + " (the 3D view needs OpenGL).");
+}
+
+ToolpathScreen::~ToolpathScreen() = default;
+
+void ToolpathScreen::activated() {
+    model_->refresh();
+    renderText();
+}
+
+void ToolpathScreen::renderText() {
+    summary_->setText(model_->summary());
+    QString line =
+        model_->highlightText().isEmpty() ? QString() : "Highlighted: " + model_->highlightText();
+    if (!model_->problem().isEmpty()) line += (line.isEmpty() ? "" : " · ") + model_->problem();
+    if (!glReason_.isEmpty())
+        line += (line.isEmpty() ? "" : " · ") + QString("2D view: ") + glReason_;
+    message_->setText(line);
+}
+
+void ToolpathScreen::preset(ToolpathPreset p) {
+    canvas_->showPreset(p);
+    message_->setText(QString("View %1").arg(presetName(p)));
+}
+
+QString ToolpathScreen::defaultExportPath() const {
+    const QString dir = QStandardPaths::writableLocation(QStandardPaths::AppLocalDataLocation);
+    QDir().mkpath(dir);
+    return dir + QString("/toolpath-P%1.png").arg(model_->programNumber());
+}
+
+bool ToolpathScreen::exportPng(const QString& path) {
+    const QImage image = canvas_->picture();
+    QByteArray bytes;
+    QBuffer buffer(&bytes);
+    buffer.open(QIODevice::WriteOnly);
+    std::string error;
+    if (image.isNull() || !image.save(&buffer, "PNG")) {
+        message_->setText("The view could not be turned into a PNG picture.");
+        return false;
+    }
+    if (!mtc::core::writeFileAtomically(path.toStdString(),
+                                        std::string_view(bytes.constData(), bytes.size()), error)) {
+        message_->setText("PNG not written: " + QString::fromStdString(error));
+        return false;
+    }
+    message_->setText("View written to " + path);
+    return true;
+}
+
+void ToolpathScreen::keyPressEvent(QKeyEvent* event) {
+    const bool shift = event->modifiers() & Qt::ShiftModifier;
+    const double step = 15.0, panStep = 0.1;
+    switch (event->key()) {
+        case Qt::Key_1:
+            return preset(ToolpathPreset::G17);
+        case Qt::Key_2:
+            return preset(ToolpathPreset::G18);
+        case Qt::Key_3:
+            return preset(ToolpathPreset::G19);
+        case Qt::Key_4:
+            return preset(ToolpathPreset::Isometric);
+        case Qt::Key_0:
+        case Qt::Key_Home:
+            return canvas_->fit();
+        case Qt::Key_Plus:
+            return canvas_->zoom(1.25);
+        case Qt::Key_Minus:
+            return canvas_->zoom(0.8);
+        case Qt::Key_Left:
+            return shift ? canvas_->pan(-panStep, 0) : canvas_->rotate(-step, 0);
+        case Qt::Key_Right:
+            return shift ? canvas_->pan(panStep, 0) : canvas_->rotate(step, 0);
+        case Qt::Key_Up:
+            return shift ? canvas_->pan(0, panStep) : canvas_->rotate(0, step);
+        case Qt::Key_Down:
+            return shift ? canvas_->pan(0, -panStep) : canvas_->rotate(0, -step);
+        case Qt::Key_PageDown:
+            return model_->step(+1);
+        case Qt::Key_PageUp:
+            return model_->step(-1);
+        case Qt::Key_P:
+            exportPng(defaultExportPath());
+            return;
+        default:
+            Screen::keyPressEvent(event);
+    }
+}
+
+mtc::hmi::SoftKeys ToolpathScreen::softKeys() {
+    mtc::hmi::SoftKeys keys(8);
+    keys[0] = {"G17\nview", [this] { preset(ToolpathPreset::G17); }};
+    keys[1] = {"G18\nview", [this] { preset(ToolpathPreset::G18); }};
+    keys[2] = {"G19\nview", [this] { preset(ToolpathPreset::G19); }};
+    keys[3] = {"Iso-\nmetric", [this] { preset(ToolpathPreset::Isometric); }};
+    keys[4] = {"Fit", [this] { canvas_->fit(); }};
+    keys[5] = {"Export\nPNG", [this] { exportPng(defaultExportPath()); }};
+    keys[6] = {"Restart", [this] { emit navigateTo("restart"); }};
+    keys[7] = {"Back", [this] { emit navigateTo("menu"); }};
+    return keys;
+}
+
+}  // namespace mtc::screens

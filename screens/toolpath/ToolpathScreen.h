@@ -1,0 +1,62 @@
+#pragma once
+
+#include <memory>
+
+#include "hmi/Screen.h"
+#include "screens/toolpath/ToolpathCamera.h"
+
+class QLabel;
+
+namespace mtc::screens {
+
+class RestartController;
+class ToolpathCanvas;
+class ToolpathModel;
+
+/// Says whether an OpenGL context can be made here, before anything of VTK
+/// is created (VTK's X render window aborts the process without one). No
+/// with the reason for the platforms "offscreen" and "minimal", when the
+/// environment variable MTC_TOOLPATH_2D is set, or when no context can be
+/// created and made current on an offscreen surface.
+bool openGlAvailable(QString& reason);
+
+/// Toolpath graphics of the station's selected program ("toolpath"): the 3D
+/// view (VTK) or, without OpenGL, the 2D view, with the current block
+/// highlighted and the restart screen's start and target blocks, re-entry
+/// point and REPOS path marked. Keys: 1/2/3/4 G17/G18/G19/isometric view,
+/// 0 or Home fit, + / − zoom, arrows rotate, Shift+arrows pan, PgDn/PgUp
+/// next/previous move (moves the restart cursor), P export PNG.
+class ToolpathScreen : public mtc::hmi::Screen {
+    Q_OBJECT
+  public:
+    ToolpathScreen(const mtc::hmi::ScreenContext& context,
+                   std::shared_ptr<RestartController> restart);
+    ~ToolpathScreen() override;
+    QString screenName() const override { return "toolpath"; }
+    QString title() const override { return "Toolpath graphics"; }
+    mtc::hmi::SoftKeys softKeys() override;
+    void activated() override;
+
+    ToolpathModel* model() const { return model_; }
+    ToolpathCanvas* canvas() const { return canvas_; }
+    /// Writes the view as PNG to `path` (atomically). False with the reason
+    /// on the message line when it cannot.
+    bool exportPng(const QString& path);
+
+  protected:
+    void keyPressEvent(QKeyEvent* event) override;
+
+  private:
+    void preset(ToolpathPreset preset);
+    void renderText();
+    QString defaultExportPath() const;
+
+    std::shared_ptr<RestartController> restart_;
+    ToolpathModel* model_;
+    ToolpathCanvas* canvas_;
+    QLabel* summary_;
+    QLabel* message_;
+    QString glReason_;
+};
+
+}  // namespace mtc::screens

@@ -1,0 +1,510 @@
+#include "screens/toolpath/VtkToolpathCanvas.h"
+
+#include <QVTKOpenGLNativeWidget.h>
+#include <vtkActor.h>
+#include <vtkAxesActor.h>
+#include <vtkCallbackCommand.h>
+#include <vtkCamera.h>
+#include <vtkCellPicker.h>
+#include <vtkCubeAxesActor.h>
+#include <vtkCubeSource.h>
+#include <vtkCylinderSource.h>
+#include <vtkGenericOpenGLRenderWindow.h>
+#include <vtkInteractorStyleTrackballCamera.h>
+#include <vtkLineSource.h>
+#include <vtkNew.h>
+#include <vtkOrientationMarkerWidget.h>
+#include <vtkPolyData.h>
+#include <vtkPolyDataMapper.h>
+#include <vtkProperty.h>
+#include <vtkRenderWindowInteractor.h>
+#include <vtkRenderer.h>
+#include <vtkSphereSource.h>
+#include <vtkTextActor.h>
+#include <vtkTextProperty.h>
+
+#include <QApplication>
+#include <QMouseEvent>
+#include <QTimer>
+#include <QVBoxLayout>
+#include <cmath>
+
+#include "screens/toolpath/ToolpathModel.h"
+#include "screens/toolpath/VtkToolpathData.h"
+
+namespace mtc::screens {
+
+namespace {
+constexpr std::size_t kLevelOfDetailSegments = 150000;  ///< segments drawn while moving
+constexpr int kStillMs = 250;                           ///< full detail again after this pause
+
+void setColour(vtkProperty* property, const QColor& colour) {
+    property->SetColor(colour.redF(), colour.greenF(), colour.blueF());
+}
+
+void setColour(vtkTextProperty* property, const QColor& colour) {
+    property->SetColor(colour.redF(), colour.greenF(), colour.blueF());
+}
+
+/// One picture area: the scene (3D) or the developed plane (2D).
+struct Part {
+    bool developed = false;
+    vtkNew<vtkRenderer> renderer;
+    vtkNew<vtkPolyDataMapper> mapper;
+    vtkNew<vtkActor> path;
+    vtkSmartPointer<vtkPolyData> full, coarse;
+    vtkNew<vtkPolyDataMapper> highlightMapper;
+    vtkNew<vtkActor> highlight;
+    vtkNew<vtkCubeAxesActor> axes;
+    vtkNew<vtkTextActor> caption;
+
+    void setUp(const ToolpathPalette& palette) {
+        const QColor& bg = palette.background;
+        renderer->SetBackground(bg.redF(), bg.greenF(), bg.blueF());
+        mapper->SetScalarModeToUseCellData();
+        mapper->SetColorModeToDirectScalars();
+        path->SetMapper(mapper);
+        path->GetProperty()->SetLineWidth(1.5f);
+        path->GetProperty()->SetLighting(false);
+        highlightMapper->ScalarVisibilityOff();
+        highlight->SetMapper(highlightMapper);
+        highlight->GetProperty()->SetLineWidth(6.0f);
+        highlight->GetProperty()->SetLighting(false);
+        setColour(highlight->GetProperty(), palette.highlight);
+        highlight->PickableOff();
+        axes->SetCamera(renderer->GetActiveCamera());
+        axes->DrawXGridlinesOn();
+        axes->DrawYGridlinesOn();
+        axes->DrawZGridlinesOn();
+        axes->SetGridLineLocation(vtkCubeAxesActor::VTK_GRID_LINES_FURTHEST);
+        axes->SetFlyModeToStaticEdges();
+        for (int i = 0; i < 3; ++i) {
+            setColour(axes->GetTitleTextProperty(i), QColor(220, 220, 230));
+            setColour(axes->GetLabelTextProperty(i), QColor(200, 200, 210));
+        }
+        setColour(axes->GetXAxesGridlinesProperty(), palette.grid);
+        setColour(axes->GetYAxesGridlinesProperty(), palette.grid);
+        setColour(axes->GetZAxesGridlinesProperty(), palette.grid);
+        axes->PickableOff();
+        caption->GetTextProperty()->SetFontSize(14);
+        caption->GetTextProperty()->SetColor(1, 1, 1);
+        caption->SetPosition(8, 8);
+        renderer->AddActor(path);
+        renderer->AddActor(highlight);
+        renderer->AddActor(axes);
+        renderer->AddActor2D(caption);
+    }
+};
+}  // namespace
+
+struct VtkToolpathCanvas::Scene {
+    vtkNew<vtkGenericOpenGLRenderWindow> window;
+    Part scene, developed;
+    vtkNew<vtkActor> stock, cylinder, start, target, reentry, repos;
+    vtkNew<vtkAxesActor> triadAxes;
+    vtkNew<vtkOrientationMarkerWidget> triad;
+    vtkNew<vtkCellPicker> picker;
+    vtkNew<vtkCallbackCommand> interaction;
+    ToolpathPreset preset = ToolpathPreset::Isometric;
+    bool split = false, coarse = false, renderPending = false;
+    int renders = 0;
+    QTimer still;
+    QPoint pressed;
+};
+
+VtkToolpathCanvas::VtkToolpathCanvas(ToolpathModel* model, QWidget* parent)
+    : ToolpathCanvas(model, parent), scene_(std::make_unique<Scene>()) {
+    setObjectName("toolpathVtk");
+    widget_ = new QVTKOpenGLNativeWidget(this);
+    widget_->setObjectName("toolpathVtkWidget");
+    widget_->setFocusPolicy(Qt::NoFocus);  // keys stay with the screen (VTK's 'e'/'q' would quit)
+    widget_->setRenderWindow(scene_->window);
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->addWidget(widget_);
+    setMinimumSize(320, 240);
+
+    const ToolpathPalette& palette = model_->palette();
+    scene_->developed.developed = true;
+    scene_->scene.setUp(palette);
+    scene_->developed.setUp(palette);
+    scene_->window->AddRenderer(scene_->scene.renderer);
+    for (vtkActor* a : {scene_->stock.Get(), scene_->cylinder.Get(), scene_->start.Get(),
+                        scene_->target.Get(), scene_->reentry.Get(), scene_->repos.Get()}) {
+        a->PickableOff();
+        a->VisibilityOff();
+        scene_->scene.renderer->AddActor(a);
+    }
+    scene_->picker->SetTolerance(0.004);
+    scene_->picker->PickFromListOn();
+    scene_->picker->AddPickList(scene_->scene.path);
+    scene_->picker->AddPickList(scene_->developed.path);
+
+    vtkNew<vtkInteractorStyleTrackballCamera> style;
+    widget_->interactor()->SetInteractorStyle(style);
+    scene_->interaction->SetClientData(this);
+    scene_->interaction->SetCallback([](vtkObject*, unsigned long event, void* self, void*) {
+        auto* canvas = static_cast<VtkToolpathCanvas*>(self);
+        if (event == vtkCommand::StartInteractionEvent) canvas->moving();
+    });
+    style->AddObserver(vtkCommand::StartInteractionEvent, scene_->interaction);
+    scene_->triad->SetOrientationMarker(scene_->triadAxes);
+    scene_->triad->SetInteractor(widget_->interactor());
+    scene_->triad->SetCurrentRenderer(scene_->scene.renderer);
+    scene_->triad->SetEnabled(1);
+    scene_->triad->InteractiveOff();
+
+    scene_->still.setSingleShot(true);
+    scene_->still.setInterval(kStillMs);
+    connect(&scene_->still, &QTimer::timeout, this, [this] {
+        if (widget_->interactor()->GetInteractorStyle() &&
+            QApplication::mouseButtons() != Qt::NoButton) {
+            scene_->still.start();  // still dragging
+            return;
+        }
+        scene_->coarse = false;
+        scene_->scene.mapper->SetInputData(scene_->scene.full);
+        scene_->developed.mapper->SetInputData(scene_->developed.full);
+        requestRender();
+    });
+    widget_->installEventFilter(this);
+    connect(model_, &ToolpathModel::geometryChanged, this, &VtkToolpathCanvas::rebuild);
+    connect(model_, &ToolpathModel::marksChanged, this, [this] {
+        updateHighlight();
+        updateMarks();
+        requestRender();
+    });
+    rebuild();
+}
+
+VtkToolpathCanvas::~VtkToolpathCanvas() {
+    scene_->triad->SetEnabled(0);
+}
+
+int VtkToolpathCanvas::renderCount() const {
+    return scene_->renders;
+}
+
+bool VtkToolpathCanvas::showingLevelOfDetail() const {
+    return scene_->coarse;
+}
+
+void VtkToolpathCanvas::requestRender() {
+    if (scene_->renderPending) return;
+    scene_->renderPending = true;
+    QTimer::singleShot(0, this, [this] {
+        scene_->renderPending = false;
+        renderNow();
+    });
+}
+
+void VtkToolpathCanvas::renderNow() {
+    scene_->window->Render();
+    ++scene_->renders;
+}
+
+void VtkToolpathCanvas::moving() {
+    if (!scene_->coarse && scene_->scene.coarse) {
+        scene_->coarse = true;
+        scene_->scene.mapper->SetInputData(scene_->scene.coarse);
+        if (scene_->developed.coarse)
+            scene_->developed.mapper->SetInputData(scene_->developed.coarse);
+    }
+    scene_->still.start();
+}
+
+namespace {
+void setBounds(vtkCubeAxesActor* axes, const mtc::core::ToolpathBounds& b) {
+    double bounds[6] = {b.min[0], b.max[0], b.min[1], b.max[1], b.min[2], b.max[2]};
+    axes->SetBounds(bounds);
+}
+
+QString extents(const mtc::core::ToolpathBounds& b, bool flat) {
+    if (b.empty) return {};
+    QString text = QString("extents %1 x %2")
+                       .arg(b.max[0] - b.min[0], 0, 'f', 1)
+                       .arg(b.max[1] - b.min[1], 0, 'f', 1);
+    if (!flat) text += QString(" x %1").arg(b.max[2] - b.min[2], 0, 'f', 1);
+    return text + " mm";
+}
+
+/// A translucent cylinder along scene axis `axis` (the source's is Y).
+void placeCylinder(vtkActor* actor, int axis, double radius, double from, double to) {
+    vtkNew<vtkCylinderSource> source;
+    source->SetRadius(radius);
+    source->SetHeight(std::max(to - from, 1e-3));
+    source->SetCenter(0, (from + to) / 2, 0);
+    source->SetResolution(72);
+    source->Update();
+    vtkNew<vtkPolyDataMapper> mapper;
+    mapper->SetInputData(source->GetOutput());
+    actor->SetMapper(mapper);
+    actor->SetOrientation(0, 0, 0);
+    if (axis == 2) actor->RotateX(90);   // Y -> Z
+    if (axis == 0) actor->RotateZ(-90);  // Y -> X
+    actor->VisibilityOn();
+}
+}  // namespace
+
+void VtkToolpathCanvas::rebuild() {
+    const auto g = model_->geometry();
+    const ToolpathPalette& palette = model_->palette();
+    Scene& s = *scene_;
+    s.coarse = false;
+    s.split = g && g->developed.segmentCount() > 0;
+    if (s.split) {
+        if (!s.window->HasRenderer(s.developed.renderer))
+            s.window->AddRenderer(s.developed.renderer);
+        s.developed.renderer->SetViewport(0, 0, 0.5, 1);
+        s.scene.renderer->SetViewport(0.5, 0, 1, 1);
+        s.triad->SetViewport(0.5, 0, 0.62, 0.2);
+    } else {
+        s.window->RemoveRenderer(s.developed.renderer);
+        s.scene.renderer->SetViewport(0, 0, 1, 1);
+        s.triad->SetViewport(0, 0, 0.15, 0.2);
+    }
+    for (Part* part : {&s.scene, &s.developed}) {
+        const bool shown = g && (part == &s.scene || s.split);
+        part->path->SetVisibility(shown);
+        part->axes->SetVisibility(shown &&
+                                  !(part->developed ? g->developed : g->scene).bounds.empty);
+        if (!shown) {
+            part->full = part->coarse = nullptr;
+            part->mapper->SetInputData(vtkNew<vtkPolyData>());
+            continue;
+        }
+        part->full = toolpathPolyData(*g, part->developed, palette);
+        part->coarse = toolpathLevelOfDetail(*g, part->developed, palette, kLevelOfDetailSegments,
+                                             part->full->GetPoints());
+        part->mapper->SetInputData(part->full);
+        const auto& layer = part->developed ? g->developed : g->scene;
+        setBounds(part->axes, layer.bounds);
+        part->axes->SetXTitle(part->developed ? "axial (mm)" : "X (mm)");
+        part->axes->SetYTitle(part->developed ? "circumference (mm)" : "Y (mm)");
+        part->axes->SetZTitle(part->developed ? "" : "Z (mm)");
+        part->axes->SetUse2DMode(part->developed);
+        part->axes->SetZAxisVisibility(!part->developed);
+        QString caption =
+            part->developed
+                ? QString("Developed plane, G32 RI %1").arg(g->cylinderRadius)
+                : (s.split ? QString("Wrapped on the cylinder RI %1").arg(g->cylinderRadius)
+                           : QString("Toolpath P%1").arg(model_->programNumber()));
+        caption += "\n" + extents(layer.bounds, part->developed);
+        part->caption->SetInput(caption.toUtf8().constData());
+    }
+    if (!g) s.scene.caption->SetInput(model_->summary().toUtf8().constData());
+    const auto& stock = model_->stock();
+    s.stock->VisibilityOff();
+    if (stock.shape == mtc::core::Stock::Shape::Block) {
+        vtkNew<vtkCubeSource> cube;
+        cube->SetBounds(stock.min[0], stock.max[0], stock.min[1], stock.max[1], stock.min[2],
+                        stock.max[2]);
+        cube->Update();
+        vtkNew<vtkPolyDataMapper> mapper;
+        mapper->SetInputData(cube->GetOutput());
+        s.stock->SetMapper(mapper);
+        s.stock->GetProperty()->SetRepresentationToWireframe();
+        s.stock->VisibilityOn();
+    } else if (stock.shape == mtc::core::Stock::Shape::Cylinder) {
+        placeCylinder(s.stock, stock.axis, stock.radius, stock.from, stock.to);
+    }
+    setColour(s.stock->GetProperty(), palette.stock);
+    s.stock->GetProperty()->SetOpacity(stock.shape == mtc::core::Stock::Shape::Block ? 0.8 : 0.15);
+    s.cylinder->VisibilityOff();
+    if (g && g->cylinderAxis >= 0) {
+        placeCylinder(s.cylinder, g->cylinderAxis, g->cylinderRadius, g->cylinderFrom,
+                      g->cylinderTo);
+        setColour(s.cylinder->GetProperty(), palette.stock);
+        s.cylinder->GetProperty()->SetOpacity(0.2);
+    }
+    updateHighlight();
+    updateMarks();
+    showPreset(s.preset);
+}
+
+void VtkToolpathCanvas::updateHighlight() {
+    const auto g = model_->geometry();
+    for (Part* part : {&scene_->scene, &scene_->developed}) {
+        if (!g || !part->full) {
+            part->highlight->VisibilityOff();
+            continue;
+        }
+        part->highlightMapper->SetInputData(
+            toolpathMoves(*g, part->developed, model_->highlighted(), part->full->GetPoints()));
+        part->highlight->SetVisibility(!model_->highlighted().empty());
+    }
+}
+
+void VtkToolpathCanvas::updateMarks() {
+    const ToolpathMarks marks = model_->marks();
+    const ToolpathPalette& palette = model_->palette();
+    const auto g = model_->geometry();
+    const double size = g ? std::max(g->scene.bounds.size(), 1.0) : 100.0;
+    auto sphere = [&](vtkActor* actor, bool shown, const std::array<double, 3>& at,
+                      const QColor& colour) {
+        actor->SetVisibility(shown);
+        if (!shown) return;
+        vtkNew<vtkSphereSource> source;
+        source->SetCenter(at[0], at[1], at[2]);
+        source->SetRadius(size * 0.015);
+        source->Update();
+        vtkNew<vtkPolyDataMapper> mapper;
+        mapper->SetInputData(source->GetOutput());
+        actor->SetMapper(mapper);
+        setColour(actor->GetProperty(), colour);
+    };
+    sphere(scene_->start, marks.hasStart, marks.start, palette.start);
+    sphere(scene_->target, marks.hasTarget, marks.target, palette.target);
+    sphere(scene_->reentry, marks.hasReentry, marks.reentry, palette.reentry);
+    scene_->repos->SetVisibility(marks.hasRepos);
+    if (marks.hasRepos) {
+        vtkNew<vtkLineSource> line;
+        line->SetPoint1(marks.actual.data());
+        line->SetPoint2(marks.reentry.data());
+        line->Update();
+        vtkNew<vtkPolyDataMapper> mapper;
+        mapper->SetInputData(line->GetOutput());
+        scene_->repos->SetMapper(mapper);
+        setColour(scene_->repos->GetProperty(), palette.repos);
+        scene_->repos->GetProperty()->SetLineWidth(3.0f);
+    }
+}
+
+void VtkToolpathCanvas::showPreset(ToolpathPreset preset) {
+    scene_->preset = preset;
+    const CameraPose pose = presetPose(preset);
+    vtkCamera* camera = scene_->scene.renderer->GetActiveCamera();
+    camera->SetFocalPoint(0, 0, 0);
+    camera->SetPosition(-pose.direction[0], -pose.direction[1], -pose.direction[2]);
+    camera->SetViewUp(pose.up[0], pose.up[1], pose.up[2]);
+    camera->ParallelProjectionOn();
+    vtkCamera* flat = scene_->developed.renderer->GetActiveCamera();
+    flat->SetFocalPoint(0, 0, 0);
+    flat->SetPosition(0, 0, 1);
+    flat->SetViewUp(0, 1, 0);
+    flat->ParallelProjectionOn();
+    fit();
+}
+
+void VtkToolpathCanvas::fit() {
+    for (Part* part : {&scene_->scene, &scene_->developed}) {
+        part->renderer->ResetCamera();
+        part->renderer->ResetCameraClippingRange();
+    }
+    requestRender();
+}
+
+void VtkToolpathCanvas::zoom(double factor) {
+    for (Part* part : {&scene_->scene, &scene_->developed}) {
+        part->renderer->GetActiveCamera()->Zoom(factor);
+        part->renderer->ResetCameraClippingRange();
+    }
+    moving();
+    requestRender();
+}
+
+void VtkToolpathCanvas::pan(double right, double up) {
+    for (Part* part : {&scene_->scene, &scene_->developed}) {
+        vtkCamera* camera = part->renderer->GetActiveCamera();
+        const double height = 2 * camera->GetParallelScale();
+        const double width = height * std::max(part->renderer->GetTiledAspectRatio(), 1e-3);
+        double direction[3], upVector[3], side[3], focal[3], position[3];
+        camera->GetDirectionOfProjection(direction);
+        camera->GetViewUp(upVector);
+        side[0] = direction[1] * upVector[2] - direction[2] * upVector[1];
+        side[1] = direction[2] * upVector[0] - direction[0] * upVector[2];
+        side[2] = direction[0] * upVector[1] - direction[1] * upVector[0];
+        camera->GetFocalPoint(focal);
+        camera->GetPosition(position);
+        for (int i = 0; i < 3; ++i) {
+            const double shift = -(right * width * side[i] + up * height * upVector[i]);
+            focal[i] += shift;
+            position[i] += shift;
+        }
+        camera->SetFocalPoint(focal);
+        camera->SetPosition(position);
+    }
+    moving();
+    requestRender();
+}
+
+void VtkToolpathCanvas::rotate(double azimuth, double elevation) {
+    vtkCamera* camera = scene_->scene.renderer->GetActiveCamera();
+    camera->Azimuth(azimuth);
+    camera->Elevation(elevation);
+    camera->OrthogonalizeViewUp();
+    scene_->scene.renderer->ResetCameraClippingRange();
+    moving();
+    requestRender();
+}
+
+QImage VtkToolpathCanvas::picture() {
+    renderNow();
+    return widget_->grabFramebuffer();
+}
+
+std::optional<QPoint> VtkToolpathCanvas::positionOfMove(long move) {
+    const auto g = model_->geometry();
+    if (!g || move < 0 || static_cast<std::size_t>(move) >= g->moves.size()) return std::nullopt;
+    const auto m = static_cast<std::size_t>(move);
+    const bool inScene = g->sceneRange(m).first < g->sceneRange(m).second;
+    if (!inScene && !scene_->split) return std::nullopt;
+    Part& part = inScene ? scene_->scene : scene_->developed;
+    const auto& layer = inScene ? g->scene : g->developed;
+    const auto [first, last] = inScene ? g->sceneRange(m) : g->developedRange(m);
+    if (first == last) return std::nullopt;
+    const auto a = layer.vertex(layer.segmentStart[first]);
+    const auto b = layer.vertex(layer.segmentStart[first] + 1);
+    part.renderer->SetWorldPoint((a[0] + b[0]) / 2, (a[1] + b[1]) / 2, (a[2] + b[2]) / 2, 1.0);
+    part.renderer->WorldToDisplay();
+    double display[3];
+    part.renderer->GetDisplayPoint(display);
+    const double ratio = widget_->devicePixelRatioF();
+    const int height = static_cast<int>(widget_->height() * ratio);
+    if (!part.renderer->IsInViewport(static_cast<int>(display[0]), static_cast<int>(display[1])))
+        return std::nullopt;
+    const QPoint inWidget(static_cast<int>(display[0] / ratio),
+                          static_cast<int>((height - 1 - display[1]) / ratio));
+    return widget_->mapTo(this, inWidget);
+}
+
+void VtkToolpathCanvas::pickAt(QPoint position) {
+    const auto g = model_->geometry();
+    if (!g) return;
+    if (scene_->coarse) {  // the click started an interaction: pick on the full path
+        scene_->coarse = false;
+        scene_->scene.mapper->SetInputData(scene_->scene.full);
+        scene_->developed.mapper->SetInputData(scene_->developed.full);
+        requestRender();
+    }
+    const double ratio = widget_->devicePixelRatioF();
+    const int x = static_cast<int>(position.x() * ratio);
+    const int y =
+        static_cast<int>(widget_->height() * ratio) - 1 - static_cast<int>(position.y() * ratio);
+    for (Part* part : {&scene_->scene, &scene_->developed}) {
+        if (!part->full || !part->renderer->IsInViewport(x, y)) continue;
+        if (!scene_->picker->Pick(x, y, 0, part->renderer)) continue;
+        if (scene_->picker->GetActor() != part->path.Get()) continue;
+        const vtkIdType cell = scene_->picker->GetCellId();
+        if (cell < 0) continue;
+        const auto segment = static_cast<std::uint32_t>(cell);
+        const long move =
+            part->developed ? g->moveOfDevelopedSegment(segment) : g->moveOfSceneSegment(segment);
+        if (move >= 0) model_->pick(move);
+        return;
+    }
+}
+
+bool VtkToolpathCanvas::eventFilter(QObject* watched, QEvent* event) {
+    if (watched == widget_ && event->type() == QEvent::MouseButtonPress) {
+        scene_->pressed = static_cast<QMouseEvent*>(event)->pos();
+    } else if (watched == widget_ && event->type() == QEvent::MouseButtonRelease) {
+        const auto* mouse = static_cast<QMouseEvent*>(event);
+        if (mouse->button() == Qt::LeftButton &&
+            (mouse->pos() - scene_->pressed).manhattanLength() < 4)
+            pickAt(mouse->pos());
+    }
+    return ToolpathCanvas::eventFilter(watched, event);
+}
+
+}  // namespace mtc::screens

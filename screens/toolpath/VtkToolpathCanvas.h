@@ -1,0 +1,56 @@
+#pragma once
+
+#include <memory>
+
+#include "screens/toolpath/ToolpathCanvas.h"
+
+class QVTKOpenGLNativeWidget;
+
+namespace mtc::screens {
+
+/// The 3D toolpath view with VTK (QVTKOpenGLNativeWidget): one poly-data
+/// with cell colours per layer, a coarser copy while the view moves (level
+/// of detail), the highlighted block, the restart marks and REPOS path, the
+/// stock, axes triad, grid with the extents and their dimensions. With G32
+/// moves the developed plane (left) and the wrapped cylinder (right) are
+/// shown side by side. Render requests are coalesced into one render per
+/// event-loop pass. Needs an OpenGL context: create it only after
+/// openGlAvailable() said yes (VTK aborts the process without one).
+class VtkToolpathCanvas : public ToolpathCanvas {
+    Q_OBJECT
+  public:
+    VtkToolpathCanvas(ToolpathModel* model, QWidget* parent = nullptr);
+    ~VtkToolpathCanvas() override;
+
+    void showPreset(ToolpathPreset preset) override;
+    void fit() override;
+    void zoom(double factor) override;
+    void pan(double right, double up) override;
+    void rotate(double azimuth, double elevation) override;
+    QImage picture() override;
+    bool threeD() const override { return true; }
+    std::optional<QPoint> positionOfMove(long move) override;
+    /// Renders now (tests, frame timing); otherwise renders are coalesced.
+    void renderNow();
+    /// Renders done so far (coalescing check).
+    int renderCount() const;
+    /// True while the coarse copy is shown (the view is moving).
+    bool showingLevelOfDetail() const;
+
+  protected:
+    bool eventFilter(QObject* watched, QEvent* event) override;
+
+  private:
+    struct Scene;
+    void rebuild();
+    void updateHighlight();
+    void updateMarks();
+    void requestRender();
+    void moving();
+    void pickAt(QPoint position);
+
+    QVTKOpenGLNativeWidget* widget_;
+    std::unique_ptr<Scene> scene_;
+};
+
+}  // namespace mtc::screens
