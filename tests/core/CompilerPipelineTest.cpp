@@ -141,7 +141,7 @@ TEST(CompilerPipeline, KeywordWithoutPassIsUnsupported) {
 class InsertAfterM8 : public CompilerPass {
   public:
     std::string_view name() const override { return "test"; }
-    int order() const override { return 450; }
+    int order() const override { return 600; }
     std::vector<std::string> keywords() const override { return {}; }
     void run(BlockSequence& blocks, CompileContext&) const override {
         BlockSequence out;
