@@ -122,10 +122,13 @@ bool turningRoughing(const CycleInput& in, BlockWriter& out, std::string& proble
     if (!turningInput(in, problem)) return false;
     const Geometry& g = *in.geometry;
     Roughing r;
-    r.az = std::max(in.value(kCycleAllowanceZ), 1e-3);
-    r.ax = std::max(in.value(kCycleAllowanceX), 1e-3);
+    // The outline is tessellated with a chord error of 0.002 mm: the
+    // allowances grow by that much so that the true arcs stay outside too.
+    constexpr double kChord = 0.002;
+    r.az = std::max(in.value(kCycleAllowanceZ), 0.0) + kChord;
+    r.ax = std::max(in.value(kCycleAllowanceX), 0.0) + kChord;
     r.radius = in.value(kCycleToolRadius);
-    for (const Point& p : partOutline(g, in.stock, 0.002))
+    for (const Point& p : partOutline(g, in.stock, kChord))
         r.scaled.emplace_back(p.x() / r.az, p.y() / r.ax);
     const double clearance = in.value(kCycleClearance), depth = in.value(kCycleDepth);
     const Point tipShift = r.radius * edgeVector(static_cast<int>(in.value(kCycleEdge)));
