@@ -35,6 +35,8 @@ struct SegmentMotion {
 struct LookAheadSegment {
     std::size_t onBlock = 0;             ///< sequence index of LA_ON
     std::size_t offBlock = 0;            ///< sequence index of LA_OFF
+    int onLine = 0;                      ///< source line of LA_ON
+    int offLine = 0;                     ///< source line of LA_OFF
     AxisLimits limits;                   ///< axis table and machine limits
     std::vector<char> centerLetter;      ///< per axis: 'I', 'J', 'K' or ' ' (no centre word)
     std::vector<PathElement> contour;    ///< programmed polygon (ref.blockIndex = sequence index)

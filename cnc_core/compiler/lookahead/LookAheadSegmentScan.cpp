@@ -18,6 +18,7 @@ bool Analyzer::startSegment(std::size_t i) {
     inside_ = true;
     segment_ = LookAheadSegment{};
     segment_.onBlock = i;
+    segment_.onLine = static_cast<int>(blocks_[i].sourceLine);
     segment_.limits = limits_;
     for (char d : definitions_)
         segment_.centerLetter.push_back(d >= 'X' && d <= 'Z' ? static_cast<char>('I' + (d - 'X'))
@@ -226,6 +227,7 @@ bool Analyzer::arcCenter(std::size_t i, const AxisVector& target, AxisVector& ce
 
 void Analyzer::finishSegment(std::size_t i) {
     segment_.offBlock = i;
+    segment_.offLine = static_cast<int>(blocks_[i].sourceLine);
     segment_.motionAfter = state_.motion;
     segment_.feedAfter = state_.pathFeed;
     if (!segment_.failed && !segment_.contour.empty()) planSegment();
