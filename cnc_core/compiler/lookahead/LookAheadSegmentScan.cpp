@@ -12,6 +12,26 @@ namespace {
 constexpr double kArcTolerance = 0.002;  // mm, the interpreter's tolerance
 constexpr double kAxisFeedPath = 1.0e7;  // mm/min: F<axis>= alone limits the path
 
+/// A short name of a word for messages ("M8", "D2", "a jump", "@1=...").
+std::string describeWord(const Word& w) {
+    const bool constant = w.expr < 0;
+    switch (w.kind) {
+        case WordKind::M:
+            return constant ? "M" + formatCoordinate(w.number) : "M";
+        case WordKind::D:
+            return constant ? "D" + formatCoordinate(w.number) : "D";
+        case WordKind::EffectiveRadius:
+            return "RI";
+        case WordKind::Jump:
+            return "a jump";
+        case WordKind::Assign:
+        case WordKind::AssignMTD:
+            return "an assignment";
+        default:
+            return "this word";
+    }
+}
+
 }  // namespace
 
 bool Analyzer::startSegment(std::size_t i) {
@@ -98,8 +118,9 @@ bool Analyzer::insideWord(std::size_t i, const Program& program, const Word& w, 
     const std::string raw(program.text(w.text));
     auto notAllowed = [&](const std::string& what) {
         report(i, "LA_COMMAND_NOT_ALLOWED", what + " not allowed in LA segment",
-               {"Between LA_ON and LA_OFF only G1, G2, G3, axis end points, F, F<axis>=,",
-                "ACC_EFF=, SE, RE and swift auxiliary functions (Q, S) may be programmed."});
+               {"Between LA_ON and LA_OFF only these may be programmed:",
+                "G1, G2, G3, axis end points, I/J/K, F, F<axis>=, ACC_EFF=,",
+                "events SE/RE and swift auxiliary functions (Q, S)."});
         return true;
     };
     const bool constant = w.expr < 0;
@@ -153,7 +174,7 @@ bool Analyzer::insideWord(std::size_t i, const Program& program, const Word& w, 
         case WordKind::Command:
             break;
         default:
-            return notAllowed(raw.empty() ? "this word" : raw);
+            return notAllowed(raw.empty() ? describeWord(w) : raw);
     }
     const std::string keyword = keywordIn(raw);
     if (keyword == "SE" || keyword == "RE") return false;
