@@ -5,6 +5,7 @@
 #include "cnc_core/compiler/MacroPass.h"
 #include "cnc_core/compiler/ModalFunctionPass.h"
 #include "cnc_core/compiler/lookahead/LookAheadPass.h"
+#include "cnc_core/contour/GnePass.h"
 
 namespace mtc::core {
 
@@ -12,6 +13,7 @@ CompilerPassList standardCompilerPasses() {
     return {
         std::make_shared<MacroPass>(),
         std::make_shared<ModalFunctionPass>(),
+        std::make_shared<gne::GnePass>(),
         std::make_shared<ChamferRoundPass>(),
         std::make_shared<lookahead::LookAheadPass>(),
     };

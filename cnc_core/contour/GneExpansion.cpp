@@ -216,7 +216,7 @@ void Expander::expandCycle(const GneCall& call) {
         tool.radius = in.value(kMillToolRadius);
     }
     BlockWriter out(in.spec->plane);
-    out.raw(turning ? "G90 G18 G40" : "G90 G17 G40");
+    out.raw(turning ? "G90 G18 G40 G15" : "G90 G17 G40");
     out.raw(toolBlock(tool));
     const double speed = in.value(turning ? std::size_t{kCycleSpeed} : std::size_t{kMillSpeed});
     if (speed > 0) out.raw("S" + BlockWriter::number(speed) + " M3");
