@@ -4,6 +4,10 @@
 
 #include <cmath>
 
+#include <cstdio>
+#include <string>
+
+#include "cnc_core/compiler/Compiler.h"
 #include "cnc_core/compiler/lookahead/VelocityPlanner.h"
 
 namespace {
@@ -64,5 +68,42 @@ void BM_LookAheadPlan(benchmark::State& state) {
     state.SetItemsProcessed(state.iterations() * state.range(0));
 }
 BENCHMARK(BM_LookAheadPlan)->Arg(10000)->Unit(benchmark::kMillisecond);
+
+/// A loose program: one LA_ON ... LA_OFF segment of `count` short G1/G3 blocks.
+std::string laProgram(int count) {
+    std::string text = "N0000 G0 G17 G90 X0 Y0 Z0\nN0001 F6000 METB=4\nN0002 LA_ON\n";
+    char line[96];
+    double x = 0.0;
+    for (int i = 0; i < count; ++i) {
+        const int n = (i + 3) % 10000;
+        if (i % 4 == 3) {
+            std::snprintf(line, sizeof line, "N%04d G3 X%.3f Y0 I%.3f J0\n", n, x + 0.4, x + 0.2);
+            x += 0.4;
+        } else {
+            x += 0.3;
+            std::snprintf(line, sizeof line, "N%04d G1 X%.3f Y0\n", n, x);
+        }
+        text += line;
+    }
+    return text + "N9999 LA_OFF\n";
+}
+
+/// The whole compiler (standard passes) on a program whose blocks are all
+/// inside one look-ahead segment.
+void BM_LookAheadCompile(benchmark::State& state) {
+    const std::string source = laProgram(static_cast<int>(state.range(0)));
+    mtc::core::CompilerOptions options;
+    options.compilerActive = true;
+    const mtc::core::Compiler compiler;
+    std::size_t blocks = 0;
+    for (auto _ : state) {
+        const mtc::core::CompileResult r = compiler.compile(source, options);
+        blocks = r.objectBlocks;
+        benchmark::DoNotOptimize(r.objectText.data());
+    }
+    state.counters["object_blocks"] = static_cast<double>(blocks);
+    state.SetItemsProcessed(state.iterations() * state.range(0));
+}
+BENCHMARK(BM_LookAheadCompile)->Arg(5000)->Unit(benchmark::kMillisecond);
 
 }  // namespace
