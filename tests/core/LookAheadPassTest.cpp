@@ -269,6 +269,26 @@ TEST(LookAheadPass, MetbMustExceedTheBlockCycleTime) {
     EXPECT_TRUE(hasCode(r, "LA_METB_CYCLE", "N0002")) << errorList(r);
 }
 
+TEST(LookAheadPass, ProcessParametersOverrideThePresets) {
+    ProcessConfig process = millProcess();
+    process.parameters["B070"] = "9";  // METB 9 ms instead of the preset 5
+    CompilerOptions options;
+    options.compilerActive = true;
+    options.process = &process;
+    const std::string program =
+        "N0001 G0 X0 Y0\nN0002 LA_ON\nN0003 G1 X0.5 F30000\nN0004 X1\n"
+        "N0005 X1.5\nN0006 LA_OFF\n";
+    const CompileResult r = Compiler().compile(program, options);
+    ASSERT_EQ(r.status, CompileStatus::Compiled) << errorList(r);
+    const auto moves = objectMoves(r.objectText, millLimits());
+    EXPECT_TRUE(objectViolations(moves, millLimits(), 9.0).empty());
+    // 0.5 mm in at least 9 ms: F <= 3333.3 mm/min.
+    for (const ObjectMove& m : moves)
+        EXPECT_LE(m.feed, 0.5 / 0.009 * 60.0);
+    process.parameters["B073"] = "10";  // block cycle time above METB
+    EXPECT_TRUE(hasCode(Compiler().compile(program, options), "LA_METB_CYCLE", "N0002"));
+}
+
 TEST(LookAheadPass, RandomTextsNeverCrashAndAlwaysEnd) {
     const char* pieces[] = {"LA_ON",
                             "LA_OFF",
