@@ -196,6 +196,19 @@ TEST(LookAheadPlanner, ReportsBadPolygons) {
     auto axes = polyline({point({0, 0}), point({1, 0})}, 1000);
     EXPECT_EQ(planVelocityProfile(axes, limits, defaults()).problems.at(0).code, "LA_AXES");
     EXPECT_TRUE(planVelocityProfile({}, limits, defaults()).blocks.empty());
+    AxisLimits stuck = limits;
+    stuck.maxAcceleration[2] = 0.0;
+    const auto line = polyline({point({0, 0, 0}), point({1, 0, 0})}, 1000);
+    EXPECT_EQ(planVelocityProfile(line, stuck, defaults()).problems.at(0).code, "LA_AXIS_LIMITS");
+}
+
+TEST(LookAheadPlanner, SlowFeedsGiveNoSubBlocksShorterThanAMicron) {
+    const auto limits = millLimits();
+    const auto elements = polyline({point({0, 0, 0}), point({0.05, 0, 0})}, 1.0);
+    const auto plan = planVelocityProfile(elements, limits, defaults());
+    expectWithinLimits(plan, elements, limits, defaults());
+    for (const PlannedBlock& b : plan.blocks)
+        EXPECT_GE(b.sEnd - b.sStart, 0.001 - 1e-12);
 }
 
 TEST(LookAheadPlanner, RandomPolygonsStayWithinEveryLimit) {

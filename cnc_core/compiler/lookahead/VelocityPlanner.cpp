@@ -11,6 +11,7 @@ constexpr double kInfinity = std::numeric_limits<double>::infinity();
 constexpr double kTiny = 1e-12;
 constexpr double kContiguityTolerance = 1e-6;  // mm
 constexpr double kArcAccelerationShare = 0.5;  // arcs: half for the centripetal part
+constexpr double kMinimumPiece = 0.001;        // mm: shortest sub-block (written to 0.0001)
 
 /// Cap of the path velocity (mm/s) from F, the axis velocities and F<axis>=.
 double velocityCap(const PathElement& e, const ElementGeometry& g, const AxisLimits& limits) {
@@ -61,6 +62,12 @@ double junctionVelocity(const PathElement& a, const ElementGeometry& ga, const P
 
 bool checkElements(const std::vector<PathElement>& elements, const AxisLimits& limits,
                    LookAheadPlan& plan) {
+    for (int i = 0; i < limits.size(); ++i)
+        if (!(limits.maxVelocity[i] > 0.0) || !(limits.maxAcceleration[i] > 0.0) ||
+            !std::isfinite(limits.maxVelocity[i]) || !std::isfinite(limits.maxAcceleration[i])) {
+            plan.problems.push_back({0, "LA_AXIS_LIMITS", "axis without velocity or acceleration"});
+            return false;
+        }
     for (size_t k = 0; k < elements.size(); ++k) {
         const PathElement& e = elements[k];
         const int id = static_cast<int>(k);
@@ -146,7 +153,8 @@ std::vector<double> mergeShortPieces(const ElementProfile& p, const std::vector<
     for (size_t i = 1; i < cuts.size(); ++i) {
         const double from = kept.back(), to = cuts[i];
         const double peak = p.peakOn(from, to);
-        if (peak > 0.0 && (to - from) / peak >= metbSeconds) kept.push_back(to);
+        if (peak > 0.0 && (to - from) / peak >= metbSeconds && to - from >= kMinimumPiece)
+            kept.push_back(to);
     }
     if (kept.back() < p.length) {
         if (kept.size() > 1) kept.pop_back();
