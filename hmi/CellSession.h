@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "cnc_core/language/Program.h"
+#include "cnc_core/machine/AxisTransfer.h"
 #include "cnc_core/machine/MachineConfig.h"
 #include "cnc_core/machine/ProcessControl.h"
 #include "cnc_core/program/ProgramStore.h"
@@ -62,6 +63,9 @@ class CellSession : public QObject {
     /// Announce that something of the station changed (screens refresh).
     void notifyChanged(int slot) { emit processChanged(slot); }
 
+    /// The GAX / FAX handshake between the stations' processes (NC program
+    /// restart's computing processes wait on it, seed 000, 5.4).
+    mtc::core::AxisTransfer& axisTransfer() { return axisTransfer_; }
     /// The machine data of the cell, shared by every station's interpreter.
     mtc::core::MachineDataStore& machineData() { return *machineData_; }
     /// Keeps the machine data in `path` from now on: loads it (a damaged
@@ -83,6 +87,7 @@ class CellSession : public QObject {
     struct Station;
     mtc::core::MachineConfig config_;
     mtc::core::ProgramStore store_;
+    mtc::core::AxisTransfer axisTransfer_;
     std::shared_ptr<mtc::core::MachineDataStore> machineData_;
     QString machineDataFile_;
     bool machineDataWritable_ = true;

@@ -220,7 +220,12 @@ Interpreter::Outcome Interpreter::executeNext(DiagnosticList& diagnostics,
         ++state_.block;
         return Outcome::Continue;
     }
-    return commit(program, index, diagnostics);
+    const Outcome outcome = commit(program, index, diagnostics);
+    if (holdRequested_) {
+        holdRequested_ = false;
+        if (outcome == Outcome::Continue) return Outcome::Stopped;
+    }
+    return outcome;
 }
 
 bool Interpreter::checkedBlock(const Program& program, std::uint32_t index,

@@ -149,6 +149,10 @@ class Interpreter {
     void setStopTarget(std::optional<StopTarget> target);
     /// How often the stop target block was reached so far.
     std::uint32_t targetArrivals() const { return targetArrivals_; }
+    /// Asked from the sink while a block is committed (e.g. an axis transfer
+    /// that has to wait for another process): run() / step() return Stopped
+    /// after this block instead of going on.
+    void requestHold() { holdRequested_ = true; }
     /// Observer of every aux function (nullptr = none). Not owned.
     void setObserver(AuxObserver* observer) { observer_ = observer; }
 
@@ -198,6 +202,7 @@ class Interpreter {
     const ProcessConfig& config_;
     const ProgramStore& programs_;
     MachineSink& sink_;
+    bool holdRequested_ = false;  ///< requestHold() during the current block
     DiagnosticList configDiagnostics_;
     ProcessAxes axes_;
     ZeroOffsetTable zeroOffsets_;

@@ -32,6 +32,8 @@ const char* keyName(ControlKey key) {
             return "Stop";
         case ControlKey::ControlReset:
             return "Control reset";
+        case ControlKey::SingleBlock:
+            return "Single block";
     }
     return "?";
 }
@@ -80,11 +82,22 @@ bool ProcessControl::press(ControlKey key) {
         case ControlKey::ProgramRestart:
             signals_.set("mBPREP", 1 - signals_.get("mBPREP"));
             return true;
-        case ControlKey::Repos:
-            signals_.set("mREPOS", 1 - signals_.get("mREPOS"));
+        case ControlKey::SingleBlock:
+            signals_.set(p + "CSBLK", singleBlock() ? 0 : 1);
             return true;
+        case ControlKey::Repos:
+            // Without an NC program restart past its computing process there is
+            // nothing to reposition to: the SPS would not set PxxCREPOS.
+            alarm_ =
+                "REPOS refused: no multi-block retrace possible (no NC program restart "
+                "has reached its target block)";
+            return false;
     }
     return false;
+}
+
+bool ProcessControl::singleBlock() const {
+    return signals_.get(signalPrefix() + "CSBLK") == 1;
 }
 
 bool ProcessControl::setMode(OperatingMode mode) {

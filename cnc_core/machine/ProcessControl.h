@@ -12,7 +12,16 @@ enum class OperatingMode { Automatic, Manual, Mdi };
 /// The machine control keys (M keys) of the panel. The panel sends every
 /// key through ProcessControl::press; nothing in the GUI changes machine
 /// state directly.
-enum class ControlKey { ProgramRestart, Repos, Manual, Automatic, Start, Stop, ControlReset };
+enum class ControlKey {
+    ProgramRestart,
+    Repos,
+    Manual,
+    Automatic,
+    Start,
+    Stop,
+    ControlReset,
+    SingleBlock,  ///< switches single-block mode on / off (PxxCSBLK)
+};
 
 /// Readable names: "automatic", "manual", "MDI"; "NC program restart", ...
 const char* modeName(OperatingMode mode);
@@ -51,8 +60,10 @@ class ControlKeyHandler {
 /// while a program is active), Start starts the selected program in
 /// automatic mode through the ProgramRunner (or continues a held one), Stop
 /// holds it (PxxSHOLD = 1, the program stays active), Control reset
-/// abandons it and clears the alarm; NC program restart and REPOS toggle the
-/// M-key flags mBPREP / mREPOS that the restart logic consumes.
+/// abandons it and clears the alarm; Single block toggles PxxCSBLK at any
+/// time (the runner holds after the block); NC program restart toggles the M-key
+/// flag mBPREP that the restart logic consumes; REPOS is refused (alarm)
+/// unless an NC program restart handles it (RestartSequence).
 class ProcessControl {
   public:
     explicit ProcessControl(int process);
@@ -66,6 +77,9 @@ class ProcessControl {
     bool programActive() const { return active_; }
     bool programHeld() const { return held_; }
     const std::string& alarm() const { return alarm_; }
+    /// Single-block mode (PxxCSBLK = 1): a running program, the computing
+    /// process of NC program restart included, holds after every block.
+    bool singleBlock() const;
     int selectedProgram() const { return selectedProgram_; }
     const std::string& currentBlock() const { return currentBlock_; }
     const SignalTable& signalTable() const { return signals_; }

@@ -40,6 +40,8 @@ const char* computingStatusName(ComputingStatus status) {
             return "failed";
         case ComputingStatus::Aborted:
             return "aborted";
+        case ComputingStatus::Waiting:
+            return "waiting";
     }
     return "failed";
 }
@@ -51,6 +53,10 @@ ComputingProcess::ComputingProcess(const ProcessConfig& config, const ProgramSto
       filter_(sps),
       collector_(config),
       interpreter_(config, programs, filter_, std::move(services)) {}
+
+void ComputingProcess::setAxisTransfer(AxisTransfer* transfer) {
+    filter_.setAxisTransfer(transfer, config_.index, [this] { interpreter_.requestHold(); });
+}
 
 bool ComputingProcess::begin(const RestartSelection& selection, const InterpreterState& current,
                              const InterpreterOptions& operatorOptions, std::uint64_t budget,
@@ -112,6 +118,7 @@ bool ComputingProcess::begin(const RestartSelection& selection, const Interprete
     interpreter_.options() = options;
     collector_.clear();
     filter_.resetCounters();
+    filter_.cancelTransfers();
     interpreter_.setObserver(&collector_);
     publishBuffers();  // zeroed at the start (seed 000, 4.2)
     target_ = {route_.targetProgram->number, selection.target.block, 1};
@@ -121,9 +128,15 @@ bool ComputingProcess::begin(const RestartSelection& selection, const Interprete
 
 ComputingProgress ComputingProcess::advance(std::uint64_t maxBlocks) {
     if (progress_.status != ComputingStatus::Running &&
-        progress_.status != ComputingStatus::Stopped)
+        progress_.status != ComputingStatus::Stopped &&
+        progress_.status != ComputingStatus::Waiting)
         return progress_;
+    if (progress_.status == ComputingStatus::Waiting && !abortRequested_.load()) {
+        if (filter_.waiting()) return progress_;
+        filter_.cancelTransfers();  // every request met its partner: forget them
+    }
     progress_.status = ComputingStatus::Running;
+    progress_.singleBlockStop = false;
     std::uint64_t left = maxBlocks;
     while (left > 0) {
         if (abortRequested_.load(std::memory_order_relaxed)) {
@@ -141,12 +154,24 @@ ComputingProgress ComputingProcess::advance(std::uint64_t maxBlocks) {
             finish(ComputingStatus::Failed);
             return progress_;
         }
-        const std::uint64_t slice = std::min({left, kSlice, budget_ - progress_.blocksInterpreted});
+        const bool single = singleBlock_.load(std::memory_order_relaxed);
+        const std::uint64_t slice =
+            single ? 1 : std::min({left, kSlice, budget_ - progress_.blocksInterpreted});
         const RunResult result = interpreter_.run(slice);
         left -= std::min(left, result.blocksInterpreted);
         count(result.blocksInterpreted);
         if (handle(result) == Next::Return) return progress_;
+        if (single) return singleBlockStop();
     }
+    return progress_;
+}
+
+ComputingProgress ComputingProcess::singleBlockStop() {
+    // Single-block mode (seed 000, 2.7): held after every block as at M00;
+    // Start (advance() again) interprets the next one. R-020.
+    publishRotaryAxisModes();
+    progress_.status = ComputingStatus::Stopped;
+    progress_.singleBlockStop = true;
     return progress_;
 }
 
@@ -161,6 +186,10 @@ ComputingProcess::Next ComputingProcess::handle(const RunResult& result) {
         case RunStatus::TargetReached:
             return targetArrival();
         case RunStatus::Stopped:
+            if (filter_.waiting()) {  // GAX / FAX: not an M00
+                progress_.status = ComputingStatus::Waiting;
+                return Next::Return;
+            }
             publishRotaryAxisModes();  // page 60 el. 1..3 are updated at a program stop
             progress_.status = ComputingStatus::Stopped;
             return Next::Return;
@@ -198,6 +227,7 @@ ComputingProcess::Next ComputingProcess::targetArrival() {
 
 void ComputingProcess::finish(ComputingStatus status) {
     progress_.status = status;
+    filter_.cancelTransfers();
     if (status != ComputingStatus::TargetReached) return;
     interpreter_.publishPage60();
     publishBuffers();

@@ -16,19 +16,21 @@ namespace mtc::core {
 enum class ComputingStatus {
     Idle,           ///< begin() not called (or it failed)
     Running,        ///< more blocks to interpret: call advance() again
-    Stopped,        ///< M00 (or M01 with optional stop): advance() again continues (Start)
+    Stopped,        ///< M00 (M01 with optional stop) or single block: advance() again continues
     TargetReached,  ///< stopped before the target block on its N-th arrival: done
     Failed,         ///< an error ended it (diagnostics): target not found, rejected block, budget
     Aborted,        ///< requestAbort() (Control reset) ended it
+    Waiting,        ///< GAX / FAX waits for another process: advance() again looks (R-021)
 };
 
-/// "idle", "running", "stopped", "target", "failed", "aborted".
+/// "idle", "running", "stopped", "target", "failed", "aborted", "waiting".
 const char* computingStatusName(ComputingStatus status);
 
 struct ComputingProgress {
     ComputingStatus status = ComputingStatus::Idle;
     std::uint64_t blocksInterpreted = 0;  ///< since begin()
     std::uint32_t arrivals = 0;           ///< arrivals at the target with the selected call chain
+    bool singleBlockStop = false;         ///< Stopped by single-block mode (not M00 / M01)
 };
 
 /// The computing process of NC program restart (seed 000, 2.7, 2.8, 3.1, 4,
@@ -75,6 +77,18 @@ class ComputingProcess {
     /// few thousand blocks); the status becomes Aborted. Pages 60/61 keep
     /// what begin() wrote; the process's interpreter was never touched.
     void requestAbort() { abortRequested_.store(true, std::memory_order_relaxed); }
+    /// Single-block mode (seed 000, 2.7: selectable at any time during the
+    /// computing process, any thread): advance() stops (Stopped,
+    /// singleBlockStop) after each interpreted block; switched off, the next
+    /// advance() runs on.
+    void setSingleBlock(bool on) { singleBlock_.store(on, std::memory_order_relaxed); }
+    bool singleBlock() const { return singleBlock_.load(std::memory_order_relaxed); }
+    /// The cell's axis transfer handshake (not owned; nullptr = none, then GAX
+    /// and FAX do not wait). With it, a GAX / FAX makes advance() return
+    /// Waiting after its block until another process answers (seed 000, 5.4).
+    void setAxisTransfer(AxisTransfer* transfer);
+    /// Withdraws a waiting GAX / FAX (Control reset of the restart).
+    void cancelTransfers() { filter_.cancelTransfers(); }
 
     /// Status, blocks and arrivals after the last begin() / advance().
     const ComputingProgress& progress() const { return progress_; }
@@ -105,6 +119,7 @@ class ComputingProcess {
     void publishRotaryAxisModes();
     void finish(ComputingStatus status);
     void count(std::uint64_t blocks);
+    ComputingProgress singleBlockStop();
 
     const ProcessConfig& config_;
     const ProgramStore& programs_;
@@ -118,6 +133,7 @@ class ComputingProcess {
     ComputingProgress progress_;
     DiagnosticList diagnostics_;
     std::atomic<bool> abortRequested_{false};
+    std::atomic<bool> singleBlock_{false};
     std::atomic<std::uint64_t> blocksSoFar_{0};
 };
 

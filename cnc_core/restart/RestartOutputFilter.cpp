@@ -24,6 +24,39 @@ void RestartOutputFilter::command(const SourceLocation& where, const std::string
     }
     ++passed_;
     sps_.command(where, keyword, arguments);
+    AxisTransferKind kind{};
+    std::vector<std::string> axes;
+    if (!transfer_ || !parseAxisTransfer(keyword, arguments, kind, axes)) return;
+    for (const std::string& axis : axes) {
+        const AxisTransfer::Ticket ticket = transfer_->post(process_, kind, axis);
+        if (!transfer_->done(ticket)) pending_.push_back({ticket, keyword + " " + axis});
+    }
+    if (!pending_.empty() && hold_) hold_();
+}
+
+void RestartOutputFilter::setAxisTransfer(AxisTransfer* transfer, int process,
+                                          std::function<void()> hold) {
+    cancelTransfers();
+    transfer_ = transfer;
+    process_ = process;
+    hold_ = std::move(hold);
+}
+
+bool RestartOutputFilter::waiting() const {
+    for (const Pending& p : pending_)
+        if (!transfer_->done(p.ticket)) return true;
+    return false;
+}
+
+std::string RestartOutputFilter::waitingFor() const {
+    for (const Pending& p : pending_)
+        if (!transfer_->done(p.ticket)) return p.text;
+    return {};
+}
+
+void RestartOutputFilter::cancelTransfers() {
+    if (transfer_ && !pending_.empty()) transfer_->cancel(process_);
+    pending_.clear();
 }
 
 }  // namespace mtc::core

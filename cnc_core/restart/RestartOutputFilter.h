@@ -1,9 +1,12 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <string>
+#include <vector>
 
 #include "cnc_core/interp/MachineSink.h"
+#include "cnc_core/machine/AxisTransfer.h"
 
 namespace mtc::core {
 
@@ -18,7 +21,9 @@ namespace mtc::core {
 ///  - TCH, TMS, TSM (tool transfers: the interpreter remembers the tool in
 ///    the spindle, the current tools list is not changed).
 /// GAX, FAX, the process commands (DP, SP, RP, AP, WP, LP, POK, WES, WER)
-/// and AXD pass like in normal operation.
+/// and AXD pass like in normal operation. With an AxisTransfer attached, GAX
+/// and FAX also post their request there and ask for a hold after the block
+/// until another process answers (seed 000, 5.4; R-021).
 class RestartOutputFilter : public MachineSink {
   public:
     /// `sps` receives what passes (not owned).
@@ -40,10 +45,29 @@ class RestartOutputFilter : public MachineSink {
     std::uint64_t passedCount() const { return passed_; }
     void resetCounters() { suppressed_ = passed_ = 0; }
 
+    /// The cell's axis transfer handshake for process `process` (nullptr: GAX
+    /// and FAX do not wait, e.g. a process alone in the CLI). `hold` is called
+    /// when a block posted a request that has not met its partner yet.
+    void setAxisTransfer(AxisTransfer* transfer, int process, std::function<void()> hold);
+    /// A GAX / FAX of this process waits for its partner.
+    bool waiting() const;
+    /// "GAX X1" of the first request that still waits ("" when none).
+    std::string waitingFor() const;
+    /// Withdraws the waiting requests (abort, Control reset, a new begin()).
+    void cancelTransfers();
+
   private:
     MachineSink& sps_;
     std::uint64_t suppressed_ = 0;
     std::uint64_t passed_ = 0;
+    struct Pending {
+        AxisTransfer::Ticket ticket;
+        std::string text;  ///< "GAX X1"
+    };
+    AxisTransfer* transfer_ = nullptr;
+    int process_ = 0;
+    std::function<void()> hold_;
+    std::vector<Pending> pending_;
 };
 
 }  // namespace mtc::core

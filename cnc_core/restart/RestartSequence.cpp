@@ -62,6 +62,7 @@ RestartSequence::RestartSequence(ProcessControl& control, SimulatedSps& sps, Int
 
 RestartSequence::~RestartSequence() {
     if (control_.keyHandler() == this) control_.setKeyHandler(nullptr);
+    computing_.cancelTransfers();
     if (liveChanged_) {
         live_.setObserver(nullptr);
         live_.setStopTarget(std::nullopt);
@@ -152,6 +153,7 @@ RestartPhase RestartSequence::advance(std::uint64_t maxBlocks) {
 }
 
 void RestartSequence::advanceComputing(std::uint64_t maxBlocks) {
+    computing_.setSingleBlock(control_.singleBlock());
     const ComputingProgress progress = computing_.advance(maxBlocks);
     switch (progress.status) {
         case ComputingStatus::Stopped:
@@ -171,6 +173,7 @@ void RestartSequence::advanceComputing(std::uint64_t maxBlocks) {
             return;
         case ComputingStatus::Idle:
         case ComputingStatus::Running:
+        case ComputingStatus::Waiting:  // GAX / FAX: the next advance() looks again
             return;
     }
 }
@@ -215,11 +218,34 @@ std::optional<bool> RestartSequence::handleKey(ControlKey key) {
             return changeMode(OperatingMode::Manual);
         case ControlKey::Automatic:
             return changeMode(OperatingMode::Automatic);
-        case ControlKey::ProgramRestart:
         case ControlKey::Repos:
+            return repositionKey();
+        case ControlKey::ProgramRestart:
+        case ControlKey::SingleBlock:  // ProcessControl switches it; advance() reads it
             return std::nullopt;
     }
     return std::nullopt;
+}
+
+bool RestartSequence::reposPhase() const {
+    return signal("SREPOS") == 1 && signal("SCREST") == 0;
+}
+
+bool RestartSequence::repositionKey() {
+    if (!reposPhase()) {
+        control_.setAlarm(
+            "REPOS refused: multi-block retrace is not possible yet (PxxSREPOS = 0, the "
+            "computing process has not reached the target block)");
+        return false;
+    }
+    // The M key sets the GUI flag mREPOS for one SPS scan: the SPS requests
+    // multi-block retrace (PxxCREPOS, rung 4 of seed 000 Fig. 7-14) and resets
+    // the flag again (rung 11). PxxCREPOS is what brings up the screen (rung 6).
+    control_.signalTable().set("mREPOS", 1);
+    sps_.cycle();
+    control_.signalTable().set("mREPOS", 0);
+    react();
+    return signal("CREPOS") == 1;
 }
 
 bool RestartSequence::start() {

@@ -72,6 +72,11 @@ class RestartSequence : public ControlKeyHandler, private AuxObserver {
     /// Control reset would.
     void requestAbort();
 
+    /// The cell's axis transfer handshake for GAX / FAX in the computing
+    /// process (not owned; nullptr = none: they do not wait). R-021.
+    void setAxisTransfer(AxisTransfer* transfer) { computing_.setAxisTransfer(transfer); }
+    /// "GAX X1" while the computing process waits for another process, else "".
+    std::string waitingFor() const { return computing_.filter().waitingFor(); }
     /// Where the restart stands.
     RestartPhase phase() const { return phase_; }
     /// Stop key or M00 / M01: Start continues.
@@ -84,6 +89,9 @@ class RestartSequence : public ControlKeyHandler, private AuxObserver {
     const ComputingProcess& computing() const { return computing_; }
     /// The commanded state at the target (valid from TargetReached on).
     const ReentryPoint& reentry() const { return reentry_; }
+    /// Multi-block retrace is possible and the state is not re-established yet
+    /// (PxxSREPOS = 1, PxxSCREST = 0): from the target block to re-entry.
+    bool reposPhase() const;
     /// Blocks of ADJUST and REPOS interpreted so far.
     std::uint64_t sequenceBlocks() const { return liveBlocks_; }
 
@@ -93,6 +101,7 @@ class RestartSequence : public ControlKeyHandler, private AuxObserver {
     void advanceComputing(std::uint64_t maxBlocks);
     void targetReached();
     bool start();
+    bool repositionKey();
     void stop();
     bool changeMode(OperatingMode mode);
     bool beginAdjust();

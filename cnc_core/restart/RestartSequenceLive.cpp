@@ -71,6 +71,11 @@ bool RestartSequence::handleLive(const RunResult& result) {
                 phase_ = RestartPhase::ManualMode;
                 return false;
             }
+            if (control_.singleBlock() && result.blocksInterpreted > 0) {
+                held_ = true;
+                setSignal("SHOLD", 1);
+                return false;
+            }
             return true;
         case RunStatus::Stopped:
             held_ = true;
@@ -140,6 +145,7 @@ void RestartSequence::resetAll(RestartPhase phase) {
         liveChanged_ = false;
     }
     held_ = false;
+    computing_.cancelTransfers();  // a waiting GAX / FAX is withdrawn
     setSignal("SBPACT", 0);
     setSignal("SREPOS", 0);
     setSignal("SCREST", 0);

@@ -6,7 +6,7 @@
 
 #include <thread>
 
-#include "RestartTestSupport.h"
+#include "RestartStation.h"
 #include "cnc_core/restart/RestartRoute.h"
 #include "cnc_core/restart/RestartSequence.h"
 #include "resources/EmbeddedResources.h"
@@ -16,75 +16,8 @@ namespace {
 using namespace mtc::core;
 using namespace mtc::test;
 
-const char* kMain =
-    "N0001 : T4 S2000 M3 M108\n"
-    "N0002 G0 G54 X10 Y10 Z5\n"
-    "N0003 G1 Z-2 F300\n"
-    "N0004 X50 ;target\n"
-    "N0005 M30\n";
-
-const char* kLibrary =
-    "N0000 M30\n"
-    "N0001 .ADJUST @150=M(2) @151=M(5)\n"
-    "N0002 G53 G0 Z90 ;clear height\n"
-    "N0003 Q9500 ;manual mode\n"
-    "N0004 .REPOS G77 S0 M=@150\n"
-    "N0005 M=@151\n"
-    "N0006 G77 X0 Y0 F2000\n"
-    "N0007 G77 Z0 F1000 RTS\n";
-
-/// A station with control keys, SPS and restart sequence over RestartCell.
-struct Station {
-    explicit Station(int process)
-        : cell(process),
-          control(process),
-          sps(control),
-          sequence(control, sps, cell.live, cell.store, cell.sps) {}
-
-    int signal(const std::string& name) const {
-        return control.signalTable().get(control.signalPrefix() + name);
-    }
-    /// Signal changes since the constructor, "NAME=value".
-    std::vector<std::string> log() const {
-        std::vector<std::string> out;
-        for (const SignalChange& c : control.signalTable().log())
-            out.push_back(c.name + "=" + std::to_string(c.value));
-        return out;
-    }
-    bool accept(const RestartSelection& s) {
-        DiagnosticList d;
-        const bool ok = sequence.accept(s, d, 100'000);
-        EXPECT_FALSE(d.hasErrors()) << diagnosticsText(d);
-        return ok;
-    }
-    RestartPhase runUntilWaiting() {
-        for (int i = 0; i < 100; ++i) {
-            const RestartPhase p = sequence.advance(100'000);
-            if (sequence.held() || (p != RestartPhase::Computing && p != RestartPhase::Adjusting &&
-                                    p != RestartPhase::Repositioning && p != RestartPhase::Active))
-                return p;
-        }
-        ADD_FAILURE() << "the sequence does not come to rest";
-        return sequence.phase();
-    }
-    /// Every signal of the restart is 0 (abort / failure left nothing half-switched).
-    void expectAllRestartSignalsOff() const {
-        for (const char* name :
-             {"SBPACT", "CBPSTR", "SREPOS", "CREPOS", "SCREST", "SHOLD", "SACTIV", "CADV"})
-            EXPECT_EQ(signal(name), 0) << name;
-        EXPECT_EQ(signal("SAUTO") + signal("SMANU"), 1) << "exactly one operating mode";
-        EXPECT_EQ(control.keyHandler(), nullptr);
-        EXPECT_FALSE(sequence.active());
-    }
-
-    RestartCell cell;
-    ProcessControl control;
-    SimulatedSps sps;
-    RestartSequence sequence;
-};
-
 TEST(RestartSequence, SignalsFollowFigure68) {
-    Station mill(0);
+    RestartStation mill(0);
     mill.cell.add(kLibrary, 99);
     mill.cell.add(kMain, 1);
     mill.control.press(ControlKey::ProgramRestart);
@@ -117,7 +50,7 @@ TEST(RestartSequence, SignalsFollowFigure68) {
 }
 
 TEST(RestartSequence, AdjustAndReposMoveFromWhereTheAxesAre) {
-    Station mill(0);
+    RestartStation mill(0);
     mill.cell.add(kLibrary, 99);
     mill.cell.add(kMain, 1);
     mill.cell.live.takeMachinePositions({5, 6, 7});
@@ -146,7 +79,7 @@ TEST(RestartSequence, AdjustAndReposMoveFromWhereTheAxesAre) {
 }
 
 TEST(RestartSequence, AdjustWithoutManualModeFlowsIntoRepos) {
-    Station mill(0);
+    RestartStation mill(0);
     mill.cell.add("N0000 M30\nN0001 .ADJUST @150=1\nN0002 .REPOS G77 X0 Y0 Z0 RTS\n", 99);
     mill.cell.add(kMain, 1);
     ASSERT_TRUE(mill.accept(mill.cell.selection(1, 1, 4)));
@@ -157,7 +90,7 @@ TEST(RestartSequence, AdjustWithoutManualModeFlowsIntoRepos) {
 }
 
 TEST(RestartSequence, AdjustMissingFailsWithEverySignalReset) {
-    Station mill(0);
+    RestartStation mill(0);
     mill.cell.add(kMain, 1);
     DiagnosticList d;
     ASSERT_TRUE(mill.sequence.accept(mill.cell.selection(1, 1, 4), d));
@@ -174,7 +107,7 @@ TEST(RestartSequence, AdjustMissingFailsWithEverySignalReset) {
 }
 
 TEST(RestartSequence, StopThenControlResetDuringTheComputingProcess) {
-    Station mill(0);
+    RestartStation mill(0);
     mill.cell.add(kLibrary, 99);
     mill.cell.add(
         "N0001 @5=5\nN0002 .L @1=@1+1\nN0003 @2=@1-500000 BMI .L\nN0004 @3=1\n"
@@ -197,7 +130,7 @@ TEST(RestartSequence, StopThenControlResetDuringTheComputingProcess) {
 }
 
 TEST(RestartSequence, RequestAbortFromAnotherThread) {
-    Station mill(0);
+    RestartStation mill(0);
     mill.cell.add("N0001 .L @1=@1+1\nN0002 BRA .L\nN0003 @2=1\n", 1);
     DiagnosticList d;
     ASSERT_TRUE(mill.sequence.accept(mill.cell.selection(1, 1, 3), d, ~0ull));
@@ -215,7 +148,7 @@ TEST(RestartSequence, RequestAbortFromAnotherThread) {
 }
 
 TEST(RestartSequence, ControlResetInManualModeAfterAdjust) {
-    Station mill(0);
+    RestartStation mill(0);
     mill.cell.add(kLibrary, 99);
     mill.cell.add(kMain, 1);
     ASSERT_TRUE(mill.accept(mill.cell.selection(1, 1, 4)));
@@ -233,7 +166,7 @@ TEST(RestartSequence, ControlResetInManualModeAfterAdjust) {
 }
 
 TEST(RestartSequence, ProgrammedStopInAdjustHoldsUntilStart) {
-    Station mill(0);
+    RestartStation mill(0);
     mill.cell.add("N0000 M30\nN0001 .ADJUST M0\nN0002 .REPOS G77 X0 Y0 Z0 RTS\n", 99);
     mill.cell.add(kMain, 1);
     ASSERT_TRUE(mill.accept(mill.cell.selection(1, 1, 4)));
@@ -248,7 +181,7 @@ TEST(RestartSequence, ProgrammedStopInAdjustHoldsUntilStart) {
 }
 
 TEST(RestartSequence, TargetInsideASubroutineThatAdjustCallsToo) {
-    Station mill(0);
+    RestartStation mill(0);
     mill.cell.add(
         "N0000 M30\nN0001 .ADJUST BSR .TAP\nN0002 .REPOS G77 X0 Y0 Z0 RTS\n"
         "N0010 .TAP @11=@11+1\nN0011 @12=1\nN0012 RTS\n",
@@ -268,7 +201,7 @@ TEST(RestartSequence, TargetInsideASubroutineThatAdjustCallsToo) {
 }
 
 TEST(RestartSequence, RefusedWhenNotReady) {
-    Station mill(0);
+    RestartStation mill(0);
     mill.cell.add(kMain, 1);
     mill.control.press(ControlKey::Manual);
     DiagnosticList d;
@@ -289,7 +222,7 @@ TEST(RestartSequence, RefusedWhenNotReady) {
 }
 
 TEST(RestartSequence, TargetNotFoundResetsTheSignals) {
-    Station mill(0);
+    RestartStation mill(0);
     mill.cell.add(kLibrary, 99);
     mill.cell.add("N0001 @1=1\nN0002 M30\nN0003 @2=2\n", 1);
     ASSERT_TRUE(mill.accept(mill.cell.selection(1, 1, 3)));
@@ -330,7 +263,7 @@ std::vector<BlockRef> pathTo(const Program& main, std::uint32_t target) {
 /// diagnostic, and REPOS brings the axes back to the re-entry point.
 TEST(RestartSequence, EveryBlockOfTheDemoProgramsIsARestartTarget) {
     for (int process : {0, 1}) {
-        Station station(process);
+        RestartStation station(process);
         const std::string prefix = "programs/N101" + std::to_string(process);
         station.cell.add(std::string(mtc::resources::find(prefix + "099.DAT")), 99);
         const ProgramPtr main =
@@ -338,7 +271,7 @@ TEST(RestartSequence, EveryBlockOfTheDemoProgramsIsARestartTarget) {
         for (std::uint32_t b = 0; b < main->blocks.size(); ++b) {
             if (main->blocks[b].number < 0 || (main->blocks[b].flags & kBlockProgramEnd)) continue;
             SCOPED_TRACE("process " + std::to_string(process) + " target " + main->blockId(b));
-            Station s(process);
+            RestartStation s(process);
             s.cell.store = station.cell.store;
             RestartSelection selection = s.cell.selection(1, 1, main->blocks[b].number);
             selection.path = pathTo(*main, b);

@@ -1,0 +1,88 @@
+#pragma once
+
+// A station for restart-sequence tests: one process of the demo cell with its
+// control keys, simulated SPS and RestartSequence, plus a main program and a
+// program 99 with ADJUST / REPOS used by several test files.
+#include <string>
+#include <vector>
+
+#include "RestartTestSupport.h"
+#include "cnc_core/restart/RestartSequence.h"
+
+namespace mtc::test {
+
+using core::ControlKey;
+using core::DiagnosticList;
+using core::OperatingMode;
+using core::RestartPhase;
+using core::RestartSelection;
+using core::SignalChange;
+
+inline const char* kMain =
+    "N0001 : T4 S2000 M3 M108\n"
+    "N0002 G0 G54 X10 Y10 Z5\n"
+    "N0003 G1 Z-2 F300\n"
+    "N0004 X50 ;target\n"
+    "N0005 M30\n";
+
+inline const char* kLibrary =
+    "N0000 M30\n"
+    "N0001 .ADJUST @150=M(2) @151=M(5)\n"
+    "N0002 G53 G0 Z90 ;clear height\n"
+    "N0003 Q9500 ;manual mode\n"
+    "N0004 .REPOS G77 S0 M=@150\n"
+    "N0005 M=@151\n"
+    "N0006 G77 X0 Y0 F2000\n"
+    "N0007 G77 Z0 F1000 RTS\n";
+
+/// A station with control keys, SPS and restart sequence over RestartCell.
+struct RestartStation {
+    explicit RestartStation(int process)
+        : cell(process),
+          control(process),
+          sps(control),
+          sequence(control, sps, cell.live, cell.store, cell.sps) {}
+
+    int signal(const std::string& name) const {
+        return control.signalTable().get(control.signalPrefix() + name);
+    }
+    /// Signal changes since the constructor, "NAME=value".
+    std::vector<std::string> log() const {
+        std::vector<std::string> out;
+        for (const SignalChange& c : control.signalTable().log())
+            out.push_back(c.name + "=" + std::to_string(c.value));
+        return out;
+    }
+    bool accept(const RestartSelection& s) {
+        DiagnosticList d;
+        const bool ok = sequence.accept(s, d, 100'000);
+        EXPECT_FALSE(d.hasErrors()) << diagnosticsText(d);
+        return ok;
+    }
+    RestartPhase runUntilWaiting() {
+        for (int i = 0; i < 100; ++i) {
+            const RestartPhase p = sequence.advance(100'000);
+            if (sequence.held() || (p != RestartPhase::Computing && p != RestartPhase::Adjusting &&
+                                    p != RestartPhase::Repositioning && p != RestartPhase::Active))
+                return p;
+        }
+        ADD_FAILURE() << "the sequence does not come to rest";
+        return sequence.phase();
+    }
+    /// Every signal of the restart is 0 (abort / failure left nothing half-switched).
+    void expectAllRestartSignalsOff() const {
+        for (const char* name :
+             {"SBPACT", "CBPSTR", "SREPOS", "CREPOS", "SCREST", "SHOLD", "SACTIV", "CADV"})
+            EXPECT_EQ(signal(name), 0) << name;
+        EXPECT_EQ(signal("SAUTO") + signal("SMANU"), 1) << "exactly one operating mode";
+        EXPECT_EQ(control.keyHandler(), nullptr);
+        EXPECT_FALSE(sequence.active());
+    }
+
+    RestartCell cell;
+    core::ProcessControl control;
+    core::SimulatedSps sps;
+    core::RestartSequence sequence;
+};
+
+}  // namespace mtc::test
