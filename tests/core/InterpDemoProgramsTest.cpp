@@ -6,6 +6,7 @@
 #include <map>
 
 #include "InterpTestSupport.h"
+#include "cnc_core/compiler/Compiler.h"
 #include "resources/EmbeddedResources.h"
 
 namespace {
@@ -25,7 +26,17 @@ TEST(InterpDemoPrograms, RunWithoutDiagnostics) {
         const int number = std::stoi(file.substr(5, 3));
         auto& station = stations[process];
         if (!station) station = std::make_unique<Station>(demoCell(), process);
-        ProgramPtr program = station->add(std::string(mtc::resources::find(name)), number);
+        std::string source(mtc::resources::find(name));
+        if (parse(source, number)->usesCompilerKeywords) {  // GNE demos run compiled
+            CompilerOptions options;
+            options.compilerActive = true;
+            options.process = &station->config;
+            options.programNumber = number;
+            const CompileResult compiled = Compiler().compile(source, options);
+            ASSERT_TRUE(compiled.errors.empty()) << name << ": " << compiled.errors[0].message;
+            source = compiled.objectText;
+        }
+        ProgramPtr program = station->add(source, number);
         EXPECT_TRUE(program->diagnostics.empty()) << name << "\n"
                                                   << diagnosticsText(program->diagnostics);
         if (number != 99) mains.emplace_back(process, number);
