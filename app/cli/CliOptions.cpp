@@ -103,6 +103,11 @@ class CommandLineReader {
             if (optionValue(name, inlineValue, hasInline, value)) processValue(value);
         } else if (name == "--max-blocks") {
             if (optionValue(name, inlineValue, hasInline, value)) maxBlocksValue(value);
+        } else if (name == "--user-compiler") {
+            if (optionValue(name, inlineValue, hasInline, value)) o.userCompilers.push_back(value);
+            if (out_.error.empty() && (value.size() < 3 || value[0] < '1' || value[0] > '4' ||
+                                       value[1] != '='))
+                out_.error = "--user-compiler needs SLOT=COMMAND with slot 1..4";
         } else if (name == "-o" || name == "--output") {
             if (optionValue(name, inlineValue, hasInline, value)) o.outputPath = value;
             if (out_.error.empty() && o.outputPath.empty()) out_.error = "-o needs a file";
@@ -176,8 +181,9 @@ class CommandLineReader {
         } else if ((o.command == Command::Check || o.command == Command::Run) &&
                    o.arguments.empty()) {
             out_.error = "'" + o.commandName + "' needs a program (number or file)";
-        } else if (!o.outputPath.empty() && o.command != Command::Compile) {
-            out_.error = "option -o belongs to 'compile'";
+        } else if ((!o.outputPath.empty() || !o.userCompilers.empty()) &&
+                   o.command != Command::Compile) {
+            out_.error = "options -o and --user-compiler belong to 'compile'";
         } else if (o.command == Command::Run && o.arguments.size() > 1) {
             out_.error = "'run' takes exactly one program";
         } else if (o.restartOption && o.command != Command::Restart && o.command != Command::Help &&
@@ -235,10 +241,11 @@ Commands available:
                               elements need --password); --sub N for page 61
                               (1 = M(16), 2 = Q); the value is kept in the
                               data file
-  compile FILE|PROG [-o OUT.NCO]
+  compile FILE|PROG [-o OUT.NCO] [--user-compiler SLOT=COMMAND]...
                               NC compiler (macros, MODF, CF/RD): writes the
                               object file (.NCO), or the error file (.ERR)
-                              on errors (warnings: .NCO and .ERR)
+                              on errors (warnings: .NCO and .ERR); user
+                              compilers 1, 2 run before it, 3, 4 after it
   help                        this text
 
 Global options:

@@ -28,6 +28,7 @@ struct CliOptions {
     std::uint64_t maxBlocks = kDefaultMaxBlocks;
     bool noMotion = false;
     std::string outputPath;  ///< compile: -o OUT.NCO
+    std::vector<std::string> userCompilers;  ///< compile: --user-compiler SLOT=COMMAND
     // restart (CLI-CONTRACT.md):
     std::string target;              ///< --target PATH
     std::uint32_t runs = 1;          ///< --runs K, 1..65536

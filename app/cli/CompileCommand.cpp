@@ -10,6 +10,7 @@
 #include "cnc_core/compiler/Compiler.h"
 #include "cnc_core/compiler/CompilerFiles.h"
 #include "cnc_core/compiler/CompilerText.h"
+#include "cnc_core/compiler/UserCompilers.h"
 
 namespace mtc::cli {
 
@@ -106,11 +107,24 @@ int runCompileCommand(const CliOptions& options) {
     compilerOptions.programNumber = request.number;
     compilerOptions.programName = request.displayName;
     CompileOutcome outcome;
-    outcome.result = core::Compiler().compile(*request.program, compilerOptions);
+    core::UserCompilerSlots slots;
+    for (const std::string& entry : options.userCompilers) {
+        const int slot = entry[0] - '1';
+        (slot < 2 ? slots.before[static_cast<std::size_t>(slot)]
+                  : slots.after[static_cast<std::size_t>(slot - 2)]) = entry.substr(2);
+    }
+    const std::string source = sourcePathOf(options, request);
+    if (slots.empty()) {
+        outcome.result = core::Compiler().compile(*request.program, compilerOptions);
+    } else {
+        const std::size_t slash = source.find_last_of('/');
+        const std::string directory = slash == std::string::npos ? "." : source.substr(0, slash);
+        outcome.result = core::compileWithUserCompilers(core::Compiler(), request.program->source,
+                                                        compilerOptions, slots, directory);
+    }
     for (const core::ObjectLine& line : outcome.result.lineMap)
         if (line.intermediate && line.kind == core::ObjectLineKind::Block)
             ++outcome.intermediateBlocks;
-    const std::string source = sourcePathOf(options, request);
     outcome.objectPath = options.outputPath;
     std::string error;
     if (outcome.objectPath.empty()) {

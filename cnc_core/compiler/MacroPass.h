@@ -24,8 +24,9 @@ class MacroPass : public CompilerPass {
 using MacroTable = std::unordered_map<std::string, std::string>;
 
 /// Replaces every macro name of `table` in `text` (whole words outside the
-/// comment, labels, variables and free texts). Returns true when something
-/// was replaced; `usedName` then names the first macro replaced.
+/// comment, labels, variables and free texts) and puts the result in `out`.
+/// Returns false (and leaves `out` alone) when no macro is used. Also the
+/// function for global macros in an MDI line.
 bool expandMacros(const std::string& text, const MacroTable& table, std::string& out);
 /// First macro name of `table` used in `text`, or "" (for the nesting check).
 std::string findMacroUse(std::string_view text, const MacroTable& table);

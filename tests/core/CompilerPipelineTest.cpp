@@ -11,6 +11,7 @@
 #include "cnc_core/compiler/CompilerFiles.h"
 #include "cnc_core/compiler/CompilerText.h"
 #include "cnc_core/compiler/MacroPass.h"
+#include "cnc_core/compiler/UserCompilers.h"
 #include "cnc_core/language/Parser.h"
 
 using namespace mtc::core;
@@ -275,6 +276,58 @@ TEST(CompilerStatus, BookSaysNThenCOrEAndNAgainAfterAnEdit) {
     EXPECT_EQ(book.status(0, 1, edited, options), CompileStatus::NotCompiled);
     options.compilerActive = false;
     EXPECT_EQ(book.status(0, 1, edited, options), CompileStatus::NotNeeded);
+}
+
+}  // namespace
+
+namespace {
+
+class UserCompilerTest : public ::testing::Test {
+  protected:
+    void SetUp() override {
+        dir_ = std::filesystem::temp_directory_path() / "mtc_user_compiler_test";
+        std::filesystem::remove_all(dir_);
+        std::filesystem::create_directories(dir_);
+    }
+    void TearDown() override { std::filesystem::remove_all(dir_); }
+    std::filesystem::path dir_;
+};
+
+TEST_F(UserCompilerTest, BeforeSeesTheSourceAfterSeesTheObject) {
+    UserCompilerSlots slots;
+    // compiler 1 turns ELLIPSE into a keyword the INDRAMAT compiler knows
+    slots.before[0] = "sh -c 'sed \"s/ELLIPSE/RD2/\" \"$0\" > \"$1\"'";
+    // compiler 4 appends a marker to the compiled block N0002
+    slots.after[1] = "sh -c 'sed \"s/^N0002:0000 .*/& M99/\" \"$0\" > \"$1\"'";
+    CompilerOptions options;
+    options.compilerActive = true;
+    const CompileResult r =
+        compileWithUserCompilers(Compiler(), "N0001 G1 X0 Y0\nN0002 X10 ELLIPSE\nN0003 Y10\n",
+                                 options, slots, dir_.string());
+    ASSERT_EQ(r.status, CompileStatus::Compiled) << (r.errors.empty() ? "" : r.errors[0].message);
+    EXPECT_EQ(objectBlocks(r)[1], "N0002:0000 X8 Y0 M99");
+    EXPECT_EQ(objectBlocks(r)[2], "N0002:0001 G3 X10 Y2 I8 J2");
+    EXPECT_TRUE(r.lineMap[2].intermediate);
+}
+
+TEST_F(UserCompilerTest, ErrorsOfAUserCompilerStopTheChain) {
+    UserCompilerSlots slots;
+    slots.before[1] =
+        "sh -c 'printf \"id\\nN0002:\\$W:0001\\nUnknown ELLIPSE.\\nno such function\\n\" > "
+        "\"$2\"; exit 1'";
+    slots.after[0] = "sh -c 'exit 7'";
+    CompilerOptions options;
+    const CompileResult r = compileWithUserCompilers(Compiler(), "N0001 G1 X0\nN0002 ELLIPSE\n",
+                                                     options, slots, dir_.string());
+    EXPECT_EQ(r.status, CompileStatus::Error);
+    ASSERT_EQ(r.errors.size(), 1u);
+    EXPECT_EQ(r.errors[0].block, "N0002");
+    EXPECT_EQ(r.errors[0].message, "Unknown ELLIPSE.");
+    slots.before[1].clear();
+    const CompileResult failed =
+        compileWithUserCompilers(Compiler(), "N0001 G1 X0\n", options, slots, dir_.string());
+    ASSERT_EQ(codes(failed), std::vector<std::string>{"USER_COMPILER_FAILED"});
+    EXPECT_NE(failed.errors[0].details[0].find("exit status 7"), std::string::npos);
 }
 
 }  // namespace
