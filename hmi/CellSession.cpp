@@ -1,5 +1,8 @@
 #include "hmi/CellSession.h"
 
+#include "cnc_core/afc/AdaptiveFeedControl.h"
+#include "cnc_core/afc/AfcMotion.h"
+#include "cnc_core/afc/AfcTrendRecorder.h"
 #include "cnc_core/interp/Interpreter.h"
 #include "cnc_core/language/Parser.h"
 #include "cnc_core/machine/SimulatedMachine.h"
@@ -12,14 +15,20 @@ namespace mtc::hmi {
 /// Everything one process of the cell runs on.
 struct CellSession::Station {
     Station(const mtc::core::ProcessConfig& config, const mtc::core::ProgramStore& store,
-            const mtc::core::InterpreterServices& services)
+            const mtc::core::InterpreterServices& services, mtc::core::MachineDataStore& data)
         : control(config.index),
+          afc(std::make_shared<mtc::core::AdaptiveFeedControl>(
+              config, data, mtc::core::torqueModelFromConfig(config), &control.signalTable())),
           machine(config),
           interpreter(config, store, machine, services),
           clock(interpreter, machine, control) {
         control.setRunner(&clock);
+        machine.attachAdaptiveFeed(afc.get(), &trend);
+        interpreter.setAdaptiveFeed(afc);
     }
     mtc::core::ProcessControl control;
+    std::shared_ptr<mtc::core::AdaptiveFeedControl> afc;
+    mtc::core::AfcTrendRecorder trend;
     mtc::core::SimulatedMachine machine;
     mtc::core::Interpreter interpreter;
     SimulationClock clock;
@@ -32,7 +41,8 @@ CellSession::CellSession(mtc::core::MachineConfig config, QObject* parent)
     mtc::core::InterpreterServices services;
     services.machineData = machineData_;
     for (int slot = 0; slot < processCount(); ++slot) {
-        stations_.push_back(std::make_unique<Station>(processConfig(slot), store_, services));
+        stations_.push_back(
+            std::make_unique<Station>(processConfig(slot), store_, services, *machineData_));
         connect(&stations_.back()->clock, &SimulationClock::changed, this,
                 [this, slot] { emit processChanged(slot); });
     }
@@ -62,6 +72,14 @@ mtc::core::SimulatedMachine& CellSession::machine(int slot) {
 
 SimulationClock& CellSession::clock(int slot) {
     return stations_.at(static_cast<size_t>(slot))->clock;
+}
+
+mtc::core::AdaptiveFeedControl& CellSession::adaptiveFeed(int slot) {
+    return *stations_.at(static_cast<size_t>(slot))->afc;
+}
+
+const mtc::core::AfcTrendRecorder& CellSession::afcTrend(int slot) const {
+    return stations_.at(static_cast<size_t>(slot))->trend;
 }
 
 int CellSession::slotOfProcess(int process) const {

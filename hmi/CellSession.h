@@ -13,6 +13,8 @@
 #include "cnc_core/program/ProgramStore.h"
 
 namespace mtc::core {
+class AdaptiveFeedControl;
+class AfcTrendRecorder;
 class Interpreter;
 class MachineDataStore;
 class SimulatedMachine;
@@ -42,6 +44,10 @@ class CellSession : public QObject {
     mtc::core::Interpreter& interpreter(int slot);
     mtc::core::SimulatedMachine& machine(int slot);
     SimulationClock& clock(int slot);
+    /// Adaptive feed control of a station (page 30, signals, errors 508-510).
+    mtc::core::AdaptiveFeedControl& adaptiveFeed(int slot);
+    /// The adaptive feed trend the station's simulated machine records.
+    const mtc::core::AfcTrendRecorder& afcTrend(int slot) const;
     const mtc::core::ProgramStore& store() const { return store_; }
 
     /// Parses `text` and stores it as program `number` of the station.

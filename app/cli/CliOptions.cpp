@@ -105,8 +105,8 @@ class CommandLineReader {
             if (optionValue(name, inlineValue, hasInline, value)) maxBlocksValue(value);
         } else if (name == "--user-compiler") {
             if (optionValue(name, inlineValue, hasInline, value)) o.userCompilers.push_back(value);
-            if (out_.error.empty() && (value.size() < 3 || value[0] < '1' || value[0] > '4' ||
-                                       value[1] != '='))
+            if (out_.error.empty() &&
+                (value.size() < 3 || value[0] < '1' || value[0] > '4' || value[1] != '='))
                 out_.error = "--user-compiler needs SLOT=COMMAND with slot 1..4";
         } else if (name == "-o" || name == "--output") {
             if (optionValue(name, inlineValue, hasInline, value)) o.outputPath = value;
@@ -191,7 +191,8 @@ class CommandLineReader {
             out_.error =
                 "options --target, --runs, --from-primary and --adjust belong to 'restart'";
         } else if (o.machineData.given && o.command != Command::MachineData &&
-                   o.command != Command::Help && o.command != Command::Version) {
+                   o.command != Command::Help && o.command != Command::Version &&
+                   !(o.command == Command::Run && o.machineData.onlyDataFile())) {
             out_.error = "options --as, --password, --data and --sub belong to 'md'";
         } else if (o.command == Command::Restart && o.arguments.size() != 1) {
             out_.error = "'restart' takes exactly one program";

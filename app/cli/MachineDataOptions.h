@@ -16,6 +16,10 @@ struct MachineDataOptions {
     /// Takes the value of one of the options above. Returns "" or the usage
     /// error (bad writer, sub not 0..99, empty file or password).
     std::string take(std::string_view name, const std::string& value);
+    /// Only --data was given (what `run` accepts: the file its MTD writes go to).
+    bool onlyDataFile() const {
+        return !dataFile.empty() && writer == "gui" && password.empty() && sub < 0;
+    }
 };
 
 /// True for --as, --password, --data and --sub.

@@ -1,5 +1,10 @@
 #include "cli/MotionOutput.h"
 
+#include <cmath>
+
+#include "cnc_core/afc/AdaptiveFeedControl.h"
+#include "cnc_core/machine/SimulatedMachine.h"
+
 namespace mtc::cli {
 
 namespace {
@@ -34,14 +39,22 @@ const std::string& MotionOutput::axisName(int index) const {
     return names_[static_cast<std::size_t>(index)];
 }
 
+bool MotionOutput::adaptedMotion(const core::Motion& motion) {
+    if (!machine_ || !afc_ || !(afc_->active() || afc_->idleMeasurementRequested())) return false;
+    machine_->motion(motion);
+    return true;
+}
+
 void MotionOutput::motion(const core::Motion& motion) {
     ++motions_;
+    adapted_ = adaptedMotion(motion);
     if (mode_ == MotionMode::Json && json_ != nullptr) writeJson(motion);
     if (mode_ == MotionMode::Text && text_ != nullptr) writeText(motion);
 }
 
-void MotionOutput::auxiliary(const core::AuxOutput&) {
+void MotionOutput::auxiliary(const core::AuxOutput& output) {
     ++auxiliaries_;
+    if (machine_) machine_->auxiliary(output);
 }
 
 void MotionOutput::dwell(const core::SourceLocation&, double seconds) {
@@ -88,6 +101,10 @@ void MotionOutput::writeJson(const core::Motion& m) {
     }
     json.key("feed");
     json.value(m.feed);
+    if (adapted_) {
+        json.key("afc_feed");
+        json.value(machine_->lastMoveFeed());
+    }
     json.endObject();
 }
 
@@ -114,6 +131,10 @@ void MotionOutput::writeText(const core::Motion& m) {
     if (m.type != core::MotionType::Rapid) {
         line_ += " F=";
         JsonWriter::appendNumber(line_, m.feed);
+    }
+    if (adapted_) {
+        line_ += " AFC F=";
+        JsonWriter::appendNumber(line_, std::round(machine_->lastMoveFeed() * 10.0) / 10.0);
     }
     line_ += '\n';
     std::fwrite(line_.data(), 1, line_.size(), text_);

@@ -8,6 +8,11 @@
 #include "cli/JsonWriter.h"
 #include "cnc_core/interp/MachineSink.h"
 
+namespace mtc::core {
+class AdaptiveFeedControl;
+class SimulatedMachine;
+}  // namespace mtc::core
+
 namespace mtc::cli {
 
 /// How `run` reports motion while the program runs.
@@ -26,6 +31,14 @@ class MotionOutput : public core::MachineSink {
     /// Names of the machine axes in Motion::end order; "" leaves an axis out.
     /// Set before the first motion arrives.
     void setAxisNames(std::vector<std::string> names) { names_ = std::move(names); }
+
+    /// Moves under adaptive feed control (G26, or with ITM) also go through
+    /// `machine`, which slows them down; their lines show the feed the axes
+    /// really got ("AFC F=..." / "afc_feed"). Spindle speeds always go there.
+    void attachAdaptiveFeed(core::SimulatedMachine* machine, const core::AdaptiveFeedControl* afc) {
+        machine_ = machine;
+        afc_ = afc;
+    }
 
     void motion(const core::Motion& motion) override;
     void auxiliary(const core::AuxOutput& output) override;
@@ -51,7 +64,12 @@ class MotionOutput : public core::MachineSink {
     const std::string& axisName(int index) const;
     void appendAxisValue(int axis, double value);
 
+    bool adaptedMotion(const core::Motion& motion);
+
     MotionMode mode_;
+    core::SimulatedMachine* machine_ = nullptr;
+    const core::AdaptiveFeedControl* afc_ = nullptr;
+    bool adapted_ = false;  ///< the current motion went through adaptive feed control
     JsonWriter* json_;
     std::FILE* text_;
     std::vector<std::string> names_;  ///< per machine axis; "" = leave out

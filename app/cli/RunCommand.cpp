@@ -12,7 +12,12 @@
 #include "cli/MotionOutput.h"
 #include "cli/ProgramMemory.h"
 #include "cli/StateOutput.h"
+#include "cnc_core/afc/AdaptiveFeedControl.h"
+#include "cnc_core/afc/AfcMotion.h"
 #include "cnc_core/interp/Interpreter.h"
+#include "cnc_core/machine/SimulatedMachine.h"
+#include "cnc_core/machine_data/MachineDataFile.h"
+#include "cnc_core/machine_data/MachineDataStore.h"
 
 namespace mtc::cli {
 
@@ -87,6 +92,79 @@ RunOutcome execute(core::Interpreter& interpreter, const PreparedRun& run, std::
     }
 }
 
+/// The cell's machine data (`--data FILE` loaded when given) and the
+/// adaptive feed control of the process on a simulated machine.
+struct RunCell {
+    RunCell(const PreparedRun& run, const std::string& dataFile)
+        : data(std::make_shared<core::MachineDataStore>(run.setup.machine)),
+          file(dataFile.empty() || dataFile == "-" ? "" : dataFile),
+          machine(*run.process) {}
+
+    /// Loads the data file; its warnings go to `diagnostics`.
+    void load(core::DiagnosticList& diagnostics) {
+        if (file.empty()) return;
+        core::MachineDataLoadResult loaded = core::MachineDataFile(file).load(*data);
+        mayOverwrite = loaded.mayOverwrite;
+        diagnostics.append(loaded.diagnostics);
+        loadedRevision = data->revision();
+    }
+    /// Saves what the program changed (MTD writes, page 30 status).
+    void save(core::DiagnosticList& diagnostics) const {
+        if (file.empty() || data->revision() == loadedRevision) return;
+        std::string reason;
+        if (!mayOverwrite)
+            reason = "the damaged machine data file could not be kept aside";
+        else if (core::MachineDataFile(file).save(*data, reason))
+            return;
+        diagnostics.error("MD_FILE_SAVE", {}, "machine data not saved: " + reason);
+    }
+
+    std::shared_ptr<core::MachineDataStore> data;
+    std::string file;
+    bool mayOverwrite = true;
+    std::uint64_t loadedRevision = 0;
+    core::SimulatedMachine machine;
+    core::SignalTable signals;
+    std::shared_ptr<core::AdaptiveFeedControl> afc;
+};
+
+/// Page 30 status elements and the two signals after a run that used
+/// adaptive feed control (text: one line; JSON: the "afc" object).
+void writeAdaptiveFeed(const RunCell& cell, int process, JsonWriter* json) {
+    if (!cell.afc || !cell.afc->used()) return;
+    static constexpr int kElements[] = {1, 5, 7, 8, 11, 12, 14};
+    static const char* const kNames[] = {"001_active",           "005_idle_torque",
+                                         "007_machining_torque", "008_peak_machining_torque",
+                                         "011_feed_reduction",   "012_peak_feed_reduction",
+                                         "014_stall_torque"};
+    char prefix[8];
+    std::snprintf(prefix, sizeof prefix, "P%02dS", process);
+    const int thmis = cell.signals.get(std::string(prefix) + "THMIS");
+    const int excth = cell.signals.get(std::string(prefix) + "EXCTH");
+    double values[7] = {};
+    for (int i = 0; i < 7; ++i)
+        cell.data->read({30, process, 0, kElements[i]}, values[i]);
+    if (json) {
+        json->key("afc");
+        json->beginObject();
+        for (int i = 0; i < 7; ++i) {
+            json->key(kNames[i]);
+            json->value(values[i]);
+        }
+        json->key("THMIS");
+        json->value(thmis);
+        json->key("EXCTH");
+        json->value(excth);
+        json->endObject();
+        return;
+    }
+    std::printf(
+        "afc: page 30 001=%g 005=%.1f 007=%.1f 008=%.1f 011=%.1f 012=%.1f 014=%.1f %%; "
+        "%sTHMIS=%d %sEXCTH=%d\n",
+        values[0], values[1], values[2], values[3], values[4], values[5], values[6], prefix, thmis,
+        prefix, excth);
+}
+
 /// How the run ended: the interpreter's word, or "not_started" when the
 /// program could not be started (parse errors, selection refused).
 const char* runStatusText(const RunOutcome& outcome) {
@@ -94,7 +172,8 @@ const char* runStatusText(const RunOutcome& outcome) {
 }
 
 void writeJsonTail(JsonWriter& json, const MotionOutput& sink, const RunOutcome& outcome,
-                   const core::DiagnosticList& diagnostics, const StateView& view) {
+                   const core::DiagnosticList& diagnostics, const StateView& view,
+                   const RunCell& cell) {
     if (sink.reportsMotion()) {
         json.key("motion_count");
         json.value(static_cast<long long>(sink.motionCount()));
@@ -110,12 +189,14 @@ void writeJsonTail(JsonWriter& json, const MotionOutput& sink, const RunOutcome&
     json.value(view.state.modal.time);
     json.key("final");
     writeStateJson(json, view);
+    writeAdaptiveFeed(cell, view.process.index, &json);
     json.endObject();
     json.finish();
 }
 
 void writeTextTail(const MotionOutput& sink, const RunOutcome& outcome,
-                   const core::DiagnosticList& diagnostics, const StateView& view) {
+                   const core::DiagnosticList& diagnostics, const StateView& view,
+                   const RunCell& cell) {
     std::fflush(stdout);
     printDiagnosticsText(stdout, diagnostics);
     std::string motions;
@@ -124,6 +205,7 @@ void writeTextTail(const MotionOutput& sink, const RunOutcome& outcome,
                 static_cast<unsigned long long>(outcome.blocks), motions.c_str(),
                 view.state.modal.time);
     printStateText(stdout, view);
+    writeAdaptiveFeed(cell, view.process.index, nullptr);
     std::printf("status: %s\n", diagnostics.hasErrors() ? "error" : "ok");
 }
 
@@ -131,16 +213,16 @@ void writeTextTail(const MotionOutput& sink, const RunOutcome& outcome,
 /// given) or the text summary, with the final state of `interpreter`.
 void writeReport(core::Interpreter& interpreter, const PreparedRun& run, const MotionOutput& sink,
                  const RunOutcome& outcome, const core::DiagnosticList& diagnostics,
-                 JsonWriter* json) {
+                 JsonWriter* json, const RunCell& cell) {
     const Page61Buffers page61 = readPage61(interpreter.machineData(), run.request.process);
     const std::vector<double> positions = programmedPositions(interpreter);
     const std::vector<std::string> names = reportedAxisNames(interpreter);
     const StateView view{
         interpreter.state(), *run.process, interpreter.axes(), page61, names, positions};
     if (json != nullptr) {
-        writeJsonTail(*json, sink, outcome, diagnostics, view);
+        writeJsonTail(*json, sink, outcome, diagnostics, view, cell);
     } else {
-        writeTextTail(sink, outcome, diagnostics, view);
+        writeTextTail(sink, outcome, diagnostics, view, cell);
     }
 }
 
@@ -156,7 +238,18 @@ int runRunCommand(const CliOptions& options) {
                             : options.json   ? MotionMode::Json
                                              : MotionMode::Text;
     MotionOutput sink(mode, &json, stdout);
-    core::Interpreter interpreter(*run.process, run.store, sink);
+    RunCell cell(run, options.machineData.dataFile);
+    core::DiagnosticList diagnostics = run.diagnostics;
+    cell.load(diagnostics);
+    core::InterpreterServices services;
+    services.machineData = cell.data;
+    core::Interpreter interpreter(*run.process, run.store, sink, services);
+    cell.afc = std::make_shared<core::AdaptiveFeedControl>(
+        *run.process, *cell.data, core::torqueModelFromConfig(*run.process), &cell.signals);
+    diagnostics.append(cell.afc->parameterDiagnostics());
+    interpreter.setAdaptiveFeed(cell.afc);
+    cell.machine.attachAdaptiveFeed(cell.afc.get(), nullptr);
+    sink.attachAdaptiveFeed(&cell.machine, cell.afc.get());
     if (interpreter.configurationDiagnostics().hasErrors()) {
         failure.error(
             "CLI_MACHINE_INVALID", {},
@@ -173,13 +266,13 @@ int runRunCommand(const CliOptions& options) {
         json.key("motion");
         json.beginArray();
     }
-    core::DiagnosticList diagnostics = run.diagnostics;
     RunOutcome outcome;
     if (!run.program->diagnostics.hasErrors())
         outcome = execute(interpreter, run, options.maxBlocks, diagnostics);
     if (mode == MotionMode::Json) json.endArray();
 
-    writeReport(interpreter, run, sink, outcome, diagnostics, options.json ? &json : nullptr);
+    cell.save(diagnostics);
+    writeReport(interpreter, run, sink, outcome, diagnostics, options.json ? &json : nullptr, cell);
     return exitCodeFor(false, diagnostics);
 }
 

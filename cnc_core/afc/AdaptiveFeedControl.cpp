@@ -41,6 +41,8 @@ const char* afcStatusCode(AfcStatus status) {
             return "AFC_ERROR_510";
         case AfcStatus::BadPeriod:
             return "AFC_BAD_PERIOD";
+        case AfcStatus::FeedStopped:
+            return "AFC_FEED_STOPPED";
     }
     return "AFC_ERROR";
 }
@@ -130,23 +132,38 @@ AfcStatus AdaptiveFeedControl::checkBlock(const std::vector<int>& gCodes) {
     return AfcStatus::Ok;
 }
 
-AfcStatus AdaptiveFeedControl::switchOn(const std::vector<int>& activeGCodes) {
+AfcStatus AdaptiveFeedControl::checkSwitchOn(const std::vector<int>& activeGCodes,
+                                             std::string& reason) const {
     if (active_) return AfcStatus::Ok;
-    if (!parameters_.available)
-        return refuse(AfcStatus::NotAvailable,
-                      "adaptive feed control is not available (process parameter Bxx.062 = no)");
-    if (error510_)
-        return refuse(AfcStatus::ErrorPending, "error 510 must be cleared first (Clear Error)");
+    if (!parameters_.available) {
+        reason = "adaptive feed control is not available (process parameter Bxx.062 = no)";
+        return AfcStatus::NotAvailable;
+    }
+    if (error510_) {
+        reason = "error 510 must be cleared first (Clear Error)";
+        return AfcStatus::ErrorPending;
+    }
     for (int g : activeGCodes)
-        if (const char* function = incompatibleFunction(g))
-            return refuse(AfcStatus::Incompatible,
-                          std::string("G26 is not possible with ") + function);
+        if (const char* function = incompatibleFunction(g)) {
+            reason = std::string("G26 is not possible with ") + function;
+            return AfcStatus::Incompatible;
+        }
     const int axis =
         element(2) != 0.0 ? static_cast<int>(element(2)) : parameters_.settings.referenceAxis;
-    if (!referenceAxisExists(axis))
-        return refuse(AfcStatus::NoReferenceAxis,
-                      "reference axis " + std::to_string(axis) + " (" + afcAxisName(axis) +
-                          ") is not an axis of process " + std::to_string(process_.index));
+    if (!referenceAxisExists(axis)) {
+        reason = "reference axis " + std::to_string(axis) + " (" + afcAxisName(axis) +
+                 ") is not an axis of process " + std::to_string(process_.index);
+        return AfcStatus::NoReferenceAxis;
+    }
+    return AfcStatus::Ok;
+}
+
+AfcStatus AdaptiveFeedControl::switchOn(const std::vector<int>& activeGCodes) {
+    if (active_) return AfcStatus::Ok;
+    std::string reason;
+    const AfcStatus status = checkSwitchOn(activeGCodes, reason);
+    if (status != AfcStatus::Ok) return refuse(status, std::move(reason));
+    used_ = true;
     if (element(2) == 0.0) copySettingsToPage30(parameters_.settings, store_, process_.index);
     active_ = true;
     reduction_ = peakMachining_ = peakReduction_ = zeroFeedSeconds_ = 0.0;
@@ -174,6 +191,7 @@ void AdaptiveFeedControl::switchOff() {
 
 void AdaptiveFeedControl::programEnd() {
     deactivate();
+    idleRequested_ = false;
     setSignal("THMIS", 0);
     setSignal("EXCTH", 0);
 }
@@ -185,6 +203,28 @@ void AdaptiveFeedControl::controlReset() {
 void AdaptiveFeedControl::clearError() {
     error510_ = false;
     zeroFeedSeconds_ = 0.0;
+    runtimeError_ = AfcStatus::Ok;
+    runtimeMessage_.clear();
+}
+
+void AdaptiveFeedControl::raiseRuntimeError(AfcStatus status, std::string message) {
+    if (runtimeError_ != AfcStatus::Ok) return;  // the first error is the one reported
+    runtimeError_ = status;
+    runtimeMessage_ = std::move(message);
+}
+
+AfcStatus AdaptiveFeedControl::takeRuntimeError(std::string& message) {
+    const AfcStatus status = runtimeError_;
+    message = std::move(runtimeMessage_);
+    runtimeError_ = AfcStatus::Ok;
+    runtimeMessage_.clear();
+    return status;
+}
+
+double AdaptiveFeedControl::takeExtraSeconds() {
+    const double seconds = extraSeconds_;
+    extraSeconds_ = 0.0;
+    return seconds;
 }
 
 AfcStatus AdaptiveFeedControl::measureIdleTorque(double feed, double speedFraction,
@@ -195,6 +235,7 @@ AfcStatus AdaptiveFeedControl::measureIdleTorque(double feed, double speedFracti
     const AfcSettings s = effectiveSettings();
     if (!referenceAxisExists(s.referenceAxis))
         return refuse(AfcStatus::NoReferenceAxis, "ITM: no reference axis in this process");
+    used_ = true;
     const double period = s.measuringPeriodMs / 1000.0;
     if (!speedConstant || feed <= 0.0 || constantSeconds < period)
         return refuse(AfcStatus::Error508,
@@ -221,6 +262,7 @@ AfcStatus AdaptiveFeedControl::recordStallTorque(const std::string& axis, double
                                                  double feedWhileRecording) {
     if (!(periodMs >= 0.0 && periodMs <= 60000.0))
         return refuse(AfcStatus::BadPeriod, "P-7-3651: the period must be 0.0 ... 60000 ms");
+    used_ = true;
     const int samples =
         std::max(1, static_cast<int>(std::lround(periodMs / 1000.0 / kSampleSeconds)));
     double sum = 0.0;
@@ -241,6 +283,7 @@ void AdaptiveFeedControl::raise510() {
     error510_ = true;
     message_ = "error 510: 100% feed reduction " +
                std::string(afcAxisName(effectiveSettings().referenceAxis));
+    raiseRuntimeError(AfcStatus::Error510, message_);
 }
 
 double AdaptiveFeedControl::advance(double dt, double programmedFeed, double speedFraction,
@@ -253,6 +296,8 @@ double AdaptiveFeedControl::advance(double dt, double programmedFeed, double spe
     const double feed = programmedFeed * factor;
     const double actual = model_.actualTorque(feed, speedFraction * factor, engagement);
     const double machining = actual - element(5) - element(14);
+    lastActual_ = actual;
+    lastMachining_ = machining;
     reduction_ =
         std::clamp(reduction_ + s.amplification * (machining - s.limitingTorque) * dt, 0.0, 100.0);
     peakMachining_ = std::max(peakMachining_, machining);
@@ -267,6 +312,33 @@ double AdaptiveFeedControl::advance(double dt, double programmedFeed, double spe
     if (trend_.size() < kTrendLimit)
         trend_.push_back({time_, actual, machining, reduction_, effective});
     return error510_ ? 0.0 : effective;
+}
+
+}  // namespace mtc::core
+
+namespace mtc::core {
+
+void AdaptiveFeedControl::observe(double feed, double speedFraction, double engagement) {
+    lastActual_ = model_.actualTorque(feed, speedFraction, engagement);
+    lastMachining_ = lastActual_ - element(5) - element(14);
+}
+
+AfcTrendSample AdaptiveFeedControl::trendSample(double time, double effectiveFeed) const {
+    const AfcSettings s = effectiveSettings();
+    AfcTrendSample sample;
+    sample.time = time;
+    sample.torqueActual = lastActual_;
+    sample.machiningTorque = lastMachining_;
+    sample.idleTorque = element(5);
+    sample.limitingTorque = s.limitingTorque;
+    sample.minimumTorque = s.minimumTorque;
+    sample.maximumIdleTorque = s.maximumIdleTorque;
+    sample.feedReduction = active_ ? reduction_ : 0.0;
+    sample.peakReduction = peakReduction_;
+    sample.maximumReduction = s.maximumReduction;
+    sample.effectiveFeed = effectiveFeed;
+    sample.active = active_;
+    return sample;
 }
 
 }  // namespace mtc::core

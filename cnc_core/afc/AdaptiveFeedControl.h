@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "cnc_core/afc/AfcSettings.h"
+#include "cnc_core/afc/AfcTrendRecorder.h"
 #include "cnc_core/afc/TorqueModel.h"
 #include "cnc_core/machine/SignalTable.h"
 
@@ -21,6 +22,7 @@ enum class AfcStatus {
     Error509,         ///< idling torque > maximum idling torque
     Error510,         ///< 100 % feed reduction for 20 ms
     BadPeriod,        ///< P-7-3651 period outside 0..60000 ms
+    FeedStopped,      ///< 100 % reduction allowed (013 = 100 %) and the axes stand for too long
 };
 
 /// "AFC_ERROR_510", "AFC_INCOMPATIBLE", ... ("" for Ok).
@@ -59,6 +61,11 @@ class AdaptiveFeedControl {
     /// reference axis of the process, with an incompatible function active,
     /// or while error 510 is pending.
     AfcStatus switchOn(const std::vector<int>& activeGCodes = {});
+    /// What switchOn() would answer, without changing anything; the reason
+    /// of a refusal goes to `reason`.
+    AfcStatus checkSwitchOn(const std::vector<int>& activeGCodes, std::string& reason) const;
+    /// Bxx.062 = yes: the process has adaptive feed control.
+    bool available() const { return parameters_.available; }
     /// G25: 001 = 0, 008 = peak machining torque, 012 = peak feed reduction,
     /// THMIS = 1 if the machining torque never exceeded 009 (not when 009 = 0).
     void switchOff();
@@ -95,7 +102,30 @@ class AdaptiveFeedControl {
     /// the control is off, 0 while error 510 is pending).
     double advance(double dt, double programmedFeed, double speedFraction, double engagement);
 
+    /// An error of the machining (508, 509, 510, feed stopped) for the
+    /// interpreter to report with the block that caused it.
+    void raiseRuntimeError(AfcStatus status, std::string message);
+    /// True while a runtime error waits to be reported.
+    bool runtimeErrorPending() const { return runtimeError_ != AfcStatus::Ok; }
+    /// Hands the waiting runtime error over (status Ok when none); clears it.
+    AfcStatus takeRuntimeError(std::string& message);
+    /// ITM of the block being executed: the machine measures in its next move.
+    void requestIdleMeasurement(bool requested) { idleRequested_ = requested; }
+    bool idleMeasurementRequested() const { return idleRequested_; }
+    /// The machine tells how much longer (s) the last move took than planned.
+    void addExtraSeconds(double seconds) { extraSeconds_ += seconds; }
+    /// Extra seconds since the last call (the interpreter adds them to its clock).
+    double takeExtraSeconds();
+
+    /// One torque sample of the reference axis while G26 is off (the trend
+    /// shows the machining before G26 and the ITM moves too): 011 stays.
+    void observe(double feed, double speedFraction, double engagement);
+    /// The state of the last advance()/observe() as a trend point at `time`.
+    AfcTrendSample trendSample(double time, double effectiveFeed) const;
+
     bool active() const { return active_; }
+    /// G26, ITM or P-7-3651 was executed since construction.
+    bool used() const { return used_; }
     bool errorPending() const { return error510_; }
     double feedReduction() const { return reduction_; }
     /// Text of the last refusal or error.
@@ -126,9 +156,16 @@ class AdaptiveFeedControl {
     double peakMachining_ = 0.0;
     double peakReduction_ = 0.0;
     double zeroFeedSeconds_ = 0.0;
+    double lastActual_ = 0.0;     ///< S-0-0084 of the last cycle
+    double lastMachining_ = 0.0;  ///< 007 of the last cycle
     double time_ = 0.0;
     std::string message_;
     std::vector<AfcSample> trend_;
+    AfcStatus runtimeError_ = AfcStatus::Ok;
+    std::string runtimeMessage_;
+    bool idleRequested_ = false;
+    bool used_ = false;
+    double extraSeconds_ = 0.0;
 };
 
 }  // namespace mtc::core

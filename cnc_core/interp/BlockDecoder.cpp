@@ -1,6 +1,8 @@
 #include "cnc_core/interp/BlockDecoder.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdlib>
 
 #include "cnc_core/interp/ModalGroups.h"
 
@@ -88,6 +90,13 @@ bool BlockDecoder::gWord(const Word& w) const {
                              " cannot share a block");
         in.axisFunction = static_cast<std::uint8_t>(number);
         in.axisFunctionColumn = w.column;
+        return true;
+    }
+    if (info.kind == GKind::AdaptiveFeed) {
+        if (in.adaptiveFeed != 0 && in.adaptiveFeed != number)
+            return error(w, "G_GROUP_CONFLICT", "G25 and G26 cannot share a block");
+        in.adaptiveFeed = static_cast<std::uint8_t>(number);
+        in.adaptiveFeedColumn = w.column;
         return true;
     }
     return badG(w, number, info, -1);
@@ -249,6 +258,14 @@ bool BlockDecoder::jumpWord(const Word& w, std::uint32_t index) const {
 }
 
 bool BlockDecoder::commandWord(const Word& w, std::uint32_t index) const {
+    const std::string_view text = t_.program.text(w.text);
+    if (text == "ITM") {
+        t_.input.idleMeasurement = true;
+        t_.input.idleColumn = w.column;
+        return true;
+    }
+    if (text.substr(0, 3) == "AXD" && text.find("P-7-3651") != std::string_view::npos)
+        return stallRecording(w);
     if (t_.input.commandCount == BlockInput::kMaxCommands)
         return error(w, "TOO_MANY_COMMANDS", "more than 4 commands in one block");
     if (w.flags & kWordNeedsCompiler)
@@ -256,6 +273,47 @@ bool BlockDecoder::commandWord(const Word& w, std::uint32_t index) const {
                      "'" + std::string(t_.program.text(w.text)) +
                          "' is an NC compiler function; compile the program before running it");
     t_.input.commands[static_cast<size_t>(t_.input.commandCount++)] = index;
+    return true;
+}
+
+bool BlockDecoder::stallRecording(const Word& w) const {
+    // "(AXIS:P-7-3651)=VALUE", VALUE a number or @n of this process.
+    const std::string args(t_.program.text(w.args));
+    const auto colon = args.find(':');
+    const auto close = args.find(')');
+    const auto equals = args.find('=');
+    if (args.empty() || args[0] != '(' || colon == std::string::npos ||
+        close == std::string::npos || equals == std::string::npos || colon > close ||
+        close > equals)
+        return error(w, "AXD_SYNTAX",
+                     "stall torque recording is written AXD(axis:P-7-3651)=period");
+    std::string axis = args.substr(1, colon - 1);
+    axis.erase(std::remove(axis.begin(), axis.end(), ' '), axis.end());
+    if (axis == "S") axis = "S1";
+    std::string value = args.substr(equals + 1);
+    value.erase(std::remove(value.begin(), value.end(), ' '), value.end());
+    double period = 0;
+    char* end = nullptr;
+    if (!value.empty() && value[0] == '@') {
+        const long n = std::strtol(value.c_str() + 1, &end, 10);
+        if (*end != '\0' || n < 0 || n >= kVariableCount)
+            return error(w, "AXD_SYNTAX", "the period must be a number or a variable @n");
+        EvaluationError failure;
+        if (!evaluator_.readVariable(-1, static_cast<int>(n), period, failure))
+            return error(w, failure.code, failure.message);
+    } else {
+        period = std::strtod(value.c_str(), &end);
+        if (value.empty() || *end != '\0')
+            return error(w, "AXD_SYNTAX", "the period must be a number or a variable @n");
+    }
+    if (axis.empty() || axis.size() > 3)
+        return error(w, "AXD_SYNTAX", "AXD needs an axis designation before ':'");
+    BlockInput& in = t_.input;
+    in.stallRecording = true;
+    in.stallAxis.fill('\0');
+    std::copy(axis.begin(), axis.end(), in.stallAxis.begin());
+    in.stallPeriodMs = period;
+    in.stallColumn = w.column;
     return true;
 }
 

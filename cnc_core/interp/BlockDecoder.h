@@ -64,6 +64,8 @@ class BlockDecoder {
     bool machineDataAssignment(const Word& w) const;
     bool jumpWord(const Word& w, std::uint32_t index) const;
     bool commandWord(const Word& w, std::uint32_t index) const;
+    /// AXD(axis:P-7-3651)=period into BlockInput::stallRecording.
+    bool stallRecording(const Word& w) const;
 
     // Error paths (cold).
     bool evaluated(const Word& w, double& out) const;

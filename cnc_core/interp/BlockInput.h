@@ -42,6 +42,16 @@ struct BlockInput {
     std::uint8_t axisFunction = 0;
     std::uint16_t axisFunctionColumn = 0;
 
+    /// G25 / G26 programmed (the G number), 0 = none.
+    std::uint8_t adaptiveFeed = 0;
+    std::uint16_t adaptiveFeedColumn = 0;
+    bool idleMeasurement = false;  ///< ITM in the block
+    std::uint16_t idleColumn = 0;
+    /// AXD(axis:P-7-3651)=period: stall torque recording of `stallAxis`.
+    bool stallRecording = false;
+    std::array<char, 4> stallAxis{};  ///< "X", "S1", ... (NUL-terminated)
+    double stallPeriodMs = 0.0;
+    std::uint16_t stallColumn = 0;
     std::uint16_t axisMask = 0;  ///< bit i: machine axis i programmed
     std::array<double, kMaxAxes> axisValue{};
     std::array<std::uint16_t, kMaxAxes> axisColumn{};
@@ -90,6 +100,8 @@ struct BlockInput {
         gMask = 0;
         dwell = speedLimit = false;
         axisFunction = 0;
+        adaptiveFeed = 0;
+        idleMeasurement = stallRecording = false;
         axisMask = 0;
         axisCount = 0;
         repeatedAxisColumn = 0;

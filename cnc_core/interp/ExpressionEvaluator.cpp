@@ -1,5 +1,7 @@
 #include "cnc_core/interp/ExpressionEvaluator.h"
 
+#include "cnc_core/afc/AdaptiveFeedControl.h"
+
 #include <cmath>
 
 namespace mtc::core {
@@ -158,9 +160,25 @@ bool ExpressionEvaluator::evalRead(const Program& program, const ExprNode& n, in
                                 std::to_string(address.element) + ") cannot be read");
             return true;
         }
+        case ExprOp::ReadAXD:
+            return readDriveData(n, value, error);
         default:
             return fail(error, "EXPRESSION_MALFORMED", "unknown expression operator");
     }
+}
+
+bool ExpressionEvaluator::readDriveData(const ExprNode& n, double& value,
+                                        EvaluationError& error) const {
+    std::string axis(1, static_cast<char>(n.index / 10));
+    if (n.index % 10 != 0) axis += static_cast<char>('0' + n.index % 10);
+    if (static_cast<int>(n.value) != 3652)
+        return fail(error, "AXD_NOT_READABLE",
+                    "AXD(" + axis + ":P-7-" + std::to_string(static_cast<int>(n.value)) +
+                        "): only P-7-3652 (measured stall torque) can be read");
+    if (!context_.adaptiveFeed)
+        return fail(error, "AXD_NOT_READABLE", "this process has no drive data to read");
+    value = context_.adaptiveFeed->measuredStallTorque(axis);
+    return true;
 }
 
 bool ExpressionEvaluator::optionalInt(const Program& program, std::int32_t node, int depth,

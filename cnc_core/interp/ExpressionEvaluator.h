@@ -10,6 +10,8 @@
 
 namespace mtc::core {
 
+class AdaptiveFeedControl;
+
 /// Why an evaluation failed: a stable code and a readable message.
 struct EvaluationError {
     std::string code;
@@ -29,9 +31,12 @@ class ExpressionEvaluator {
         const MachineDataProvider* machineData = nullptr;
         const VariableAccess* otherProcesses = nullptr;
         int process = 0;
+        const AdaptiveFeedControl* adaptiveFeed = nullptr;  ///< AXD(axis:P-7-3652)
     };
 
     explicit ExpressionEvaluator(Context context) : context_(context) {}
+    /// Where AXD(axis:P-7-3652) reads the measured stall torque (nullptr = nowhere).
+    void setAdaptiveFeed(const AdaptiveFeedControl* afc) { context_.adaptiveFeed = afc; }
 
     /// Value of node `node` of `program` into `value`. Returns false and
     /// fills `error` on division by zero, a bad variable number, an unknown
@@ -52,6 +57,7 @@ class ExpressionEvaluator {
                     EvaluationError& error) const;
     bool evalRead(const Program& program, const ExprNode& node, int depth, double& value,
                   EvaluationError& error) const;
+    bool readDriveData(const ExprNode& node, double& value, EvaluationError& error) const;
     bool optionalInt(const Program& program, std::int32_t node, int depth, int fallback, int& out,
                      EvaluationError& error) const;
 

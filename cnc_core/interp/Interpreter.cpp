@@ -48,7 +48,8 @@ Interpreter::Interpreter(const ProcessConfig& config, const ProgramStore& progra
       machineData_(ownMachineData(services, config)),
       events_(ownEvents(services)),
       otherProcesses_(services.otherProcesses),
-      evaluator_({&state_, &input_, machineData_.get(), services.otherProcesses, config.index}),
+      evaluator_(
+          {&state_, &input_, machineData_.get(), services.otherProcesses, config.index, nullptr}),
       executor_({&config_, &axes_, &zeroOffsets_, &defaults_, &mGroupOf_, 0.002}),
       programFlow_(programs, config.index, events_.get()) {
     const int plane = config.defaultPlane();
@@ -245,7 +246,8 @@ bool Interpreter::checkedBlock(const Program& program, std::uint32_t index,
     const BlockDecoder decoder(axes_, names_, evaluator_, {program, index, input_, diagnostics});
     return decoder.decode(block_) && executor_.plan(context, input_, state_, plan_) &&
            planFlow(context) &&
-           (input_.mtdCount == 0 && input_.writeCount == 0 ? true : validateMachineData(context));
+           (input_.mtdCount == 0 && input_.writeCount == 0 ? true : validateMachineData(context)) &&
+           (!adaptiveFeedInvolved() || planAdaptiveFeed(context));
 }
 
 bool Interpreter::planFlow(const BlockContext& context) {

@@ -26,6 +26,8 @@
 
 namespace mtc::core {
 
+class AdaptiveFeedControl;
+
 /// Default bound of run(): 10,000,000 interpreted blocks (CLI-CONTRACT.md).
 inline constexpr std::uint64_t kDefaultBlockBudget = 10'000'000;
 
@@ -157,6 +159,12 @@ class Interpreter {
     void setObserver(AuxObserver* observer) { observer_ = observer; }
 
     EventTable& events() { return *events_; }
+    /// Adaptive feed control of this process (G25/G26, ITM, AXD
+    /// P-7-3651/3652). Without one, G26, ITM and P-7-3651 are refused
+    /// (AFC_NOT_AVAILABLE) and G25 does nothing.
+    void setAdaptiveFeed(std::shared_ptr<AdaptiveFeedControl> afc);
+    /// The adaptive feed control of this process, nullptr when none was given.
+    AdaptiveFeedControl* adaptiveFeed() { return afc_.get(); }
     MachineDataProvider& machineData() { return *machineData_; }
     const ProcessAxes& axes() const { return axes_; }
     const ProcessConfig& config() const { return config_; }
@@ -193,6 +201,15 @@ class Interpreter {
     void runCommands(const Program& program, std::uint32_t index);
     Outcome applyFlow(const Program& program, std::uint32_t index);
     void programEnd();
+    /// G25/G26, ITM, AXD P-7-3651 of the block and, while G26 is active,
+    /// the functions that exclude it (InterpreterAfc.cpp).
+    bool planAdaptiveFeed(const BlockContext& context);
+    /// Switches G26/G25, requests ITM, records the stall torque.
+    void commitAdaptiveFeed();
+    /// After the move: a runtime error of adaptive feed control (508, 509,
+    /// 510) becomes an error of this block; the extra time joins the clock.
+    bool adaptiveFeedAfterMotion(const Program& program, DiagnosticList& diagnostics);
+    bool adaptiveFeedInvolved() const;
     void resetBaseSystem();
     void resetModal();
     void rebuildNames() { names_ = AxisNameTable::build(axes_, state_.modal.transformation); }
@@ -211,6 +228,7 @@ class Interpreter {
     std::shared_ptr<MachineDataProvider> machineData_;
     std::shared_ptr<EventTable> events_;
     VariableAccess* otherProcesses_ = nullptr;
+    std::shared_ptr<AdaptiveFeedControl> afc_;
     AuxObserver* observer_ = nullptr;
     InterpreterOptions options_;
     std::optional<StopTarget> target_;

@@ -2,6 +2,7 @@
 // through the sink, program flow) and the program-end / reset rules.
 #include <cmath>
 
+#include "cnc_core/afc/AdaptiveFeedControl.h"
 #include "cnc_core/interp/Interpreter.h"
 
 namespace mtc::core {
@@ -75,7 +76,7 @@ SourceLocation Interpreter::sinkLocation(const Program& program, std::uint32_t /
 }
 
 Interpreter::Outcome Interpreter::commit(const Program& program, std::uint32_t index,
-                                         DiagnosticList& /*diagnostics*/) {
+                                         DiagnosticList& diagnostics) {
     const bool transformationChanged =
         plan_.next.transformation.kind() != state_.modal.transformation.kind();
     const bool motion = plan_.hasMotion && options_.output.motion;
@@ -103,7 +104,10 @@ Interpreter::Outcome Interpreter::commit(const Program& program, std::uint32_t i
     const BlockInput& in = input_;
     if (in.spindleMask != 0 || in.hasTool || in.hasEdge || in.mCount != 0 || in.qCount != 0)
         emitAux(program, index);
+    const bool adaptive = adaptiveFeedInvolved();
+    if (adaptive) commitAdaptiveFeed();
     if (motion) emitMotion(program, index);
+    if (adaptive && !adaptiveFeedAfterMotion(program, diagnostics)) return Outcome::Error;
     if (plan_.dwellSeconds >= 0.0 && options_.output.dwell)
         sink_.dwell(sinkLocation(program, index), plan_.dwellSeconds);
     if (input_.commandCount > 0) runCommands(program, index);
@@ -271,6 +275,7 @@ void Interpreter::programEnd() {
         if (group.number >= 1 && group.number <= 15)
             state_.mGroups[static_cast<size_t>(group.number)] = group.resetValue;
     state_.lastQ = -1;
+    if (afc_) afc_->programEnd();
     state_.reentry.valid = false;
     state_.callStack.clear();
     state_.program = state_.selected;
@@ -282,6 +287,10 @@ void Interpreter::programEnd() {
 void Interpreter::controlReset() {
     if (!state_.selected) state_.selected = state_.program;
     programEnd();
+    if (afc_) {  // Clear Error of the panel is the Control reset key (afc.md AFC-012)
+        afc_->controlReset();
+        afc_->clearError();
+    }
     state_.ended = false;
     target_.reset();
     targetArrivals_ = 0;

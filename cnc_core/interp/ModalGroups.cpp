@@ -67,9 +67,10 @@ GCodeInfo classify(int number) {
         case 96:
         case 97:
             return {GKind::Modal, kGroupSurfaceSpeed};
-        // Named in the seeds, not executed by this simulator (yet):
         case 25:
         case 26:  // adaptive feed control (seed 002)
+            return {GKind::AdaptiveFeed, 0};
+        // Named in the seeds, not executed by this simulator (yet):
         case 33:
         case 63:
         case 64:

@@ -36,6 +36,7 @@ enum class GKind : std::uint8_t {
     Dwell,         ///< G4 (non-modal, time in F)
     SpeedLimit,    ///< G92 (non-modal, S words are limits)
     AxisFunction,  ///< G74 homing, G75 hard stop, G77 REPOS (non-modal, act on the axis words)
+    AdaptiveFeed,  ///< G25 off / G26 on: adaptive feed control (state kept by AdaptiveFeedControl)
 };
 
 struct GCodeInfo {

@@ -138,6 +138,7 @@ std::int32_t ExpressionParser::parseRead(std::string_view name, std::uint32_t of
         return parseParenthesized(name == "M" ? ExprOp::ReadM : ExprOp::ReadG, offset, depth);
     }
     if (name == "MTD") return parseMtdArguments(offset, depth + 1);
+    if (name == "AXD") return parseAxdRead(offset);
     if (name == "T") {
         node.op = ExprOp::ReadT;
     } else if (name == "E") {
@@ -160,6 +161,43 @@ std::int32_t ExpressionParser::parseRead(std::string_view name, std::uint32_t of
     if (Lexer::isDigit(lexer_.peek()) || lexer_.peek() == '.')
         return fail("PARSE_BAD_EXPRESSION", lexer_.position(),
                     "number directly after '" + std::string(name) + "' in an expression");
+    return add(node);
+}
+
+std::int32_t ExpressionParser::parseAxdRead(std::uint32_t offset) {
+    // AXD(X:P-7-3652): axis designation (X..C, S, S1..S3), ':', P-7-<number>.
+    lexer_.skipBlanks();
+    if (lexer_.peek() != '(') return fail("PARSE_BAD_AXD", offset, "AXD needs (axis:parameter)");
+    lexer_.advance();
+    lexer_.skipBlanks();
+    const int letter = lexer_.peek();
+    if (!Lexer::isUpper(letter))
+        return fail("PARSE_BAD_AXD", offset, "AXD: axis designation expected");
+    lexer_.advance();
+    int axisIndex = 0;
+    if (Lexer::isDigit(lexer_.peek())) {
+        axisIndex = lexer_.peek() - '0';
+        lexer_.advance();
+    }
+    if (letter == 'S' && axisIndex == 0) axisIndex = 1;
+    lexer_.skipBlanks();
+    const std::string_view prefix = "P-7-";
+    bool ok = lexer_.peek() == ':';
+    lexer_.advance();
+    lexer_.skipBlanks();
+    for (std::size_t i = 0; ok && i < prefix.size(); ++i, lexer_.advance())
+        ok = lexer_.peek() == prefix[i];
+    int number = 0, digits = 0;
+    for (; ok && Lexer::isDigit(lexer_.peek()) && digits < 6; ++digits, lexer_.advance())
+        number = number * 10 + (lexer_.peek() - '0');
+    lexer_.skipBlanks();
+    if (!ok || digits == 0 || lexer_.peek() != ')')
+        return fail("PARSE_BAD_AXD", offset, "AXD is read as AXD(axis:P-7-nnnn)");
+    lexer_.advance();
+    ExprNode node;
+    node.op = ExprOp::ReadAXD;
+    node.index = letter * 10 + axisIndex;
+    node.value = number;
     return add(node);
 }
 

@@ -42,6 +42,7 @@ class ExpressionParser {
     /// Parses "(a,b,c,d)" after MTD (lexer at the blank or '(') into a
     /// ReadMTD node. Empty arguments are -1; with three arguments the third
     /// is the element (d), with two the second is.
+    std::int32_t parseAxdRead(std::uint32_t offset);
     std::int32_t parseMtdArguments(std::uint32_t keywordOffset, int depth = 0);
     const Error& error() const { return error_; }
 

@@ -44,6 +44,7 @@ constexpr Entry kEntries[] = {
     {"GAX", KeywordClass::Command, kNoJump},
     {"FAX", KeywordClass::Command, kNoJump},
     {"AXD", KeywordClass::Command, kNoJump},
+    {"ITM", KeywordClass::Command, kNoJump},  // idle thrust measurement (seed 002, 3)
     {"ACC", KeywordClass::Command, kNoJump},
     // Process control and synchronisation (seed 000, 5.4), events (seed 001, 6).
     {"DP", KeywordClass::Command, kNoJump},

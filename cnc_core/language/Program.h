@@ -42,6 +42,7 @@ enum class ExprOp : std::uint8_t {
     ReadSPC,   ///< SPC
     ReadTime,  ///< TIME
     ReadMTD,   ///< MTD(a,b,c,d); empty argument = -1 node index
+    ReadAXD,   ///< AXD(axis:P-7-nnnn): axis letter*10+index in `index`, nnnn in `value`
 };
 
 struct ExprNode {

@@ -82,6 +82,9 @@ struct ProcessConfig {
     std::vector<UserDataPage> userPages;
     /// Process parameters by number, e.g. "B004" -> "17", "B058" -> "yes".
     std::map<std::string, std::string> parameters;
+    /// `[process N torque-model]` constants of the simulated reference axis
+    /// of adaptive feed control ("cutting" -> 60, ...); absent keys = defaults.
+    std::map<std::string, double> torqueModel;
     int toolPlaces = 0;                    ///< magazine / turret places
     std::string toolStorage = "magazine";  ///< "magazine" or "turret"
     /// `stock = ...`: the raw part the toolpath view draws (toolpath/Stock.h); "" = none.

@@ -116,6 +116,7 @@ class Reader {
             if (words.size() == 4 && words[2] == "mgroup") return openMGroup(*p, words[3]);
             if (words.size() == 3 && words[2] == "tools") return openTools(*p);
             if (words.size() == 3 && words[2] == "zero-offsets") return openZeroOffsets(*p);
+            if (words.size() == 3 && words[2] == "torque-model") return openTorqueModel(*p);
             if (words.size() == 4 && words[2] == "page") return openPage(*p, words[3]);
         }
         error("CFG_SECTION", "unknown section");
@@ -242,6 +243,25 @@ class Reader {
                 else
                     g.functions.push_back(m);
             }
+        };
+    }
+
+    /// `[process N torque-model]`: numeric constants of the simulated
+    /// reference axis of adaptive feed control (TorqueModelParameters).
+    void openTorqueModel(ProcessConfig& p) {
+        const int process = p.index;
+        handler_ = [this, process](const std::string& k, const std::string& v) {
+            static const char* const kKeys[] = {
+                "stall",    "friction_rest", "friction_max", "cutting", "reference_feed",
+                "exponent", "load",          "noise",        "seed",    "engagement"};
+            bool known = false;
+            for (const char* key : kKeys)
+                known = known || k == key;
+            double value = 0;
+            if (!known) return error("CFG_TORQUE_MODEL", "unknown torque model key '" + k + "'");
+            if (!parseDouble(v, value) || value < -1000 || value > 1e9)
+                return error("CFG_TORQUE_MODEL", "torque model '" + k + "' needs a number");
+            r_.config.processes[indexOf(process)].torqueModel[k] = value;
         };
     }
 

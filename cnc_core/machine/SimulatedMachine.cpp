@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "cnc_core/afc/AfcMotion.h"
+
 namespace mtc::core {
 
 namespace {
@@ -59,13 +61,79 @@ double motionSeconds(const Motion& motion, const ProcessConfig& config) {
 SimulatedMachine::SimulatedMachine(const ProcessConfig& config) : config_(config) {}
 
 void SimulatedMachine::motion(const Motion& m) {
-    seconds_ += motionSeconds(m, config_);
+    const double planned = motionSeconds(m, config_);
+    ++motions_;
+    lastAdapted_ = false;
+    lastFeed_ =
+        m.type == MotionType::Rapid && planned > 0 ? pathLength(m) / planned * 60.0 : m.feed;
+    const bool adaptive = afc_ && afc_->available() && planned > 0 &&
+                          (m.type != MotionType::Rapid || afc_->idleMeasurementRequested());
+    if (adaptive) {
+        seconds_ += adaptiveMove(m, planned);
+        return;
+    }
+    seconds_ += planned;
     for (int i = 0; i < m.axisCount && i < kMaxAxes; ++i)
         position_[i] = m.end[i];
-    ++motions_;
+}
+
+void SimulatedMachine::attachAdaptiveFeed(AdaptiveFeedControl* afc, AfcTrendRecorder* recorder) {
+    afc_ = afc;
+    recorder_ = recorder;
+}
+
+double SimulatedMachine::referenceSpeedFraction(const Motion& m) const {
+    const int significance = afc_->effectiveSettings().referenceAxis;
+    const std::string name = afcAxisName(significance);
+    for (std::size_t i = 0; i < config_.axes.size() && i < kMaxAxes; ++i) {
+        const AxisConfig& axis = config_.axes[i];
+        if (significance >= 10 && axis.kind == AxisKind::Spindle &&
+            axis.spindleIndex == significance - 9)
+            return axis.maxSpeed > 0
+                       ? spindleSpeed_[static_cast<std::size_t>(axis.spindleIndex)] / axis.maxSpeed
+                       : 0.0;
+        if (significance < 10 && axis.name == name) {
+            const double travel = std::abs(m.end[i] - m.start[i]);
+            const double length = pathLength(m);
+            const double feed = length > 0 ? lastFeed_ * travel / length : 0.0;
+            return axis.maxVelocity > 0 ? feed / axis.maxVelocity : 0.0;
+        }
+    }
+    return 0.0;
+}
+
+double SimulatedMachine::accelerationSeconds(const Motion& m, double feed) const {
+    double weakest = 0.0;
+    const int count = std::min<int>(m.axisCount, static_cast<int>(config_.axes.size()));
+    for (int i = 0; i < count; ++i) {
+        const double a = config_.axes[static_cast<std::size_t>(i)].maxAcceleration;
+        if (std::abs(m.end[i] - m.start[i]) > 1e-9 && a > 0 && (weakest == 0.0 || a < weakest))
+            weakest = a;
+    }
+    return weakest > 0 ? feed / 60.0 / weakest : 0.0;
+}
+
+double SimulatedMachine::adaptiveMove(const Motion& m, double planned) {
+    AfcMoveInput move;
+    move.length = pathLength(m);
+    move.feed = m.type == MotionType::Rapid ? lastFeed_ : m.feed;
+    move.plannedSeconds = planned;
+    move.accelerationSeconds = accelerationSeconds(m, lastFeed_);
+    move.speedFraction = referenceSpeedFraction(m);
+    move.engagement = cuttingEngagement(config_);
+    move.feedMove = m.type != MotionType::Rapid;
+    move.startTime = seconds_;
+    const AfcMoveResult result = simulateAfcMove(*afc_, move, recorder_);
+    for (int i = 0; i < m.axisCount && i < kMaxAxes; ++i)
+        position_[i] = m.start[i] + (m.end[i] - m.start[i]) * result.fraction;
+    lastFeed_ = result.meanFeed;
+    lastAdapted_ = result.adapted;
+    return result.seconds;
 }
 
 void SimulatedMachine::auxiliary(const AuxOutput& output) {
+    if (output.type == 'S' && output.spindle >= 1 && output.spindle <= 3)
+        spindleSpeed_[static_cast<std::size_t>(output.spindle)] = std::abs(output.value);
     if (aux_.size() == kAuxKept) aux_.erase(aux_.begin());
     aux_.push_back(output);
 }
@@ -81,6 +149,7 @@ double SimulatedMachine::position(int index) const {
 }
 
 void SimulatedMachine::reset() {
+    if (recorder_) recorder_->clear();  // a new run starts a new trend at time 0
     seconds_ = 0.0;
     motions_ = 0;
     aux_.clear();

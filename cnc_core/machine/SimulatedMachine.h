@@ -8,6 +8,9 @@
 
 namespace mtc::core {
 
+class AdaptiveFeedControl;
+class AfcTrendRecorder;
+
 /// Simulated duration of one move in seconds: feed moves take their path
 /// length (straight line or arc in the plane, plus the helical share of the
 /// other linear axes) at the programmed feed; rapid moves take as long as the
@@ -36,11 +39,32 @@ class SimulatedMachine : public MachineSink {
     std::uint64_t motionCount() const { return motions_; }
     /// The auxiliary functions sent to the SPS, oldest first (last 200 kept).
     const std::vector<AuxOutput>& recentAux() const { return aux_; }
-    /// Clears the clock and the output log; positions stay where they are.
+    /// Clears the clock, the output log and the attached trend recorder;
+    /// positions stay where they are.
     void reset();
 
+    /// Adaptive feed control of this process (not owned; nullptr = none):
+    /// while it is available (Bxx.062) the machine runs ITM and the I
+    /// controller of G26 over the feed moves and fills `recorder` (may be null).
+    void attachAdaptiveFeed(AdaptiveFeedControl* afc, AfcTrendRecorder* recorder);
+    /// Mean path feed of the last move, mm/min (after adaptive feed control).
+    double lastMoveFeed() const { return lastFeed_; }
+    /// The last move was slowed down by G26.
+    bool lastMoveAdapted() const { return lastAdapted_; }
+
   private:
+    /// The move under adaptive feed control; returns its duration and
+    /// sets the positions (short of the end when an error stopped it).
+    double adaptiveMove(const Motion& motion, double planned);
+    double referenceSpeedFraction(const Motion& motion) const;
+    double accelerationSeconds(const Motion& motion, double feed) const;
+
     const ProcessConfig& config_;
+    AdaptiveFeedControl* afc_ = nullptr;
+    AfcTrendRecorder* recorder_ = nullptr;
+    std::array<double, 4> spindleSpeed_{};  ///< last S per spindle 1..3 (rpm)
+    double lastFeed_ = 0.0;
+    bool lastAdapted_ = false;
     std::array<double, kMaxAxes> position_{};
     double seconds_ = 0.0;
     std::uint64_t motions_ = 0;

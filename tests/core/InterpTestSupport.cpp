@@ -144,6 +144,9 @@ std::string stateText(const Interpreter& interpreter) {
 Station::Station(const MachineConfig& cell, int process) : config(*cell.process(process)) {
     sink = std::make_unique<TranscriptSink>(std::vector<std::string>{});
     interpreter = std::make_unique<Interpreter>(config, store, *sink);
+    auto* data = dynamic_cast<MachineDataStore*>(&interpreter->machineData());
+    if (data) afc = std::make_shared<AdaptiveFeedControl>(config, *data);
+    interpreter->setAdaptiveFeed(afc);
     std::vector<std::string> names;
     for (int a = 0; a < interpreter->axes().count(); ++a)
         names.push_back(interpreter->axisName(a));

@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "cnc_core/afc/AdaptiveFeedControl.h"
 #include "cnc_core/interp/Interpreter.h"
 #include "cnc_core/interp/MachineSink.h"
 #include "cnc_core/machine/MachineConfig.h"
@@ -63,6 +64,9 @@ struct Station {
     core::ProgramStore store;
     std::unique_ptr<TranscriptSink> sink;
     std::unique_ptr<core::Interpreter> interpreter;
+    /// Adaptive feed control of the process on the interpreter's machine
+    /// data (G26 switches, no machine slows the moves).
+    std::shared_ptr<core::AdaptiveFeedControl> afc;
 };
 
 /// The codes of all error diagnostics, in order.

@@ -72,6 +72,11 @@ inline std::string describeExpr(const Program& p, std::int32_t index) {
         case ExprOp::ReadMTD:
             return "MTD(" + describeExpr(p, n.a) + "," + describeExpr(p, n.b) + "," +
                    describeExpr(p, n.c) + "," + describeExpr(p, n.d) + ")";
+        case ExprOp::ReadAXD: {
+            std::string axis(1, static_cast<char>(n.index / 10));
+            if (n.index % 10) axis += static_cast<char>('0' + n.index % 10);
+            return "AXD(" + axis + ":P-7-" + std::to_string(static_cast<int>(n.value)) + ")";
+        }
     }
     return "?";
 }
