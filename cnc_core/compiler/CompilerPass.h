@@ -30,8 +30,8 @@ struct CompileBlock {
     bool programEnd = false;        ///< the PROGRAMMENDE block (passes leave it alone)
     std::string prefix;             ///< "/" and/or ":" written before the block number
     std::string text;               ///< the words after the block number, one line
-    std::string sourceLayout;       ///< the unchanged source text after the number,
-                                    ///< continuation lines kept (used while !changed)
+    std::string sourceLayout;       ///< unchanged source text after the number when it has
+                                    ///< continuation lines ("" = as text); used while !changed
 };
 
 using BlockSequence = std::vector<CompileBlock>;

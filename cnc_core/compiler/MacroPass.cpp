@@ -73,6 +73,9 @@ struct Definition {
 /// false when the block has no DEFINE.
 Definition readDefinition(std::string_view text, bool& found, std::size_t& labelEnd) {
     Definition d;
+    found = false;
+    labelEnd = 0;
+    if (text.find("DEFINE") == std::string_view::npos) return d;  // the common case
     std::size_t i = 0;
     while (i < text.size() && text[i] == ' ')
         ++i;

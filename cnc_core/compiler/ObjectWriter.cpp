@@ -78,7 +78,7 @@ bool fits(const std::vector<std::string>& lines) {
 bool sourceLayoutLines(const std::string& lead, const CompileBlock& block,
                        std::vector<std::string>& lines) {
     lines.clear();
-    std::string_view layout(block.sourceLayout);
+    std::string_view layout(block.sourceLayout.empty() ? block.text : block.sourceLayout);
     std::size_t start = 0;
     while (start <= layout.size()) {
         std::size_t end = layout.find('\n', start);
@@ -104,6 +104,11 @@ std::string blockLead(const CompileBlock& block, int number, int sub) {
 ObjectText writeObjectText(const SourceFrame& frame, const BlockSequence& blocks,
                            CompileContext& context) {
     ObjectText out;
+    std::size_t estimate = frame.identification.size() + frame.header.size() + 16;
+    for (const CompileBlock& block : blocks)
+        estimate += block.text.size() + block.prefix.size() + 12;
+    out.text.reserve(estimate);
+    out.lineMap.reserve(blocks.size() + 16);
     auto addLine = [&out](const std::string& line, ObjectLine entry) {
         out.text += line;
         out.text += '\n';

@@ -68,8 +68,9 @@ void splitNumber(const std::string& raw, CompileBlock& block) {
         while (i < raw.size() && raw[i] == ' ')
             ++i;
     }
-    block.sourceLayout = raw.substr(i);
-    block.text = joinContinuationLines(block.sourceLayout);
+    const std::string_view layout = std::string_view(raw).substr(i);
+    block.text = joinContinuationLines(layout);
+    if (layout.find('\n') != std::string_view::npos) block.sourceLayout = std::string(layout);
 }
 
 }  // namespace
