@@ -42,6 +42,7 @@ void ToolpathModel::build(int number) {
     complete_ = false;
     highlighted_.clear();
     highlightProgram_ = -1;
+    currentMove_ = -1;
     if (!built_) {
         geometry_.reset();
         problem_ = number ? QString("Program %1 does not exist.").arg(number)
@@ -140,6 +141,7 @@ void ToolpathModel::setHighlight(int program, std::uint32_t block) {
     highlightBlock_ = block;
     highlighted_ =
         geometry_ ? geometry_->movesOfBlock(program, block) : std::vector<std::uint32_t>{};
+    if (!highlighted_.empty()) currentMove_ = static_cast<long>(highlighted_.front());
     highlightText_.clear();
     if (const auto p = session_->program(slot_, program); p && block < p->blocks.size()) {
         const std::string id = p->blockId(block);
@@ -162,6 +164,7 @@ void ToolpathModel::pick(long move) {
     if (!geometry_ || move < 0 || static_cast<std::size_t>(move) >= geometry_->moves.size()) return;
     const auto& m = geometry_->moves[static_cast<std::size_t>(move)];
     setHighlight(m.program, m.block);
+    currentMove_ = move;
     showInRestartListing(m.program, m.block);
     emit blockPicked(m.program, m.block);
     emit marksChanged();
@@ -169,9 +172,7 @@ void ToolpathModel::pick(long move) {
 
 void ToolpathModel::step(int direction) {
     if (!geometry_ || geometry_->moves.empty()) return;
-    long move = highlighted_.empty() ? -1 : static_cast<long>(highlighted_.front());
-    if (direction > 0 && !highlighted_.empty()) move = static_cast<long>(highlighted_.back());
-    move += direction > 0 ? 1 : -1;
+    const long move = currentMove_ + (direction > 0 ? 1 : -1);
     const long last = static_cast<long>(geometry_->moves.size()) - 1;
     pick(std::max(0L, std::min(move, last)));
 }

@@ -55,7 +55,7 @@ class ToolpathModel : public QObject {
     const mtc::core::Stock& stock() const { return stock_; }
     const ToolpathPalette& palette() const { return palette_; }
     ToolpathMarks marks() const;
-    /// Moves of the highlighted block (empty = none).
+    /// Moves of the highlighted block, every execution of it (empty = none).
     const std::vector<std::uint32_t>& highlighted() const { return highlighted_; }
     /// "P1 N0012 (line 14)" of the highlighted block, or "".
     QString highlightText() const { return highlightText_; }
@@ -67,7 +67,8 @@ class ToolpathModel : public QObject {
     /// block is highlighted and becomes the restart screen's cursor when that
     /// program is displayed there. Out of range: nothing happens.
     void pick(long move);
-    /// Highlights the move after (step +1) or before (-1) the highlighted one.
+    /// Picks the move after (+1) or before (-1) the current move (the one
+    /// picked last, or the first of the highlighted block).
     void step(int direction);
 
   signals:
@@ -101,6 +102,7 @@ class ToolpathModel : public QObject {
     QString highlightText_;
     int highlightProgram_ = -1;
     std::uint32_t highlightBlock_ = 0;
+    long currentMove_ = -1;
 };
 
 }  // namespace mtc::screens

@@ -1,0 +1,153 @@
+// The 3D toolpath view on a real X server (xvfb-run, xcb, Mesa llvmpipe):
+// VTK renders the path (the picture is not blank and shows the colours of
+// the motion types), the highlighted block's colour appears, picking a
+// segment with the mouse selects its block and back, the G32 program shows
+// the developed plane and the wrapped cylinder side by side, and renders
+// are coalesced.
+#include <QLabel>
+#include <QSet>
+
+#include "PanelFixture.h"
+#include "screens/toolpath/ToolpathModel.h"
+#include "screens/toolpath/ToolpathScreen.h"
+#include "screens/toolpath/VtkToolpathCanvas.h"
+
+using mtc::screens::ToolpathScreen;
+using mtc::screens::VtkToolpathCanvas;
+
+namespace {
+
+ToolpathScreen* toolpath(PanelFixture& panel, int slot = 0) {
+    return static_cast<ToolpathScreen*>(panel.window->screen(slot, "toolpath"));
+}
+
+/// Pixels within 40 (sum of channel differences) of `colour`.
+int count(const QImage& image, const QColor& colour) {
+    const QImage rgb = image.convertToFormat(QImage::Format_RGB32);
+    int n = 0;
+    for (int y = 0; y < rgb.height(); ++y)
+        for (int x = 0; x < rgb.width(); ++x) {
+            const QColor c(rgb.pixel(x, y));
+            if (std::abs(c.red() - colour.red()) + std::abs(c.green() - colour.green()) +
+                    std::abs(c.blue() - colour.blue()) <
+                40)
+                ++n;
+        }
+    return n;
+}
+
+int distinctColours(const QImage& image) {
+    QSet<QRgb> seen;
+    const QImage rgb = image.convertToFormat(QImage::Format_RGB32);
+    for (int y = 0; y < rgb.height(); y += 2)
+        for (int x = 0; x < rgb.width(); x += 2)
+            seen.insert(rgb.pixel(x, y));
+    return seen.size();
+}
+
+VtkToolpathCanvas* vtkCanvas(ToolpathScreen* screen) {
+    return qobject_cast<VtkToolpathCanvas*>(screen->canvas());
+}
+
+}  // namespace
+
+class ToolpathGlTest : public QObject {
+    Q_OBJECT
+  private slots:
+    void initTestCase() { useTestSettings(); }
+
+    void vtkViewRendersThePathInItsColours() {
+        PanelFixture panel;
+        panel.session->selectProgram(0, 1);
+        QVERIFY(panel.window->showScreen("toolpath"));
+        ToolpathScreen* screen = toolpath(panel);
+        QVERIFY2(screen->findChild<QWidget*>("toolpathVtkWidget"), "3D view under X");
+        VtkToolpathCanvas* canvas = vtkCanvas(screen);
+        QVERIFY(canvas);
+        const QImage picture = canvas->picture();
+        QVERIFY(picture.width() > 300);
+        QVERIFY2(distinctColours(picture) > 20, "the view is not blank");
+        const auto& palette = screen->model()->palette();
+        QVERIFY(count(picture, palette.feed) > 50);
+        QVERIFY(count(picture, palette.rapid) > 20);
+        QVERIFY(count(picture, palette.highlight) == 0);
+        panel.press(Qt::Key_PageDown);
+        panel.press(Qt::Key_PageDown);
+        QVERIFY(!screen->model()->highlighted().empty());
+        QVERIFY2(count(canvas->picture(), palette.highlight) > 20, "highlighted block shown");
+    }
+
+    void pickingSelectsTheBlockAndTheRestartCursor() {
+        PanelFixture panel;
+        panel.session->selectProgram(0, 1);
+        panel.press(Qt::Key_F1, Qt::ShiftModifier);  // restart screen on program 1
+        panel.window->showScreen("toolpath");
+        ToolpathScreen* screen = toolpath(panel);
+        VtkToolpathCanvas* canvas = vtkCanvas(screen);
+        QVERIFY(canvas);
+        panel.press(Qt::Key_1);  // G17 view from above
+        canvas->renderNow();
+        auto* model = screen->model();
+        const auto& g = *model->geometry();
+        auto* vtkWidget = screen->findChild<QWidget*>("toolpathVtkWidget");
+        int hits = 0;
+        for (long m = 1; m < static_cast<long>(g.moves.size()) && hits < 3; m += 3) {
+            if (g.moves[static_cast<std::size_t>(m)].kind == mtc::core::ToolpathKind::Rapid)
+                continue;
+            const auto at = canvas->positionOfMove(m);
+            if (!at) continue;
+            QTest::mouseClick(vtkWidget, Qt::LeftButton, {}, vtkWidget->mapFrom(canvas, *at));
+            if (model->highlighted().empty()) continue;
+            const auto& picked = g.moves[model->highlighted().front()];
+            if (picked.block != g.moves[static_cast<std::size_t>(m)].block) continue;
+            ++hits;
+        }
+        QVERIFY2(hits >= 2, "clicks on segments select their blocks");
+        // Round trip: the restart cursor (target before Enter) is on the picked block.
+        const auto [first, last] = g.sceneRange(model->highlighted().front());
+        QVERIFY(first < last);
+        const auto expected = g.scene.vertex(g.scene.segmentStart[first]);
+        const auto marks = model->marks();
+        QVERIFY(marks.hasTarget);
+        for (std::size_t i = 0; i < 3; ++i)
+            QCOMPARE(marks.target[i], expected[i]);
+    }
+
+    void cylinderProgramShowsDevelopedPlaneAndCylinder() {
+        PanelFixture panel;
+        panel.window->showStation(1);
+        panel.session->selectProgram(1, 1);
+        panel.window->showScreen("toolpath");
+        ToolpathScreen* screen = toolpath(panel, 1);
+        VtkToolpathCanvas* canvas = vtkCanvas(screen);
+        QVERIFY(canvas);
+        const QImage picture = canvas->picture();
+        const auto& palette = screen->model()->palette();
+        // Both halves show path colours: developed plane left, cylinder right.
+        const QImage left = picture.copy(0, 0, picture.width() / 2, picture.height());
+        const QImage right =
+            picture.copy(picture.width() / 2, 0, picture.width() / 2, picture.height());
+        QVERIFY(count(left, palette.feed) + count(left, palette.arc) > 20);
+        QVERIFY(count(right, palette.feed) + count(right, palette.arc) +
+                    count(right, palette.rapid) >
+                20);
+    }
+
+    void rendersAreCoalescedAndMovingUsesLevelOfDetail() {
+        PanelFixture panel;
+        panel.session->selectProgram(0, 1);
+        panel.window->showScreen("toolpath");
+        VtkToolpathCanvas* canvas = vtkCanvas(toolpath(panel));
+        QVERIFY(canvas);
+        canvas->renderNow();
+        const int before = canvas->renderCount();
+        for (int i = 0; i < 10; ++i)
+            panel.press(Qt::Key_Left);  // ten rotations in one event-loop pass
+        QTRY_VERIFY(canvas->renderCount() > before);
+        QVERIFY(canvas->renderCount() <= before + 10);
+        QTRY_VERIFY(!canvas->showingLevelOfDetail());  // full detail once still
+    }
+};
+
+QTEST_MAIN(ToolpathGlTest)
+#include "test_toolpath_gl.moc"

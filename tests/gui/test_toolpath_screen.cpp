@@ -1,0 +1,159 @@
+// Toolpath screen without OpenGL (offscreen platform, no X server): the
+// screen detects it before creating anything of VTK and shows the 2D view;
+// keys, highlight, picking and the link with the restart screen work there
+// too, and the view exports a PNG. The 3D view is tested in tests/gl.
+#include <QDir>
+#include <QLabel>
+#include <QTemporaryDir>
+
+#include "PanelFixture.h"
+#include "screens/restart/RestartController.h"
+#include "screens/toolpath/ToolpathCanvas.h"
+#include "screens/toolpath/ToolpathModel.h"
+#include "screens/toolpath/ToolpathScreen.h"
+
+using mtc::screens::ToolpathScreen;
+
+namespace {
+
+ToolpathScreen* toolpath(PanelFixture& panel, int slot = 0) {
+    return static_cast<ToolpathScreen*>(panel.window->screen(slot, "toolpath"));
+}
+
+/// Pixels of exactly `colour` in `image`.
+int count(const QImage& image, const QColor& colour) {
+    const QImage rgb = image.convertToFormat(QImage::Format_RGB32);
+    int n = 0;
+    for (int y = 0; y < rgb.height(); ++y)
+        for (int x = 0; x < rgb.width(); ++x)
+            if (QColor(rgb.pixel(x, y)).rgb() == colour.rgb()) ++n;
+    return n;
+}
+
+}  // namespace
+
+class ToolpathScreenTest : public QObject {
+    Q_OBJECT
+  private slots:
+    void initTestCase() { useTestSettings(); }
+
+    void offscreenShowsTheTwoDimensionalViewWithoutAborting() {
+        PanelFixture panel;
+        panel.session->selectProgram(0, 1);
+        QVERIFY(panel.window->showScreen("toolpath"));
+        ToolpathScreen* screen = toolpath(panel);
+        QVERIFY(screen->findChild<QWidget*>("toolpathPainter"));
+        QVERIFY(!screen->findChild<QWidget*>("toolpathVtkWidget"));
+        QVERIFY(!screen->canvas()->threeD());
+        QVERIFY(screen->findChild<QLabel*>("toolpathMessage")->text().contains("offscreen"));
+        QString reason;
+        QVERIFY(!mtc::screens::openGlAvailable(reason));
+        QVERIFY(reason.contains("offscreen"));
+        QTRY_VERIFY(screen->model()->geometry() != nullptr);
+        QVERIFY(screen->model()->geometry()->scene.segmentCount() > 10);
+        QVERIFY(screen->findChild<QLabel*>("toolpathSummary")->text().startsWith("P1"));
+        const QImage picture = screen->canvas()->picture();
+        const auto& palette = screen->model()->palette();
+        QVERIFY(count(picture, palette.feed) > 50);
+        QVERIFY(count(picture, palette.rapid) > 10);
+    }
+
+    void keysMoveTheHighlightAndTheViewAndPickingSelectsTheBlock() {
+        PanelFixture panel;
+        panel.session->selectProgram(0, 1);
+        panel.window->showScreen("toolpath");
+        ToolpathScreen* screen = toolpath(panel);
+        auto* model = screen->model();
+        QVERIFY(model->highlighted().empty());
+        panel.press(Qt::Key_PageDown);
+        panel.press(Qt::Key_PageDown);
+        const auto& moves = model->highlighted();
+        QVERIFY(std::find(moves.begin(), moves.end(), 1u) != moves.end());
+        QVERIFY(model->highlightText().startsWith("P1 N"));
+        QVERIFY(count(screen->canvas()->picture(), model->palette().highlight) > 0);
+        panel.press(Qt::Key_1);
+        QVERIFY(screen->findChild<QLabel*>("toolpathMessage")->text().contains("G17"));
+        const QImage top = screen->canvas()->picture();
+        panel.press(Qt::Key_4);
+        panel.press(Qt::Key_Left);
+        panel.press(Qt::Key_Plus);
+        panel.press(Qt::Key_Up, Qt::ShiftModifier);
+        QVERIFY(screen->canvas()->picture() != top);
+        // Picking: a click on the middle of a move's first segment selects it.
+        panel.press(Qt::Key_1);
+        const auto& g = *model->geometry();
+        long picked = -1;
+        for (long m = static_cast<long>(g.moves.size()) - 1; m >= 0 && picked < 0; --m) {
+            const auto at = screen->canvas()->positionOfMove(m);
+            if (!at) continue;
+            QTest::mouseClick(screen->canvas(), Qt::LeftButton, {}, *at);
+            if (!model->highlighted().empty()) picked = m;
+        }
+        QVERIFY(picked >= 0);
+        const auto& chosen = g.moves[static_cast<std::size_t>(model->highlighted().front())];
+        QCOMPARE(chosen.block, g.moves[static_cast<std::size_t>(picked)].block);
+    }
+
+    void restartCursorAndToolpathFollowEachOther() {
+        PanelFixture panel;
+        panel.session->selectProgram(0, 1);
+        panel.press(Qt::Key_F1, Qt::ShiftModifier);  // M key: NC program restart
+        QCOMPARE(panel.window->currentScreenName(), QString("restart"));
+        for (int i = 0; i < 6; ++i)
+            panel.press(Qt::Key_Down);  // N0006 Z2
+        panel.window->showScreen("toolpath");
+        ToolpathScreen* screen = toolpath(panel);
+        auto* model = screen->model();
+        const std::uint32_t cursor = 6;
+        QVERIFY(!model->highlighted().empty());
+        QCOMPARE(model->geometry()->moves[model->highlighted().front()].block, cursor);
+        QVERIFY(model->marks().hasTarget);
+        QVERIFY(model->marks().hasStart);
+        // PgDn in the toolpath moves the restart cursor to the next move's block.
+        panel.press(Qt::Key_PageDown);
+        const auto next = model->geometry()->moves[model->highlighted().front()].block;
+        QVERIFY(next > cursor);
+        // The restart cursor (the target before Enter) moved there too.
+        const auto& g = *model->geometry();
+        const auto [first, last] = g.sceneRange(model->highlighted().front());
+        QVERIFY(first < last);
+        const auto expected = g.scene.vertex(g.scene.segmentStart[first]);
+        const auto marks = model->marks();
+        QVERIFY(marks.hasTarget);
+        for (int i = 0; i < 3; ++i)
+            QCOMPARE(marks.target[static_cast<std::size_t>(i)],
+                     expected[static_cast<std::size_t>(i)]);
+    }
+
+    void exportWritesAPngFile() {
+        PanelFixture panel;
+        panel.session->selectProgram(0, 1);
+        panel.window->showScreen("toolpath");
+        QTemporaryDir dir;
+        const QString path = dir.filePath("view.png");
+        QVERIFY(toolpath(panel)->exportPng(path));
+        QImage image(path);
+        QVERIFY(!image.isNull());
+        QVERIFY(image.width() > 100);
+        QVERIFY(!toolpath(panel)->exportPng(dir.filePath("missing/dir/view.png")));
+        QVERIFY(
+            toolpath(panel)->findChild<QLabel*>("toolpathMessage")->text().contains("not written"));
+    }
+
+    void latheGrooveShowsDevelopedPlaneAndCylinder() {
+        PanelFixture panel;
+        panel.window->showStation(1);
+        panel.session->selectProgram(1, 1);
+        panel.window->showScreen("toolpath");
+        ToolpathScreen* screen = toolpath(panel, 1);
+        const auto g = screen->model()->geometry();
+        QVERIFY(g);
+        QVERIFY(g->developed.segmentCount() > 0);
+        QVERIFY(g->cylinderRadius > 0);
+        QVERIFY(screen->model()->summary().contains("developed plane"));
+        QVERIFY(screen->model()->stock().shape == mtc::core::Stock::Shape::Cylinder);
+    }
+};
+
+QTEST_MAIN(ToolpathScreenTest)
+#include "test_toolpath_screen.moc"
