@@ -61,6 +61,11 @@ class CellSession : public QObject {
     int slotOfProcess(int process) const;
     /// The program store, for loaders filling it before the panel starts.
     mtc::core::ProgramStore& mutableStore() { return store_; }
+    /// Directory the station programs were loaded from ("" = built-in demo
+    /// programs: the editor and the compiler write no files for them).
+    const QString& programDirectory() const { return programDirectory_; }
+    /// Sets the directory programs are saved to (with .NCO/.ERR beside them).
+    void setProgramDirectory(const QString& directory) { programDirectory_ = directory; }
 
     /// Sends a machine control key to a station and announces the change.
     bool pressKey(int slot, mtc::core::ControlKey key);
@@ -96,6 +101,7 @@ class CellSession : public QObject {
     mtc::core::AxisTransfer axisTransfer_;
     std::shared_ptr<mtc::core::MachineDataStore> machineData_;
     QString machineDataFile_;
+    QString programDirectory_;
     bool machineDataWritable_ = true;
     QStringList machineDataMessages_;
     std::vector<std::unique_ptr<Station>> stations_;

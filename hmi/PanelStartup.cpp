@@ -87,6 +87,7 @@ std::unique_ptr<CellSession> createSession(const PanelOptions& options, QString&
             return nullptr;
         }
         loader.loadDirectory(options.programsDir.toStdString());
+        session->setProgramDirectory(options.programsDir);
     }
     reportLoaderProblems(loader.diagnostics());
     openMachineData(options, *session);

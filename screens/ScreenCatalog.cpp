@@ -3,6 +3,9 @@
 #include <memory>
 
 #include "hmi/ScreenRegistry.h"
+#include "screens/editor/EditorScreen.h"
+#include "screens/editor/ProgramWorkspaces.h"
+#include "screens/errors/ErrorsScreen.h"
 #include "screens/help/HelpScreen.h"
 #include "screens/machine_data/MachineDataScreen.h"
 #include "screens/menu/MenuScreen.h"
@@ -11,6 +14,7 @@
 #include "screens/restart/RestartControllers.h"
 #include "screens/restart/RestartResultScreen.h"
 #include "screens/restart/RestartScreen.h"
+#include "screens/runtime/RuntimeScreen.h"
 #include "screens/signals/SignalsScreen.h"
 #include "screens/toolpath/ToolpathScreen.h"
 
@@ -20,8 +24,28 @@ void registerAllScreens(mtc::hmi::ScreenRegistry& registry) {
     using mtc::hmi::ScreenContext;
     registry.add("menu", "Main menu",
                  [&registry](const ScreenContext& c) { return new MenuScreen(c, &registry); });
-    registry.add("programs", "Program directory",
-                 [](const ScreenContext& c) { return new ProgramsScreen(c); });
+    // Program directory, editor, error window and runtime view of a station
+    // share one workspace (compile status, error log, program in the editor).
+    auto programming = std::make_shared<ProgramWorkspaces>();
+    auto restart = std::make_shared<RestartControllers>();
+    registry.add("programs", "Program directory", [programming](const ScreenContext& c) {
+        return new ProgramsScreen(c, programming->forStation(c));
+    });
+    registry.add(
+        "editor", "Program editor",
+        [programming](const ScreenContext& c) {
+            return new EditorScreen(c, programming->forStation(c));
+        },
+        false);
+    registry.add("errors", "Error display", [programming, restart](const ScreenContext& c) {
+        return new ErrorsScreen(c, programming->forStation(c), restart->forStation(c));
+    });
+    registry.add(
+        "runtime", "Runtime program",
+        [programming](const ScreenContext& c) {
+            return new RuntimeScreen(c, programming->forStation(c));
+        },
+        false);
     registry.add("signals", "Interface signals",
                  [](const ScreenContext& c) { return new SignalsScreen(c); });
     registry.add("machine-data", "Machine data",
@@ -30,7 +54,6 @@ void registerAllScreens(mtc::hmi::ScreenRegistry& registry) {
                  [](const ScreenContext& c) { return new HelpScreen(c); });
     // The restart screens of a station share one controller (selection,
     // computing process, result).
-    auto restart = std::make_shared<RestartControllers>();
     registry.add("restart", "NC program restart", [restart](const ScreenContext& c) {
         return new RestartScreen(c, restart->forStation(c));
     });

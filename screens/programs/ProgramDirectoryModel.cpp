@@ -1,12 +1,14 @@
 #include "screens/programs/ProgramDirectoryModel.h"
 
 #include "hmi/CellSession.h"
+#include "hmi/ProgramWorkspace.h"
 
 namespace mtc::screens {
 
 ProgramDirectoryModel::ProgramDirectoryModel(mtc::hmi::CellSession* session, int slot,
+                                             const mtc::hmi::ProgramWorkspace* workspace,
                                              QObject* parent)
-    : QAbstractListModel(parent), session_(session), slot_(slot) {
+    : QAbstractListModel(parent), session_(session), slot_(slot), workspace_(workspace) {
     reload();
 }
 
@@ -28,9 +30,12 @@ QVariant ProgramDirectoryModel::data(const QModelIndex& index, int role) const {
     if (!program) return {};
     if (role == Qt::DisplayRole) {
         const bool selected = session_->control(slot_).selectedProgram() == program->number;
-        return QString("%1 %2  %3")
+        const char status =
+            workspace_ ? mtc::core::statusLetter(workspace_->status(program->number)) : ' ';
+        return QString("%1 %2 [%3] %4")
             .arg(selected ? "→" : " ")
             .arg(program->number, 3, 10, QChar('0'))
+            .arg(QChar(status))
             .arg(QString::fromStdString(program->name));
     }
     if (role == Qt::UserRole) return program->number;

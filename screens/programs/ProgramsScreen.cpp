@@ -3,16 +3,21 @@
 #include <QFontDatabase>
 #include <QHBoxLayout>
 #include <QKeyEvent>
+#include <QLabel>
 #include <QListView>
 #include <QPlainTextEdit>
+#include <QVBoxLayout>
 
 #include "hmi/CellSession.h"
+#include "hmi/ProgramWorkspace.h"
 #include "screens/programs/ProgramDirectoryModel.h"
 
 namespace mtc::screens {
 
-ProgramsScreen::ProgramsScreen(const mtc::hmi::ScreenContext& context) : Screen(context) {
-    model_ = new ProgramDirectoryModel(context.session, context.process, this);
+ProgramsScreen::ProgramsScreen(const mtc::hmi::ScreenContext& context,
+                               std::shared_ptr<mtc::hmi::ProgramWorkspace> workspace)
+    : Screen(context), workspace_(std::move(workspace)) {
+    model_ = new ProgramDirectoryModel(context.session, context.process, workspace_.get(), this);
     list_ = new QListView(this);
     list_->setObjectName("programList");
     list_->setModel(model_);
@@ -23,15 +28,22 @@ ProgramsScreen::ProgramsScreen(const mtc::hmi::ScreenContext& context) : Screen(
     listing_->setFocusPolicy(Qt::NoFocus);
     listing_->setFont(QFontDatabase::systemFont(QFontDatabase::FixedFont));
     listing_->setLineWrapMode(QPlainTextEdit::NoWrap);
-    auto* layout = new QHBoxLayout(this);
-    layout->addWidget(list_, 1);
-    layout->addWidget(listing_, 3);
+    message_ = new QLabel(this);
+    message_->setObjectName("programsMessage");
+    auto* columns = new QHBoxLayout;
+    columns->addWidget(list_, 1);
+    columns->addWidget(listing_, 3);
+    auto* layout = new QVBoxLayout(this);
+    layout->addLayout(columns, 1);
+    layout->addWidget(message_);
     setFocusProxy(list_);
     connect(list_->selectionModel(), &QItemSelectionModel::currentChanged, this,
             [this] { showListing(); });
     connect(context.session, &mtc::hmi::CellSession::processChanged, this, [this](int slot) {
         if (slot == this->context().process) list_->viewport()->update();
     });
+    connect(workspace_.get(), &mtc::hmi::ProgramWorkspace::programChanged, this,
+            [this] { list_->viewport()->update(); });
 }
 
 void ProgramsScreen::activated() {
@@ -51,9 +63,42 @@ void ProgramsScreen::showListing() {
     listing_->setPlainText(program ? QString::fromStdString(program->source) : QString());
 }
 
+int ProgramsScreen::currentNumber() const {
+    return model_->programAt(list_->currentIndex().row());
+}
+
 void ProgramsScreen::selectCurrent() {
-    const int number = model_->programAt(list_->currentIndex().row());
+    const int number = currentNumber();
     if (number != 0) context().session->selectProgram(context().process, number);
+}
+
+void ProgramsScreen::editCurrent() {
+    const int number = currentNumber();
+    if (number == 0) return;
+    workspace_->requestEdit(number, 0);
+    emit navigateTo("editor");
+}
+
+void ProgramsScreen::compileCurrent() {
+    const int number = currentNumber();
+    if (number == 0) return;
+    QString error;
+    if (!workspace_->compile(number, error)) {
+        message_->setText(error);
+        return;
+    }
+    const auto result = workspace_->lastResult(number);
+    message_->setText(QString("Program %1 compiled: status %2, %3 messages")
+                          .arg(number)
+                          .arg(QChar(mtc::core::statusLetter(workspace_->status(number))))
+                          .arg(result ? int(result->errors.size()) : 0));
+}
+
+void ProgramsScreen::toggleCompiler() {
+    workspace_->setCompilerActive(!workspace_->compilerActive());
+    message_->setText(QString("NC options: Compiler active = %1")
+                          .arg(workspace_->compilerActive() ? "Yes" : "No"));
+    emit softKeysChanged();
 }
 
 bool ProgramsScreen::eventFilter(QObject* watched, QEvent* event) {
@@ -70,6 +115,16 @@ bool ProgramsScreen::eventFilter(QObject* watched, QEvent* event) {
 mtc::hmi::SoftKeys ProgramsScreen::softKeys() {
     mtc::hmi::SoftKeys keys(8);
     keys[0] = {"Select\nprogram", [this] { selectCurrent(); }};
+    keys[1] = {"Edit", [this] { editCurrent(); }};
+    // Seed 001 ch. 7: <Compile> only while "Compiler active" is Yes.
+    keys[2] = {"Compile", [this] { compileCurrent(); }, workspace_->compilerActive()};
+    keys[3] = {"Runtime\nprogram", [this] {
+                   workspace_->requestEdit(currentNumber(), 0);
+                   emit navigateTo("runtime");
+               }};
+    keys[4] = {"Error\ndisplay", [this] { emit navigateTo("errors"); }};
+    keys[5] = {workspace_->compilerActive() ? "Compiler\nactive: Yes" : "Compiler\nactive: No",
+               [this] { toggleCompiler(); }};
     keys[7] = {"Back", [this] { emit navigateTo("menu"); }};
     return keys;
 }

@@ -1,20 +1,30 @@
 #pragma once
 
+#include <memory>
+
 #include "hmi/Screen.h"
 
+class QLabel;
 class QListView;
 class QPlainTextEdit;
+
+namespace mtc::hmi {
+class ProgramWorkspace;
+}
 
 namespace mtc::screens {
 
 class ProgramDirectoryModel;
 
-/// Program directory of a station: the programs in memory, the listing of
-/// the one under the cursor, and selection of the program to run (Enter/F1).
+/// Program directory of a station: the programs in memory with their
+/// compiler status bit (N/C/E, seed 001 ch. 7), the listing of the one under
+/// the cursor, selection of the program to run (Enter/F1), opening it in the
+/// editor, <Compile> and the NC option "Compiler active".
 class ProgramsScreen : public mtc::hmi::Screen {
     Q_OBJECT
   public:
-    explicit ProgramsScreen(const mtc::hmi::ScreenContext& context);
+    ProgramsScreen(const mtc::hmi::ScreenContext& context,
+                   std::shared_ptr<mtc::hmi::ProgramWorkspace> workspace);
     QString screenName() const override { return "programs"; }
     QString title() const override { return "Program directory"; }
     mtc::hmi::SoftKeys softKeys() override;
@@ -26,6 +36,13 @@ class ProgramsScreen : public mtc::hmi::Screen {
   private:
     void selectCurrent();
     void showListing();
+    void editCurrent();
+    void compileCurrent();
+    void toggleCompiler();
+    int currentNumber() const;
+
+    std::shared_ptr<mtc::hmi::ProgramWorkspace> workspace_;
+    QLabel* message_;
 
     ProgramDirectoryModel* model_;
     QListView* list_;

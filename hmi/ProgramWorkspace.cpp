@@ -1,0 +1,281 @@
+#include "hmi/ProgramWorkspace.h"
+
+#include <QDateTime>
+#include <QDir>
+#include <QFile>
+#include <QFileInfo>
+#include <QRegularExpression>
+
+#include "cnc_core/compiler/CompilerFiles.h"
+#include "cnc_core/compiler/lookahead/LookAheadPass.h"
+#include "cnc_core/program/AtomicWrite.h"
+#include "hmi/CellSession.h"
+
+namespace mtc::hmi {
+
+using mtc::core::CompileStatus;
+
+namespace {
+
+/// The standard passes, with a look-ahead pass that hands its analysis
+/// (the velocity profile) to `capture`.
+mtc::core::CompilerPassList passesCapturing(
+    const std::shared_ptr<mtc::core::lookahead::LookAheadAnalysis>& capture) {
+    mtc::core::CompilerPassList passes = mtc::core::standardCompilerPasses();
+    for (auto& pass : passes)
+        if (pass->name() == "look-ahead")
+            pass = std::make_shared<mtc::core::lookahead::LookAheadPass>(
+                mtc::core::lookahead::LookAheadDefaults{}, capture);
+    return passes;
+}
+
+}  // namespace
+
+ProgramWorkspace::ProgramWorkspace(CellSession* session, int slot, QObject* parent)
+    : QObject(parent),
+      session_(session),
+      slot_(slot),
+      lookAhead_(std::make_shared<mtc::core::lookahead::LookAheadAnalysis>()),
+      compiler_(passesCapturing(lookAhead_)) {
+    loadErrorFiles();
+    connect(session_, &CellSession::processChanged, this, [this](int changed) {
+        if (changed == slot_) watchRuntime();
+    });
+}
+
+void ProgramWorkspace::setCompilerActive(bool active) {
+    if (active == compilerActive_) return;
+    compilerActive_ = active;
+    // Seed 001 ch. 11: changing the compiler settings clears all objects.
+    for (const auto& program : session_->programs(slot_))
+        clearObjects(program->number);
+    results_.clear();
+    profiles_.clear();
+    status_.clear();
+    emit programChanged(0);
+}
+
+mtc::core::CompilerOptions ProgramWorkspace::compilerOptions(int number) const {
+    mtc::core::CompilerOptions options;
+    options.compilerActive = compilerActive_;
+    options.process = &session_->processConfig(slot_);
+    options.programNumber = number;
+    if (auto program = session_->program(slot_, number)) options.programName = program->name;
+    return options;
+}
+
+CompileStatus ProgramWorkspace::status(int number) const {
+    const auto program = session_->program(slot_, number);
+    if (!program) return CompileStatus::NotNeeded;
+    mtc::core::CompilerOptions options = compilerOptions(number);
+    options.compilerActive = true;  // the bit says whether it needs compiling
+    if (!mtc::core::needsCompilation(*program, options)) return CompileStatus::NotNeeded;
+    if (status_.contains(number)) return status_.value(number);
+    return statusFromFiles(number);
+}
+
+std::shared_ptr<const mtc::core::CompileResult> ProgramWorkspace::lastResult(int number) const {
+    return results_.value(number);
+}
+
+std::shared_ptr<const mtc::core::CompileResult> ProgramWorkspace::runtimeResult(int number) {
+    if (auto result = results_.value(number)) return result;
+    const auto program = session_->program(slot_, number);
+    if (!program || status(number) != CompileStatus::Compiled) return nullptr;
+    mtc::core::CompilerOptions options = compilerOptions(number);
+    options.compilerActive = true;
+    *lookAhead_ = {};
+    auto result = std::make_shared<mtc::core::CompileResult>(compiler_.compile(*program, options));
+    if (result->status != CompileStatus::Compiled) return nullptr;
+    profiles_[number] = profileFromAnalysis(*lookAhead_);
+    results_[number] = result;
+    return result;
+}
+
+QString ProgramWorkspace::filePath(int number, const QString& extension) const {
+    const QString directory = session_->programDirectory();
+    const auto program = session_->program(slot_, number);
+    if (directory.isEmpty() || !program) return {};
+    const QString dat = QDir(directory).filePath(QString::fromStdString(program->name));
+    if (!QFileInfo::exists(dat)) return {};
+    const QFileInfo info(dat);
+    return info.dir().filePath(info.completeBaseName() + "." + extension);
+}
+
+CompileStatus ProgramWorkspace::statusFromFiles(int number) const {
+    const QString dat = filePath(number, "DAT");
+    if (dat.isEmpty()) return CompileStatus::NotCompiled;
+    const QDateTime source = QFileInfo(dat).lastModified();
+    const QFileInfo error(filePath(number, "ERR"));
+    if (error.exists() && error.lastModified() >= source) return CompileStatus::Error;
+    const QFileInfo object(filePath(number, "NCO"));
+    if (object.exists() && object.lastModified() >= source) return CompileStatus::Compiled;
+    return CompileStatus::NotCompiled;
+}
+
+void ProgramWorkspace::setStatus(int number, CompileStatus status) {
+    status_[number] = status;
+    emit programChanged(number);
+}
+
+void ProgramWorkspace::clearObjects(int number) {
+    for (const QString& extension : {QString("NCO"), QString("ERR")}) {
+        const QString path = filePath(number, extension);
+        if (!path.isEmpty()) QFile::remove(path);
+    }
+    results_.remove(number);
+    profiles_.remove(number);
+}
+
+bool ProgramWorkspace::save(int number, const QString& text, QString& error) {
+    const auto old = session_->program(slot_, number);
+    if (!old) {
+        error = QString("program %1 does not exist").arg(number);
+        return false;
+    }
+    const std::string bytes = text.toStdString();
+    const QString path = filePath(number, "DAT");
+    std::string reason;
+    if (!path.isEmpty() && !mtc::core::writeFileAtomically(path.toStdString(), bytes, reason)) {
+        error = QString("%1 not saved: %2").arg(path, QString::fromStdString(reason));
+        return false;
+    }
+    session_->addProgram(slot_, number, old->name, bytes);
+    clearObjects(number);
+    errors_.setCompilerErrors(number, {});
+    setStatus(number, CompileStatus::NotCompiled);
+    return true;
+}
+
+bool ProgramWorkspace::compile(int number, QString& error) {
+    const auto program = session_->program(slot_, number);
+    if (!program) {
+        error = QString("program %1 does not exist").arg(number);
+        return false;
+    }
+    if (!compilerActive_) {
+        error = "the compiler is not active (NC options: Compiler active = No)";
+        return false;
+    }
+    const mtc::core::CompilerOptions options = compilerOptions(number);
+    if (!mtc::core::needsCompilation(*program, options)) {
+        error = "the program uses no compiler keyword: nothing to compile";
+        return false;
+    }
+    *lookAhead_ = {};
+    auto result = std::make_shared<mtc::core::CompileResult>(compiler_.compile(*program, options));
+    profiles_[number] = profileFromAnalysis(*lookAhead_);
+    QVector<ErrorEntry> entries;
+    for (const auto& e : result->errors)
+        entries.push_back(entryFromCompilerError(e));
+    errors_.setCompilerErrors(number, entries);
+    writeCompileFiles(number, *result);
+    results_[number] = result;
+    setStatus(number, result->status == CompileStatus::Compiled ? CompileStatus::Compiled
+                                                                : CompileStatus::Error);
+    return true;
+}
+
+void ProgramWorkspace::writeCompileFiles(int number, const mtc::core::CompileResult& result) {
+    const QString source = filePath(number, "DAT");
+    if (source.isEmpty()) return;  // a program without file (built-in demo)
+    std::string errorPath;
+    std::string reason;
+    if (mtc::core::writeCompileFiles(source.toStdString(), "", result, errorPath, reason)) return;
+    ErrorEntry entry;
+    entry.program = number;
+    entry.code = "FILE_WRITE";
+    entry.message = "Compile files not written";
+    entry.details << QString::fromStdString(reason);
+    errors_.add(entry);
+}
+
+int ProgramWorkspace::sourceLineOf(int number, const QString& block) const {
+    const auto program = session_->program(slot_, number);
+    if (!program || block.isEmpty()) return 0;
+    const std::string id = block.toStdString();
+    const std::string& text = program->source;
+    int line = 1;
+    for (std::size_t start = 0; start < text.size(); ++line) {
+        std::size_t at = text.find_first_not_of(" /:", start);
+        if (at != std::string::npos && text.compare(at, id.size(), id) == 0) {
+            const std::size_t after = at + id.size();
+            if (after >= text.size() || text[after] == ' ' || text[after] == '\n' ||
+                text[after] == '\r' || text[after] == ';')
+                return line;
+        }
+        const std::size_t end = text.find('\n', start);
+        if (end == std::string::npos) break;
+        start = end + 1;
+    }
+    return 0;
+}
+
+void ProgramWorkspace::loadErrorFiles() {
+    for (const auto& program : session_->programs(slot_)) {
+        if (status(program->number) != CompileStatus::Error) continue;
+        QFile file(filePath(program->number, "ERR"));
+        if (!file.open(QIODevice::ReadOnly)) continue;
+        std::string identification;
+        QVector<ErrorEntry> entries;
+        for (const auto& error :
+             mtc::core::parseErrorFile(file.readAll().toStdString(), identification)) {
+            ErrorEntry entry = entryFromCompilerError(error);
+            if (entry.line == 0) entry.line = sourceLineOf(program->number, entry.block);
+            entries.push_back(entry);
+        }
+        errors_.setCompilerErrors(program->number, entries);
+    }
+}
+
+void ProgramWorkspace::requestEdit(int number, int line) {
+    editProgram_ = number;
+    editLine_ = line;
+}
+
+void ProgramWorkspace::watchRuntime() {
+    const std::string& alarm = session_->control(slot_).alarm();
+    if (alarm == lastAlarm_) return;
+    lastAlarm_ = alarm;
+    ErrorEntry entry;
+    if (!entryFromRuntimeAlarm(QString::fromStdString(alarm), entry)) return;
+    if (entry.program == 0) entry.program = session_->control(slot_).selectedProgram();
+    errors_.add(entry);
+}
+
+ErrorEntry entryFromCompilerError(const mtc::core::CompilerError& error) {
+    ErrorEntry entry;
+    entry.origin = ErrorOrigin::Compiler;
+    entry.warning = error.severity == mtc::core::Severity::Warning;
+    entry.program = error.program;
+    entry.block = error.block.empty() && error.generalNumber > 0
+                      ? QString("A%1").arg(error.generalNumber, 4, 10, QChar('0'))
+                      : QString::fromStdString(error.block);
+    entry.line = error.sourceLine;
+    entry.code = QString::fromStdString(error.code);
+    entry.message = QString::fromStdString(error.message);
+    for (const auto& line : error.details)
+        entry.details << QString::fromStdString(line);
+    return entry;
+}
+
+bool entryFromRuntimeAlarm(const QString& alarm, ErrorEntry& entry) {
+    // formatDiagnostic(): "error [CODE] program 1 N0012 line 13:4: message\n    detail"
+    static const QRegularExpression pattern(
+        R"(^(error|warning) \[([^\]]*)\]( program (\d+))?( (N\d+(:\d+)?))?( line (\d+)(:\d+)?)?: )");
+    const QStringList lines = alarm.split('\n');
+    const auto match = pattern.match(lines.value(0));
+    if (!match.hasMatch()) return false;
+    entry.origin = ErrorOrigin::Runtime;
+    entry.warning = match.captured(1) == "warning";
+    entry.code = match.captured(2);
+    entry.program = match.captured(4).toInt();
+    entry.block = match.captured(6);
+    entry.line = match.captured(9).toInt();
+    entry.message = lines.value(0).mid(match.capturedLength());
+    for (int i = 1; i < lines.size(); ++i)
+        entry.details << lines[i].trimmed();
+    return true;
+}
+
+}  // namespace mtc::hmi

@@ -1,0 +1,118 @@
+#pragma once
+
+#include <QMap>
+#include <QObject>
+#include <QString>
+#include <memory>
+
+#include "cnc_core/compiler/Compiler.h"
+#include "cnc_core/compiler/CompilerTypes.h"
+#include "hmi/ErrorLog.h"
+#include "hmi/VelocityProfile.h"
+
+namespace mtc::core::lookahead {
+struct LookAheadAnalysis;
+}
+
+namespace mtc::hmi {
+
+class CellSession;
+
+/// The NC programming side of one station (seed 001, ch. 7-11): saving
+/// edited programs, the NC options of the compiler, compiling, the N/C/E
+/// status bit of every program, the .NCO/.ERR files beside program files,
+/// and the station's error log (compiler, runtime and restart errors). The
+/// program directory, editor, error window and runtime view share it.
+class ProgramWorkspace : public QObject {
+    Q_OBJECT
+  public:
+    /// Workspace of station `slot`; `session` must outlive it.
+    ProgramWorkspace(CellSession* session, int slot, QObject* parent = nullptr);
+
+    CellSession* session() const { return session_; }
+    int slot() const { return slot_; }
+    ErrorLog& errors() { return errors_; }
+
+    /// NC option "Compiler active" (seed 001 ch. 7; preset No). Changing it
+    /// clears every object file and compile result of the station (ch. 11).
+    bool compilerActive() const { return compilerActive_; }
+    void setCompilerActive(bool active);
+    /// The compiler options for program `number` (the cell's process, macros).
+    mtc::core::CompilerOptions compilerOptions(int number) const;
+
+    /// Status bit of program `number`: ' ' (no keyword), N, C or E.
+    mtc::core::CompileStatus status(int number) const;
+    /// The last compile of `number` in this session, nullptr when none.
+    std::shared_ptr<const mtc::core::CompileResult> lastResult(int number) const;
+    /// The compiled program for the runtime view: the last compile, or for a
+    /// program whose status is C from its files (an .NCO of an earlier
+    /// session) a compile in memory (nothing written, the log unchanged).
+    std::shared_ptr<const mtc::core::CompileResult> runtimeResult(int number);
+    /// The look-ahead velocity profile of the last compile of `number`
+    /// (empty without LA_ON segments or before a compile).
+    VelocityProfile velocityProfile(int number) const { return profiles_.value(number); }
+
+    /// Path of program `number`'s file with `extension` ("DAT", "NCO",
+    /// "ERR"), or "" when the program has no file (built-in programs).
+    QString filePath(int number, const QString& extension) const;
+
+    /// Saves `text` as program `number`: the file atomically (when the
+    /// program has one), the parsed program in the cell session, the status
+    /// reset to N (object and error file cleared, seed 001 ch. 9/11).
+    /// False with `error` when nothing was changed.
+    bool save(int number, const QString& text, QString& error);
+
+    /// Compiles program `number` with the station's options: result kept,
+    /// .NCO (or .ERR) written beside the program file, status C or E, the
+    /// compiler errors in the error log. False with `error` when the
+    /// compiler did not run (not active, no keyword, no program).
+    bool compile(int number, QString& error);
+
+    /// 1-based source line of block `block` ("N0030") of program `number`,
+    /// 0 when it has no such block.
+    int sourceLineOf(int number, const QString& block) const;
+    /// Puts the messages of the .ERR files of the station's programs with
+    /// status E into the error log (seed 001 ch. 9: the window shows the
+    /// error file). Called once when the workspace is created.
+    void loadErrorFiles();
+
+    /// Asks the editor to show `number` at source line `line` (error window
+    /// Enter, program directory): the editor takes it when it is activated.
+    void requestEdit(int number, int line = 0);
+    int editProgram() const { return editProgram_; }
+    int editLine() const { return editLine_; }
+    /// The editor took the request (line 0 from now on).
+    void takeEditLine() { editLine_ = 0; }
+
+  signals:
+    /// Status, result or files of `number` changed (number 0 = all programs).
+    void programChanged(int number);
+
+  private:
+    void watchRuntime();
+    void setStatus(int number, mtc::core::CompileStatus status);
+    void clearObjects(int number);
+    void writeCompileFiles(int number, const mtc::core::CompileResult& result);
+    mtc::core::CompileStatus statusFromFiles(int number) const;
+
+    CellSession* session_;
+    int slot_;
+    ErrorLog errors_;
+    std::shared_ptr<mtc::core::lookahead::LookAheadAnalysis> lookAhead_;  ///< filled by the pass
+    mtc::core::Compiler compiler_;
+    bool compilerActive_ = false;
+    QMap<int, mtc::core::CompileStatus> status_;
+    QMap<int, std::shared_ptr<const mtc::core::CompileResult>> results_;
+    QMap<int, VelocityProfile> profiles_;
+    std::string lastAlarm_;
+    int editProgram_ = 0;
+    int editLine_ = 0;
+};
+
+/// The error-window entry of a compiler error.
+ErrorEntry entryFromCompilerError(const mtc::core::CompilerError& error);
+/// The error-window entry of a runtime alarm text ("error [CODE] program 1
+/// N0012 line 13: message"); false for alarms that are operator refusals.
+bool entryFromRuntimeAlarm(const QString& alarm, ErrorEntry& entry);
+
+}  // namespace mtc::hmi

@@ -1,0 +1,215 @@
+#include "screens/editor/EditorScreen.h"
+
+#include <QElapsedTimer>
+#include <QKeyEvent>
+#include <QLabel>
+#include <QVBoxLayout>
+
+#include "hmi/CellSession.h"
+#include "hmi/ProgramWorkspace.h"
+#include "screens/editor/NcCodeEdit.h"
+
+namespace mtc::screens {
+
+namespace {
+const QString kGneScreen = "gne";
+}
+
+EditorScreen::EditorScreen(const mtc::hmi::ScreenContext& context,
+                           std::shared_ptr<mtc::hmi::ProgramWorkspace> workspace)
+    : Screen(context), workspace_(std::move(workspace)) {
+    heading_ = new QLabel(this);
+    heading_->setObjectName("editorHeading");
+    edit_ = new NcCodeEdit(this);
+    edit_->setObjectName("programEditor");
+    edit_->installEventFilter(this);
+    status_ = new QLabel(this);
+    status_->setObjectName("editorStatus");
+    message_ = new QLabel(this);
+    message_->setObjectName("editorMessage");
+    message_->setWordWrap(true);
+    auto* layout = new QVBoxLayout(this);
+    layout->addWidget(heading_);
+    layout->addWidget(edit_, 1);
+    layout->addWidget(status_);
+    layout->addWidget(message_);
+    setFocusProxy(edit_);
+    connect(edit_, &QPlainTextEdit::cursorPositionChanged, this, [this] { updateStatus(); });
+    connect(edit_, &NcCodeEdit::loaded, this, [this] {
+        if (edit_->loadMs() > 0)
+            showMessage(QString("%1 lines loaded in %2 ms (first view after %3 ms)")
+                            .arg(edit_->blockCount())
+                            .arg(edit_->loadMs())
+                            .arg(edit_->firstViewMs()));
+        updateStatus();
+        emit softKeysChanged();
+    });
+    connect(edit_->document(), &QTextDocument::modificationChanged, this, [this] {
+        updateStatus();
+        emit softKeysChanged();
+    });
+    connect(workspace_.get(), &mtc::hmi::ProgramWorkspace::programChanged, this, [this] {
+        updateStatus();
+        emit softKeysChanged();
+    });
+}
+
+QString EditorScreen::title() const {
+    return "Program editor";
+}
+
+void EditorScreen::activated() {
+    int wanted = workspace_->editProgram();
+    if (wanted == 0) wanted = context().session->control(context().process).selectedProgram();
+    const auto program = context().session->program(context().process, wanted);
+    const bool other = wanted != program_ || (program && program.get() != loadedSource_);
+    if (program && other) {
+        if (edit_->document()->isModified() && wanted != program_) {
+            showMessage(QString("Program %1 has unsaved changes: Save (F1) or Discard (F7) first")
+                            .arg(program_),
+                        true);
+        } else if (!edit_->document()->isModified()) {
+            open(wanted);
+        }
+    }
+    if (program_ == wanted && workspace_->editLine() > 0) {
+        edit_->goToLine(workspace_->editLine());
+        workspace_->takeEditLine();
+    }
+    updateStatus();
+    emit softKeysChanged();
+}
+
+void EditorScreen::open(int number) {
+    const auto program = context().session->program(context().process, number);
+    if (!program) return;
+    QElapsedTimer timer;
+    timer.start();
+    edit_->load(QString::fromStdString(program->source));
+    lastOpenMs_ = timer.elapsed();
+    program_ = number;
+    loadedSource_ = program.get();
+    workspace_->requestEdit(number, workspace_->editLine());
+    if (edit_->loading())
+        showMessage(QString("Loading... first %1 lines shown after %2 ms")
+                        .arg(edit_->blockCount())
+                        .arg(lastOpenMs_));
+    else
+        showMessage(QString("%1 lines opened in %2 ms").arg(edit_->blockCount()).arg(lastOpenMs_));
+}
+
+bool EditorScreen::save() {
+    if (program_ == 0 || edit_->loading()) return false;
+    QString error;
+    if (!workspace_->save(program_, edit_->toPlainText(), error)) {
+        showMessage(error, true);
+        return false;
+    }
+    loadedSource_ = context().session->program(context().process, program_).get();
+    edit_->document()->setModified(false);
+    const QString file = workspace_->filePath(program_, "DAT");
+    showMessage(file.isEmpty() ? "Saved (program memory; built-in program without file)"
+                               : "Saved to " + file);
+    return true;
+}
+
+void EditorScreen::compile() {
+    if (program_ == 0 || edit_->loading()) return;
+    if (edit_->document()->isModified() && !save()) return;
+    QString error;
+    if (!workspace_->compile(program_, error)) {
+        showMessage(error, true);
+        return;
+    }
+    const auto result = workspace_->lastResult(program_);
+    if (result && result->status == mtc::core::CompileStatus::Compiled)
+        showMessage(QString("Compiled: %1 object blocks, %2 warnings (Ctrl+E)")
+                        .arg(result->objectBlocks)
+                        .arg(result->errors.size()));
+    else if (result)
+        showMessage(
+            QString("Compile error: %1 messages (Ctrl+E shows them)").arg(result->errors.size()),
+            true);
+}
+
+void EditorScreen::showErrors() {
+    workspace_->requestEdit(program_, 0);
+    emit navigateTo("errors");
+}
+
+bool EditorScreen::gneAvailable() const {
+    if (!context().stationScreens) return false;
+    for (const Screen* screen : context().stationScreens())
+        if (screen->screenName() == kGneScreen) return true;
+    return false;
+}
+
+void EditorScreen::openGne() {
+    if (!gneAvailable()) {
+        showMessage("The graphical NC editor (GNE) is not part of this panel yet", true);
+        return;
+    }
+    workspace_->requestEdit(program_, edit_->cursorLine());
+    emit navigateTo(kGneScreen);
+}
+
+void EditorScreen::reload() {
+    if (program_ == 0) return;
+    edit_->document()->setModified(false);
+    open(program_);
+    showMessage("Changes discarded, program reloaded");
+}
+
+void EditorScreen::showMessage(const QString& text, bool error) {
+    message_->setText(text);
+    message_->setStyleSheet(error ? "color: #a00000;" : "");
+}
+
+void EditorScreen::updateStatus() {
+    const auto program = context().session->program(context().process, program_);
+    const QString name = program ? QString::fromStdString(program->name) : QString("(none)");
+    const char status = mtc::core::statusLetter(workspace_->status(program_));
+    heading_->setText(QString("Program %1  %2  status [%3]%4")
+                          .arg(program_, 3, 10, QChar('0'))
+                          .arg(name)
+                          .arg(QChar(status))
+                          .arg(edit_->document()->isModified() ? "  *modified*" : ""));
+    const QString block = edit_->cursorBlockId();
+    status_->setText(QString("Line %1 of %2   Block %3")
+                         .arg(edit_->cursorLine())
+                         .arg(edit_->blockCount())
+                         .arg(block.isEmpty() ? "-" : block));
+}
+
+bool EditorScreen::eventFilter(QObject* watched, QEvent* event) {
+    if (watched == edit_ && event->type() == QEvent::KeyPress) {
+        const auto* key = static_cast<QKeyEvent*>(event);
+        if (key->key() == Qt::Key_E && (key->modifiers() & Qt::ControlModifier)) {
+            showErrors();
+            return true;
+        }
+        if (key->key() == Qt::Key_S && (key->modifiers() & Qt::ControlModifier)) {
+            save();
+            return true;
+        }
+    }
+    return Screen::eventFilter(watched, event);
+}
+
+mtc::hmi::SoftKeys EditorScreen::softKeys() {
+    mtc::hmi::SoftKeys keys(8);
+    const bool open = program_ != 0 && !edit_->loading();
+    keys[0] = {"Save", [this] { save(); }, open};
+    keys[1] = {"Compile", [this] { compile(); }, open && workspace_->compilerActive()};
+    keys[2] = {"Errors\nCtrl+E", [this] { showErrors(); }};
+    keys[3] = {gneAvailable() ? "GNE" : "GNE\n(n/a)", [this] { openGne(); }};
+    keys[4] = {"Runtime\nprogram", [this] {
+                   workspace_->requestEdit(program_, 0);
+                   emit navigateTo("runtime");
+               }};
+    keys[6] = {"Discard\nchanges", [this] { reload(); }, open && edit_->document()->isModified()};
+    keys[7] = {"Back", [this] { emit navigateTo("programs"); }};
+    return keys;
+}
+
+}  // namespace mtc::screens

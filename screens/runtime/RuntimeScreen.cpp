@@ -1,0 +1,133 @@
+#include "screens/runtime/RuntimeScreen.h"
+
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QTextBlock>
+#include <QVBoxLayout>
+
+#include "hmi/CellSession.h"
+#include "hmi/ProgramWorkspace.h"
+#include "screens/editor/NcCodeEdit.h"
+#include "screens/runtime/VelocityPlot.h"
+
+namespace mtc::screens {
+
+RuntimeScreen::RuntimeScreen(const mtc::hmi::ScreenContext& context,
+                             std::shared_ptr<mtc::hmi::ProgramWorkspace> workspace)
+    : Screen(context), workspace_(std::move(workspace)) {
+    heading_ = new QLabel(this);
+    heading_->setObjectName("runtimeHeading");
+    source_ = new NcCodeEdit(this);
+    source_->setObjectName("runtimeSource");
+    source_->setReadOnly(true);
+    source_->setFocusPolicy(Qt::NoFocus);
+    compiled_ = new NcCodeEdit(this);
+    compiled_->setObjectName("runtimeCompiled");
+    compiled_->setReadOnly(true);
+    compiled_->setTextInteractionFlags(Qt::TextSelectableByKeyboard | Qt::TextSelectableByMouse);
+    note_ = new QLabel(this);
+    note_->setObjectName("runtimeNote");
+    note_->setWordWrap(true);
+    auto* panes = new QHBoxLayout;
+    panes->addWidget(source_, 1);
+    panes->addWidget(compiled_, 1);
+    plot_ = new VelocityPlot(this);
+    plot_->setObjectName("velocityPlot");
+    auto* layout = new QVBoxLayout(this);
+    layout->addWidget(heading_);
+    layout->addLayout(panes, 3);
+    layout->addWidget(plot_, 1);
+    layout->addWidget(note_);
+    setFocusProxy(compiled_);
+    connect(compiled_, &QPlainTextEdit::cursorPositionChanged, this,
+            [this] { followCompiledCursor(); });
+    connect(workspace_.get(), &mtc::hmi::ProgramWorkspace::programChanged, this, [this](int n) {
+        if (isVisible() && (n == 0 || n == program_)) showProgram();
+    });
+}
+
+void RuntimeScreen::activated() {
+    showProgram();
+}
+
+void RuntimeScreen::showProgram() {
+    program_ = workspace_->editProgram();
+    if (program_ == 0) program_ = context().session->control(context().process).selectedProgram();
+    const auto program = context().session->program(context().process, program_);
+    const auto result = workspace_->runtimeResult(program_);
+    const auto status = workspace_->status(program_);
+    heading_->setText(QString("Program %1  %2   source  |  runtime program   status [%3]")
+                          .arg(program_, 3, 10, QChar('0'))
+                          .arg(program ? QString::fromStdString(program->name) : "(none)")
+                          .arg(QChar(mtc::core::statusLetter(status))));
+    source_->load(program ? QString::fromStdString(program->source) : QString());
+    showSegment(segment_);
+    listing_ = {};
+    if (result && result->status == mtc::core::CompileStatus::Compiled) {
+        listing_ = buildRuntimeListing(*result);
+        compiled_->load(listing_.text);
+        note_->setText(QString("%1 blocks inserted by the compiler (marked %2).")
+                           .arg(listing_.intermediateBlocks)
+                           .arg(kIntermediateArrow.trimmed()));
+    } else if (status == mtc::core::CompileStatus::NotNeeded && program) {
+        compiled_->load(QString::fromStdString(program->source));
+        note_->setText("The program needs no compilation: it runs as written.");
+    } else {
+        compiled_->load(QString());
+        note_->setText(status == mtc::core::CompileStatus::Error
+                           ? "The program has compile errors (error display: Ctrl+E in the editor)."
+                           : "The program is not compiled yet (Compile in the editor or the "
+                             "program directory).");
+    }
+}
+
+void RuntimeScreen::showSegment(int index) {
+    const mtc::hmi::VelocityProfile profile = workspace_->velocityProfile(program_);
+    if (profile.empty()) {
+        segment_ = 0;
+        plot_->setSegment({}, "No look-ahead segment (LA_ON ... LA_OFF) in the last compile");
+        return;
+    }
+    segment_ = (index % int(profile.segments.size()) + int(profile.segments.size())) %
+               int(profile.segments.size());
+    const auto& segment = profile.segments[size_t(segment_)];
+    plot_->setSegment(segment, QString("LA segment %1 of %2 (line %3): %4 blocks")
+                                   .arg(segment_ + 1)
+                                   .arg(profile.segments.size())
+                                   .arg(segment.sourceLine)
+                                   .arg(segment.blocks));
+}
+
+void RuntimeScreen::followCompiledCursor() {
+    const int row = compiled_->textCursor().blockNumber();
+    if (row < 0 || row >= listing_.sourceLine.size()) return;
+    const int line = listing_.sourceLine[row];
+    if (line <= 0) return;
+    QTextEdit::ExtraSelection mark;
+    mark.format.setBackground(QColor(255, 236, 150));
+    mark.format.setProperty(QTextFormat::FullWidthSelection, true);
+    mark.cursor = QTextCursor(source_->document()->findBlockByNumber(line - 1));
+    source_->setExtraSelections({mark});
+    source_->setTextCursor(mark.cursor);
+    source_->centerCursor();
+}
+
+mtc::hmi::SoftKeys RuntimeScreen::softKeys() {
+    mtc::hmi::SoftKeys keys(8);
+    keys[0] = {"Compile",
+               [this] {
+                   QString error;
+                   if (!workspace_->compile(program_, error)) note_->setText(error);
+               },
+               workspace_->compilerActive()};
+    keys[1] = {"Next LA\nsegment", [this] { showSegment(segment_ + 1); },
+               workspace_->velocityProfile(program_).segments.size() > 1};
+    keys[6] = {"Editor", [this] {
+                   workspace_->requestEdit(program_, 0);
+                   emit navigateTo("editor");
+               }};
+    keys[7] = {"Back", [this] { emit navigateTo("programs"); }};
+    return keys;
+}
+
+}  // namespace mtc::screens

@@ -1,0 +1,320 @@
+// Program directory with N/C/E, program editor, error window and runtime
+// view (seed 001 ch. 1, 7, 9-11), driven with real keys.
+#include <QDir>
+#include <QFile>
+#include <QLabel>
+#include <QListView>
+#include <QListWidget>
+#include <QPlainTextEdit>
+#include <QTemporaryDir>
+#include <QTextBlock>
+
+#include "PanelFixture.h"
+#include "hmi/ErrorLog.h"
+#include "hmi/ProgramWorkspace.h"
+#include "hmi/SimulationClock.h"
+#include "screens/editor/EditorScreen.h"
+#include "screens/editor/NcCodeEdit.h"
+#include "screens/errors/ErrorsScreen.h"
+#include "screens/programs/ProgramDirectoryModel.h"
+#include "screens/runtime/RuntimeScreen.h"
+
+namespace {
+
+QString header(int number, const char* title) {
+    return QString(
+               "iMTc/01%1/01.00/0000000000/21.11.2026/15:00:00/N1010%1.DAT/1\n"
+               "%NPG:1:01:0:%1\n!01.00\n#01%2\n$\n$\n$\n$\n*%2\n%NPG\n")
+        .arg(number, 3, 10, QChar('0'))
+        .arg(title);
+}
+
+/// Source lines 11.. after the 10 header lines.
+const char* kMacroProgram =
+    "N0000 G0 G17 G90 X0 Y0 Z5\n"
+    "N0001 DEFINE SAFE AS G0 Z50\n"
+    "N0002 G1 X10 F500\n"
+    "N0003 DEFINE 9BAD AS G1 X0 ;line 14\n"
+    "N0004 SAFE\n"
+    "N0005 M30\n"
+    "N0006 PROGRAMMENDE\n";
+
+const char* kPlainProgram = "N0000 G0 X0 Y0 Z5\nN0001 M30\nN0002 PROGRAMMENDE\n";
+
+const char* kChamferProgram =
+    "N0000 G0 G17 G90 X0 Y0 Z5\n"
+    "N0001 G1 Z-1 F400\n"
+    "N0002 G1 X20 Y0 CF3\n"
+    "N0003 G1 X20 Y20 RD4\n"
+    "N0004 G1 X0 Y20\n"
+    "N0005 M30\n"
+    "N0006 PROGRAMMENDE\n";
+
+void writeProgram(const QDir& dir, int number, const QString& text) {
+    QFile file(dir.filePath(QString("N1010%1.DAT").arg(number, 3, 10, QChar('0'))));
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write(text.toUtf8());
+}
+
+template <typename T>
+T* child(PanelFixture& panel, const char* screen, const char* name) {
+    return panel.window->screen(0, screen)->findChild<T*>(name);
+}
+
+/// Puts the program directory's cursor on program `number`.
+void pickProgram(PanelFixture& panel, int number) {
+    panel.window->showScreen("programs");
+    auto* list = child<QListView>(panel, "programs", "programList");
+    const auto* model = qobject_cast<const mtc::screens::ProgramDirectoryModel*>(list->model());
+    QVERIFY(model && model->rowOf(number) >= 0);
+    list->setCurrentIndex(model->index(model->rowOf(number)));
+}
+
+QString directoryRow(PanelFixture& panel, int number) {
+    auto* list = child<QListView>(panel, "programs", "programList");
+    const auto* model = qobject_cast<const mtc::screens::ProgramDirectoryModel*>(list->model());
+    return model->index(model->rowOf(number)).data().toString();
+}
+
+}  // namespace
+
+class EditorScreenTest : public QObject {
+    Q_OBJECT
+  private:
+    QTemporaryDir dir_;
+
+    mtc::hmi::PanelOptions options() {
+        QDir dir(dir_.path());
+        for (const QString& name : dir.entryList(QDir::Files))
+            dir.remove(name);
+        writeProgram(dir, 5, header(5, "Macro test") + kMacroProgram);
+        writeProgram(dir, 6, header(6, "No keyword") + kPlainProgram);
+        writeProgram(dir, 7, header(7, "Chamfer test") + kChamferProgram);
+        mtc::hmi::PanelOptions o;
+        o.programsDir = dir_.path();
+        return o;
+    }
+
+  private slots:
+    void initTestCase() { useTestSettings(); }
+
+    void compileFromTheEditorAndEnterLandsOnTheFaultyLine() {
+        PanelFixture panel(options());
+        pickProgram(panel, 5);
+        QVERIFY(directoryRow(panel, 5).contains("[N]"));
+        panel.press(Qt::Key_F6);  // NC options: Compiler active = Yes
+        panel.press(Qt::Key_F2);  // Edit
+        QCOMPARE(panel.window->currentScreenName(), QString("editor"));
+        auto* edit = child<QPlainTextEdit>(panel, "editor", "programEditor");
+        QVERIFY(edit->toPlainText().startsWith("iMTc/"));
+        QCOMPARE(QApplication::focusWidget(), edit);
+
+        panel.press(Qt::Key_F2);  // Compile
+        auto* heading = child<QLabel>(panel, "editor", "editorHeading");
+        QTRY_VERIFY2(heading->text().contains("[E]"), qPrintable(heading->text()));
+        QVERIFY(QFile::exists(QDir(dir_.path()).filePath("N1010005.ERR")));
+        QVERIFY(!QFile::exists(QDir(dir_.path()).filePath("N1010005.NCO")));
+
+        panel.press(Qt::Key_E, Qt::ControlModifier);  // error display
+        QCOMPARE(panel.window->currentScreenName(), QString("errors"));
+        auto* list = child<QListWidget>(panel, "errors", "errorList");
+        QVERIFY(list->count() >= 1);
+        QCOMPARE(list->currentRow(), 0);
+        const QString brief = list->currentItem()->text();
+        QVERIFY2(brief.contains("compiler") && brief.contains("N0003"), qPrintable(brief));
+        QVERIFY(!brief.contains('\n'));
+        panel.press(Qt::Key_F2);  // <Additional text>
+        QVERIFY(list->currentItem()->text().contains("\n"));
+        QVERIFY(list->currentItem()->text().contains("letter"));
+        panel.press(Qt::Key_F2);  // and off again
+        QVERIFY(!list->currentItem()->text().contains('\n'));
+
+        panel.press(Qt::Key_Return);  // to the faulty block
+        QCOMPARE(panel.window->currentScreenName(), QString("editor"));
+        QCOMPARE(edit->textCursor().blockNumber() + 1, 14);
+        QVERIFY(edit->textCursor().block().text().startsWith("N0003 DEFINE 9BAD"));
+        auto* status = child<QLabel>(panel, "editor", "editorStatus");
+        QVERIFY2(status->text().contains("Line 14") && status->text().contains("N0003"),
+                 qPrintable(status->text()));
+
+        // Fix it with keys: delete the '9' of the macro name, compile again.
+        for (int i = 0; i < 13; ++i)
+            panel.press(Qt::Key_Right);
+        panel.press(Qt::Key_Delete);
+        QVERIFY(heading->text().contains("modified"));
+        panel.press(Qt::Key_F2);  // Compile saves first
+        QTRY_VERIFY2(heading->text().contains("[C]"), qPrintable(heading->text()));
+        QVERIFY(!heading->text().contains("modified"));
+        QFile saved(QDir(dir_.path()).filePath("N1010005.DAT"));
+        QVERIFY(saved.open(QIODevice::ReadOnly));
+        QVERIFY(saved.readAll().contains("N0003 DEFINE BAD AS G1 X0"));
+        QVERIFY(QFile::exists(QDir(dir_.path()).filePath("N1010005.NCO")));
+        QVERIFY(!QFile::exists(QDir(dir_.path()).filePath("N1010005.ERR")));
+        const auto program = panel.session->program(0, 5);
+        QVERIFY(program->source.find("DEFINE BAD AS") != std::string::npos);
+        QCOMPARE(list->count(), 0);  // the compiler's messages of program 5 are gone
+    }
+
+    void directoryShowsTheStatusBits() {
+        PanelFixture panel(options());
+        pickProgram(panel, 7);
+        QVERIFY(directoryRow(panel, 6).contains("[ ]"));  // no keyword
+        QVERIFY(directoryRow(panel, 7).contains("[N]"));
+        panel.press(Qt::Key_F3);  // Compile: not offered while the compiler is off
+        QVERIFY(directoryRow(panel, 7).contains("[N]"));
+        panel.press(Qt::Key_F6);  // Compiler active = Yes
+        panel.press(Qt::Key_F3);  // Compile
+        QTRY_VERIFY2(directoryRow(panel, 7).contains("[C]"), qPrintable(directoryRow(panel, 7)));
+        pickProgram(panel, 5);
+        panel.press(Qt::Key_F3);
+        QTRY_VERIFY2(directoryRow(panel, 5).contains("[E]"), qPrintable(directoryRow(panel, 5)));
+        QVERIFY(directoryRow(panel, 6).contains("[ ]"));
+        // Changing the compiler setting clears every object (seed 001 ch. 11).
+        panel.press(Qt::Key_F6);
+        QVERIFY(directoryRow(panel, 7).contains("[N]"));
+        QVERIFY(!QFile::exists(QDir(dir_.path()).filePath("N1010007.NCO")));
+    }
+
+    void runtimeViewMarksInsertedBlocksWithArrows() {
+        PanelFixture panel(options());
+        pickProgram(panel, 7);
+        panel.press(Qt::Key_F6);
+        panel.press(Qt::Key_F3);
+        QTRY_VERIFY(directoryRow(panel, 7).contains("[C]"));
+        panel.press(Qt::Key_F4);  // Runtime program
+        QCOMPARE(panel.window->currentScreenName(), QString("runtime"));
+        auto* screen = qobject_cast<mtc::screens::RuntimeScreen*>(panel.window->currentScreen());
+        auto* compiled = child<QPlainTextEdit>(panel, "runtime", "runtimeCompiled");
+        auto* source = child<QPlainTextEdit>(panel, "runtime", "runtimeSource");
+        QVERIFY(source->toPlainText().contains("CF3"));
+        const QStringList lines = compiled->toPlainText().split('\n');
+        QVERIFY(screen->listing().intermediateBlocks >= 2);  // chamfer and rounding
+        int arrows = 0;
+        for (const QString& line : lines)
+            if (line.startsWith(mtc::screens::kIntermediateArrow + "N0002:0001") ||
+                line.startsWith(mtc::screens::kIntermediateArrow + "N0003:0001"))
+                ++arrows;
+        QCOMPARE(arrows, 2);
+        QVERIFY(lines.contains("  N0000:0000 G0 G17 G90 X0 Y0 Z5"));
+        // Down through the compiled program: the source line follows.
+        const int arrowRow = lines.indexOf(
+            QRegularExpression("^" + mtc::screens::kIntermediateArrow + "N0002:0001.*"));
+        QVERIFY(arrowRow > 0);
+        for (int i = 0; i < arrowRow; ++i)
+            panel.press(Qt::Key_Down);
+        QCOMPARE(compiled->textCursor().blockNumber(), arrowRow);
+        QVERIFY2(source->textCursor().block().text().startsWith("N0002"),
+                 qPrintable(source->textCursor().block().text()));
+    }
+
+    void aRuntimeErrorAppearsInTheErrorWindow() {
+        PanelFixture panel(options());
+        panel.session->addProgram(0, 51, "bad.nc", "N0001 G1 X10 F100\nN0002 T999\nN0003 M30\n");
+        QVERIFY(panel.session->selectProgram(0, 51));
+        panel.session->clock(0).setSpeed(1000);
+        panel.press(Qt::Key_F5, Qt::ShiftModifier);  // Start
+        QTRY_VERIFY(!panel.session->control(0).programActive());
+        panel.window->showScreen("errors");
+        auto* list = child<QListWidget>(panel, "errors", "errorList");
+        QTRY_COMPARE(list->count(), 1);
+        const QString text = list->item(0)->text();
+        QVERIFY2(text.contains("runtime") && text.contains("P051") && text.contains("N0002"),
+                 qPrintable(text));
+        panel.press(Qt::Key_Return);
+        QCOMPARE(panel.window->currentScreenName(), QString("editor"));
+        auto* edit = child<QPlainTextEdit>(panel, "editor", "programEditor");
+        QCOMPARE(edit->textCursor().block().text(), QString("N0002 T999"));
+    }
+
+    void alarmAndRestartTextsBecomeEntries() {
+        mtc::hmi::ErrorEntry e;
+        QVERIFY(mtc::hmi::entryFromRuntimeAlarm(
+            "error [TOOL_RANGE] program 51 N0002 line 2: T999 is not a tool\n    detail one", e));
+        QCOMPARE(e.origin, mtc::hmi::ErrorOrigin::Runtime);
+        QCOMPARE(e.code, QString("TOOL_RANGE"));
+        QCOMPARE(e.program, 51);
+        QCOMPARE(e.block, QString("N0002"));
+        QCOMPARE(e.line, 2);
+        QCOMPARE(e.message, QString("T999 is not a tool"));
+        QCOMPARE(e.details, QStringList{"detail one"});
+        QVERIFY(!mtc::hmi::entryFromRuntimeAlarm("Start refused: no program selected", e));
+        const auto r =
+            mtc::screens::entryFromRestartMessage("P3 N0014:0001 line 15: target not found");
+        QCOMPARE(r.origin, mtc::hmi::ErrorOrigin::Restart);
+        QCOMPARE(r.program, 3);
+        QCOMPARE(r.block, QString("N0014:0001"));
+        QCOMPARE(r.line, 15);
+        QCOMPARE(r.message, QString("target not found"));
+        const auto plain = mtc::screens::entryFromRestartMessage("no program selected");
+        QCOMPARE(plain.message, QString("no program selected"));
+        QCOMPARE(plain.program, 0);
+    }
+
+    void errorFilesOnDiskFillTheWindowAtStart() {
+        mtc::hmi::PanelOptions o = options();
+        {
+            PanelFixture panel(o);
+            pickProgram(panel, 5);
+            panel.press(Qt::Key_F6);
+            panel.press(Qt::Key_F3);  // compile: E, .ERR written
+            QTRY_VERIFY(directoryRow(panel, 5).contains("[E]"));
+        }
+        PanelFixture again(o);  // nothing rewritten: the files are as they were
+        QVERIFY(directoryRow(again, 5).contains("[E]"));
+        again.window->showScreen("errors");
+        auto* list = child<QListWidget>(again, "errors", "errorList");
+        QVERIFY(list->count() >= 1);
+        QVERIFY(list->item(0)->text().contains("N0003"));
+        again.press(Qt::Key_Return);
+        QCOMPARE(again.window->currentScreenName(), QString("editor"));
+        auto* edit = child<QPlainTextEdit>(again, "editor", "programEditor");
+        QCOMPARE(edit->textCursor().blockNumber() + 1, 14);
+    }
+
+    void gneKeyOpensTheGneScreenOrExplainsItsAbsence() {
+        PanelFixture panel(options());
+        pickProgram(panel, 6);
+        panel.press(Qt::Key_F2);
+        QCOMPARE(panel.window->currentScreenName(), QString("editor"));
+        const bool hasGne = panel.window->screen(0, "gne") != nullptr;
+        panel.press(Qt::Key_F4);  // GNE
+        if (hasGne) {
+            QCOMPARE(panel.window->currentScreenName(), QString("gne"));
+        } else {
+            QCOMPARE(panel.window->currentScreenName(), QString("editor"));
+            QVERIFY(child<QLabel>(panel, "editor", "editorMessage")->text().contains("GNE"));
+        }
+    }
+
+    void editorOpensAMillionBlockProgram() {
+        PanelFixture panel(options());
+        std::string text;
+        text.reserve(26u * 1000000u);
+        char line[64];
+        for (int i = 0; i < 1000000; ++i) {
+            std::snprintf(line, sizeof line, "N%04d G1 X%d Y%d F1000\n", i % 10000, i % 97, i % 89);
+            text += line;
+        }
+        panel.session->addProgram(0, 60, "big.nc", std::move(text));
+        panel.window->screen(0, "programs")->activated();
+        pickProgram(panel, 60);
+        panel.press(Qt::Key_F2);
+        auto* editor = qobject_cast<mtc::screens::EditorScreen*>(panel.window->currentScreen());
+        QVERIFY(editor);
+        auto* edit = child<mtc::screens::NcCodeEdit>(panel, "editor", "programEditor");
+        QVERIFY(edit->blockCount() >= 10000);  // the first lines are there at once
+        panel.press(Qt::Key_Down);             // and the editor answers keys while loading
+        QCOMPARE(edit->textCursor().blockNumber(), 1);
+        QTRY_VERIFY_WITH_TIMEOUT(!edit->loading(), 120000);
+        QCOMPARE(edit->blockCount(), 1000001);
+        qInfo("1,000,000-block program: first view after %lld ms, fully loaded after %lld ms",
+              edit->firstViewMs(), edit->loadMs());
+        panel.press(Qt::Key_End, Qt::ControlModifier);
+        panel.press(Qt::Key_Up);
+        QCOMPARE(edit->textCursor().blockNumber(), 999999);
+        QVERIFY(edit->textCursor().block().userState() == 1);  // highlighted when visible
+    }
+};
+
+QTEST_MAIN(EditorScreenTest)
+#include "test_editor_screen.moc"
