@@ -129,7 +129,10 @@ class Expander {
         ContourSolution solution = solveContour(contour);
         for (const GneDiagnostic& d : solution.diagnostics)
             result_.diagnostics.push_back(d);
-        if (!solution.complete()) return;
+        if (!solution.complete()) {
+            failed_.push_back(contour.number);  // its cycles add no second error
+            return;
+        }
         if (contour.raw) {
             rawContours_.push_back(contour.number);
             return;
@@ -179,6 +182,7 @@ class Expander {
     GneExpansion result_;
     Stock stock_;
     std::vector<int> rawContours_;
+    std::vector<int> failed_;  ///< geometry numbers that did not solve
 };
 
 void Expander::expandCycle(const GneCall& call) {
@@ -188,6 +192,7 @@ void Expander::expandCycle(const GneCall& call) {
     in.stock = stock_;
     const int number = static_cast<int>(in.value(0));
     in.geometry = geometry(number);
+    if (std::find(failed_.begin(), failed_.end(), number) != failed_.end()) return;
     if (!in.geometry) {
         const bool raw =
             std::find(rawContours_.begin(), rawContours_.end(), number) != rawContours_.end();

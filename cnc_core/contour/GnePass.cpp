@@ -47,18 +47,22 @@ std::vector<std::string> GnePass::keywords() const {
 void GnePass::run(BlockSequence& blocks, CompileContext& context) const {
     const GneDocument document = readGne(sequenceText(blocks));
     if (document.items.empty() && document.diagnostics.empty()) return;
-    if (!report(document.diagnostics, blocks, context) || !document.ok()) return;
-    const GneExpansion expansion = expandGne(document);
-    if (!report(expansion.diagnostics, blocks, context) || !expansion.ok()) return;
     std::vector<bool> gne(blocks.size(), false);
     for (const GneItem& item : document.items) {
         const std::uint32_t first = item.isContour ? item.contour.line : item.call.line;
-        const std::uint32_t last = item.isContour ? item.contour.endLine : item.call.line;
+        std::uint32_t last = item.isContour ? item.contour.endLine : item.call.line;
+        if (last < first) last = first;  // CONT without END_CONT
         for (std::uint32_t line = first; line <= last && line <= blocks.size(); ++line)
             gne[line - 1] = true;
     }
+    // The GNE lines become comments even when something is wrong, so that
+    // the later passes do not take a contour's RD or CF for their own.
     for (std::size_t i = 0; i < blocks.size(); ++i)
         if (gne[i]) comment(blocks[i]);
+    context.invalidate();
+    if (!report(document.diagnostics, blocks, context) || !document.ok()) return;
+    const GneExpansion expansion = expandGne(document);
+    if (!report(expansion.diagnostics, blocks, context) || !expansion.ok()) return;
     for (auto call = expansion.calls.rbegin(); call != expansion.calls.rend(); ++call) {
         const std::size_t at = call->line;  // insert after blocks[line - 1]
         const CompileBlock& owner = blocks[at - 1];

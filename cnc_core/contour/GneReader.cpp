@@ -45,8 +45,10 @@ class Reader {
             ++lineNumber_;
             pos = eol + 1;
         }
-        if (open_)
+        if (open_) {
             error(doc_.items.back().contour.line, "GNE_CONT_NOT_CLOSED", "CONT without END_CONT");
+            endContour(lineNumber_ - 1);
+        }
         return std::move(doc_);
     }
 
@@ -97,6 +99,13 @@ class Reader {
                 return error("GNE_ELEMENT_OUTSIDE_CONT", keyword + " outside CONT ... END_CONT");
             return readElement(keyword, rest);
         }
+        const bool call = keyword.rfind("WINDOW_", 0) == 0 || keyword.rfind("FORM_", 0) == 0 ||
+                          keyword.rfind("CYCLE_", 0) == 0;
+        if (open_ && call) {  // END_CONT forgotten: the contour ends before this line
+            error(doc_.items.back().contour.line, "GNE_CONT_NOT_CLOSED",
+                  "CONT without END_CONT (it ends before " + keyword + ")");
+            endContour(lineNumber_ - 1);
+        }
         if (open_) {
             if (!s.empty())
                 error("GNE_NOT_AN_ELEMENT",
@@ -104,9 +113,7 @@ class Reader {
                       "between CONT and END_CONT");
             return;
         }
-        if (keyword.rfind("WINDOW_", 0) == 0 || keyword.rfind("FORM_", 0) == 0 ||
-            keyword.rfind("CYCLE_", 0) == 0)
-            readCall(keyword, rest);
+        if (call) readCall(keyword, rest);
     }
 
     void openContour(const std::string& rest) {
@@ -141,8 +148,13 @@ class Reader {
     void closeContour(const std::string& rest) {
         if (!open_) return error("GNE_END_CONT_ALONE", "END_CONT without CONT");
         if (!rest.empty()) error("GNE_END_CONT_SYNTAX", "END_CONT takes no parameters");
+        endContour(lineNumber_);
+    }
+
+    /// Ends the open contour at `line`.
+    void endContour(std::uint32_t line) {
         Contour& c = doc_.items.back().contour;
-        c.endLine = lineNumber_;
+        c.endLine = line;
         open_ = false;
         if (c.elements.empty() || c.elements.front().kind != ElementKind::Start)
             error(c.line, "GNE_NO_START", "a contour begins with START");

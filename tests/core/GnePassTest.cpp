@@ -1,0 +1,73 @@
+// The GNE as a pass of the NC compiler: cycles become intermediate blocks
+// with enhanced numbers, geometry blocks become comments, errors name the
+// block, and RD/CF inside a contour are the contour's (not the CF/RD pass's).
+
+#include <gtest/gtest.h>
+
+#include "CompilerTestSupport.h"
+
+namespace mtc::core::gne {
+namespace {
+
+using mtc::test::codes;
+using mtc::test::compileText;
+using mtc::test::objectBlocks;
+
+const char* kProgram =
+    "N0001 G0 G18 G90 G95 X50 Z10\n"
+    "N0002 WINDOW_01 (-30, 1, 20)\n"
+    "N0003 CONT (1)\n"
+    "N0004 START Z0 X0\n"
+    "N0005 LINE Z0 X10\n"
+    "N0006 RD 1\n"
+    "N0007 LINE Z-20 X10\n"
+    "N0008 CF 0.5\n"
+    "N0009 LINE Z-20 X18\n"
+    "N0010 LINE A180 L5\n"
+    "N0011 END_CONT\n"
+    "N0012 CYCLE_10 (1, 4, 0.1)\n"
+    "N0013 G0 X50 Z10\n"
+    "N0014 M30\n";
+
+TEST(GnePass, CyclesBecomeIntermediateBlocks) {
+    const CompileResult r = compileText(kProgram);
+    ASSERT_TRUE(r.errors.empty()) << r.errors[0].code << " " << r.errors[0].message;
+    const std::vector<std::string> blocks = objectBlocks(r);
+    ASSERT_GT(blocks.size(), 20u);
+    EXPECT_EQ(blocks[2], "N0003:0000 ;CONT (1)");
+    EXPECT_EQ(blocks[5], "N0006:0000 ;RD 1");
+    EXPECT_EQ(blocks[11], "N0012:0000 ;CYCLE_10 (1, 4, 0.1)");
+    EXPECT_EQ(blocks[12], "N0012:0001 G90 G18 G40 G15");
+    EXPECT_EQ(blocks[13], "N0012:0002 T4 ;GNE TOOL EDGE 3 TR 0 CA 80 SA 95");
+    // The rounding of N0006 as a G2/G3 block with its absolute centre.
+    bool rounding = false;
+    for (const std::string& b : blocks)
+        rounding = rounding || b.find(" X10 Z-1 I9 K-1") != std::string::npos;
+    EXPECT_TRUE(rounding);
+    EXPECT_EQ(blocks.back().substr(0, 10), "N0014:0000");
+}
+
+TEST(GnePass, ErrorsNameTheBlockAndStopTheCascade) {
+    std::string text = kProgram;
+    text.replace(text.find("N0010 LINE A180 L5"), 18, "N0010 LINE A180 L5 Q4");
+    CompileResult r = compileText(text);
+    EXPECT_EQ(codes(r), std::vector<std::string>{"GNE_BAD_WORD"});
+    ASSERT_EQ(r.errors.size(), 1u);
+    EXPECT_EQ(r.errors[0].block, "N0010");
+    EXPECT_EQ(r.errors[0].sourceLine, 10);
+
+    text = kProgram;
+    text.replace(text.find("N0011 END_CONT"), 14, "N0011");
+    r = compileText(text);
+    EXPECT_EQ(codes(r), std::vector<std::string>{"GNE_CONT_NOT_CLOSED"});
+}
+
+TEST(GnePass, ProgramsWithoutGneAreUntouched) {
+    const CompileResult r = compileText(
+        "N0001 G0 G17 G90 X0 Y0\nN0002 G1 X20 Y0 F100 RD 2\nN0003 X20 Y20\nN0004 M30\n");
+    EXPECT_TRUE(r.errors.empty()) << r.errors[0].code;
+    EXPECT_EQ(objectBlocks(r)[2].substr(0, 10), "N0002:0001");  // the CF/RD pass's rounding
+}
+
+}  // namespace
+}  // namespace mtc::core::gne
