@@ -1,17 +1,32 @@
 #include <QApplication>
 #include <QTextStream>
 #include <QTimer>
+#include <algorithm>
 
 #include "hmi/CellSession.h"
 #include "hmi/PanelStartup.h"
 #include "hmi/PanelWindow.h"
 #include "hmi/ScreenRegistry.h"
+#include "hmi/SimulationClock.h"
 #include "screens/ScreenCatalog.h"
 
 namespace {
 int fail(const QString& message) {
     QTextStream(stderr) << "mtc200-panel: " << message << "\n";
     return 2;
+}
+
+/// --run: starts the selected program of the station and steps it to its
+/// end at (nearly) unlimited simulation speed. Returns "" or the alarm.
+QString runToEnd(mtc::hmi::CellSession& session, int process) {
+    const int slot = std::max(0, session.slotOfProcess(std::max(0, process)));
+    session.clock(slot).setSpeed(1e9);
+    if (!session.pressKey(slot, mtc::core::ControlKey::Start))
+        return QString::fromStdString(session.control(slot).alarm());
+    for (int tick = 0; tick < 1000000 && session.control(slot).programActive(); ++tick)
+        session.clock(slot).tick();
+    session.clock(slot).setSpeed(1.0);
+    return QString::fromStdString(session.control(slot).alarm());
 }
 }  // namespace
 
@@ -37,6 +52,10 @@ int main(int argc, char** argv) {
     mtc::hmi::PanelWindow window(session.get(), &registry);
     if (options.screenshot.isEmpty()) window.restoreSettings();
     if (!mtc::hmi::applyStartOptions(options, *session, window, error)) return fail(error);
+    if (options.run) {
+        const QString alarm = runToEnd(*session, options.process);
+        if (!alarm.isEmpty()) QTextStream(stderr) << "mtc200-panel: --run: " << alarm << "\n";
+    }
     window.show();
 
     if (!options.screenshot.isEmpty()) {

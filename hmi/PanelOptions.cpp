@@ -17,6 +17,9 @@ bool parsePanelOptions(const QStringList& arguments, PanelOptions& options, QStr
         {"program", "Program to select: a number or a source file.", "FILE|NUM"},
         {"screen", "Screen shown first (restart, programs, signals, help, ...).", "NAME"},
         {"screenshot", "Render the screen once, write a PNG to FILE and exit.", "FILE"},
+        {"run",
+         "Run the selected program of the station to its end in simulated time before the "
+         "window appears (e.g. a trend for --screenshot)."},
         {"data",
          "Machine data file (default: $XDG_STATE_HOME/mtc200/machine-data/<cell>.mdt; "
          "'-' keeps nothing).",
@@ -40,6 +43,7 @@ bool parsePanelOptions(const QStringList& arguments, PanelOptions& options, QStr
     options.program = parser.value("program");
     options.screen = parser.value("screen");
     options.screenshot = parser.value("screenshot");
+    options.run = parser.isSet("run");
     options.dataFile = parser.value("data");
     options.dataDefault = !parser.isSet("data");
     if (parser.isSet("data") && options.dataFile.isEmpty()) {

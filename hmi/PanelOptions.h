@@ -13,6 +13,7 @@ struct PanelOptions {
     QString program;      ///< --program FILE|NUM
     QString screen;       ///< --screen NAME
     QString screenshot;   ///< --screenshot FILE
+    bool run = false;     ///< --run: run the selected program to its end first
     /// --data FILE: machine data file ("-" = keep nothing). When
     /// `dataDefault` is true (set by parsePanelOptions without --data), the
     /// default location of docs/CLI.md is used; a default-constructed

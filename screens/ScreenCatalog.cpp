@@ -3,6 +3,7 @@
 #include <memory>
 
 #include "hmi/ScreenRegistry.h"
+#include "screens/afc_trend/AfcTrendScreen.h"
 #include "screens/editor/EditorScreen.h"
 #include "screens/editor/ProgramWorkspaces.h"
 #include "screens/errors/ErrorsScreen.h"
@@ -50,6 +51,8 @@ void registerAllScreens(mtc::hmi::ScreenRegistry& registry) {
                  [](const ScreenContext& c) { return new SignalsScreen(c); });
     registry.add("machine-data", "Machine data",
                  [](const ScreenContext& c) { return new MachineDataScreen(c); });
+    registry.add("afc-trend", "Adaptive feed trend",
+                 [](const ScreenContext& c) { return new AfcTrendScreen(c); });
     registry.add("help", "Key assignments",
                  [](const ScreenContext& c) { return new HelpScreen(c); });
     // The restart screens of a station share one controller (selection,

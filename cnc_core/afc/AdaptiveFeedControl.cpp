@@ -48,10 +48,10 @@ const char* afcStatusCode(AfcStatus status) {
 }
 
 AdaptiveFeedControl::AdaptiveFeedControl(const ProcessConfig& process, MachineDataStore& store,
-                                         TorqueModelParameters model, SignalTable* signals)
+                                         TorqueModelParameters model, SignalTable* signalTable)
     : process_(process),
       store_(store),
-      signals_(signals),
+      signals_(signalTable),
       parameters_(readAfcParameters(process, parameterDiagnostics_)),
       model_(model) {}
 

@@ -46,9 +46,9 @@ struct AfcSample {
 class AdaptiveFeedControl {
   public:
     /// Reads Bxx.062..069 of `process` (bad values: parameterDiagnostics()).
-    /// `signals` (may be null) receives PxxSTHMIS and PxxSEXCTH.
+    /// `signalTable` (may be null) receives PxxSTHMIS and PxxSEXCTH.
     AdaptiveFeedControl(const ProcessConfig& process, MachineDataStore& store,
-                        TorqueModelParameters model = {}, SignalTable* signals = nullptr);
+                        TorqueModelParameters model = {}, SignalTable* signalTable = nullptr);
 
     const DiagnosticList& parameterDiagnostics() const { return parameterDiagnostics_; }
     /// The settings in force now: page 30 when its element 002 is not 0,

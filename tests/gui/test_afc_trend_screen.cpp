@@ -1,0 +1,82 @@
+// Adaptive feed trend screen: the demo program with G26/ITM fills the trend
+// of the simulated machine; soft keys change the window and export PNG and
+// CSV (written atomically).
+#include <QDir>
+#include <QFile>
+#include <QImage>
+#include <QLabel>
+#include <QTemporaryDir>
+
+#include "PanelFixture.h"
+#include "cnc_core/afc/AfcTrendRecorder.h"
+#include "hmi/SimulationClock.h"
+#include "screens/afc_trend/AfcTrendPlot.h"
+#include "screens/afc_trend/AfcTrendScreen.h"
+
+class AfcTrendScreenTest : public QObject {
+    Q_OBJECT
+  private slots:
+    void initTestCase() { useTestSettings(); }
+
+    void demoProgramFillsTheTrendAndExports() {
+        PanelFixture panel;
+        QVERIFY(panel.window->showScreen("afc-trend"));
+        auto* screen =
+            qobject_cast<mtc::screens::AfcTrendScreen*>(panel.window->screen(0, "afc-trend"));
+        QVERIFY(screen);
+        auto* plot = screen->findChild<mtc::screens::AfcTrendPlot*>("afcTrendPlot");
+        auto* status = screen->findChild<QLabel*>("afcTrendStatus");
+        auto* message = screen->findChild<QLabel*>("afcTrendMessage");
+        QVERIFY(plot && status && message);
+        QVERIFY(plot->samples().empty());
+        QVERIFY(status->text().startsWith("No trend yet"));
+
+        // The slot milling demo (program 2 of the mill) at high speed.
+        panel.session->clock(0).setSpeed(1e6);
+        QVERIFY(panel.session->selectProgram(0, 2));
+        QVERIFY(panel.session->pressKey(0, mtc::core::ControlKey::Start));
+        QTRY_VERIFY_WITH_TIMEOUT(!panel.session->control(0).programActive(), 20000);
+        QCOMPARE(QString::fromStdString(panel.session->control(0).alarm()), QString());
+        QTRY_VERIFY(!plot->samples().empty());
+        QVERIFY(status->text().contains("samples"));
+        double peak = 0;
+        for (const auto& s : panel.session->afcTrend(0).samples())
+            peak = std::max(peak, s.feedReduction);
+        QVERIFY(peak > 50.0);  // the F2800 section is reduced by about 70 %
+
+        QCOMPARE(screen->windowSeconds(), 10.0);
+        panel.press(Qt::Key_F1);
+        QCOMPARE(screen->windowSeconds(), 60.0);
+        panel.press(Qt::Key_F1);
+        QCOMPARE(screen->windowSeconds(), 0.0);
+        QCOMPARE(plot->samples().size(), panel.session->afcTrend(0).size());
+
+        QTemporaryDir dir;
+        screen->setExportDirectory(dir.path());
+        panel.press(Qt::Key_F2);
+        QImage image(dir.filePath("afc-trend-P0.png"));
+        QVERIFY(!image.isNull());
+        QVERIFY(message->text().contains("afc-trend-P0.png"));
+        panel.press(Qt::Key_F3);
+        QFile csv(dir.filePath("afc-trend-P0.csv"));
+        QVERIFY(csv.open(QIODevice::ReadOnly));
+        const QList<QByteArray> lines = csv.readAll().split('\n');
+        QVERIFY(lines.first().startsWith("time_s,torque_actual_pct"));
+        QCOMPARE(lines.size() - 2, static_cast<int>(panel.session->afcTrend(0).size()));
+        QCOMPARE(QDir(dir.path()).entryList(QDir::Files).size(), 2);  // no temporary files left
+    }
+
+    void exportIntoAMissingDirectoryIsReported() {
+        PanelFixture panel;
+        QVERIFY(panel.window->showScreen("afc-trend"));
+        auto* screen =
+            qobject_cast<mtc::screens::AfcTrendScreen*>(panel.window->screen(0, "afc-trend"));
+        screen->setExportDirectory("/nonexistent/afc/dir");
+        panel.press(Qt::Key_F3);
+        auto* message = screen->findChild<QLabel*>("afcTrendMessage");
+        QVERIFY(message->text().startsWith("CSV export failed"));
+    }
+};
+
+QTEST_MAIN(AfcTrendScreenTest)
+#include "test_afc_trend_screen.moc"
