@@ -5,9 +5,9 @@ namespace mtc::hmi {
 using mtc::core::ControlKey;
 
 QVector<ControlKey> machineKeys() {
-    return {ControlKey::ProgramRestart, ControlKey::Repos, ControlKey::Manual,
-            ControlKey::Automatic,      ControlKey::Start, ControlKey::Stop,
-            ControlKey::ControlReset};
+    return {ControlKey::ProgramRestart, ControlKey::Repos,      ControlKey::Manual,
+            ControlKey::Automatic,      ControlKey::Start,      ControlKey::Stop,
+            ControlKey::ControlReset,   ControlKey::SingleBlock};
 }
 
 QKeySequence machineKeyShortcut(ControlKey key) {
@@ -26,6 +26,8 @@ QKeySequence machineKeyShortcut(ControlKey key) {
             return QKeySequence(Qt::SHIFT | Qt::Key_F6);
         case ControlKey::ControlReset:
             return QKeySequence(Qt::SHIFT | Qt::Key_F7);
+        case ControlKey::SingleBlock:
+            return QKeySequence(Qt::SHIFT | Qt::Key_F8);
     }
     return {};
 }

@@ -22,6 +22,7 @@ namespace {
 const QString kMenuScreen = "menu";
 const QString kHelpScreen = "help";
 const QString kRestartScreen = "restart";
+const QString kReposScreen = "repos";
 }  // namespace
 
 PanelWindow::PanelWindow(CellSession* session, const ScreenRegistry* registry, QWidget* parent)
@@ -144,6 +145,9 @@ void PanelWindow::onMachineKey(mtc::core::ControlKey key) {
     const bool accepted = session_->pressKey(station_, key);
     // The M key 'NC program restart' brings up the restart screen (seed 000, 2.2).
     if (accepted && key == mtc::core::ControlKey::ProgramRestart) showScreen(kRestartScreen);
+    // REPOS during a restart's repositioning phase: the SPS sets PxxCREPOS,
+    // which brings up the repositioning screen (seed 000, Fig. 7-14 rung 6).
+    if (accepted && key == mtc::core::ControlKey::Repos) showScreen(kReposScreen);
 }
 
 void PanelWindow::restoreSettings() {

@@ -69,7 +69,12 @@ void SimulationClock::tick() {
         auto result = interpreter_.step();
         switch (result.status) {
             case RunStatus::Running:
-                continue;
+                if (!control_.singleBlock()) continue;
+                // Single-block mode: hold after the block until Start.
+                timer_.stop();
+                control_.programStopped("Single block: press Start for the next block");
+                showCurrentBlock();
+                return;
             case RunStatus::Ended:
                 return finish({});
             case RunStatus::Stopped:

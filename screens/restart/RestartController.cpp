@@ -357,8 +357,28 @@ QString RestartController::phaseText() const {
                 break;
             }
     }
-    if (run_->held()) text += " Held: Start continues.";
+    if (run_->held()) text += heldText();
+    const std::string axis = run_->sequence().waitingFor();
+    if (!axis.empty() && run_->phase() == mtc::core::RestartPhase::Computing)
+        text += QString(" Waiting for another process: %1 (%2).")
+                    .arg(QString::fromStdString(axis),
+                         axis.rfind("FAX", 0) == 0 ? "until it requests the axis with GAX"
+                                                   : "until it relinquishes the axis with FAX");
     return text;
+}
+
+QString RestartController::heldText() const {
+    if (!session_->control(slot_).singleBlock()) return " Held: Start continues.";
+    // Single-block mode: say which block Start interprets next.
+    const mtc::core::InterpreterState& state = run_->phase() == mtc::core::RestartPhase::Computing
+                                                   ? run_->sequence().computing().state()
+                                                   : session_->interpreter(slot_).state();
+    const QString next = state.program
+                             ? QString("P%1 %2")
+                                   .arg(state.program->number)
+                                   .arg(QString::fromStdString(state.program->blockId(state.block)))
+                             : QString("?");
+    return QString(" Single block: held; Start interprets the next block (%1).").arg(next);
 }
 
 QString RestartController::breadcrumb() const {

@@ -113,6 +113,7 @@ class RestartController : public QObject {
     void showLevel();
     void cursorMoved();
     QString refusalReason() const;
+    QString heldText() const;
     void phaseChanged(mtc::core::RestartPhase phase);
 
     mtc::hmi::CellSession* session_;

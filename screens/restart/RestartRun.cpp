@@ -28,6 +28,7 @@ RestartRun::RestartRun(mtc::hmi::CellSession* session, int slot, QObject* parent
     sequence_ = std::make_unique<mtc::core::RestartSequence>(
         session->control(slot), sps_, session->interpreter(slot), session->store(),
         session->machine(slot));
+    sequence_->setAxisTransfer(&session->axisTransfer());
     timer_.setInterval(kTickMs);
     connect(&timer_, &QTimer::timeout, this, &RestartRun::tick);
     // Keys the sequence handled (Start, Manual, Control reset, ...) change its phase.
@@ -69,13 +70,17 @@ bool RestartRun::jog(int axis, double distance) {
     return ok;
 }
 
+bool RestartRun::waiting() const {
+    return sequence_->held() || !sequence_->waitingFor().empty();
+}
+
 void RestartRun::tick() {
     QElapsedTimer budget;
     budget.start();
     mtc::core::RestartPhase phase = sequence_->phase();
     do {
         phase = sequence_->advance(kSliceBlocks);
-    } while (runsBlocks(phase) && !sequence_->held() && budget.nsecsElapsed() < kTickBudgetNs);
+    } while (runsBlocks(phase) && !waiting() && budget.nsecsElapsed() < kTickBudgetNs);
     emit progressed();
     follow();
 }
@@ -84,7 +89,7 @@ void RestartRun::follow() {
     const mtc::core::RestartPhase phase = sequence_->phase();
     // Back-to-back slices while blocks are interpreted (the event loop runs
     // between them), a slow scan while the sequence waits for the operator.
-    timer_.setInterval(runsBlocks(phase) && !sequence_->held() ? 0 : kTickMs);
+    timer_.setInterval(runsBlocks(phase) && !waiting() ? 0 : kTickMs);
     if (sequence_->active() && !timer_.isActive()) timer_.start();
     if (!sequence_->active()) timer_.stop();
     if (phase == lastPhase_) return;

@@ -66,6 +66,8 @@ class RestartRun : public QObject {
   private:
     void tick();
     void follow();
+    /// Held, or waiting for another process's GAX / FAX: a slow scan will do.
+    bool waiting() const;
 
     mtc::hmi::CellSession* session_;
     int slot_;
