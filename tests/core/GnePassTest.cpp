@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "CompilerTestSupport.h"
+#include "cnc_core/contour/ToolCheck.h"
 
 namespace mtc::core::gne {
 namespace {
@@ -67,6 +68,30 @@ TEST(GnePass, ProgramsWithoutGneAreUntouched) {
         "N0001 G0 G17 G90 X0 Y0\nN0002 G1 X20 Y0 F100 RD 2\nN0003 X20 Y20\nN0004 M30\n");
     EXPECT_TRUE(r.errors.empty()) << r.errors[0].code;
     EXPECT_EQ(objectBlocks(r)[2].substr(0, 10), "N0002:0001");  // the CF/RD pass's rounding
+}
+
+}  // namespace
+}  // namespace mtc::core::gne
+
+
+namespace mtc::core::gne {
+namespace {
+
+TEST(GneToolCheck, AssumptionAgainstTheToolList) {
+    ToolConfig turn{1, 0.4, 61.5, 3, "turn1"};
+    ToolAssumption assumed{1, true, 0.4, 3, 80, 95, 0};
+    EXPECT_TRUE(checkToolAssumption(assumed, &turn).empty());
+    assumed.radius = 0.8;
+    assumed.edge = 2;
+    const auto problems = checkToolAssumption(assumed, &turn);
+    ASSERT_EQ(problems.size(), 2u);
+    EXPECT_NE(problems[0].find("radius 0.4"), std::string::npos);
+    EXPECT_NE(problems[1].find("orientation 3"), std::string::npos);
+    EXPECT_EQ(checkToolAssumption(assumed, nullptr),
+              std::vector<std::string>{"T1 is not in the tool list"});
+    ToolAssumption mill{7, false, 3.5, 0, 0, 0, 0};
+    ToolConfig cutter{7, 3.5, 97.5, 0, "mill7"};
+    EXPECT_TRUE(checkToolAssumption(mill, &cutter).empty());  // no edge for milling tools
 }
 
 }  // namespace
