@@ -7,6 +7,7 @@
 #include "screens/editor/EditorScreen.h"
 #include "screens/editor/ProgramWorkspaces.h"
 #include "screens/errors/ErrorsScreen.h"
+#include "screens/gne/GneScreen.h"
 #include "screens/help/HelpScreen.h"
 #include "screens/machine_data/MachineDataScreen.h"
 #include "screens/menu/MenuScreen.h"
@@ -36,6 +37,13 @@ void registerAllScreens(mtc::hmi::ScreenRegistry& registry) {
         "editor", "Program editor",
         [programming](const ScreenContext& c) {
             return new EditorScreen(c, programming->forStation(c));
+        },
+        false);
+    // The graphical NC editor works on the editor's program and line.
+    registry.add(
+        "gne", "Graphical NC editor (GNE)",
+        [programming](const ScreenContext& c) {
+            return new GneScreen(c, programming->forStation(c));
         },
         false);
     registry.add("errors", "Error display", [programming, restart](const ScreenContext& c) {
