@@ -91,7 +91,8 @@ void NcHighlighter::highlightWord(const QString& text, int start, int end) {
     const int length = end - start;
     const bool numbered = length > 1 && (text[start + 1].isDigit() || text[start + 1] == '.');
     if (numbered) {
-        const bool atBlockStart = text.left(start).trimmed().remove('/').isEmpty();
+        const bool atBlockStart =
+            text.left(start).remove(QChar(0x2192)).remove('/').trimmed().isEmpty();
         if (letter == 'N' && atBlockStart)
             QSyntaxHighlighter::setFormat(start, length, format(Token::BlockNumber));
         else if (letter == 'G')

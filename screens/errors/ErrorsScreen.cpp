@@ -1,5 +1,6 @@
 #include "screens/errors/ErrorsScreen.h"
 
+#include <QFontDatabase>
 #include <QKeyEvent>
 #include <QLabel>
 #include <QListWidget>
@@ -38,6 +39,7 @@ ErrorsScreen::ErrorsScreen(const mtc::hmi::ScreenContext& context,
     : Screen(context), workspace_(std::move(workspace)), restart_(std::move(restart)) {
     list_ = new QListWidget(this);
     list_->setObjectName("errorList");
+    list_->setFont(QFontDatabase::systemFont(QFontDatabase::FixedFont));
     list_->installEventFilter(this);
     hint_ = new QLabel(this);
     hint_->setObjectName("errorHint");

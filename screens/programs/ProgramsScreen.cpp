@@ -31,7 +31,7 @@ ProgramsScreen::ProgramsScreen(const mtc::hmi::ScreenContext& context,
     message_ = new QLabel(this);
     message_->setObjectName("programsMessage");
     auto* columns = new QHBoxLayout;
-    columns->addWidget(list_, 1);
+    columns->addWidget(list_, 2);
     columns->addWidget(listing_, 3);
     auto* layout = new QVBoxLayout(this);
     layout->addLayout(columns, 1);

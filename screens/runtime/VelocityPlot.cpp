@@ -41,13 +41,14 @@ void VelocityPlot::paintEvent(QPaintEvent*) {
     QPainter painter(this);
     painter.setRenderHint(QPainter::Antialiasing);
     painter.fillRect(rect(), Qt::white);
-    const QRectF area = QRectF(rect()).adjusted(40, 22, -10, -20);
+    const int line = painter.fontMetrics().height();
+    const QRectF area = QRectF(rect()).adjusted(40, line + 4, -10, -line - 2);
     if (segment_.curve.empty()) {
         painter.setPen(QColor(90, 90, 90));
         painter.drawText(rect(), Qt::AlignCenter, caption_);
         return;
     }
-    painter.drawText(QRectF(area.left(), 2, area.width(), 16), Qt::AlignRight, caption_);
+    painter.drawText(QRectF(area.left(), 2, area.width(), line), Qt::AlignRight, caption_);
     painter.setPen(QPen(QColor(190, 190, 190), 1));
     for (double s : segment_.blockStarts)
         painter.drawLine(toScreen(area, s, 0), toScreen(area, s, 0) - QPointF(0, 6));
