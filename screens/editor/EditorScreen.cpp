@@ -149,6 +149,8 @@ void EditorScreen::openGne() {
         showMessage("The graphical NC editor (GNE) is not part of this panel yet", true);
         return;
     }
+    // The GNE works on the saved program: unsaved changes are saved first.
+    if (program_ != 0 && edit_->document()->isModified() && !save()) return;
     workspace_->requestEdit(program_, edit_->cursorLine());
     emit navigateTo(kGneScreen);
 }

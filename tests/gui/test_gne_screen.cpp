@@ -274,6 +274,18 @@ class GneScreenTest : public QObject {
         QCOMPARE(model.rows().size(), std::size_t{12});
     }
 
+    void unsavedEditorChangesReachTheGne() {
+        PanelFixture panel(options());
+        editAt(panel, 9, 14);  // START Z0 X20
+        panel.press(Qt::Key_End);
+        QTest::keyClick(QApplication::focusWidget(), '5');  // X205, not saved yet
+        panel.press(Qt::Key_F4);
+        QCOMPARE(panel.window->currentScreenName(), QString("gne"));
+        auto* rows = child<QListWidget>(panel, "gne", "gneRows");
+        QCOMPARE(rows->currentItem()->text(), QString("  START Z0 X205"));
+        QVERIFY(panel.session->program(0, 9)->source.find("START Z0 X205") != std::string::npos);
+    }
+
     void refusedValueKeepsTheOldOne() {
         PanelFixture panel(options());
         editAt(panel, 9, 15);  // on CCW
