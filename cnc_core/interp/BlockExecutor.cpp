@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "cnc_core/contour/ToolCheck.h"
+
 namespace mtc::core {
 namespace {
 
@@ -169,11 +171,26 @@ bool BlockExecutor::scalars(const BlockContext& c, const BlockInput& in, BlockPl
                                " is not in the current tools list of process " +
                                std::to_string(setup_.config->index),
                            in.toolColumn);
+        if (in.tool != 0) checkGneTool(c, in);
         next.tool = in.tool;
     }
     if (in.hasEdge) next.edge = in.edge;
     if (in.hasCorrection) next.correction = in.correction;
     return in.spindleMask == 0 || spindles(c, in, next);
+}
+
+void BlockExecutor::checkGneTool(const BlockContext& c, const BlockInput& in) const {
+    const Block block = c.program.blocks[c.blockIndex];
+    const std::string_view comment = c.program.text(block.comment);
+    gne::ToolAssumption assumed;
+    if (comment.rfind("GNE TOOL", 0) != 0 ||
+        !gne::parseToolBlock("T" + std::to_string(in.tool) + " ;" + std::string(comment), assumed))
+        return;
+    std::string message;
+    for (const std::string& problem :
+         gne::checkToolAssumption(assumed, setup_.config->tool(in.tool)))
+        message += (message.empty() ? "" : "; ") + problem;
+    if (!message.empty()) c.warning("GNE_TOOL_MISMATCH", message, in.toolColumn);
 }
 
 bool BlockExecutor::spindles(const BlockContext& c, const BlockInput& in, ModalState& next) const {

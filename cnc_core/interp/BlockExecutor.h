@@ -55,6 +55,10 @@ class BlockExecutor {
                           bool restoring) const;
     void explicitGroups(const BlockInput& in, ModalState& next) const;
     bool scalars(const BlockContext& c, const BlockInput& in, BlockPlan& plan) const;
+    /// The seed 001 ch. 3 caution: a "T.. ;GNE TOOL ..." block of a GNE
+    /// cycle warns when the tool list differs from the data the cycle was
+    /// programmed with (ToolCheck.h, docs/decisions/gne.md G-011).
+    void checkGneTool(const BlockContext& c, const BlockInput& in) const;
     bool spindles(const BlockContext& c, const BlockInput& in, ModalState& next) const;
     bool auxiliaries(const BlockContext& c, const BlockInput& in, const InterpreterState& state,
                      BlockPlan& plan) const;

@@ -285,14 +285,29 @@ TEST(GneCycle, MillingBlocksRunOnTheMill) {
                       "FORM_55 (6, 60, 40, 30, 120, 4, \"INDRAMAT\")\n"
                       "FORM_56 (7, 5, 5, 115, 75, 5)\nFORM_57 (8, 30, 40, 20, 10, 30, 4)\n"
                       "CYCLE_40 (1, 1, 500, 3000, 3.5, 1, 2, -4)\n"
-                      "CYCLE_40 (2, 1, 500, , 2, 1, 2, -4)\n"
+                      "CYCLE_40 (2, 6, 500, , 2, 1, 2, -4)\n"
                       "CYCLE_40 (3, 1, 500, , 3.5, 2, 2, -4)\n"
                       "CYCLE_40 (4, 1, 500, , 3.5, 2, 2, -4)\n"
-                      "CYCLE_40 (5, 6, 300, , 1, 0, 2, -0.3)\n"
-                      "CYCLE_40 (6, 6, 300, , 1, 0, 2, -0.3)\n"
+                      "CYCLE_40 (5, 6, 300, , 2, 0, 2, -0.3)\n"
+                      "CYCLE_40 (6, 6, 300, , 2, 0, 2, -0.3)\n"
                       "CYCLE_40 (7, 1, 500, , 3.5, 2, 2, -4)\n"
                       "CYCLE_40 (8, 1, 500, , 3.5, 1, 2, -4)\n"),
                0);
+}
+
+TEST(GneCycle, RunWarnsWhenTheToolDiffersFromTheCycle) {
+    // The cycle was programmed for a nose radius of 0.8 and edge 2; T1 of
+    // the demo lathe has 0.4 and edge 3 (seed 001 ch. 3 caution).
+    mtc::test::Station station(mtc::test::demoCell(), 1);
+    RunResult r = station.run("N0001 T1 ;GNE TOOL EDGE 2 TR 0.8 CA 80 SA 95\nN0002 M30\n", 1);
+    EXPECT_EQ(r.status, RunStatus::Ended);
+    const std::string text = mtc::test::diagnosticsText(r.diagnostics);
+    EXPECT_EQ(text.rfind("warning GNE_TOOL_MISMATCH P1 N0001", 0), 0u) << text;
+    EXPECT_NE(text.find("radius 0.4"), std::string::npos) << text;
+    EXPECT_NE(text.find("orientation 3"), std::string::npos) << text;
+    mtc::test::Station fits(mtc::test::demoCell(), 1);
+    RunResult ok = fits.run("N0001 T1 ;GNE TOOL EDGE 3 TR 0.4 CA 80 SA 95\nN0002 M30\n", 1);
+    EXPECT_TRUE(ok.diagnostics.empty()) << mtc::test::diagnosticsText(ok.diagnostics);
 }
 
 }  // namespace
