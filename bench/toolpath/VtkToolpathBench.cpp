@@ -18,6 +18,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <vector>
 
@@ -42,20 +43,23 @@ double peakRssMb() {
     return static_cast<double>(usage.ru_maxrss) / 1024.0;
 }
 
-/// 1,000,000 straight moves on process 0 of the demo cell (a zigzag in layers).
-ToolpathGeometry million() {
+/// `count` straight moves on process 0 of the demo cell: 0.1 mm segments in
+/// 100 mm passes, 60 mm wide layers (what a finishing path of that size draws).
+ToolpathGeometry million(int count) {
     const MachineConfig cell =
         readMachineConfig(mtc::resources::find(mtc::resources::kDemoCellName)).config;
     DiagnosticList ignored;
     ToolpathBuilder builder(ProcessAxes::build(*cell.process(0), ignored));
     Motion m;
     m.axisCount = 3;
-    for (int i = 0; i < 1'000'000; ++i) {
+    for (int i = 0; i < count; ++i) {
         m.start = m.end;
-        m.type = i % 10 == 0 ? MotionType::Rapid : MotionType::Linear;
-        m.end[0] = (i % 2 ? 100.0 : 0.0);
-        m.end[1] = (i % 2000) * 0.03;
-        m.end[2] = -(i / 2000) * 0.1;
+        // Passes of 1000 segments of 0.1 mm (a finishing path), every 100th a rapid.
+        const int pass = i / 1000, step = i % 1000 + 1;
+        m.type = i % 100 == 0 ? MotionType::Rapid : MotionType::Linear;
+        m.end[0] = pass % 2 ? 100.0 - step * 0.1 : step * 0.1;
+        m.end[1] = pass * 0.06;
+        m.end[2] = -(pass / 100) * 0.5;
         m.blockIndex = static_cast<std::uint32_t>(i);
         builder.motion(m);
     }
@@ -79,17 +83,20 @@ void frames(vtkPolyData* full, vtkPolyData* coarse) {
         auto first = Clock::now();
         window->Render();
         const double firstMs = msSince(first);
+        std::printf("first frame %.1f ms\n", firstMs);
+        std::fflush(stdout);
         std::vector<double> times;
-        for (int i = 0; i < 20; ++i) {
+        for (int i = 0; i < 10; ++i) {
             renderer->GetActiveCamera()->Azimuth(5);
             auto t = Clock::now();
             window->Render();
             times.push_back(msSince(t));
+            std::fflush(stdout);
         }
         std::sort(times.begin(), times.end());
         std::printf("frames %s (%lld cells): first %.1f ms, median %.1f ms, max %.1f ms\n",
                     data == full ? "full" : "level of detail",
-                    static_cast<long long>(data->GetNumberOfCells()), firstMs, times[10],
+                    static_cast<long long>(data->GetNumberOfCells()), firstMs, times[5],
                     times.back());
     }
     const char* capabilities = window->ReportCapabilities();
@@ -104,7 +111,8 @@ int main(int argc, char** argv) {
     const bool withFrames = argc > 1 && std::strcmp(argv[1], "--frames") == 0;
     const double rss0 = peakRssMb();
     auto t0 = Clock::now();
-    ToolpathGeometry g = million();
+    const int count = argc > 2 ? std::atoi(argv[2]) : 1'000'000;
+    ToolpathGeometry g = million(count);
     std::printf("geometry: %zu segments in %.1f ms, %.1f MB held, peak RSS +%.1f MB\n",
                 g.scene.segmentCount(), msSince(t0), g.memoryBytes() / 1e6, peakRssMb() - rss0);
     mtc::screens::ToolpathPalette palette;
@@ -120,6 +128,7 @@ int main(int argc, char** argv) {
         static_cast<long long>(full->GetNumberOfCells()), fullMs,
         static_cast<long long>(coarse->GetNumberOfCells()), msSince(t2), peakRssMb() - rss1,
         peakRssMb());
+    std::fflush(stdout);
     if (withFrames) frames(full, coarse);
     return 0;
 }
