@@ -46,9 +46,29 @@ CellSession::CellSession(mtc::core::MachineConfig config, QObject* parent)
         connect(&stations_.back()->clock, &SimulationClock::changed, this,
                 [this, slot] { emit processChanged(slot); });
     }
+    saveTimer_.setSingleShot(true);
+    saveTimer_.setInterval(kNcSaveDelayMs);
+    connect(&saveTimer_, &QTimer::timeout, this, [this] {
+        QString error;
+        autoSaveError_ = saveMachineData(error) ? QString() : error;
+    });
+    // Every change of a station may come with MTD writes or page 30 status.
+    connect(this, &CellSession::processChanged, this, [this] {
+        if (machineDataUnsaved() && machineDataWritable_ && !saveTimer_.isActive())
+            saveTimer_.start();
+    });
 }
 
-CellSession::~CellSession() = default;
+CellSession::~CellSession() {
+    if (machineDataUnsaved()) {  // nothing the NC wrote is lost at exit
+        QString error;
+        saveMachineData(error);
+    }
+}
+
+bool CellSession::machineDataUnsaved() const {
+    return !machineDataFile_.isEmpty() && machineData_->revision() != savedRevision_;
+}
 
 const mtc::core::ProcessConfig& CellSession::processConfig(int slot) const {
     return config_.processes.at(static_cast<size_t>(slot));
@@ -134,6 +154,7 @@ QStringList CellSession::openMachineDataFile(const QString& path) {
     const mtc::core::MachineDataLoadResult result =
         mtc::core::MachineDataFile(path.toStdString()).load(*machineData_);
     machineDataWritable_ = result.mayOverwrite;
+    savedRevision_ = machineData_->revision();
     for (const mtc::core::Diagnostic& d : result.diagnostics.items())
         machineDataMessages_ << QString::fromStdString(d.message);
     for (int slot = 0; slot < processCount(); ++slot)
@@ -148,8 +169,11 @@ bool CellSession::saveMachineData(QString& error) {
         return false;
     }
     std::string reason;
-    if (mtc::core::MachineDataFile(machineDataFile_.toStdString()).save(*machineData_, reason))
+    const std::uint64_t revision = machineData_->revision();
+    if (mtc::core::MachineDataFile(machineDataFile_.toStdString()).save(*machineData_, reason)) {
+        savedRevision_ = revision;
         return true;
+    }
     error = QString::fromStdString(reason);
     return false;
 }

@@ -3,6 +3,8 @@
 #include <QObject>
 #include <QString>
 #include <QStringList>
+#include <QTimer>
+#include <cstdint>
 #include <memory>
 #include <vector>
 
@@ -86,6 +88,14 @@ class CellSession : public QObject {
     /// Writes the machine data to its file (no-op without one). False with
     /// `error` when it cannot (then the file on disk is the old one).
     bool saveMachineData(QString& error);
+    /// True while values changed since the last save or load (MTD writes of
+    /// NC programs, page 30 status): they are saved within kNcSaveDelayMs and
+    /// when the session ends.
+    bool machineDataUnsaved() const;
+    /// The reason the last automatic save failed ("" = none).
+    const QString& autoSaveError() const { return autoSaveError_; }
+    /// Delay of the automatic save after the NC changed machine data.
+    static constexpr int kNcSaveDelayMs = 1000;
     /// The file the machine data is kept in ("" = none).
     QString machineDataFile() const { return machineDataFile_; }
     /// Messages of the last openMachineDataFile() (damaged file, ignored values).
@@ -104,6 +114,9 @@ class CellSession : public QObject {
     QString programDirectory_;
     bool machineDataWritable_ = true;
     QStringList machineDataMessages_;
+    QTimer saveTimer_;                 ///< debounces saves of NC-written values
+    std::uint64_t savedRevision_ = 0;  ///< store revision the file holds
+    QString autoSaveError_;
     std::vector<std::unique_ptr<Station>> stations_;
 };
 

@@ -30,8 +30,10 @@ class MachineDataFile {
     explicit MachineDataFile(std::string path) : path_(std::move(path)) {}
 
     const std::string& path() const { return path_; }
-    /// Reads the file into `store`. A missing file leaves the defaults and
-    /// reports nothing. A damaged file is renamed to `<path>.damaged-<time>`
+    /// Reads the file into `store`. First removes `<path>.tmpXXXXXX` files
+    /// older than a minute that a killed save left behind (warning
+    /// MD_STALE_TEMPORARY each). A missing file leaves the defaults and
+    /// reports nothing else. A damaged file is renamed to `<path>.damaged-<time>`
     /// and the store is reset to its defaults (warning MD_FILE_DAMAGED). Values
     /// the store refuses (pages or elements no longer configured, ranges) are
     /// left out, the file is kept aside the same way (warning

@@ -9,6 +9,8 @@
 
 #include "PanelFixture.h"
 #include "cnc_core/afc/AfcTrendRecorder.h"
+#include "cnc_core/machine_data/MachineDataFile.h"
+#include "cnc_core/machine_data/MachineDataStore.h"
 #include "hmi/SimulationClock.h"
 #include "screens/afc_trend/AfcTrendPlot.h"
 #include "screens/afc_trend/AfcTrendScreen.h"
@@ -75,6 +77,40 @@ class AfcTrendScreenTest : public QObject {
         panel.press(Qt::Key_F3);
         auto* message = screen->findChild<QLabel*>("afcTrendMessage");
         QVERIFY(message->text().startsWith("CSV export failed"));
+    }
+
+    /// Values the NC writes (page 30 status of G26/G25) reach the data file
+    /// within a second, and at the latest when the session ends.
+    void ncWrittenMachineDataIsSaved() {
+        QTemporaryDir dir;
+        const QString file = dir.filePath("cell.mdt");
+        mtc::hmi::PanelOptions options;
+        options.dataFile = file;
+        double peak = -1;
+        mtc::core::MachineConfig config;
+        {
+            PanelFixture panel(options);
+            config = panel.session->config();
+            panel.session->clock(0).setSpeed(1e6);
+            QVERIFY(panel.session->selectProgram(0, 2));
+            QVERIFY(panel.session->pressKey(0, mtc::core::ControlKey::Start));
+            QTRY_VERIFY_WITH_TIMEOUT(!panel.session->control(0).programActive(), 20000);
+            QTRY_VERIFY_WITH_TIMEOUT(!panel.session->machineDataUnsaved(), 5000);
+            mtc::core::MachineDataStore saved(panel.session->config());
+            QVERIFY(mtc::core::MachineDataFile(file.toStdString()).load(saved).diagnostics.empty());
+            saved.read({30, 0, 0, 12}, peak);
+            QVERIFY(peak > 50.0);  // 012 peak feed reduction, written at G25
+            // A change right before the end: saved by the destructor, not lost.
+            QCOMPARE(panel.session->machineData().write({30, 0, 0, 10}, 44.0,
+                                                        mtc::core::MachineDataWriter::Nc),
+                     mtc::core::MachineDataStatus::Ok);
+            QVERIFY(panel.session->machineDataUnsaved());
+        }
+        mtc::core::MachineDataStore reloaded(config);
+        QVERIFY(mtc::core::MachineDataFile(file.toStdString()).load(reloaded).diagnostics.empty());
+        double limit = -1;
+        reloaded.read({30, 0, 0, 10}, limit);
+        QCOMPARE(limit, 44.0);
     }
 };
 
