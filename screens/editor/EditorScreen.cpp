@@ -62,7 +62,7 @@ void EditorScreen::activated() {
     int wanted = workspace_->editProgram();
     if (wanted == 0) wanted = context().session->control(context().process).selectedProgram();
     const auto program = context().session->program(context().process, wanted);
-    const bool other = wanted != program_ || (program && program.get() != loadedSource_);
+    const bool other = wanted != program_ || (program && program != loadedSource_);
     if (program && other) {
         if (edit_->document()->isModified() && wanted != program_) {
             showMessage(QString("Program %1 has unsaved changes: Save (F1) or Discard (F7) first")
@@ -88,7 +88,7 @@ void EditorScreen::open(int number) {
     edit_->load(QString::fromStdString(program->source));
     lastOpenMs_ = timer.elapsed();
     program_ = number;
-    loadedSource_ = program.get();
+    loadedSource_ = program;
     workspace_->requestEdit(number, workspace_->editLine());
     if (edit_->loading())
         showMessage(QString("Loading... first %1 lines shown after %2 ms")
@@ -105,7 +105,7 @@ bool EditorScreen::save() {
         showMessage(error, true);
         return false;
     }
-    loadedSource_ = context().session->program(context().process, program_).get();
+    loadedSource_ = context().session->program(context().process, program_);
     edit_->document()->setModified(false);
     const QString file = workspace_->filePath(program_, "DAT");
     showMessage(file.isEmpty() ? "Saved (program memory; built-in program without file)"

@@ -2,6 +2,7 @@
 
 #include <memory>
 
+#include "cnc_core/language/Program.h"
 #include "hmi/Screen.h"
 
 class QLabel;
@@ -54,7 +55,7 @@ class EditorScreen : public mtc::hmi::Screen {
     QLabel* status_;
     QLabel* message_;
     int program_ = 0;
-    const void* loadedSource_ = nullptr;  ///< the Program the text came from
+    mtc::core::ProgramPtr loadedSource_;  ///< the program the text came from
     qint64 lastOpenMs_ = 0;
 };
 

@@ -37,8 +37,9 @@ NcCodeEdit::NcCodeEdit(QWidget* parent) : QPlainTextEdit(parent) {
     setLineWrapMode(QPlainTextEdit::NoWrap);
     gutter_ = new Gutter(this);
     highlighter_ = new NcHighlighter(document());
-    connect(this, &QPlainTextEdit::blockCountChanged, this,
-            [this] { setViewportMargins(gutterWidth(), 0, 0, 0); });
+    connect(this, &QPlainTextEdit::blockCountChanged, this, [this] {
+        if (viewportMargins().left() != gutterWidth()) setViewportMargins(gutterWidth(), 0, 0, 0);
+    });
     connect(this, &QPlainTextEdit::updateRequest, this, &NcCodeEdit::updateGutter);
     connect(this, &QPlainTextEdit::cursorPositionChanged, gutter_, [this] { gutter_->update(); });
     setViewportMargins(gutterWidth(), 0, 0, 0);

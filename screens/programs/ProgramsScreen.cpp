@@ -10,6 +10,7 @@
 
 #include "hmi/CellSession.h"
 #include "hmi/ProgramWorkspace.h"
+#include "screens/editor/NcCodeEdit.h"
 #include "screens/programs/ProgramDirectoryModel.h"
 
 namespace mtc::screens {
@@ -22,7 +23,8 @@ ProgramsScreen::ProgramsScreen(const mtc::hmi::ScreenContext& context,
     list_->setObjectName("programList");
     list_->setModel(model_);
     list_->installEventFilter(this);
-    listing_ = new QPlainTextEdit(this);
+    // The listing loads long programs in chunks (1,000,000 blocks stay fluent).
+    listing_ = new NcCodeEdit(this);
     listing_->setObjectName("programListing");
     listing_->setReadOnly(true);
     listing_->setFocusPolicy(Qt::NoFocus);
@@ -60,7 +62,9 @@ void ProgramsScreen::activated() {
 void ProgramsScreen::showListing() {
     const int number = model_->programAt(list_->currentIndex().row());
     const auto program = context().session->program(context().process, number);
-    listing_->setPlainText(program ? QString::fromStdString(program->source) : QString());
+    if (program == shownProgram_ && program) return;
+    shownProgram_ = program;
+    listing_->load(program ? QString::fromStdString(program->source) : QString());
 }
 
 int ProgramsScreen::currentNumber() const {
@@ -122,9 +126,10 @@ mtc::hmi::SoftKeys ProgramsScreen::softKeys() {
                    workspace_->requestEdit(currentNumber(), 0);
                    emit navigateTo("runtime");
                }};
-    keys[4] = {"Error\ndisplay", [this] { emit navigateTo("errors"); }};
+
     keys[5] = {workspace_->compilerActive() ? "Compiler\nactive: Yes" : "Compiler\nactive: No",
                [this] { toggleCompiler(); }};
+    keys[6] = {"Error\ndisplay", [this] { emit navigateTo("errors"); }};
     keys[7] = {"Back", [this] { emit navigateTo("menu"); }};
     return keys;
 }

@@ -2,6 +2,7 @@
 
 #include <memory>
 
+#include "cnc_core/language/Program.h"
 #include "hmi/Screen.h"
 
 class QLabel;
@@ -14,6 +15,7 @@ class ProgramWorkspace;
 
 namespace mtc::screens {
 
+class NcCodeEdit;
 class ProgramDirectoryModel;
 
 /// Program directory of a station: the programs in memory with their
@@ -46,7 +48,8 @@ class ProgramsScreen : public mtc::hmi::Screen {
 
     ProgramDirectoryModel* model_;
     QListView* list_;
-    QPlainTextEdit* listing_;
+    NcCodeEdit* listing_;
+    mtc::core::ProgramPtr shownProgram_;  ///< the program the listing shows
 };
 
 }  // namespace mtc::screens

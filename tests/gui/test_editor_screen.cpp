@@ -8,6 +8,7 @@
 #include <QPlainTextEdit>
 #include <QTemporaryDir>
 #include <QTextBlock>
+#include <cmath>
 
 #include "PanelFixture.h"
 #include "hmi/ErrorLog.h"
@@ -18,6 +19,7 @@
 #include "screens/errors/ErrorsScreen.h"
 #include "screens/programs/ProgramDirectoryModel.h"
 #include "screens/runtime/RuntimeScreen.h"
+#include "screens/runtime/VelocityPlot.h"
 
 namespace {
 
@@ -49,6 +51,20 @@ const char* kChamferProgram =
     "N0004 G1 X0 Y20\n"
     "N0005 M30\n"
     "N0006 PROGRAMMENDE\n";
+
+/// A closed polygon with a look-ahead segment (I/J: absolute centre).
+const char* kLookAheadProgram =
+    "N0000 G0 G17 G90 X0 Y0 Z0\n"
+    "N0001 G1 F6000\n"
+    "N0002 LA_ON\n"
+    "N0003 G1 X40 Y0\n"
+    "N0004 G1 X40 Y20\n"
+    "N0005 G3 X20 Y40 I20 J20\n"
+    "N0006 G1 X0 Y40\n"
+    "N0007 G1 X0 Y0\n"
+    "N0008 LA_OFF\n"
+    "N0009 M30\n"
+    "N0010 PROGRAMMENDE\n";
 
 void writeProgram(const QDir& dir, int number, const QString& text) {
     QFile file(dir.filePath(QString("N1010%1.DAT").arg(number, 3, 10, QChar('0'))));
@@ -90,6 +106,7 @@ class EditorScreenTest : public QObject {
         writeProgram(dir, 5, header(5, "Macro test") + kMacroProgram);
         writeProgram(dir, 6, header(6, "No keyword") + kPlainProgram);
         writeProgram(dir, 7, header(7, "Chamfer test") + kChamferProgram);
+        writeProgram(dir, 8, header(8, "Look-ahead test") + kLookAheadProgram);
         mtc::hmi::PanelOptions o;
         o.programsDir = dir_.path();
         return o;
@@ -207,6 +224,29 @@ class EditorScreenTest : public QObject {
                  qPrintable(source->textCursor().block().text()));
     }
 
+    void runtimeViewPlotsTheLookAheadProfile() {
+        PanelFixture panel(options());
+        pickProgram(panel, 8);
+        panel.press(Qt::Key_F6);
+        panel.press(Qt::Key_F3);
+        QTRY_VERIFY2(directoryRow(panel, 8).contains("[C]"), qPrintable(directoryRow(panel, 8)));
+        panel.press(Qt::Key_F4);
+        auto* screen = qobject_cast<mtc::screens::RuntimeScreen*>(panel.window->currentScreen());
+        QVERIFY(screen);
+        const auto& segment = screen->plot()->segment();
+        QVERIFY(!segment.curve.empty());
+        QCOMPARE(segment.sourceLine, 14);  // N0003, the first motion of the segment
+        QCOMPARE(int(segment.blockStarts.size()), segment.blocks);
+        QVERIFY(segment.blocks > 5);             // ramps split the five motions into sub-blocks
+        QCOMPARE(segment.curve.front().v, 0.0);  // from rest ...
+        QVERIFY(std::abs(segment.curve.back().v) < 1e-6);  // ... to rest
+        for (const auto& p : segment.curve)
+            QVERIFY(p.v <= 6000.0 + 1e-6);  // never above the programmed F
+        QVERIFY(segment.length > 2 * 40 + 2 * 20);
+        QVERIFY(screen->listing().intermediateBlocks > 0);
+        QVERIFY(!screen->plot()->grab().isNull());
+    }
+
     void aRuntimeErrorAppearsInTheErrorWindow() {
         PanelFixture panel(options());
         panel.session->addProgram(0, 51, "bad.nc", "N0001 G1 X10 F100\nN0002 T999\nN0003 M30\n");
@@ -224,6 +264,22 @@ class EditorScreenTest : public QObject {
         QCOMPARE(panel.window->currentScreenName(), QString("editor"));
         auto* edit = child<QPlainTextEdit>(panel, "editor", "programEditor");
         QCOMPARE(edit->textCursor().block().text(), QString("N0002 T999"));
+    }
+
+    void aRestartErrorAppearsInTheErrorWindow() {
+        PanelFixture panel(options());
+        panel.session->addProgram(0, 21, "plain.nc", "N0000 G1 X1 F100\nN0001 M30\n");
+        panel.session->selectProgram(0, 21);
+        panel.press(Qt::Key_F1, Qt::ShiftModifier);  // M key NC program restart
+        QCOMPARE(panel.window->currentScreenName(), QString("restart"));
+        panel.press(Qt::Key_F1);  // Plane+ on a block without jump or call: refused
+        panel.window->showScreen("errors");
+        auto* list = child<QListWidget>(panel, "errors", "errorList");
+        QTRY_VERIFY(list->count() >= 1);
+        const QString text = list->item(list->count() - 1)->text();
+        QVERIFY2(text.contains("restart") && text.contains("P021"), qPrintable(text));
+        panel.press(Qt::Key_F6);  // Clear runtime
+        QCOMPARE(list->count(), 0);
     }
 
     void alarmAndRestartTextsBecomeEntries() {
