@@ -52,9 +52,9 @@ TEST(GneSolver, AngleAndLength) {
 }
 
 TEST(GneSolver, TangentArcAfterLineWithRadius) {
-    // CCW arc tangential to the horizontal line, radius 5, ends at X25.
-    ContourSolution s =
-        solveContour(contourOf("START Z0 X20\nLINE Z-10 X20\nCW X25 R5 TAN\n"));
+    // CW arc tangential to the line towards -Z, radius 5, ends at X25: of
+    // its two points on X25 the first (ALT0) is the short arc.
+    ContourSolution s = solveContour(contourOf("START Z0 X20\nLINE Z-10 X20\nCW X25 R5 TAN\n"));
     ASSERT_TRUE(s.complete()) << s.diagnostics[0].message;
     EXPECT_EQ(s.path[1].kind, Segment::ArcCW);
     expectPoint(s.path[1].centre, -10, 25);
@@ -66,8 +66,10 @@ TEST(GneSolver, LineTangentToArcFromAPoint) {
     // A line from the circle around (-20,20) R5 to the point (-40,40),
     // tangential to the arc: of the two tangent points, the arc's direction
     // (CCW or CW) decides which one the line can leave from.
-    ContourSolution ccw = solveContour(contourOf("START Z-15 X20\nCCW K-20 I20\nLINE Z-40 X40 TAN\n"));
-    ContourSolution cw = solveContour(contourOf("START Z-15 X20\nCW K-20 I20\nLINE Z-40 X40 TAN\n"));
+    ContourSolution ccw =
+        solveContour(contourOf("START Z-15 X20\nCCW K-20 I20\nLINE Z-40 X40 TAN\n"));
+    ContourSolution cw =
+        solveContour(contourOf("START Z-15 X20\nCW K-20 I20\nLINE Z-40 X40 TAN\n"));
     for (const ContourSolution* s : {&ccw, &cw}) {
         ASSERT_TRUE(s->complete()) << s->diagnostics[0].message;
         const Segment& arc = s->path[0];
@@ -80,7 +82,8 @@ TEST(GneSolver, LineTangentToArcFromAPoint) {
 
 TEST(GneSolver, LineCircleIntersectionIsAmbiguous) {
     // Line from (0,0) at 45 degrees meets the circle around (10,5) R5 twice.
-    Contour c = contourOf("START X0 Y0\nLINE A45\nCCW X15 Y5 I10 J5\n", "WINDOW_02 (-50, -50, 50, 50)");
+    Contour c =
+        contourOf("START X0 Y0\nLINE A45\nCCW X15 Y5 I10 J5\n", "WINDOW_02 (-50, -50, 50, 50)");
     ContourSolution s = solveContour(c);
     ASSERT_EQ(s.elements[1].candidates.size(), 2u);
     c.elements[1].alternative = 1;
@@ -102,7 +105,8 @@ TEST(GneSolver, ArcWithRadiusOnlyOffersBothCentres) {
 }
 
 TEST(GneSolver, UnderdeterminedElementAndFollowers) {
-    ContourSolution s = solveContour(contourOf("START Z0 X0\nLINE A90\nLINE A180\nLINE Z-50 X30\n"));
+    ContourSolution s =
+        solveContour(contourOf("START Z0 X0\nLINE A90\nLINE A180\nLINE Z-50 X30\n"));
     EXPECT_FALSE(s.complete());
     EXPECT_EQ(s.elements[1].state, ElementState::Undetermined);
     EXPECT_EQ(s.elements[2].state, ElementState::NotReached);
@@ -117,7 +121,8 @@ TEST(GneSolver, OverdeterminedLineIsReported) {
     EXPECT_EQ(s.elements[1].state, ElementState::Overdetermined);
     EXPECT_EQ(s.diagnostics[0].code, "GNE_OVERDETERMINED");
     // Redundant but consistent data are accepted.
-    EXPECT_TRUE(solveContour(contourOf("START Z0 X0\nLINE Z-10 X10 A135 L14.142135623731\n")).complete());
+    EXPECT_TRUE(
+        solveContour(contourOf("START Z0 X0\nLINE Z-10 X10 A135 L14.142135623731\n")).complete());
 }
 
 TEST(GneSolver, ArcDataThatDoNotFitOneCircle) {
@@ -126,7 +131,8 @@ TEST(GneSolver, ArcDataThatDoNotFitOneCircle) {
 }
 
 TEST(GneSolver, NoIntersectionIsImpossible) {
-    ContourSolution s = solveContour(contourOf("START X0 Y0\nLINE A0\nCCW X50 Y20 I50 J30\n", "WINDOW_02 (0, 0, 60, 60)"));
+    ContourSolution s = solveContour(
+        contourOf("START X0 Y0\nLINE A0\nCCW X50 Y20 I50 J30\n", "WINDOW_02 (0, 0, 60, 60)"));
     EXPECT_EQ(s.elements[1].state, ElementState::Impossible);
 }
 
@@ -143,14 +149,16 @@ TEST(GneSolver, RoundingIsTangentToBothNeighbours) {
 }
 
 TEST(GneSolver, ChamferCutsBothNeighbours) {
-    ContourSolution s = solveContour(contourOf("START Z0 X0\nLINE Z0 X20\nCF 1.5\nLINE Z-30 X20\n"));
+    ContourSolution s =
+        solveContour(contourOf("START Z0 X0\nLINE Z0 X20\nCF 1.5\nLINE Z-30 X20\n"));
     ASSERT_TRUE(s.complete());
     expectPoint(s.path[0].end, 0, 18.5);
     expectPoint(s.path[1].end, -1.5, 20);
 }
 
 TEST(GneSolver, RoundingBetweenLineAndArc) {
-    ContourSolution s = solveContour(contourOf("START Z0 X20\nLINE Z-20\nRD 1\nCW Z-30 X30 K-30 I20\n"));
+    ContourSolution s =
+        solveContour(contourOf("START Z0 X20\nLINE Z-20\nRD 1\nCW Z-30 X30 K-30 I20\n"));
     ASSERT_TRUE(s.complete()) << s.diagnostics[0].message;
     const Segment& round = s.path[1];
     EXPECT_NEAR((round.centre - Point(-30, 20)).norm(), 10 + 1, 1e-6);  // tangent outside
@@ -164,21 +172,26 @@ TEST(GneSolver, RoundingTooLargeIsImpossible) {
 }
 
 TEST(GneSolver, ReliefDin509FormE) {
-    ContourSolution s = solveContour(contourOf("START Z0 X10\nLINE Z-30 X10\nRELIEF E R0.6 T0.2\nLINE Z-30 X20\nLINE Z-50 X20\n"));
+    ContourSolution s = solveContour(contourOf(
+        "START Z0 X10\nLINE Z-30 X10\nRELIEF E R0.6 T0.2\nLINE Z-30 X20\nLINE Z-50 X20\n"));
     ASSERT_TRUE(s.complete()) << s.diagnostics[0].message;
     const auto& relief = s.elements[2].segments;
-    ASSERT_EQ(relief.size(), 3u);                   // ramp, bottom, radius
-    expectPoint(relief[0].start, -28, 10);          // width f = 2
-    EXPECT_NEAR(relief[1].end.y(), 9.8, 1e-9);      // depth t1 = 0.2
+    ASSERT_EQ(relief.size(), 3u);               // ramp, bottom, radius
+    expectPoint(relief[0].start, -28, 10);      // width f = 2
+    EXPECT_NEAR(relief[1].end.y(), 9.8, 1e-9);  // depth t1 = 0.2
     EXPECT_NEAR(relief[2].radius(), 0.6, 1e-9);
-    expectPoint(relief[2].end, -30, 10.4);          // runs into the face above the cylinder
+    expectPoint(relief[2].end, -30, 10.4);  // runs into the face above the cylinder
     expectPoint(s.path.back().start, -30, 20);
 }
 
 TEST(GneSolver, ReliefNeedsKnownSizeOrWidth) {
-    ContourSolution s = solveContour(contourOf("START Z0 X10\nLINE Z-30 X10\nRELIEF E R0.7 T0.2\nLINE Z-30 X20\n"));
+    ContourSolution s =
+        solveContour(contourOf("START Z0 X10\nLINE Z-30 X10\nRELIEF E R0.7 T0.2\nLINE Z-30 X20\n"));
     EXPECT_EQ(s.elements[2].state, ElementState::Impossible);
-    EXPECT_TRUE(solveContour(contourOf("START Z0 X10\nLINE Z-30 X10\nRELIEF F R0.7 T0.2 W3 U0.1\nLINE Z-30 X20\n")).complete());
+    EXPECT_TRUE(
+        solveContour(
+            contourOf("START Z0 X10\nLINE Z-30 X10\nRELIEF F R0.7 T0.2 W3 U0.1\nLINE Z-30 X20\n"))
+            .complete());
 }
 
 }  // namespace
