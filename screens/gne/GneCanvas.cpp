@@ -3,7 +3,9 @@
 #include <QPainter>
 #include <QPainterPath>
 #include <algorithm>
+#include <cctype>
 #include <cmath>
+#include <cstdlib>
 
 #include "cnc_core/contour/Geometry2D.h"
 #include "screens/gne/GneEditModel.h"
@@ -20,6 +22,7 @@ const QColor kOpen(200, 30, 30);
 const QColor kSelected(240, 130, 0);
 const QColor kOther(150, 150, 150);
 const QColor kForm(0, 130, 60);
+const QColor kCycle(0, 150, 170);
 
 void grow(QRectF& r, double x, double y) {
     if (r.isNull())
@@ -95,6 +98,7 @@ void GneCanvas::paintEvent(QPaintEvent*) {
     offset_ = QPointF((width() - usedW) / 2, (height() - 20 + usedH) / 2);
     drawWindow(painter);
     drawOtherGeometry(painter);
+    drawCycles(painter);
     drawContours(painter);
     drawLegend(painter);
 }
@@ -126,6 +130,51 @@ void GneCanvas::drawOtherGeometry(QPainter& painter) const {
             for (const gne::Point& p : gne::tessellate(path, 0.5 / std::max(scale_, 1e-6)))
                 polygon << toScreen(p.x(), p.y());
             painter.drawPolyline(polygon);
+        }
+    }
+}
+
+void GneCanvas::drawCycles(QPainter& painter) const {
+    // The section's cycles as their expanded blocks: rapid moves dotted,
+    // cutting moves thin (plane words only; the centre words are absolute).
+    for (const gne::ExpandedCall& call : model_->expansion().calls) {
+        if (call.line < 100000) continue;
+        const auto item = static_cast<std::size_t>((call.line - 100000) / 1000);
+        const bool turning = model_->planeOf(static_cast<int>(item)) == gne::GnePlane::Turning;
+        const char first = turning ? 'Z' : 'X', second = turning ? 'X' : 'Y';
+        const char centreFirst = turning ? 'K' : 'I', centreSecond = turning ? 'I' : 'J';
+        double pos[2] = {0, 0};
+        bool known[2] = {false, false};
+        int motion = 0;
+        for (const std::string& block : call.blocks) {
+            double word[2] = {pos[0], pos[1]}, centre[2] = {0, 0};
+            const std::string code = block.substr(0, block.find(';'));
+            for (std::size_t i = 0; i < code.size(); ++i) {
+                const char letter = code[i];
+                if (!std::isalpha(static_cast<unsigned char>(letter))) continue;
+                const double value = std::atof(code.c_str() + i + 1);
+                if (letter == 'G' && value >= 0 && value <= 3) motion = static_cast<int>(value);
+                if (letter == first) word[0] = value, known[0] = true;
+                if (letter == second) word[1] = value, known[1] = true;
+                if (letter == centreFirst) centre[0] = value;
+                if (letter == centreSecond) centre[1] = value;
+            }
+            const bool draw = known[0] && known[1] && (word[0] != pos[0] || word[1] != pos[1]);
+            if (draw) {
+                gne::Segment s;
+                s.kind = motion == 2   ? gne::Segment::ArcCW
+                         : motion == 3 ? gne::Segment::ArcCCW
+                                       : gne::Segment::Line;
+                s.start = gne::Point(pos[0], pos[1]);
+                s.end = gne::Point(word[0], word[1]);
+                s.centre = gne::Point(centre[0], centre[1]);
+                QPolygonF polygon;
+                for (const gne::Point& p : gne::tessellate({s}, 0.5 / std::max(scale_, 1e-6)))
+                    polygon << toScreen(p.x(), p.y());
+                painter.setPen(motion == 0 ? QPen(kCycle, 1, Qt::DotLine) : QPen(kCycle, 1));
+                painter.drawPolyline(polygon);
+            }
+            pos[0] = word[0], pos[1] = word[1];
         }
     }
 }

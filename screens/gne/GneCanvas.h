@@ -10,7 +10,8 @@ class GneEditModel;
 /// The GNE screen's live 2D drawing (QPainter): the blank of the window,
 /// every contour of the section with solved elements solid and
 /// undetermined ones dashed, the alternatives of the selected element
-/// (chosen one highlighted, the others dotted), forms, and the other
+/// (chosen one highlighted, the others dotted), forms, the tool paths of
+/// the section's cycles (thin; rapid moves dotted), and the other
 /// geometry of the program in grey. 1st plane axis to the right, 2nd up.
 class GneCanvas : public QWidget {
     Q_OBJECT
@@ -32,6 +33,7 @@ class GneCanvas : public QWidget {
     QRectF contentExtent() const;
     void drawWindow(class QPainter& painter) const;
     void drawContours(class QPainter& painter) const;
+    void drawCycles(class QPainter& painter) const;
     void drawOtherGeometry(class QPainter& painter) const;
     void drawLegend(class QPainter& painter) const;
     QPointF toScreen(double x, double y) const;

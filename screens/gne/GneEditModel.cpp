@@ -70,6 +70,7 @@ void GneEditModel::open(const std::string& programText, int line) {
     readProblems_.clear();
     usedNumbers_.clear();
     hasContextWindow_ = false;
+    contextItems_.clear();
     contextPlane_ = gne::GnePlane::Turning;
     firstLine_ = lastLine_ = insertLine_ = 0;
     replaceEmptyLine_ = false;
@@ -136,6 +137,7 @@ void GneEditModel::pickSection(const std::string& programText, int line) {
             continue;
         }
         if (const int n = geometryNumber(item)) usedNumbers_.push_back(n);
+        if (k < first && !isCycle(item)) contextItems_.push_back(item);
         if (k < first && isWindow(item)) {
             contextWindow_ = item.call;
             hasContextWindow_ = true;
@@ -197,12 +199,8 @@ gne::GnePlane GneEditModel::planeOf(int item) const {
 
 gne::GneDocument GneEditModel::document(bool withContext) const {
     gne::GneDocument doc;
-    if (withContext && hasContextWindow_) {
-        gne::GneItem window;
-        window.call = contextWindow_;
-        window.call.line = 1;
-        doc.items.push_back(window);
-    }
+    if (withContext)  // the program's windows and geometry before the section
+        doc.items = contextItems_;
     for (std::size_t i = 0; i < items_.size(); ++i) {
         gne::GneItem item = items_[i];
         const auto line = static_cast<std::uint32_t>(kLineBase + kItemStride * i);
@@ -226,7 +224,7 @@ void GneEditModel::changed() {
     const gne::GneDocument doc = document(true);
     solutions_.assign(items_.size(), gne::ContourSolution{});
     for (const gne::GneItem& item : doc.items) {
-        if (!item.isContour) continue;
+        if (!item.isContour || item.contour.line < kLineBase) continue;  // context
         const std::size_t i = (item.contour.line - kLineBase) / kItemStride;
         solutions_[i] = gne::solveContour(item.contour);
     }
@@ -477,7 +475,20 @@ bool GneEditModel::window(double& low0, double& low1, double& high0, double& hig
 std::string GneEditModel::problems() const {
     std::string out;
     for (const gne::GneDiagnostic& d : readProblems_)
-        out += "line " + std::to_string(d.line) + ": " + d.message + "\n";
+        out += "when read, line " + std::to_string(d.line) + ": " + d.message + "\n";
+    return out + sectionProblems();
+}
+
+std::string GneEditModel::sectionProblems() const {
+    std::string out;
+    for (std::size_t row = 0; row < rows_.size(); ++row) {  // the start point is given
+        const gne::GneItem& item = items_[static_cast<std::size_t>(rows_[row].item)];
+        if (!item.isContour || rows_[row].element >= 0) continue;
+        const auto& e = item.contour.elements;
+        if (e.empty() || e[0].kind != gne::ElementKind::Start || !e[0].end[0] || !e[0].end[1])
+            out += "row " + std::to_string(row + 1) + " (" + rowText(static_cast<int>(row)) +
+                   "): the contour needs a START with both coordinates\n";
+    }
     for (const gne::GneDiagnostic& d : expansion_.diagnostics) {
         if (d.line < kLineBase) continue;  // the program's other instructions
         const std::uint32_t item = (d.line - kLineBase) / kItemStride;
@@ -502,7 +513,7 @@ std::string GneEditModel::keywordText() const {
 }
 
 bool GneEditModel::ncBlocks(std::string& text, std::string& problem) const {
-    const std::string open = problems();
+    const std::string open = sectionProblems();
     if (!open.empty()) {
         problem = "the section does not expand: " + open.substr(0, open.find('\n'));
         return false;

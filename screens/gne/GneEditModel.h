@@ -87,8 +87,12 @@ class GneEditModel {
     const mtc::core::gne::GneExpansion& expansion() const { return expansion_; }
     /// Blank of the window that applies (known = false when none).
     bool window(double& low0, double& low1, double& high0, double& high1) const;
-    /// The section's problems for the operator, one per line ("" = none).
+    /// What the reader found wrong when the section was opened (dropped
+    /// words, ...) and sectionProblems(), one per line ("" = none).
     std::string problems() const;
+    /// Why the section as it is now does not solve or expand, by row ("" =
+    /// it does): both exits refuse to save while this is not empty.
+    std::string sectionProblems() const;
 
     /// The section as keyword lines (function call with parameters).
     std::string keywordText() const;
@@ -122,7 +126,8 @@ class GneEditModel {
     std::vector<mtc::core::gne::ContourSolution> solutions_;
     mtc::core::gne::GneExpansion expansion_;
     std::vector<mtc::core::gne::GneDiagnostic> readProblems_;
-    std::vector<int> usedNumbers_;  ///< geometry numbers outside the section
+    std::vector<int> usedNumbers_;                       ///< geometry numbers outside the section
+    std::vector<mtc::core::gne::GneItem> contextItems_;  ///< windows, geometry before it
     mtc::core::gne::GneCall contextWindow_;
     bool hasContextWindow_ = false;
     mtc::core::gne::GnePlane contextPlane_ = mtc::core::gne::GnePlane::Turning;

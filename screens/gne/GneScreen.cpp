@@ -392,7 +392,7 @@ void GneScreen::finish(GneOutput output) {
     if (output == GneOutput::NcBlocks) {
         std::string problem;
         if (!model_.ncBlocks(text, problem)) return showMessage(q(problem), true);
-    } else if (const std::string open = model_.problems(); !open.empty()) {
+    } else if (const std::string open = model_.sectionProblems(); !open.empty()) {
         return showMessage(
             "Not saved - the section is not complete: " + q(open.substr(0, open.find('\n'))), true);
     }

@@ -13,6 +13,7 @@
 #include <QPlainTextEdit>
 #include <QTableWidget>
 #include <QTemporaryDir>
+#include <random>
 
 #include "PanelFixture.h"
 #include "cnc_core/compiler/Compiler.h"
@@ -284,6 +285,76 @@ class GneScreenTest : public QObject {
         auto* rows = child<QListWidget>(panel, "gne", "gneRows");
         QCOMPARE(rows->currentItem()->text(), QString("  START Z0 X205"));
         QVERIFY(panel.session->program(0, 9)->source.find("START Z0 X205") != std::string::npos);
+    }
+
+    void randomKeysNeverBreakTheDialog() {
+        PanelFixture panel(options());
+        editAt(panel, 9, 15);
+        panel.press(Qt::Key_F4);
+        auto* screen = gneScreen(panel);
+        auto* rows = child<QListWidget>(panel, "gne", "gneRows");
+        const int keys[] = {Qt::Key_Up,     Qt::Key_Down,   Qt::Key_Return, Qt::Key_Escape,
+                            Qt::Key_Insert, Qt::Key_Delete, Qt::Key_F1,     Qt::Key_F2,
+                            Qt::Key_F3,     Qt::Key_F4,     Qt::Key_F5,     Qt::Key_F6,
+                            Qt::Key_F7,     Qt::Key_F8,     Qt::Key_Right,  Qt::Key_Left,
+                            Qt::Key_Plus,   Qt::Key_Minus,  Qt::Key_1,      Qt::Key_0,
+                            Qt::Key_5,      Qt::Key_Period, Qt::Key_E,      Qt::Key_Home};
+        std::mt19937 random(20261121);
+        int saved = 0;
+        for (int i = 0; i < 1500; ++i) {
+            const int key = keys[random() % (sizeof keys / sizeof keys[0])];
+            if (key == Qt::Key_Minus || key == Qt::Key_Period || key == Qt::Key_Plus)
+                QTest::keyClick(QApplication::focusWidget(),
+                                static_cast<char>(key == Qt::Key_Minus  ? '-'
+                                                  : key == Qt::Key_Plus ? '+'
+                                                                        : '.'));
+            else
+                panel.press(key);
+            if (panel.window->currentScreenName() != "gne") {  // left: Esc or saved
+                saved += panel.window->currentScreenName() == "editor";
+                panel.window->showScreen("gne");
+            }
+            const auto& model = screen->model();
+            QCOMPARE(rows->count(), static_cast<int>(model.rows().size()));
+            QVERIFY(model.rows().empty() ||
+                    model.currentRow() < static_cast<int>(model.rows().size()));
+            QCOMPARE(rows->currentRow(), model.rows().empty() ? -1 : model.currentRow());
+        }
+        // A section without problems (the only kind that is saved) reads back as written.
+        const std::string text = screen->model().keywordText();
+        mtc::screens::GneEditModel again;
+        again.openText(text);
+        if (screen->model().sectionProblems().empty())
+            QCOMPARE(QString::fromStdString(again.keywordText()), QString::fromStdString(text));
+        qInfo("random keys: %d saves into the program", saved);
+    }
+
+    void cycleApartFromItsContourUsesTheProgramGeometry() {
+        // A tool change between contour and cycle: two sections; the cycle's
+        // section finds contour 3 (and the window) earlier in the program.
+        const std::string program =
+            "N0000 G0 X40 Z10\nWINDOW_01 (-40, 5, 30, 0)\nCONT (3, FINAL)\nSTART Z0 X10\n"
+            "LINE Z-20 X10\nLINE Z-20 X25\nEND_CONT\nN0001 T1\nCYCLE_10 (3, 1, 0.2)\n"
+            "N0002 M30\n";
+        mtc::screens::GneEditModel model;
+        model.open(program, 9);
+        QCOMPARE(model.firstLine(), 9);
+        QCOMPARE(model.rows().size(), std::size_t{1});
+        QVERIFY2(model.problems().empty(), model.problems().c_str());
+        std::string blocks, problem;
+        QVERIFY2(model.ncBlocks(blocks, problem), problem.c_str());
+        QVERIFY2(blocks.find("G1 X10 Z-20") != std::string::npos, blocks.c_str());
+        // The contour's own section ends before the tool change.
+        model.open(program, 5);
+        QCOMPARE(model.firstLine(), 2);
+        QCOMPARE(model.lastLine(), 7);
+        QCOMPARE(model.currentRow(), 3);  // the LINE of line 5
+        // A form numbered 3 as well is refused by the expansion, named by its row.
+        std::string message;
+        QVERIFY(model.insert("FORM_20", message));
+        QVERIFY(model.setField(0, "3", message));
+        QVERIFY2(model.sectionProblems().find("already used") != std::string::npos,
+                 model.sectionProblems().c_str());
     }
 
     void refusedValueKeepsTheOldOne() {
