@@ -1,5 +1,6 @@
 #include "cnc_core/compiler/CompilerText.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -94,6 +95,20 @@ std::string formatCoordinate(double value) {
     }
     if (text == "-0") text = "0";
     return text;
+}
+
+bool containsAnyCaseless(std::string_view text,
+                         std::initializer_list<std::string_view> upperNeedles) {
+    std::string upper;  // only built when the text has small letters
+    if (std::any_of(text.begin(), text.end(), [](char c) { return c >= 'a' && c <= 'z'; })) {
+        upper.assign(text);
+        for (char& c : upper)
+            if (c >= 'a' && c <= 'z') c = static_cast<char>(c - 32);
+        text = upper;
+    }
+    for (std::string_view needle : upperNeedles)
+        if (text.find(needle) != std::string_view::npos) return true;
+    return false;
 }
 
 }  // namespace mtc::core

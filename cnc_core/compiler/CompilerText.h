@@ -1,5 +1,6 @@
 #pragma once
 
+#include <initializer_list>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -39,5 +40,11 @@ std::size_t commentOffset(std::string_view text);
 /// The number formatted for a block text: up to 4 decimals, no trailing
 /// zeros, "-0" written as "0".
 std::string formatCoordinate(double value);
+
+/// True when `text` contains one of `upperNeedles` (written in capitals),
+/// letters of `text` compared without case. A cheap pre-check of passes that
+/// act only on blocks naming one of their keywords.
+bool containsAnyCaseless(std::string_view text,
+                         std::initializer_list<std::string_view> upperNeedles);
 
 }  // namespace mtc::core

@@ -1,5 +1,6 @@
 #include "cnc_core/contour/GnePass.h"
 
+#include "cnc_core/compiler/CompilerText.h"
 #include "cnc_core/contour/GneExpansion.h"
 #include "cnc_core/contour/GneSchema.h"
 #include "cnc_core/contour/GneText.h"
@@ -15,6 +16,17 @@ std::string sequenceText(const BlockSequence& blocks) {
         text += '\n';
     }
     return text;
+}
+
+/// False when no block text can hold a GNE line: readGne() only acts on a
+/// line whose first name is CONT, END_CONT, START, LINE, CW, CCW, RELIEF or
+/// begins with WINDOW_, FORM_ or CYCLE_ (RD and CF only inside a contour).
+bool mayHoldGne(const BlockSequence& blocks) {
+    for (const CompileBlock& b : blocks)
+        if (!b.programEnd && containsAnyCaseless(b.text, {"CONT", "START", "LINE", "CW", "RELIEF",
+                                                          "WINDOW_", "FORM_", "CYCLE_"}))
+            return true;
+    return false;
 }
 
 /// Reports `diagnostics` at their blocks; false once the compile must stop.
@@ -45,6 +57,7 @@ std::vector<std::string> GnePass::keywords() const {
 }
 
 void GnePass::run(BlockSequence& blocks, CompileContext& context) const {
+    if (!mayHoldGne(blocks)) return;  // nothing to read: the common program without GNE
     const GneDocument document = readGne(sequenceText(blocks));
     if (document.items.empty() && document.diagnostics.empty()) return;
     std::vector<bool> gne(blocks.size(), false);
