@@ -6,6 +6,8 @@
 #include <fstream>
 #include <sstream>
 
+#include <unistd.h>
+
 #include "CompilerTestSupport.h"
 #include "cnc_core/compiler/CompileStatusBook.h"
 #include "cnc_core/compiler/CompilerFiles.h"
@@ -18,6 +20,15 @@ using namespace mtc::core;
 using namespace mtc::test;
 
 namespace {
+
+/// A directory of its own for the running test: ctest runs the tests of one
+/// binary as parallel processes (and other build trees may run them too), so
+/// a fixed name would let one test delete another's files.
+std::filesystem::path uniqueTestDirectory(const std::string& stem) {
+    const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
+    return std::filesystem::temp_directory_path() /
+           (stem + "-" + std::to_string(::getpid()) + "-" + test->name());
+}
 
 const std::string kDat =
     "iMTc/000100/01.00/0000000200/03.02.2025/10:11:12/N0010004.DAT/1\n"
@@ -216,7 +227,7 @@ TEST(CompilerFiles, IdentificationGetsNameStampAndSize) {
 
 TEST(CompilerFiles, WritesObjectOrErrorFileAndRemovesTheStaleOne) {
     namespace fs = std::filesystem;
-    const fs::path dir = fs::temp_directory_path() / "mtc_compiler_files_test";
+    const fs::path dir = uniqueTestDirectory("mtc_compiler_files_test");
     fs::remove_all(dir);
     fs::create_directories(dir);
     const std::string source = (dir / "N0010004.DAT").string();
@@ -285,7 +296,7 @@ namespace {
 class UserCompilerTest : public ::testing::Test {
   protected:
     void SetUp() override {
-        dir_ = std::filesystem::temp_directory_path() / "mtc_user_compiler_test";
+        dir_ = uniqueTestDirectory("mtc_user_compiler_test");
         std::filesystem::remove_all(dir_);
         std::filesystem::create_directories(dir_);
     }
