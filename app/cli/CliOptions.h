@@ -27,7 +27,7 @@ struct CliOptions {
     bool json = false;
     std::uint64_t maxBlocks = kDefaultMaxBlocks;
     bool noMotion = false;
-    std::string outputPath;  ///< compile: -o OUT.NCO
+    std::string outputPath;                  ///< compile: -o OUT.NCO
     std::vector<std::string> userCompilers;  ///< compile: --user-compiler SLOT=COMMAND
     // restart (CLI-CONTRACT.md):
     std::string target;              ///< --target PATH
