@@ -1,6 +1,8 @@
 #pragma once
 
 #include <QApplication>
+#include <QDir>
+#include <QFile>
 #include <QStandardPaths>
 #include <QTest>
 #include <memory>
@@ -40,4 +42,17 @@ inline void useTestSettings() {
     QStandardPaths::setTestModeEnabled(true);
     QApplication::setOrganizationName("MTC200SimTest");
     QApplication::setApplicationName("mtc200-panel-test");
+}
+
+/// Writes NC program `number` of plant 1, package 01, process 0 into `dir`.
+inline void writeProgram(const QDir& dir, int number, const QString& text) {
+    QFile file(dir.filePath(QString("N1010%1.DAT").arg(number, 3, 10, QChar('0'))));
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write(text.toUtf8());
+}
+
+/// The child `name` of station 0's screen `screen`.
+template <typename T>
+T* child(PanelFixture& panel, const char* screen, const char* name) {
+    return panel.window->screen(0, screen)->findChild<T*>(name);
 }

@@ -66,17 +66,6 @@ const char* kLookAheadProgram =
     "N0009 M30\n"
     "N0010 PROGRAMMENDE\n";
 
-void writeProgram(const QDir& dir, int number, const QString& text) {
-    QFile file(dir.filePath(QString("N1010%1.DAT").arg(number, 3, 10, QChar('0'))));
-    QVERIFY(file.open(QIODevice::WriteOnly));
-    file.write(text.toUtf8());
-}
-
-template <typename T>
-T* child(PanelFixture& panel, const char* screen, const char* name) {
-    return panel.window->screen(0, screen)->findChild<T*>(name);
-}
-
 /// Puts the program directory's cursor on program `number`.
 void pickProgram(PanelFixture& panel, int number) {
     panel.window->showScreen("programs");

@@ -51,17 +51,6 @@ const char* kSectionProgram =
     "N0001 M30\n"
     "N0002 PROGRAMMENDE\n";
 
-void writeProgram(const QDir& dir, int number, const QString& text) {
-    QFile file(dir.filePath(QString("N1010%1.DAT").arg(number, 3, 10, QChar('0'))));
-    QVERIFY(file.open(QIODevice::WriteOnly));
-    file.write(text.toUtf8());
-}
-
-template <typename T>
-T* child(PanelFixture& panel, const char* screen, const char* name) {
-    return panel.window->screen(0, screen)->findChild<T*>(name);
-}
-
 mtc::screens::GneScreen* gneScreen(PanelFixture& panel) {
     return qobject_cast<mtc::screens::GneScreen*>(panel.window->screen(0, "gne"));
 }
