@@ -2,7 +2,7 @@
 # `mtc200-cli restart` (CLI-CONTRACT.md): golden transcripts of
 # tests/golden/restart (every rule of the NC program restart with programs of
 # our own), the JSON shape, the text output, and the usage errors (exit 2).
-# Regenerate the transcripts on purpose with scripts/update-golden-restart.sh.
+# Regenerate the transcripts on purpose with scripts/update-golden.sh restart.
 source "$(dirname "$0")/common.bash"
 source "$(dirname "$0")/restart_golden.bash"
 dir="$MTC_GOLDEN/restart"
@@ -12,7 +12,7 @@ for args in "$dir"/*.args; do
   name="$(basename "$args" .args)"
   cases=$((cases + 1))
   if [ ! -f "$dir/$name.json" ]; then
-    RC=-; OUT=""; ERR=""; fail "$name: no $name.json (run scripts/update-golden-restart.sh)"; continue
+    RC=-; OUT=""; ERR=""; fail "$name: no $name.json (run scripts/update-golden.sh restart)"; continue
   fi
   restart_transcript "$dir" "$name" >"$TEST_TMP/actual.json"
   golden_canonical "$dir/$name.json" >"$TEST_TMP/expected.json"

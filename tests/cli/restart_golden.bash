@@ -1,5 +1,5 @@
 # Golden transcripts of `mtc200-cli restart` (sourced by cli_restart.sh and
-# scripts/update-golden-restart.sh; not a test itself).
+# scripts/update-golden.sh restart; not a test itself).
 #
 # A case is tests/golden/restart/NAME.args: one line with everything after
 # `restart` (the program first: a NAME.nc of the directory or a program
