@@ -2,17 +2,17 @@
 
 #include <cstddef>
 #include <cstdint>
-#include <iterator>
 #include <vector>
 
 #include "cnc_core/language/Block.h"
+#include "cnc_core/language/IndexIterator.h"
 
 namespace mtc::core {
 
 /// Packed, append-mostly list of blocks (see the storage note at the top).
 class BlockList {
   public:
-    class const_iterator;
+    using const_iterator = IndexIterator<BlockList, Block>;
     /// Number of blocks.
     std::size_t size() const { return packed_.size(); }
     bool empty() const { return packed_.empty(); }
@@ -54,27 +54,6 @@ class BlockList {
     std::vector<Packed> packed_;
     std::vector<std::uint32_t> extendedIndex_;  ///< sorted block indices
     std::vector<Block> extended_;
-};
-
-class BlockList::const_iterator {
-  public:
-    using value_type = Block;
-    using difference_type = std::ptrdiff_t;
-    using reference = const Block;
-    using pointer = void;
-    using iterator_category = std::input_iterator_tag;
-    const_iterator(const BlockList* list, std::size_t index) : list_(list), index_(index) {}
-    const Block operator*() const { return (*list_)[index_]; }
-    const_iterator& operator++() {
-        ++index_;
-        return *this;
-    }
-    bool operator==(const const_iterator& other) const { return index_ == other.index_; }
-    bool operator!=(const const_iterator& other) const { return index_ != other.index_; }
-
-  private:
-    const BlockList* list_;
-    std::size_t index_;
 };
 
 inline BlockList::const_iterator BlockList::begin() const {

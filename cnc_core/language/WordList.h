@@ -2,9 +2,9 @@
 
 #include <cstddef>
 #include <cstdint>
-#include <iterator>
 #include <vector>
 
+#include "cnc_core/language/IndexIterator.h"
 #include "cnc_core/language/Word.h"
 
 namespace mtc::core {
@@ -12,7 +12,7 @@ namespace mtc::core {
 /// Packed, append-mostly list of words (see the storage note at the top).
 class WordList {
   public:
-    class const_iterator;
+    using const_iterator = IndexIterator<WordList, Word>;
     /// Number of words.
     std::size_t size() const { return packed_.size(); }
     bool empty() const { return packed_.empty(); }
@@ -79,27 +79,6 @@ class WordList {
     Packed pack(const Word& word);
     std::vector<Packed> packed_;
     std::vector<Word> extended_;
-};
-
-class WordList::const_iterator {
-  public:
-    using value_type = Word;
-    using difference_type = std::ptrdiff_t;
-    using reference = const Word;
-    using pointer = void;
-    using iterator_category = std::input_iterator_tag;
-    const_iterator(const WordList* list, std::size_t index) : list_(list), index_(index) {}
-    const Word operator*() const { return (*list_)[index_]; }
-    const_iterator& operator++() {
-        ++index_;
-        return *this;
-    }
-    bool operator==(const const_iterator& other) const { return index_ == other.index_; }
-    bool operator!=(const const_iterator& other) const { return index_ != other.index_; }
-
-  private:
-    const WordList* list_;
-    std::size_t index_;
 };
 
 inline WordList::const_iterator WordList::begin() const {
