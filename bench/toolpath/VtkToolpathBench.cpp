@@ -1,18 +1,26 @@
 // VTK part of the toolpath view (issue 8), outside ctest:
-//   mtc_toolpath_bench            poly-data build for 1,000,000 segments
-//   xvfb-run -a -s "-screen 0 1280x1024x24" mtc_toolpath_bench --frames
-//                                 frame times of a 1000x700 X window (Mesa
-//                                 llvmpipe under Xvfb): full path and the
-//                                 level-of-detail copy shown while moving.
-// Output: one line per measurement (ms, MB of the process's peak RSS growth).
+//   mtc_toolpath_bench [count]    geometry, poly-data and coarse copy for
+//                                 `count` (1,000,000) segments: times, peak RSS
+//   xvfb-run -a -s "-screen 0 1280x800x24" mtc_toolpath_bench --frames [count]
+//       [--canvas] [--samples N] [--size W H]
+//                                 frame times of an X window (Mesa llvmpipe
+//                                 under Xvfb) for each way of drawing the
+//                                 path: cell or point colours, line width,
+//                                 the coarse copy, the grid actor
+//                                 (--canvas: only what the view draws).
+// Output: one line per measurement (ms, MB of the process's peak RSS).
 #include <vtkActor.h>
 #include <vtkCamera.h>
-#include <vtkCellArray.h>
+#include <vtkCellData.h>
+#include <vtkCubeAxesActor.h>
 #include <vtkNew.h>
+#include <vtkPointData.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
+#include <vtkProperty.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
+#include <vtkUnsignedCharArray.h>
 
 #include <sys/resource.h>
 #include <algorithm>
@@ -20,10 +28,12 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <string>
 #include <vector>
 
 #include "cnc_core/machine/MachineConfigReader.h"
 #include "cnc_core/toolpath/ToolpathBuilder.h"
+#include "cnc_core/toolpath/ToolpathDecimation.h"
 #include "resources/EmbeddedResources.h"
 #include "screens/toolpath/ToolpathPalette.h"
 #include "screens/toolpath/VtkToolpathData.h"
@@ -66,39 +76,98 @@ ToolpathGeometry million(int count) {
     return builder.take();
 }
 
-void frames(vtkPolyData* full, vtkPolyData* coarse) {
+/// The same cells with cell colours instead of point colours (the drawing
+/// before TP-010's change: VTK 9.1 looks them up by gl_PrimitiveID).
+vtkSmartPointer<vtkPolyData> withCellColours(vtkPolyData* full, const ToolpathGeometry& g,
+                                             const mtc::screens::ToolpathPalette& palette) {
+    auto poly = vtkSmartPointer<vtkPolyData>::New();
+    poly->ShallowCopy(full);
+    poly->GetPointData()->SetScalars(nullptr);
+    vtkNew<vtkUnsignedCharArray> colours;
+    colours->SetNumberOfComponents(3);
+    colours->SetNumberOfTuples(full->GetNumberOfCells());
+    for (std::size_t m = 0; m < g.moves.size(); ++m) {
+        const QColor c = palette.colour(g.moves[m].kind);
+        const auto [first, last] = g.sceneRange(m);
+        for (std::uint32_t s = first; s < last; ++s)
+            colours->SetTypedTuple(
+                s, std::array<unsigned char, 3>{static_cast<unsigned char>(c.red()),
+                                                static_cast<unsigned char>(c.green()),
+                                                static_cast<unsigned char>(c.blue())}
+                       .data());
+    }
+    poly->GetCellData()->SetScalars(colours);
+    return poly;
+}
+
+struct Variant {
+    std::string name;
+    vtkPolyData* data;
+    bool cellColours;
+    float lineWidth;
+    bool grid;
+};
+
+/// First frame after the input was set (upload) and median/max of 10
+/// frames, each after turning the camera by 5 degrees.
+void measure(vtkRenderWindow* window, vtkRenderer* renderer, vtkPolyDataMapper* mapper,
+             vtkActor* actor, vtkCubeAxesActor* grid, const Variant& v) {
+    mapper->SetInputData(v.data);
+    if (v.cellColours)
+        mapper->SetScalarModeToUseCellData();
+    else
+        mapper->SetScalarModeToUsePointData();
+    actor->GetProperty()->SetLineWidth(v.lineWidth);
+    grid->SetVisibility(v.grid);
+    double bounds[6];
+    v.data->GetBounds(bounds);
+    grid->SetBounds(bounds);
+    renderer->GetActiveCamera()->SetPosition(0, 0, 1);
+    renderer->GetActiveCamera()->SetFocalPoint(0, 0, 0);
+    renderer->GetActiveCamera()->SetViewUp(0, 1, 0);
+    renderer->GetActiveCamera()->Elevation(30);
+    renderer->ResetCamera();
+    const auto first = Clock::now();
+    window->Render();
+    const double firstMs = msSince(first);
+    std::vector<double> times;
+    for (int i = 0; i < 11; ++i) {
+        renderer->GetActiveCamera()->Azimuth(5);
+        renderer->ResetCameraClippingRange();
+        const auto t = Clock::now();
+        window->Render();
+        times.push_back(msSince(t));
+    }
+    std::sort(times.begin(), times.end());
+    std::printf("frames %-34s %8lld cells: first %7.1f ms, median %7.1f ms, max %7.1f ms\n",
+                v.name.c_str(), static_cast<long long>(v.data->GetNumberOfCells()), firstMs,
+                times[5], times.back());
+    std::fflush(stdout);
+}
+
+void frames(const std::vector<Variant>& variants, int samples, int width, int height) {
     vtkNew<vtkRenderWindow> window;
-    window->SetSize(1000, 700);
+    window->SetSize(width, height);
+    window->SetMultiSamples(samples);
     vtkNew<vtkRenderer> renderer;
+    renderer->SetBackground(0.1, 0.1, 0.15);
     window->AddRenderer(renderer);
     vtkNew<vtkPolyDataMapper> mapper;
-    mapper->SetScalarModeToUseCellData();
     mapper->SetColorModeToDirectScalars();
     vtkNew<vtkActor> actor;
     actor->SetMapper(mapper);
+    actor->GetProperty()->SetLighting(false);
     renderer->AddActor(actor);
-    for (vtkPolyData* data : {full, coarse}) {
-        mapper->SetInputData(data);
-        renderer->ResetCamera();
-        auto first = Clock::now();
-        window->Render();
-        const double firstMs = msSince(first);
-        std::printf("first frame %.1f ms\n", firstMs);
-        std::fflush(stdout);
-        std::vector<double> times;
-        for (int i = 0; i < 10; ++i) {
-            renderer->GetActiveCamera()->Azimuth(5);
-            auto t = Clock::now();
-            window->Render();
-            times.push_back(msSince(t));
-            std::fflush(stdout);
-        }
-        std::sort(times.begin(), times.end());
-        std::printf("frames %s (%lld cells): first %.1f ms, median %.1f ms, max %.1f ms\n",
-                    data == full ? "full" : "level of detail",
-                    static_cast<long long>(data->GetNumberOfCells()), firstMs, times[5],
-                    times.back());
-    }
+    vtkNew<vtkCubeAxesActor> grid;
+    grid->SetCamera(renderer->GetActiveCamera());
+    grid->DrawXGridlinesOn();
+    grid->DrawYGridlinesOn();
+    grid->DrawZGridlinesOn();
+    grid->SetFlyModeToStaticEdges();
+    renderer->AddActor(grid);
+    std::printf("window %d x %d, %d samples\n", width, height, samples);
+    for (const Variant& v : variants)
+        measure(window, renderer, mapper, actor, grid, v);
     const char* capabilities = window->ReportCapabilities();
     const char* line =
         capabilities ? std::strstr(capabilities, "OpenGL renderer string:") : nullptr;
@@ -108,27 +177,61 @@ void frames(vtkPolyData* full, vtkPolyData* coarse) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    const bool withFrames = argc > 1 && std::strcmp(argv[1], "--frames") == 0;
+    bool withFrames = false, canvasOnly = false;
+    int count = 1'000'000, samples = 0, width = 1000, height = 700;
+    for (int i = 1; i < argc; ++i) {
+        if (std::strcmp(argv[i], "--frames") == 0)
+            withFrames = true;
+        else if (std::strcmp(argv[i], "--canvas") == 0)
+            withFrames = canvasOnly = true;
+        else if (std::strcmp(argv[i], "--samples") == 0 && i + 1 < argc)
+            samples = std::atoi(argv[++i]);
+        else if (std::strcmp(argv[i], "--size") == 0 && i + 2 < argc) {
+            width = std::atoi(argv[++i]);
+            height = std::atoi(argv[++i]);
+        } else
+            count = std::atoi(argv[i]);
+    }
     const double rss0 = peakRssMb();
-    auto t0 = Clock::now();
-    const int count = argc > 2 ? std::atoi(argv[2]) : 1'000'000;
+    const auto t0 = Clock::now();
     ToolpathGeometry g = million(count);
     std::printf("geometry: %zu segments in %.1f ms, %.1f MB held, peak RSS +%.1f MB\n",
                 g.scene.segmentCount(), msSince(t0), g.memoryBytes() / 1e6, peakRssMb() - rss0);
     mtc::screens::ToolpathPalette palette;
     const double rss1 = peakRssMb();
-    auto t1 = Clock::now();
+    const auto t1 = Clock::now();
     auto full = mtc::screens::toolpathPolyData(g, false, palette);
     const double fullMs = msSince(t1);
-    auto t2 = Clock::now();
-    auto coarse = mtc::screens::toolpathLevelOfDetail(g, false, palette, 150000, full->GetPoints());
+    const auto t2 = Clock::now();
+    const double tolerance = g.scene.bounds.size() / 1000.0;
+    const DecimatedLayer decimated = decimateLayer(g, false, tolerance, 40000);
+    auto coarse = mtc::screens::toolpathLevelOfDetail(g, false, palette, decimated);
     std::printf(
-        "poly-data: %lld cells in %.1f ms; level of detail %lld cells in %.1f ms; "
-        "peak RSS +%.1f MB; total peak RSS %.1f MB\n",
-        static_cast<long long>(full->GetNumberOfCells()), fullMs,
-        static_cast<long long>(coarse->GetNumberOfCells()), msSince(t2), peakRssMb() - rss1,
-        peakRssMb());
+        "poly-data: %lld cells, %lld points in %.1f ms; coarse copy %lld cells (tolerance %.3f "
+        "mm) in %.1f ms; peak RSS +%.1f MB; total peak RSS %.1f MB\n",
+        static_cast<long long>(full->GetNumberOfCells()),
+        static_cast<long long>(full->GetNumberOfPoints()), fullMs,
+        static_cast<long long>(coarse->GetNumberOfCells()), decimated.tolerance, msSince(t2),
+        peakRssMb() - rss1, peakRssMb());
     std::fflush(stdout);
-    if (withFrames) frames(full, coarse);
+    if (!withFrames) return 0;
+    if (canvasOnly) {  // what the view draws: still frame, then while moving
+        frames({{"full, point colours, width 1, grid", full, false, 1.0f, true},
+                {"coarse, point colours, width 1, grid", coarse, false, 1.0f, true}},
+               samples, width, height);
+        std::printf("total peak RSS %.1f MB\n", peakRssMb());
+        return 0;
+    }
+    auto cells = withCellColours(full, g, palette);
+    frames({{"full, cell colours, width 1", cells, true, 1.0f, false},
+            {"full, cell colours, width 1.5", cells, true, 1.5f, false},
+            {"full, point colours, width 1", full, false, 1.0f, false},
+            {"full, point colours, width 1.5", full, false, 1.5f, false},
+            {"full, point colours, width 1, grid", full, false, 1.0f, true},
+            {"coarse, point colours, width 1", coarse, false, 1.0f, false},
+            {"coarse, point colours, width 1, grid", coarse, false, 1.0f, true},
+            {"coarse, point colours, width 1.5", coarse, false, 1.5f, false}},
+           samples, width, height);
+    std::printf("total peak RSS %.1f MB\n", peakRssMb());
     return 0;
 }

@@ -5,13 +5,13 @@
 #include <vtkAxesActor.h>
 #include <vtkCallbackCommand.h>
 #include <vtkCamera.h>
-#include <vtkCellPicker.h>
 #include <vtkCubeAxesActor.h>
 #include <vtkCubeSource.h>
 #include <vtkCylinderSource.h>
 #include <vtkGenericOpenGLRenderWindow.h>
 #include <vtkInteractorStyleTrackballCamera.h>
 #include <vtkLineSource.h>
+#include <vtkMatrix4x4.h>
 #include <vtkNew.h>
 #include <vtkOrientationMarkerWidget.h>
 #include <vtkPolyData.h>
@@ -29,14 +29,18 @@
 #include <QVBoxLayout>
 #include <cmath>
 
+#include "cnc_core/toolpath/ToolpathPick.h"
 #include "screens/toolpath/ToolpathModel.h"
 #include "screens/toolpath/VtkToolpathData.h"
 
 namespace mtc::screens {
 
 namespace {
-constexpr std::size_t kLevelOfDetailSegments = 150000;  ///< segments drawn while moving
-constexpr int kStillMs = 250;                           ///< full detail again after this pause
+constexpr int kStillMs = 250;  ///< full detail again after this pause
+/// Line width of the path in pixels: 1, because VTK 9.1 draws wider lines
+/// with a geometry shader, which is slow on Mesa llvmpipe (TP-010).
+constexpr float kPathWidth = 1.0f;
+constexpr double kPickPixels = 6.0;  ///< a click this close to a segment picks it
 
 void setColour(vtkProperty* property, const QColor& colour) {
     property->SetColor(colour.redF(), colour.greenF(), colour.blueF());
@@ -50,9 +54,10 @@ void setColour(vtkTextProperty* property, const QColor& colour) {
 struct Part {
     bool developed = false;
     vtkNew<vtkRenderer> renderer;
-    vtkNew<vtkPolyDataMapper> mapper;
-    vtkNew<vtkActor> path;
+    vtkNew<vtkPolyDataMapper> mapper, coarseMapper;
+    vtkNew<vtkActor> path, coarsePath;  ///< full detail; coarse copy while moving
     vtkSmartPointer<vtkPolyData> full, coarse;
+    mtc::core::DecimatedLayer decimated;  ///< what the coarse cells stand for
     vtkNew<vtkPolyDataMapper> highlightMapper;
     vtkNew<vtkActor> highlight;
     vtkNew<vtkCubeAxesActor> axes;
@@ -61,11 +66,15 @@ struct Part {
     void setUp(const ToolpathPalette& palette) {
         const QColor& bg = palette.background;
         renderer->SetBackground(bg.redF(), bg.greenF(), bg.blueF());
-        mapper->SetScalarModeToUseCellData();
-        mapper->SetColorModeToDirectScalars();
-        path->SetMapper(mapper);
-        path->GetProperty()->SetLineWidth(1.5f);
-        path->GetProperty()->SetLighting(false);
+        for (auto [m, actor] : {std::pair{mapper.Get(), path.Get()},
+                                std::pair{coarseMapper.Get(), coarsePath.Get()}}) {
+            m->SetScalarModeToUsePointData();
+            m->SetColorModeToDirectScalars();
+            actor->SetMapper(m);
+            actor->GetProperty()->SetLineWidth(kPathWidth);
+            actor->GetProperty()->SetLighting(false);
+        }
+        coarsePath->VisibilityOff();
         highlightMapper->ScalarVisibilityOff();
         highlight->SetMapper(highlightMapper);
         highlight->GetProperty()->SetLineWidth(6.0f);
@@ -90,6 +99,7 @@ struct Part {
         caption->GetTextProperty()->SetColor(1, 1, 1);
         caption->SetPosition(8, 8);
         renderer->AddActor(path);
+        renderer->AddActor(coarsePath);
         renderer->AddActor(highlight);
         renderer->AddActor(axes);
         renderer->AddActor2D(caption);
@@ -103,11 +113,10 @@ struct VtkToolpathCanvas::Scene {
     vtkNew<vtkActor> stock, cylinder, start, target, reentry, repos;
     vtkNew<vtkAxesActor> triadAxes;
     vtkNew<vtkOrientationMarkerWidget> triad;
-    vtkNew<vtkCellPicker> picker;
     vtkNew<vtkCallbackCommand> interaction;
     ToolpathPreset preset = ToolpathPreset::Isometric;
     bool split = false, coarse = false, renderPending = false;
-    int renders = 0;
+    int renders = 0, coarsePicks = 0;
     QTimer still;
     QPoint pressed;
 };
@@ -135,10 +144,7 @@ VtkToolpathCanvas::VtkToolpathCanvas(ToolpathModel* model, QWidget* parent)
         a->VisibilityOff();
         scene_->scene.renderer->AddActor(a);
     }
-    scene_->picker->SetTolerance(0.004);
-    scene_->picker->PickFromListOn();
-    scene_->picker->AddPickList(scene_->scene.path);
-    scene_->picker->AddPickList(scene_->developed.path);
+    scene_->window->SetMultiSamples(0);  // lines only: no multisampling (TP-010)
 
     vtkNew<vtkInteractorStyleTrackballCamera> style;
     widget_->interactor()->SetInteractorStyle(style);
@@ -162,9 +168,7 @@ VtkToolpathCanvas::VtkToolpathCanvas(ToolpathModel* model, QWidget* parent)
             scene_->still.start();  // still dragging
             return;
         }
-        scene_->coarse = false;
-        scene_->scene.mapper->SetInputData(scene_->scene.full);
-        scene_->developed.mapper->SetInputData(scene_->developed.full);
+        showLevelOfDetail(false);
         requestRender();
     });
     widget_->installEventFilter(this);
@@ -203,13 +207,28 @@ void VtkToolpathCanvas::renderNow() {
     ++scene_->renders;
 }
 
-void VtkToolpathCanvas::moving() {
-    if (!scene_->coarse && scene_->scene.coarse) {
-        scene_->coarse = true;
-        scene_->scene.mapper->SetInputData(scene_->scene.coarse);
-        if (scene_->developed.coarse)
-            scene_->developed.mapper->SetInputData(scene_->developed.coarse);
+std::size_t VtkToolpathCanvas::levelOfDetailCells() const {
+    return scene_->scene.coarse ? static_cast<std::size_t>(scene_->scene.coarse->GetNumberOfCells())
+                                : 0;
+}
+
+int VtkToolpathCanvas::picksOnLevelOfDetail() const {
+    return scene_->coarsePicks;
+}
+
+void VtkToolpathCanvas::showLevelOfDetail(bool coarse) {
+    scene_->coarse = coarse && scene_->scene.coarse;
+    for (Part* part : {&scene_->scene, &scene_->developed}) {
+        if (!part->full) continue;
+        // Two actors, each with its own buffers: switching uploads nothing.
+        const bool useCoarse = scene_->coarse && part->coarse;
+        part->path->SetVisibility(!useCoarse);
+        part->coarsePath->SetVisibility(useCoarse);
     }
+}
+
+void VtkToolpathCanvas::moving() {
+    if (!scene_->coarse) showLevelOfDetail(true);
     scene_->still.start();
 }
 
@@ -268,16 +287,25 @@ void VtkToolpathCanvas::rebuild() {
         part->path->SetVisibility(shown);
         part->axes->SetVisibility(shown &&
                                   !(part->developed ? g->developed : g->scene).bounds.empty);
+        part->coarsePath->VisibilityOff();
+        part->coarse = nullptr;
+        part->decimated = {};
+        part->coarseMapper->SetInputData(vtkNew<vtkPolyData>());
         if (!shown) {
-            part->full = part->coarse = nullptr;
+            part->full = nullptr;
             part->mapper->SetInputData(vtkNew<vtkPolyData>());
             continue;
         }
-        part->full = toolpathPolyData(*g, part->developed, palette);
-        part->coarse = toolpathLevelOfDetail(*g, part->developed, palette, kLevelOfDetailSegments,
-                                             part->full->GetPoints());
-        part->mapper->SetInputData(part->full);
         const auto& layer = part->developed ? g->developed : g->scene;
+        part->full = toolpathPolyData(*g, part->developed, palette);
+        part->mapper->SetInputData(part->full);
+        if (layer.segmentCount() > kLevelOfDetailCells) {
+            part->decimated = mtc::core::decimateLayer(
+                *g, part->developed, layer.bounds.size() * kLevelOfDetailTolerance,
+                kLevelOfDetailCells);
+            part->coarse = toolpathLevelOfDetail(*g, part->developed, palette, part->decimated);
+            part->coarseMapper->SetInputData(part->coarse);
+        }
         setBounds(part->axes, layer.bounds);
         part->axes->SetXTitle(part->developed ? "axial (mm)" : "X (mm)");
         part->axes->SetYTitle(part->developed ? "circumference (mm)" : "Y (mm)");
@@ -330,7 +358,7 @@ void VtkToolpathCanvas::updateHighlight() {
             continue;
         }
         part->highlightMapper->SetInputData(
-            toolpathMoves(*g, part->developed, model_->highlighted(), part->full->GetPoints()));
+            toolpathMoves(*g, part->developed, model_->highlighted()));
         part->highlight->SetVisibility(!model_->highlighted().empty());
     }
 }
@@ -471,23 +499,32 @@ std::optional<QPoint> VtkToolpathCanvas::positionOfMove(long move) {
 void VtkToolpathCanvas::pickAt(QPoint position) {
     const auto g = model_->geometry();
     if (!g) return;
-    if (scene_->coarse) {  // the click started an interaction: pick on the full path
-        scene_->coarse = false;
-        scene_->scene.mapper->SetInputData(scene_->scene.full);
-        scene_->developed.mapper->SetInputData(scene_->developed.full);
-        requestRender();
-    }
     const double ratio = widget_->devicePixelRatioF();
     const int x = static_cast<int>(position.x() * ratio);
     const int y =
         static_cast<int>(widget_->height() * ratio) - 1 - static_cast<int>(position.y() * ratio);
     for (Part* part : {&scene_->scene, &scene_->developed}) {
         if (!part->full || !part->renderer->IsInViewport(x, y)) continue;
-        if (!scene_->picker->Pick(x, y, 0, part->renderer)) continue;
-        if (scene_->picker->GetActor() != part->path.Get()) continue;
-        const vtkIdType cell = scene_->picker->GetCellId();
-        if (cell < 0) continue;
-        const auto segment = static_cast<std::uint32_t>(cell);
+        // The full segment nearest on the screen, found through the coarse
+        // copy's cells (TP-010): right whichever copy is shown.
+        mtc::core::ScreenProjection view;
+        vtkMatrix4x4* toNdc =
+            part->renderer->GetActiveCamera()->GetCompositeProjectionTransformMatrix(
+                part->renderer->GetTiledAspectRatio(), -1, 1);
+        for (int i = 0; i < 16; ++i)
+            view.toNdc[static_cast<std::size_t>(i)] = toNdc->GetElement(i / 4, i % 4);
+        const int* origin = part->renderer->GetOrigin();
+        const int* size = part->renderer->GetSize();
+        view.originX = origin[0];
+        view.originY = origin[1];
+        view.width = size[0];
+        view.height = size[1];
+        const auto picked =
+            mtc::core::pickSegment(part->developed ? g->developed : g->scene, part->decimated, view,
+                                   x, y, kPickPixels * ratio);
+        if (!picked) continue;
+        if (part->decimated.cellCount() > 0) ++scene_->coarsePicks;
+        const std::uint32_t segment = *picked;
         const long move =
             part->developed ? g->moveOfDevelopedSegment(segment) : g->moveOfSceneSegment(segment);
         if (move >= 0) model_->pick(move);

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstddef>
 #include <memory>
 
 #include "screens/toolpath/ToolpathCanvas.h"
@@ -36,6 +37,15 @@ class VtkToolpathCanvas : public ToolpathCanvas {
     int renderCount() const;
     /// True while the coarse copy is shown (the view is moving).
     bool showingLevelOfDetail() const;
+    /// Cells of the scene's coarse copy (0 when the full path is small enough).
+    std::size_t levelOfDetailCells() const;
+    /// Picks resolved through the coarse copy's cells to a full segment.
+    int picksOnLevelOfDetail() const;
+    /// Cells the coarse copy shown while moving may have at most.
+    static constexpr std::size_t kLevelOfDetailCells = 40000;
+    /// Its starting tolerance: this fraction of the layer's largest extent
+    /// (about one pixel of a 1000-pixel view that shows the whole path).
+    static constexpr double kLevelOfDetailTolerance = 1.0 / 1000.0;
 
   protected:
     bool eventFilter(QObject* watched, QEvent* event) override;
@@ -47,6 +57,7 @@ class VtkToolpathCanvas : public ToolpathCanvas {
     void updateMarks();
     void requestRender();
     void moving();
+    void showLevelOfDetail(bool coarse);
     void pickAt(QPoint position);
 
     QVTKOpenGLNativeWidget* widget_;

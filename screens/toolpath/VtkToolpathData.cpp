@@ -1,84 +1,101 @@
 #include "screens/toolpath/VtkToolpathData.h"
 
 #include <vtkCellArray.h>
-#include <vtkCellData.h>
 #include <vtkFloatArray.h>
+#include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkTypeInt32Array.h>
 #include <vtkUnsignedCharArray.h>
 
-#include <algorithm>
+#include <array>
 
 #include "screens/toolpath/ToolpathPalette.h"
 
 namespace mtc::screens {
 
 namespace {
+using mtc::core::DecimatedLayer;
 using mtc::core::ToolpathGeometry;
+using mtc::core::ToolpathKind;
 using mtc::core::ToolpathLayer;
+using Rgb = std::array<unsigned char, 3>;
 
 const ToolpathLayer& layerOf(const ToolpathGeometry& g, bool developed) {
     return developed ? g.developed : g.scene;
 }
 
-std::pair<std::uint32_t, std::uint32_t> rangeOf(const ToolpathGeometry& g, bool developed,
-                                                std::size_t move) {
-    return developed ? g.developedRange(move) : g.sceneRange(move);
+std::uint32_t firstOf(const mtc::core::ToolpathMove& m, bool developed) {
+    return developed ? m.firstDeveloped : m.firstScene;
 }
 
-vtkSmartPointer<vtkPoints> pointsOf(const ToolpathLayer& layer) {
-    auto data = vtkSmartPointer<vtkFloatArray>::New();
-    data->SetNumberOfComponents(3);
-    data->SetNumberOfTuples(static_cast<vtkIdType>(layer.vertexCount()));
-    std::copy(layer.xyz.begin(), layer.xyz.end(), data->GetPointer(0));
-    auto points = vtkSmartPointer<vtkPoints>::New();
-    points->SetData(data);
-    return points;
+Rgb rgbOf(const QColor& colour) {
+    return {static_cast<unsigned char>(colour.red()), static_cast<unsigned char>(colour.green()),
+            static_cast<unsigned char>(colour.blue())};
 }
 
-/// Line cells from pairs of vertex indices (a, b) in `ends`.
-vtkSmartPointer<vtkCellArray> linesOf(const std::vector<std::int32_t>& ends) {
-    const auto count = static_cast<vtkIdType>(ends.size() / 2);
-    auto offsets = vtkSmartPointer<vtkTypeInt32Array>::New();
-    offsets->SetNumberOfValues(count + 1);
-    std::int32_t* o = offsets->GetPointer(0);
-    for (vtkIdType i = 0; i <= count; ++i)
-        o[i] = static_cast<std::int32_t>(2 * i);
-    auto connectivity = vtkSmartPointer<vtkTypeInt32Array>::New();
-    connectivity->SetNumberOfValues(static_cast<vtkIdType>(ends.size()));
-    std::copy(ends.begin(), ends.end(), connectivity->GetPointer(0));
-    auto cells = vtkSmartPointer<vtkCellArray>::New();
-    cells->SetData(offsets, connectivity);
-    return cells;
-}
+/// Points, point colours and line cells filled in place (sizes known up front).
+struct Builder {
+    vtkSmartPointer<vtkFloatArray> xyz = vtkSmartPointer<vtkFloatArray>::New();
+    vtkSmartPointer<vtkUnsignedCharArray> colours = vtkSmartPointer<vtkUnsignedCharArray>::New();
+    vtkSmartPointer<vtkTypeInt32Array> offsets = vtkSmartPointer<vtkTypeInt32Array>::New();
+    vtkSmartPointer<vtkTypeInt32Array> connectivity = vtkSmartPointer<vtkTypeInt32Array>::New();
+    std::int32_t points = 0, cells = 0;
 
-vtkSmartPointer<vtkUnsignedCharArray> newColours(std::size_t cells) {
-    auto colours = vtkSmartPointer<vtkUnsignedCharArray>::New();
-    colours->SetName("colours");
-    colours->SetNumberOfComponents(3);
-    colours->SetNumberOfTuples(static_cast<vtkIdType>(cells));
-    return colours;
-}
+    Builder(std::size_t maxPoints, std::size_t cellCount) {
+        xyz->SetNumberOfComponents(3);
+        xyz->SetNumberOfTuples(static_cast<vtkIdType>(maxPoints));
+        colours->SetName("colours");
+        colours->SetNumberOfComponents(3);
+        colours->SetNumberOfTuples(static_cast<vtkIdType>(maxPoints));
+        offsets->SetNumberOfValues(static_cast<vtkIdType>(cellCount + 1));
+        connectivity->SetNumberOfValues(static_cast<vtkIdType>(2 * cellCount));
+    }
+    /// Appends vertex `index` of `layer` with colour `rgb`; returns its point id.
+    std::int32_t point(const ToolpathLayer& layer, std::size_t index, const Rgb& rgb) {
+        const float* from = layer.xyz.data() + 3 * index;
+        float* to = xyz->GetPointer(3 * static_cast<vtkIdType>(points));
+        to[0] = from[0];
+        to[1] = from[1];
+        to[2] = from[2];
+        unsigned char* c = colours->GetPointer(3 * static_cast<vtkIdType>(points));
+        c[0] = rgb[0];
+        c[1] = rgb[1];
+        c[2] = rgb[2];
+        return points++;
+    }
+    void line(std::int32_t a, std::int32_t b) {
+        offsets->SetValue(cells, 2 * cells);
+        connectivity->SetValue(2 * cells, a);
+        connectivity->SetValue(2 * cells + 1, b);
+        ++cells;
+    }
+    vtkSmartPointer<vtkPolyData> finish(bool withColours) {
+        offsets->SetValue(cells, 2 * cells);
+        xyz->SetNumberOfTuples(points);  // keeps the memory; shrinks the count
+        colours->SetNumberOfTuples(points);
+        auto pts = vtkSmartPointer<vtkPoints>::New();
+        pts->SetData(xyz);
+        auto lines = vtkSmartPointer<vtkCellArray>::New();
+        lines->SetData(offsets, connectivity);
+        auto poly = vtkSmartPointer<vtkPolyData>::New();
+        poly->SetPoints(pts);
+        poly->SetLines(lines);
+        if (withColours) poly->GetPointData()->SetScalars(colours);
+        return poly;
+    }
+};
 
-void setColour(unsigned char* rgb, const QColor& colour) {
-    rgb[0] = static_cast<unsigned char>(colour.red());
-    rgb[1] = static_cast<unsigned char>(colour.green());
-    rgb[2] = static_cast<unsigned char>(colour.blue());
-}
-
-vtkSmartPointer<vtkPolyData> assemble(const ToolpathLayer& layer,
-                                      const std::vector<std::int32_t>& ends,
-                                      vtkSmartPointer<vtkUnsignedCharArray> colours,
-                                      vtkPoints* points) {
-    auto poly = vtkSmartPointer<vtkPolyData>::New();
-    if (points)
-        poly->SetPoints(points);
-    else
-        poly->SetPoints(pointsOf(layer));
-    poly->SetLines(linesOf(ends));
-    if (colours) poly->GetCellData()->SetScalars(colours);
-    return poly;
+/// Number of places where a chain goes on with another kind (extra points).
+std::size_t colourBreaks(const ToolpathGeometry& g, bool developed) {
+    const ToolpathLayer& layer = layerOf(g, developed);
+    std::size_t breaks = 0;
+    for (std::size_t m = 1; m < g.moves.size(); ++m) {
+        const std::uint32_t s = firstOf(g.moves[m], developed);
+        if (s == 0 || s >= layer.segmentCount()) continue;
+        if (g.moves[m].kind != g.moves[m - 1].kind) ++breaks;
+    }
+    return breaks;
 }
 }  // namespace
 
@@ -86,84 +103,61 @@ vtkSmartPointer<vtkPolyData> toolpathPolyData(const ToolpathGeometry& geometry, 
                                               const ToolpathPalette& palette) {
     const ToolpathLayer& layer = layerOf(geometry, developed);
     const std::size_t count = layer.segmentCount();
-    auto colours = newColours(count);
-    unsigned char* rgb = colours->GetPointer(0);
-    for (std::size_t m = 0; m < geometry.moves.size(); ++m) {
-        const auto [first, last] = rangeOf(geometry, developed, m);
-        unsigned char c[3];
-        setColour(c, palette.colour(geometry.moves[m].kind));
-        for (std::uint32_t s = first; s < last; ++s)
-            std::copy(c, c + 3, rgb + 3 * static_cast<std::size_t>(s));
+    Builder b(layer.vertexCount() + colourBreaks(geometry, developed), count);
+    std::array<Rgb, mtc::core::kToolpathKinds> rgb{};
+    for (int k = 0; k < mtc::core::kToolpathKinds; ++k)
+        rgb[static_cast<std::size_t>(k)] = rgbOf(palette.colour(static_cast<ToolpathKind>(k)));
+    std::size_t move = 0;
+    std::int32_t last = -1;  // point id of the previous segment's end
+    ToolpathKind previous = ToolpathKind::Feed;
+    for (std::size_t s = 0; s < count; ++s) {
+        while (move + 1 < geometry.moves.size() &&
+               firstOf(geometry.moves[move + 1], developed) <= s)
+            ++move;
+        const auto kind = geometry.moves.empty() ? ToolpathKind::Feed : geometry.moves[move].kind;
+        const Rgb& c = rgb[static_cast<std::size_t>(kind)];
+        const std::uint32_t v = layer.segmentStart[s];
+        const bool chained = s > 0 && v == layer.segmentStart[s - 1] + 1 && kind == previous;
+        const std::int32_t from = chained ? last : b.point(layer, v, c);
+        last = b.point(layer, v + 1, c);
+        b.line(from, last);
+        previous = kind;
     }
-    auto poly = vtkSmartPointer<vtkPolyData>::New();
-    poly->SetPoints(pointsOf(layer));
-    auto offsets = vtkSmartPointer<vtkTypeInt32Array>::New();
-    offsets->SetNumberOfValues(static_cast<vtkIdType>(count + 1));
-    auto connectivity = vtkSmartPointer<vtkTypeInt32Array>::New();
-    connectivity->SetNumberOfValues(static_cast<vtkIdType>(2 * count));
-    std::int32_t* o = offsets->GetPointer(0);
-    std::int32_t* c = connectivity->GetPointer(0);
-    for (std::size_t i = 0; i < count; ++i) {
-        o[i] = static_cast<std::int32_t>(2 * i);
-        c[2 * i] = static_cast<std::int32_t>(layer.segmentStart[i]);
-        c[2 * i + 1] = static_cast<std::int32_t>(layer.segmentStart[i] + 1);
-    }
-    o[count] = static_cast<std::int32_t>(2 * count);
-    auto cells = vtkSmartPointer<vtkCellArray>::New();
-    cells->SetData(offsets, connectivity);
-    poly->SetLines(cells);
-    poly->GetCellData()->SetScalars(colours);
-    return poly;
+    return b.finish(true);
 }
 
 vtkSmartPointer<vtkPolyData> toolpathLevelOfDetail(const ToolpathGeometry& geometry, bool developed,
                                                    const ToolpathPalette& palette,
-                                                   std::size_t maxSegments, vtkPoints* points) {
+                                                   const DecimatedLayer& coarse) {
     const ToolpathLayer& layer = layerOf(geometry, developed);
-    const std::size_t count = layer.segmentCount();
-    if (count <= maxSegments || maxSegments == 0)
-        return toolpathPolyData(geometry, developed, palette);
-    const std::size_t stride = (count + maxSegments - 1) / maxSegments;
-    std::vector<std::int32_t> ends;
-    std::vector<QColor> colours;
-    ends.reserve(2 * (maxSegments + maxSegments / 4));
-    std::size_t move = 0;
-    std::size_t s = 0;
-    while (s < count) {
-        // A run: up to `stride` segments that follow each other on one chain.
-        std::size_t e = s + 1;
-        while (e < count && e - s < stride &&
-               layer.segmentStart[e] == layer.segmentStart[e - 1] + 1)
-            ++e;
-        while (move + 1 < geometry.moves.size() &&
-               rangeOf(geometry, developed, move + 1).first <= s)
-            ++move;
-        ends.push_back(static_cast<std::int32_t>(layer.segmentStart[s]));
-        ends.push_back(static_cast<std::int32_t>(layer.segmentStart[e - 1] + 1));
-        colours.push_back(palette.colour(geometry.moves.empty() ? mtc::core::ToolpathKind::Feed
-                                                                : geometry.moves[move].kind));
-        s = e;
+    Builder b(2 * coarse.cellCount(), coarse.cellCount());
+    for (std::size_t i = 0; i < coarse.cellCount(); ++i) {
+        const Rgb c = rgbOf(palette.colour(coarse.kinds[i]));
+        const std::int32_t from = b.point(layer, coarse.ends[2 * i], c);
+        b.line(from, b.point(layer, coarse.ends[2 * i + 1], c));
     }
-    auto rgb = newColours(colours.size());
-    for (std::size_t i = 0; i < colours.size(); ++i)
-        setColour(rgb->GetPointer(static_cast<vtkIdType>(3 * i)), colours[i]);
-    return assemble(layer, ends, rgb, points);
+    return b.finish(true);
 }
 
 vtkSmartPointer<vtkPolyData> toolpathMoves(const ToolpathGeometry& geometry, bool developed,
-                                           const std::vector<std::uint32_t>& moves,
-                                           vtkPoints* points) {
+                                           const std::vector<std::uint32_t>& moves) {
     const ToolpathLayer& layer = layerOf(geometry, developed);
-    std::vector<std::int32_t> ends;
+    std::size_t count = 0;
     for (std::uint32_t m : moves) {
         if (m >= geometry.moves.size()) continue;
-        const auto [first, last] = rangeOf(geometry, developed, m);
+        const auto [first, last] = developed ? geometry.developedRange(m) : geometry.sceneRange(m);
+        count += last - first;
+    }
+    Builder b(2 * count, count);
+    for (std::uint32_t m : moves) {
+        if (m >= geometry.moves.size()) continue;
+        const auto [first, last] = developed ? geometry.developedRange(m) : geometry.sceneRange(m);
         for (std::uint32_t s = first; s < last; ++s) {
-            ends.push_back(static_cast<std::int32_t>(layer.segmentStart[s]));
-            ends.push_back(static_cast<std::int32_t>(layer.segmentStart[s] + 1));
+            const std::int32_t from = b.point(layer, layer.segmentStart[s], Rgb{});
+            b.line(from, b.point(layer, layer.segmentStart[s] + 1, Rgb{}));
         }
     }
-    return assemble(layer, ends, nullptr, points);
+    return b.finish(false);
 }
 
 }  // namespace mtc::screens

@@ -8,9 +8,9 @@
 #include <cstdint>
 #include <vector>
 
+#include "cnc_core/toolpath/ToolpathDecimation.h"
 #include "cnc_core/toolpath/ToolpathGeometry.h"
 
-class vtkPoints;
 class vtkPolyData;
 
 namespace mtc::screens {
@@ -18,26 +18,26 @@ namespace mtc::screens {
 struct ToolpathPalette;
 
 /// ONE vtkPolyData for a layer of the geometry (`developed` picks the
-/// developed plane, else the scene): the vertices (float, copied once), one
-/// line cell per segment (32-bit connectivity, cell i = segment i, so a
-/// picked cell id is a segment index) and RGB cell colours by motion type
-/// (cell scalars "colours").
+/// developed plane, else the scene): one line cell per segment (32-bit
+/// connectivity, cell i = segment i, so a picked cell id is a segment
+/// index) and RGB *point* colours by motion type ("colours"). A vertex is
+/// stored twice where the colour changes along a chain, so no cell blends
+/// two colours; cell colours would make VTK 9.1 look each fragment's colour
+/// up in a texture buffer by gl_PrimitiveID, which is slow on Mesa llvmpipe
+/// (docs/decisions/toolpath.md, TP-010).
 vtkSmartPointer<vtkPolyData> toolpathPolyData(const mtc::core::ToolpathGeometry& geometry,
                                               bool developed, const ToolpathPalette& palette);
 
-/// A coarser copy for moving the view (level of detail): runs of segments
-/// along a chain are joined into one line of at most `maxSegments` in all,
-/// coloured by the first move's type. The full copy is returned when it has
-/// no more than `maxSegments`. `points` (the full poly-data's points) is
-/// shared when given, instead of copying the vertices again.
+/// The coarse copy drawn while the view moves: one line cell per cell of
+/// `coarse` (cell i = coarse cell i, see DecimatedLayer::segmentsOf), point
+/// colours by the cell's kind.
 vtkSmartPointer<vtkPolyData> toolpathLevelOfDetail(const mtc::core::ToolpathGeometry& geometry,
                                                    bool developed, const ToolpathPalette& palette,
-                                                   std::size_t maxSegments,
-                                                   vtkPoints* points = nullptr);
+                                                   const mtc::core::DecimatedLayer& coarse);
 
-/// The segments of moves `moves` (highlight), without colours; shares `points`.
+/// The segments of moves `moves` (highlight), without colours, with their
+/// own points (only the vertices these segments use).
 vtkSmartPointer<vtkPolyData> toolpathMoves(const mtc::core::ToolpathGeometry& geometry,
-                                           bool developed, const std::vector<std::uint32_t>& moves,
-                                           vtkPoints* points = nullptr);
+                                           bool developed, const std::vector<std::uint32_t>& moves);
 
 }  // namespace mtc::screens

@@ -3,9 +3,13 @@
 // the motion types), the highlighted block's colour appears, picking a
 // segment with the mouse selects its block and back, the G32 program shows
 // the developed plane and the wrapped cylinder side by side, and renders
-// are coalesced.
+// are coalesced. A 200,000-segment program moves with a coarse copy within
+// the cell budget, and picking on that copy still selects the right block.
+#include <QDir>
 #include <QLabel>
 #include <QSet>
+#include <QTemporaryDir>
+#include <cstdio>
 
 #include "PanelFixture.h"
 #include "screens/toolpath/ToolpathModel.h"
@@ -47,6 +51,29 @@ int distinctColours(const QImage& image) {
 
 VtkToolpathCanvas* vtkCanvas(ToolpathScreen* screen) {
     return qobject_cast<VtkToolpathCanvas*>(screen->canvas());
+}
+
+/// Program `number` of `segments` blocks over the mill's stock (X-150..-50,
+/// Y-80..-20, so the view's centre is on the path): 0.25 mm feed moves in
+/// 100 mm passes 0.12 mm apart, every 100th block a rapid, with a 0.004 mm
+/// wiggle across the pass (under the coarse copy's tolerance).
+QString largeProgram(int number, int segments) {
+    QString text = QString(
+                       "iMTc/01%1/01.00/0000000000/21.11.2026/19:00:00/N1010%1.DAT/1\n"
+                       "%NPG:1:01:0:%1\n!01.00\n#01Large path\n$\n$\n$\n$\n*Large path\n%NPG\n")
+                       .arg(number, 3, 10, QChar('0'));
+    std::string blocks = "N0000 G0 G17 G90 G94 X-150 Y-80 Z-120\n";
+    blocks.reserve(static_cast<std::size_t>(segments) * 36);
+    char line[64];
+    for (int i = 1; i <= segments; ++i) {
+        const int pass = (i - 1) / 400, step = (i - 1) % 400 + 1;
+        const double x = pass % 2 ? -50.0 - step * 0.25 : -150.0 + step * 0.25;
+        const double y = -80.0 + pass * 0.12 + (i % 2) * 0.004;
+        const int n = std::snprintf(line, sizeof line, "N%04d %s X%.3f Y%.3f\n", i % 10000,
+                                    i % 100 == 0 ? "G0" : "G1 F1000", x, y);
+        blocks.append(line, static_cast<std::size_t>(n));
+    }
+    return text + QString::fromStdString(blocks) + "N9999 M30\n";
 }
 
 }  // namespace
@@ -146,6 +173,49 @@ class ToolpathGlTest : public QObject {
         QTRY_VERIFY(canvas->renderCount() > before);
         QVERIFY(canvas->renderCount() <= before + 10);
         QTRY_VERIFY(!canvas->showingLevelOfDetail());  // full detail once still
+    }
+
+    void largeProgramMovesWithACoarseCopyThatPicksTheRightBlock() {
+        QTemporaryDir dir;
+        writeProgram(QDir(dir.path()), 9, largeProgram(9, 200000));
+        mtc::hmi::PanelOptions options;
+        options.programsDir = dir.path();
+        PanelFixture panel(options);
+        panel.session->selectProgram(0, 9);
+        QVERIFY(panel.window->showScreen("toolpath"));
+        ToolpathScreen* screen = toolpath(panel);
+        VtkToolpathCanvas* canvas = vtkCanvas(screen);
+        QVERIFY(canvas);
+        auto* model = screen->model();
+        QVERIFY2(model->geometry(), qPrintable(model->summary()));
+        const auto& g = *model->geometry();
+        QVERIFY(g.scene.segmentCount() >= 200000);  // and the approach
+        QVERIFY(canvas->levelOfDetailCells() > 0);
+        QVERIFY2(canvas->levelOfDetailCells() <= VtkToolpathCanvas::kLevelOfDetailCells,
+                 qPrintable(QString::number(canvas->levelOfDetailCells())));
+        // From above, then zoomed in until a segment is ~10 pixels long.
+        QTest::keyClick(screen, Qt::Key_1);
+        for (int i = 0; i < 10; ++i)
+            QTest::keyClick(screen, Qt::Key_Plus);
+        QVERIFY(canvas->showingLevelOfDetail());
+        canvas->renderNow();
+        auto* vtkWidget = screen->findChild<QWidget*>("toolpathVtkWidget");
+        int hits = 0, tries = 0;
+        for (long m = 1; m < static_cast<long>(g.moves.size()) && tries < 8; m += 7) {
+            if (g.moves[static_cast<std::size_t>(m)].kind == mtc::core::ToolpathKind::Rapid)
+                continue;
+            const auto at = canvas->positionOfMove(m);
+            if (!at) continue;
+            ++tries;
+            QTest::mouseClick(vtkWidget, Qt::LeftButton, {}, vtkWidget->mapFrom(canvas, *at));
+            QVERIFY(!model->highlighted().empty());
+            QCOMPARE(g.moves[model->highlighted().front()].block,
+                     g.moves[static_cast<std::size_t>(m)].block);
+            ++hits;
+        }
+        QVERIFY2(hits >= 3, "clicks on segments in the zoomed view");
+        QCOMPARE(canvas->picksOnLevelOfDetail(), hits);  // each click started a move: coarse
+        QTRY_VERIFY(!canvas->showingLevelOfDetail());
     }
 };
 

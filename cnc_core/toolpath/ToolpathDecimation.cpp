@@ -1,0 +1,181 @@
+#include "cnc_core/toolpath/ToolpathDecimation.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace mtc::core {
+
+namespace {
+
+/// Consecutive segments [first, first + count) on one chain (and one kind
+/// unless kinds are joined); its vertices follow each other in the layer.
+struct Run {
+    std::uint32_t first = 0;
+    std::uint32_t count = 0;
+    ToolpathKind kind = ToolpathKind::Feed;
+};
+
+std::uint32_t firstOf(const ToolpathMove& m, bool developed) {
+    return developed ? m.firstDeveloped : m.firstScene;
+}
+
+/// Runs of the layer in segment order; a new run starts where a chain
+/// breaks or (unless `joinKinds`) where the move kind changes.
+std::vector<Run> runsOf(const ToolpathGeometry& g, bool developed, bool joinKinds) {
+    const ToolpathLayer& layer = developed ? g.developed : g.scene;
+    const std::size_t count = layer.segmentCount();
+    std::vector<Run> runs;
+    std::size_t move = 0;
+    for (std::size_t s = 0; s < count; ++s) {
+        while (move + 1 < g.moves.size() && firstOf(g.moves[move + 1], developed) <= s)
+            ++move;
+        const ToolpathKind kind = g.moves.empty() ? ToolpathKind::Feed : g.moves[move].kind;
+        const bool continues = !runs.empty() &&
+                               layer.segmentStart[s] == layer.segmentStart[s - 1] + 1 &&
+                               (joinKinds || runs.back().kind == kind);
+        if (continues)
+            ++runs.back().count;
+        else
+            runs.push_back({static_cast<std::uint32_t>(s), 1, kind});
+    }
+    return runs;
+}
+
+/// Douglas-Peucker over the vertices of `run`: marks in `keep` (one flag
+/// per vertex of the run) the vertices that must stay for `tolerance`.
+void simplify(const ToolpathLayer& layer, const Run& run, double tolerance,
+              std::vector<std::uint8_t>& keep,
+              std::vector<std::pair<std::uint32_t, std::uint32_t>>& stack) {
+    const std::uint32_t base = layer.segmentStart[run.first];
+    keep.assign(run.count + 1, 0);
+    keep.front() = keep.back() = 1;
+    stack.clear();
+    if (run.count > 1) stack.emplace_back(0, run.count);
+    while (!stack.empty()) {
+        const auto [i, j] = stack.back();
+        stack.pop_back();
+        const auto a = layer.vertex(base + i);
+        const auto b = layer.vertex(base + j);
+        double worst = -1.0;
+        std::uint32_t at = i;
+        for (std::uint32_t k = i + 1; k < j; ++k) {
+            const double d = distanceToSegment(layer.vertex(base + k), a, b);
+            if (d > worst) {
+                worst = d;
+                at = k;
+            }
+        }
+        if (worst <= tolerance) continue;
+        keep[at] = 1;
+        if (at - i > 1) stack.emplace_back(i, at);
+        if (j - at > 1) stack.emplace_back(at, j);
+    }
+}
+
+/// Appends the cells of `run` kept by `keep` to `out`.
+void emit(const ToolpathLayer& layer, const Run& run, const std::vector<std::uint8_t>& keep,
+          DecimatedLayer& out) {
+    const std::uint32_t base = layer.segmentStart[run.first];
+    std::uint32_t from = 0;
+    for (std::uint32_t k = 1; k <= run.count; ++k) {
+        if (!keep[k]) continue;
+        out.ends.push_back(base + from);
+        out.ends.push_back(base + k);
+        out.firstSegment.push_back(run.first + from);
+        out.kinds.push_back(run.kind);
+        from = k;
+    }
+}
+
+/// One try with `tolerance`; false (and `out` incomplete) when the cells
+/// would be more than `budget`.
+bool tryDecimate(const ToolpathLayer& layer, const std::vector<Run>& runs, double tolerance,
+                 std::size_t budget, DecimatedLayer& out) {
+    out = {};
+    out.tolerance = tolerance;
+    std::vector<std::uint8_t> keep;
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> stack;
+    for (const Run& run : runs) {
+        simplify(layer, run, tolerance, keep, stack);
+        emit(layer, run, keep, out);
+        if (out.cellCount() > budget) return false;
+    }
+    return true;
+}
+
+/// Last resort: one cell per run for every n-th run, at most `budget`.
+DecimatedLayer everyNthRun(const ToolpathLayer& layer, const std::vector<Run>& runs,
+                           std::size_t budget) {
+    DecimatedLayer out;
+    out.tolerance = std::numeric_limits<double>::infinity();
+    out.dropped = runs.size() > budget;
+    const std::size_t step = budget == 0 ? runs.size() + 1 : (runs.size() + budget - 1) / budget;
+    for (std::size_t r = 0; r < runs.size(); r += std::max<std::size_t>(step, 1)) {
+        const Run& run = runs[r];
+        const std::uint32_t base = layer.segmentStart[run.first];
+        out.ends.push_back(base);
+        out.ends.push_back(base + run.count);
+        out.firstSegment.push_back(run.first);
+        out.kinds.push_back(run.kind);
+    }
+    return out;
+}
+
+}  // namespace
+
+std::pair<std::uint32_t, std::uint32_t> DecimatedLayer::segmentsOf(std::size_t cell) const {
+    const std::uint32_t first = firstSegment[cell];
+    return {first, first + (ends[2 * cell + 1] - ends[2 * cell])};
+}
+
+double distanceToSegment(const std::array<double, 3>& point, const std::array<double, 3>& a,
+                         const std::array<double, 3>& b) {
+    double ab[3], ap[3];
+    double lengthSquared = 0.0, along = 0.0;
+    for (std::size_t i = 0; i < 3; ++i) {
+        ab[i] = b[i] - a[i];
+        ap[i] = point[i] - a[i];
+        lengthSquared += ab[i] * ab[i];
+        along += ab[i] * ap[i];
+    }
+    const double t = lengthSquared > 0.0 ? std::clamp(along / lengthSquared, 0.0, 1.0) : 0.0;
+    double squared = 0.0;
+    for (std::size_t i = 0; i < 3; ++i) {
+        const double d = ap[i] - t * ab[i];
+        squared += d * d;
+    }
+    return std::sqrt(squared);
+}
+
+DecimatedLayer decimateLayer(const ToolpathGeometry& g, bool developed, double tolerance,
+                             std::size_t budget) {
+    const ToolpathLayer& layer = developed ? g.developed : g.scene;
+    std::vector<Run> runs = runsOf(g, developed, false);
+    if (runs.size() > budget) runs = runsOf(g, developed, true);
+    if (runs.size() > budget) return everyNthRun(layer, runs, budget);
+    const double size = std::max(layer.bounds.size(), 1e-3);
+    double tol = std::max(tolerance, size * 1e-9);
+    DecimatedLayer out;
+    // Terminates: at tol >= 2 x size every run is one cell, and runs <= budget.
+    while (!tryDecimate(layer, runs, tol, budget, out))
+        tol *= 2.0;
+    return out;
+}
+
+std::uint32_t nearestSegment(const ToolpathLayer& layer, std::uint32_t first, std::uint32_t last,
+                             const std::array<double, 3>& point) {
+    std::uint32_t best = first;
+    double nearest = std::numeric_limits<double>::infinity();
+    for (std::uint32_t s = first; s < last; ++s) {
+        const double d = distanceToSegment(point, layer.vertex(layer.segmentStart[s]),
+                                           layer.vertex(layer.segmentStart[s] + 1));
+        if (d < nearest) {
+            nearest = d;
+            best = s;
+        }
+    }
+    return best;
+}
+
+}  // namespace mtc::core
