@@ -2,7 +2,7 @@
 //   mtc_toolpath_bench [count]    geometry, poly-data and coarse copy for
 //                                 `count` (1,000,000) segments: times, peak RSS
 //   xvfb-run -a -s "-screen 0 1280x800x24" mtc_toolpath_bench --frames [count]
-//       [--canvas] [--samples N] [--size W H]
+//       [--canvas] [--samples N (-1: VTK's default)] [--size W H]
 //                                 frame times of an X window (Mesa llvmpipe
 //                                 under Xvfb) for each way of drawing the
 //                                 path: cell or point colours, line width,
@@ -148,7 +148,7 @@ void measure(vtkRenderWindow* window, vtkRenderer* renderer, vtkPolyDataMapper* 
 void frames(const std::vector<Variant>& variants, int samples, int width, int height) {
     vtkNew<vtkRenderWindow> window;
     window->SetSize(width, height);
-    window->SetMultiSamples(samples);
+    if (samples >= 0) window->SetMultiSamples(samples);  // < 0: VTK's default
     vtkNew<vtkRenderer> renderer;
     renderer->SetBackground(0.1, 0.1, 0.15);
     window->AddRenderer(renderer);
@@ -165,7 +165,7 @@ void frames(const std::vector<Variant>& variants, int samples, int width, int he
     grid->DrawZGridlinesOn();
     grid->SetFlyModeToStaticEdges();
     renderer->AddActor(grid);
-    std::printf("window %d x %d, %d samples\n", width, height, samples);
+    std::printf("window %d x %d, %d samples\n", width, height, window->GetMultiSamples());
     for (const Variant& v : variants)
         measure(window, renderer, mapper, actor, grid, v);
     const char* capabilities = window->ReportCapabilities();
