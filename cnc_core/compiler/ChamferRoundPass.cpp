@@ -36,97 +36,125 @@ const char* kindName(CornerKind kind) {
     return kind == CornerKind::Chamfer ? "CF" : "RD";
 }
 
-/// "X12.5 Y3" for a point of the plane, in programmed units.
-std::string planeWords(const CompilerPlane& plane, bool diameter, const Point2& p) {
-    std::string out;
+/// Appends "X12.5 Y3" for a point of the plane, in programmed units.
+void appendPlaneWords(std::string& out, const CompilerPlane& plane, bool diameter,
+                      const Point2& p) {
     for (int k = 0; k < 2; ++k) {
         if (k) out += ' ';
-        out += plane.axis[k] + formatCoordinate(p[k] / axisScale(plane.axis[k], diameter));
+        out += plane.axis[k];
+        appendCoordinate(out, p[k] / axisScale(plane.axis[k], diameter));
     }
-    return out;
 }
 
-std::string centreWords(const CompilerPlane& plane, bool diameter, const Point2& c) {
-    std::string out;
+/// Appends "I2 J-1.5" for a circle centre of the plane, in programmed units.
+void appendCentreWords(std::string& out, const CompilerPlane& plane, bool diameter,
+                       const Point2& c) {
     for (int k = 0; k < 2; ++k) {
         if (k) out += ' ';
-        out += plane.centre[k] + formatCoordinate(c[k] / axisScale(plane.axis[k], diameter));
+        out += plane.centre[k];
+        appendCoordinate(out, c[k] / axisScale(plane.axis[k], diameter));
     }
-    return out;
 }
 
 /// The words of the inserted block.
 std::string insertedText(const ScannedBlock& a, CornerKind kind, const CornerFit& fit) {
     const Point2 origin = a.absolute ? Point2::Zero() : fit.pointA;
-    std::string text = kind == CornerKind::Chamfer ? "G1 " : (fit.ccw ? "G3 " : "G2 ");
-    text += planeWords(a.plane, a.diameter, fit.pointB - origin);
-    if (kind == CornerKind::Rounding)
-        text += " " + centreWords(a.plane, a.diameter, fit.center - origin);
+    std::string text;
+    text.reserve(48);
+    text = kind == CornerKind::Chamfer ? "G1 " : (fit.ccw ? "G3 " : "G2 ");
+    appendPlaneWords(text, a.plane, a.diameter, fit.pointB - origin);
+    if (kind == CornerKind::Rounding) {
+        text += ' ';
+        appendCentreWords(text, a.plane, a.diameter, fit.center - origin);
+    }
     return text;
 }
 
-/// Applies `edit` to the text of a motion block scanned as `s`.
-std::string editedText(const std::string& text, const ScannedBlock& s, const BlockEdit& edit) {
+/// Buffers editedText reuses from block to block.
+struct EditScratch {
     struct Span {
         std::size_t begin, end;
     };
     std::vector<Span> remove;
     std::string insert;
+    std::string out;
+};
+
+/// Applies `edit` to the text of a motion block scanned as `s`; the result
+/// is left in `scratch.out`.
+void editedText(const std::string& text, const ScannedBlock& s, const ScanResult& scan,
+                const BlockEdit& edit, EditScratch& scratch) {
+    using Span = EditScratch::Span;
+    std::vector<Span>& remove = scratch.remove;
+    std::string& insert = scratch.insert;
+    std::string& out = scratch.out;
+    remove.clear();
+    insert.clear();
+    out.clear();
     const bool geometry = edit.newEnd || (edit.newStart && !s.absolute);
     if (geometry) {
-        for (const ScannedWord& w : s.axes)
+        for (std::uint32_t a = s.axes.begin; a < s.axes.end; ++a) {
+            const ScannedWord& w = scan.axisWords[a];
             if (w.name == s.plane.axis[0] || w.name == s.plane.axis[1])
                 remove.push_back({w.begin, w.end});
+        }
         const Point2 start = edit.newStart.value_or(s.element.start);
         const Point2 end = edit.newEnd.value_or(s.element.end);
-        insert = planeWords(s.plane, s.diameter, s.absolute ? end : Point2(end - start));
+        appendPlaneWords(insert, s.plane, s.diameter, s.absolute ? end : Point2(end - start));
         if (s.element.arc && !s.absolute) {
-            for (const ScannedWord& w : s.centres)
-                remove.push_back({w.begin, w.end});
-            insert += " " + centreWords(s.plane, s.diameter, s.element.center - start);
+            for (std::uint32_t c = s.centres.begin; c < s.centres.end; ++c)
+                remove.push_back({scan.centreWords[c].begin, scan.centreWords[c].end});
+            insert += ' ';
+            appendCentreWords(insert, s.plane, s.diameter, s.element.center - start);
         }
     }
     if (edit.removeCorner) remove.push_back({s.cornerBegin, s.cornerEnd});
     std::sort(remove.begin(), remove.end(), [](Span x, Span y) { return x.begin < y.begin; });
     const std::size_t comment = commentOffset(text);
     std::size_t insertAt = remove.empty() || !geometry ? comment : remove.front().begin;
-    std::string out;
+    if (edit.prependG >= 0) {
+        out += 'G';
+        out += std::to_string(edit.prependG);
+        out += ' ';
+    }
     std::size_t copied = 0;
+    auto putInsert = [&] {
+        out += ' ';
+        out += insert;
+        out += ' ';
+        insert.clear();
+    };
     for (const Span& span : remove) {
         if (span.begin < copied || span.end > text.size()) continue;
         out.append(text, copied, span.begin - copied);
-        if (span.begin == insertAt && !insert.empty()) {
-            out += ' ' + insert + ' ';
-            insert.clear();
-        }
+        if (span.begin == insertAt && !insert.empty()) putInsert();
         copied = span.end;
     }
     if (!insert.empty() && insertAt >= copied) {
         out.append(text, copied, insertAt - copied);
         copied = insertAt;
-        out += ' ' + insert + ' ';
+        putInsert();
     }
     out.append(text, copied, std::string::npos);
-    if (edit.prependG >= 0) out = "G" + std::to_string(edit.prependG) + " " + out;
-    // one blank between words (the comment keeps its own spacing)
-    std::string cleaned;
+    // one blank between words (the comment keeps its own spacing), in place
     const std::size_t newComment = commentOffset(out);
+    std::size_t kept = 0;
     for (std::size_t i = 0; i < out.size(); ++i) {
-        if (i < newComment && out[i] == ' ' && (cleaned.empty() || cleaned.back() == ' ')) continue;
-        cleaned += out[i];
+        if (i < newComment && out[i] == ' ' && (kept == 0 || out[kept - 1] == ' ')) continue;
+        out[kept++] = out[i];
     }
-    while (!cleaned.empty() && cleaned.back() == ' ')
-        cleaned.pop_back();
-    return cleaned;
+    out.resize(kept);
+    while (!out.empty() && out.back() == ' ')
+        out.pop_back();
 }
 
 class CornerJob {
   public:
-    CornerJob(BlockSequence& blocks, CompileContext& context,
-              const std::vector<ScannedBlock>& scanned)
+    CornerJob(BlockSequence& blocks, CompileContext& context, const ScanResult& scan)
         : blocks_(blocks),
           context_(context),
-          scanned_(scanned),
+          scan_(scan),
+          scanned_(scan.blocks),
           edits_(blocks.size()),
           minimum_(blocks.size(), 0.0) {}
 
@@ -140,9 +168,11 @@ class CornerJob {
         return context_.reportAt(blocks_, i, Severity::Error, code, message, std::move(details));
     }
     bool checkMotion(std::size_t i, std::size_t m, const char* which);
+    bool reportMotion(std::size_t i, std::size_t m, const char* which);
 
     BlockSequence& blocks_;
     CompileContext& context_;
+    const ScanResult& scan_;
     const std::vector<ScannedBlock>& scanned_;
     std::vector<BlockEdit> edits_;
     std::vector<double> minimum_;  // path length of a motion block already used by a corner
@@ -151,7 +181,15 @@ class CornerJob {
 
 bool CornerJob::checkMotion(std::size_t i, std::size_t m, const char* which) {
     const ScannedBlock& s = scanned_[m];
-    const std::string id = shortId(blocks_, m);
+    const bool contour = s.motionG == 1 || s.motionG == 2 || s.motionG == 3;
+    if (!contour || s.outOfPlane || s.planeVariable || !s.startKnown || !s.validElement)
+        return reportMotion(i, m, which);
+    return true;
+}
+
+bool CornerJob::reportMotion(std::size_t i, std::size_t m, const char* which) {
+    const ScannedBlock& s = scanned_[m];
+    const std::string id = shortId(blocks_, m);  // only built for a message
     if (s.motionG != 1 && s.motionG != 2 && s.motionG != 3)
         return fail(i, "COMPILER_CFRD_NOT_CONTOUR", "CF/RD needs G1, G2 or G3 motion.",
                     {std::string("The ") + which + " motion block " + id +
@@ -176,8 +214,8 @@ bool CornerJob::checkMotion(std::size_t i, std::size_t m, const char* which) {
                false;
     if (!s.validElement)
         return fail(i, "COMPILER_CFRD_BAD_ELEMENT", "CF/RD: motion block unusable.",
-                    {std::string("The ") + which + " motion block " + id + ": " + s.elementProblem +
-                     "."}) &&
+                    {std::string("The ") + which + " motion block " + id + ": " +
+                     (s.elementProblem ? s.elementProblem : "") + "."}) &&
                false;
     return true;
 }
@@ -187,7 +225,7 @@ bool CornerJob::corner(std::size_t i) {
     if (c.cornerCount > 1)
         return fail(i, "COMPILER_CFRD_TWICE", "Only one CF or RD per block.",
                     {"The block holds more than one chamfer/rounding instruction."});
-    if (!c.sizeProblem.empty())
+    if (c.sizeProblem)
         return fail(i, "COMPILER_CFRD_VALUE",
                     std::string("Invalid ") + kindName(c.kind) + " value.", {c.sizeProblem});
     std::size_t a = i;
@@ -201,9 +239,9 @@ bool CornerJob::corner(std::size_t i) {
     }
     std::size_t b = i + 1;
     int between = 0;
-    std::string illegal;
+    std::size_t illegalAt = 0;  // 0: none (block 0 never lies between)
     for (; b < blocks_.size() && !blocks_[b].programEnd; ++b) {
-        if (illegal.empty() && !scanned_[b].illegal.empty()) illegal = scanned_[b].illegal;
+        if (illegalAt == 0 && scanned_[b].illegal) illegalAt = b;
         if (scanned_[b].motion) break;
         if (++between > kMaxBlocksBetween) break;
     }
@@ -211,10 +249,11 @@ bool CornerJob::corner(std::size_t i) {
         return fail(i, "COMPILER_CFRD_NO_TARGET", "No motion block found for CF/RD.",
                     {"The next motion block is missing, or more than 20 blocks without motion "
                      "follow the first motion block."});
-    if (!illegal.empty())
+    if (illegalAt > 0)
         return fail(i, "COMPILER_CFRD_ILLEGAL", "CF/RD across an illegal function.",
                     {"Between the two motion blocks (up to " + shortId(blocks_, b) + ") " +
-                     illegal + " is programmed; no chamfer or rounding is possible there."});
+                     describeIllegal(scanned_[illegalAt]) +
+                     " is programmed; no chamfer or rounding is possible there."});
     if (!checkMotion(i, a, "first") || !checkMotion(i, b, "second")) return !context_.stopped();
     const ScannedBlock& sa = scanned_[a];
     const ScannedBlock& sb = scanned_[b];
@@ -241,30 +280,38 @@ bool CornerJob::corner(std::size_t i) {
 }
 
 void CornerJob::apply() {
+    EditScratch scratch;
     for (std::size_t i = 0; i < blocks_.size(); ++i) {
         const BlockEdit& e = edits_[i];
         if (!e.newStart && !e.newEnd && !e.removeCorner && e.prependG < 0) continue;
-        blocks_[i].text = editedText(blocks_[i].text, scanned_[i], e);
+        editedText(blocks_[i].text, scanned_[i], scan_, e, scratch);
+        blocks_[i].text.assign(scratch.out);
         blocks_[i].changed = true;
     }
     if (insertions_.empty()) return;
-    BlockSequence out;
-    out.reserve(blocks_.size() + insertions_.size());
-    std::size_t next = 0;
-    for (std::size_t i = 0; i < blocks_.size(); ++i) {
-        out.push_back(std::move(blocks_[i]));
-        for (; next < insertions_.size() && insertions_[next].at == i; ++next) {
-            CompileBlock block;
-            block.number = out.back().number;
-            block.sourceIndex = out.back().sourceIndex;
-            block.sourceLine = out.back().sourceLine;
+    // make room at the end and move the blocks back, last first, putting
+    // each insertion right after the block it belongs to
+    const std::size_t oldSize = blocks_.size();
+    blocks_.resize(oldSize + insertions_.size());
+    std::size_t to = blocks_.size();
+    std::size_t next = insertions_.size();  // insertions_[0, next) are not placed yet
+    for (std::size_t i = oldSize; i-- > 0 && next > 0;) {
+        std::size_t first = next;  // insertions_[first, next) follow block i
+        while (first > 0 && insertions_[first - 1].at == i)
+            --first;
+        for (std::size_t k = next; k-- > first;) {
+            CompileBlock& block = blocks_[--to];
+            block = CompileBlock{};
+            block.number = blocks_[i].number;
+            block.sourceIndex = blocks_[i].sourceIndex;
+            block.sourceLine = blocks_[i].sourceLine;
             block.intermediate = true;
             block.changed = true;
-            block.text = insertions_[next].text;
-            out.push_back(std::move(block));
+            block.text = std::move(insertions_[k].text);
         }
+        next = first;
+        if (--to != i) blocks_[to] = std::move(blocks_[i]);
     }
-    blocks_ = std::move(out);
 }
 
 }  // namespace
@@ -276,11 +323,11 @@ void ChamferRoundPass::run(BlockSequence& blocks, CompileContext& context) const
             block.text.find("RD") != std::string::npos)
             any = true;
     if (!any) return;
-    const std::vector<ScannedBlock> scanned =
-        scanBlocks(blocks, context.parsed(blocks), context.options());
-    CornerJob job(blocks, context, scanned);
+    const ScanResult scan = scanBlocks(blocks, context.parsed(blocks), context.options());
+    CornerJob job(blocks, context, scan);
     for (std::size_t i = 0; i < blocks.size(); ++i)
-        if (scanned[i].cornerCount > 0 && !context.hasError(blocks[i]) && !job.corner(i)) return;
+        if (scan.blocks[i].cornerCount > 0 && !context.hasError(blocks[i]) && !job.corner(i))
+            return;
     if (context.stopped()) return;
     job.apply();
 }

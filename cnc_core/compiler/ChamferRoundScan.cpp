@@ -66,8 +66,9 @@ std::size_t wordEnd(const std::string& text, std::size_t begin) {
     return i;
 }
 
-/// CF/RD value from its raw arguments ("2", "=2.5", " = 1").
-bool cornerValue(std::string_view args, double& value) {
+/// CF/RD value from its raw arguments ("2", "=2.5", " = 1"), read from a
+/// copy of the arguments (the slow path of cornerValue).
+bool cornerValueFromCopy(std::string_view args, double& value) {
     std::string s(args);
     std::size_t i = 0;
     while (i < s.size() && s[i] == ' ')
@@ -81,6 +82,26 @@ bool cornerValue(std::string_view args, double& value) {
     while (*end == ' ')
         ++end;
     return *end == '\0' && std::isfinite(value);
+}
+
+/// CF/RD value from its raw arguments, read in place: `args` lies inside a
+/// NUL-terminated program text. Falls back to a copy when the number runs
+/// past the arguments (same result as reading a copy in every case).
+bool cornerValue(std::string_view args, double& value) {
+    std::size_t i = 0;
+    while (i < args.size() && args[i] == ' ')
+        ++i;
+    if (i < args.size() && args[i] == '=') ++i;
+    while (i < args.size() && args[i] == ' ')
+        ++i;
+    if (i >= args.size()) return false;
+    const char* stop = args.data() + args.size();
+    char* end = nullptr;
+    value = std::strtod(args.data() + i, &end);
+    if (end > stop) return cornerValueFromCopy(args, value);
+    while (end < stop && *end == ' ')
+        ++end;
+    return (end == stop || *end == '\0') && std::isfinite(value);
 }
 
 struct AxisPosition {
@@ -111,10 +132,20 @@ std::string wordName(const Word& word) {
     return name;
 }
 
-/// Reads the words of one parsed block into `out`, updating the G state.
+void setIllegal(ScannedBlock& out, const char* why, bool isG, int g) {
+    if (out.illegal) return;
+    out.illegal = why;
+    out.illegalIsG = isG;
+    out.illegalG = g;
+}
+
+/// Reads the words of one parsed block into `out` (its axis and centre
+/// words into the pools of `result`), updating the G state.
 void readWords(const Program& program, const Block& block, std::size_t prefixSize,
-               const std::string& text, ScanState& state, ScannedBlock& out,
+               const std::string& text, ScanState& state, ScannedBlock& out, ScanResult& result,
                const CompilerOptions& options) {
+    out.axes.begin = out.axes.end = static_cast<std::uint32_t>(result.axisWords.size());
+    out.centres.begin = out.centres.end = static_cast<std::uint32_t>(result.centreWords.size());
     bool g20 = false;
     for (std::uint32_t w = block.firstWord; w < block.firstWord + block.wordCount; ++w) {
         const Word word = program.words[w];
@@ -131,20 +162,20 @@ void readWords(const Program& program, const Block& block, std::size_t prefixSiz
                 if (g >= 17 && g <= 19) state.plane = standardPlane(g, options.process);
                 if (g == 20) g20 = true;
                 if (const char* why = g < 0 ? "a computed G function" : illegalG(g))
-                    if (out.illegal.empty())
-                        out.illegal =
-                            why + std::string(" (G") + (g < 0 ? "=" : std::to_string(g)) + ")";
+                    setIllegal(out, why, true, g);
                 break;
             }
             case WordKind::Axis:
             case WordKind::CircleCenter: {
-                ScannedWord s{wordName(word), word.number, word.expr >= 0, begin,
-                              wordEnd(text, begin)};
-                (word.kind == WordKind::Axis ? out.axes : out.centres).push_back(s);
+                const bool axis = word.kind == WordKind::Axis;
+                (axis ? result.axisWords : result.centreWords)
+                    .push_back(
+                        {wordName(word), word.number, word.expr >= 0, begin, wordEnd(text, begin)});
+                ++(axis ? out.axes : out.centres).end;
                 break;
             }
             case WordKind::Jump:
-                if (out.illegal.empty()) out.illegal = "a jump instruction";
+                setIllegal(out, "a jump instruction", false, 0);
                 break;
             case WordKind::Command: {
                 const std::string_view raw = program.text(word.text);
@@ -166,21 +197,22 @@ void readWords(const Program& program, const Block& block, std::size_t prefixSiz
                 break;
         }
     }
-    if (!block.label.empty() && out.illegal.empty()) out.illegal = "a jump label";
+    if (!block.label.empty()) setIllegal(out, "a jump label", false, 0);
     if (g20) {  // G20 a b [c]: the words name the plane axes, nothing moves
         if (out.axes.size() >= 2) {
             state.plane.code = 20;
-            state.plane.axis[0] = out.axes[0].name;
-            state.plane.axis[1] = out.axes[1].name;
+            state.plane.axis[0] = result.axisWords[out.axes.begin].name;
+            state.plane.axis[1] = result.axisWords[out.axes.begin + 1].name;
             state.plane.centre[0] = 'I';
             state.plane.centre[1] = 'J';
         }
-        out.axes.clear();
+        result.axisWords.resize(out.axes.begin);
+        out.axes.end = out.axes.begin;
     }
 }
 
 /// Builds the plane element of a motion block and advances the positions.
-void buildMotion(ScanState& state, ScannedBlock& out) {
+void buildMotion(ScanState& state, ScannedBlock& out, const ScanResult& result) {
     const CompilerPlane& plane = state.plane;
     Point2 start, end, centre;
     out.startKnown = true;
@@ -191,7 +223,8 @@ void buildMotion(ScanState& state, ScannedBlock& out) {
     }
     end = start;
     centre = start;
-    for (const ScannedWord& w : out.axes) {
+    for (std::uint32_t a = out.axes.begin; a < out.axes.end; ++a) {
+        const ScannedWord& w = result.axisWords[a];
         const int k = w.name == plane.axis[0] ? 0 : w.name == plane.axis[1] ? 1 : -1;
         if (k < 0) out.outOfPlane = true;
         if (k >= 0 && w.variable) out.planeVariable = true;
@@ -201,7 +234,8 @@ void buildMotion(ScanState& state, ScannedBlock& out) {
         p.known = !w.variable && (state.absolute || p.known);
         p.value = state.absolute ? v : p.value + v;
     }
-    for (const ScannedWord& w : out.centres) {
+    for (std::uint32_t c = out.centres.begin; c < out.centres.end; ++c) {
+        const ScannedWord& w = result.centreWords[c];
         const int k = w.name[0] == plane.centre[0] ? 0 : w.name[0] == plane.centre[1] ? 1 : -1;
         if (k < 0) continue;  // the interpreter reports a centre outside the plane
         if (w.variable) out.planeVariable = true;
@@ -220,7 +254,7 @@ void buildMotion(ScanState& state, ScannedBlock& out) {
         if (out.element.length() < 1e-9)
             out.elementProblem = "the block does not move in the plane";
     }
-    out.validElement = out.elementProblem.empty();
+    out.validElement = out.elementProblem == nullptr;
 }
 
 }  // namespace
@@ -229,9 +263,19 @@ double axisScale(const std::string& name, bool diameter) {
     return diameter && !name.empty() && name[0] == 'X' ? 0.5 : 1.0;
 }
 
-std::vector<ScannedBlock> scanBlocks(const BlockSequence& blocks, const ParsedSequence& parsed,
-                                     const CompilerOptions& options) {
-    std::vector<ScannedBlock> out(blocks.size());
+std::string describeIllegal(const ScannedBlock& block) {
+    if (!block.illegal) return std::string();
+    if (!block.illegalIsG) return block.illegal;
+    return block.illegal + std::string(" (G") +
+           (block.illegalG < 0 ? "=" : std::to_string(block.illegalG)) + ")";
+}
+
+ScanResult scanBlocks(const BlockSequence& blocks, const ParsedSequence& parsed,
+                      const CompilerOptions& options) {
+    ScanResult result;
+    result.blocks.resize(blocks.size());
+    result.axisWords.reserve(blocks.size() * 2);
+    std::vector<ScannedBlock>& out = result.blocks;
     ScanState state;
     state.plane =
         standardPlane(options.process ? options.process->defaultPlane() : 17, options.process);
@@ -241,16 +285,16 @@ std::vector<ScannedBlock> scanBlocks(const BlockSequence& blocks, const ParsedSe
         if (p >= 0) {
             const Block block = parsed.program.blocks[static_cast<std::size_t>(p)];
             readWords(parsed.program, block, blocks[i].prefix.size(), blocks[i].text, state, s,
-                      options);
+                      result, options);
         }
         s.motionG = state.motionG;
         s.absolute = state.absolute;
         s.diameter = state.diameter;
         s.plane = state.plane;
         s.motion = !s.axes.empty();
-        if (s.motion) buildMotion(state, s);
+        if (s.motion) buildMotion(state, s, result);
     }
-    return out;
+    return result;
 }
 
 }  // namespace mtc::core

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -24,36 +25,57 @@ struct CompilerPlane {
     char centre[2] = {'I', 'J'};       ///< centre letters of the two axes
 };
 
-/// What the CF/RD pass needs to know of one block of the sequence.
+/// Indices [begin, end) of a block's words in a ScanResult word pool.
+struct WordRange {
+    std::uint32_t begin = 0;
+    std::uint32_t end = 0;
+    std::size_t size() const { return end - begin; }
+    bool empty() const { return end == begin; }
+};
+
+/// What the CF/RD pass needs to know of one block of the sequence. The
+/// problem texts are static strings (nullptr = no problem).
 struct ScannedBlock {
-    bool motion = false;           ///< has axis words (not a G20 plane definition)
-    int motionG = 0;               ///< active G0..G3 for this block
-    bool explicitMotionG = false;  ///< the block writes its G0..G3
-    bool absolute = true;          ///< G90
-    bool diameter = false;         ///< G16 (X values are diameters)
-    CompilerPlane plane;           ///< plane active for this block
-    std::string illegal;           ///< first function that forbids CF/RD across it ("" = none)
-    bool outOfPlane = false;       ///< moves an axis outside the plane
-    bool planeVariable = false;    ///< plane end point / centre given by a variable
-    bool startKnown = false;       ///< start point in the plane known
-    PathElement element;           ///< the plane motion (if motion && valid)
+    bool motion = false;            ///< has axis words (not a G20 plane definition)
+    int motionG = 0;                ///< active G0..G3 for this block
+    bool explicitMotionG = false;   ///< the block writes its G0..G3
+    bool absolute = true;           ///< G90
+    bool diameter = false;          ///< G16 (X values are diameters)
+    CompilerPlane plane;            ///< plane active for this block
+    const char* illegal = nullptr;  ///< first function that forbids CF/RD across it
+    bool illegalIsG = false;        ///< `illegal` is a G function (illegalG says which)
+    int illegalG = -1;              ///< its number (-1: a computed G function)
+    bool outOfPlane = false;        ///< moves an axis outside the plane
+    bool planeVariable = false;     ///< plane end point / centre given by a variable
+    bool startKnown = false;        ///< start point in the plane known
+    PathElement element;            ///< the plane motion (if motion && valid)
     bool validElement = false;
-    std::string elementProblem;        ///< why not (radius mismatch, zero length)
-    std::vector<ScannedWord> axes;     ///< axis words
-    std::vector<ScannedWord> centres;  ///< I J K words
+    const char* elementProblem = nullptr;  ///< why not (radius mismatch, zero length)
+    WordRange axes;                        ///< axis words in ScanResult::axisWords
+    WordRange centres;                     ///< I J K words in ScanResult::centreWords
     // CF / RD instruction of the block
     int cornerCount = 0;  ///< CF/RD words in the block
     CornerKind kind = CornerKind::Chamfer;
     double size = 0.0;
-    std::string sizeProblem;                     ///< "" = constant value
+    const char* sizeProblem = nullptr;           ///< nullptr = constant value
     std::size_t cornerBegin = 0, cornerEnd = 0;  ///< span of the CF/RD word
 };
+
+/// The scanned blocks (one per sequence block) and the pools of their words.
+struct ScanResult {
+    std::vector<ScannedBlock> blocks;
+    std::vector<ScannedWord> axisWords;
+    std::vector<ScannedWord> centreWords;
+};
+
+/// "a change of plane (G18)": the illegal function of `block` ("" = none).
+std::string describeIllegal(const ScannedBlock& block);
 
 /// Scans every block of the sequence in program order, tracking the modal
 /// state the geometry needs (G0-G3, plane G17-G20, G90/G91, G15/G16, the
 /// positions of the plane axes). `initialPlane` is the process's default.
-std::vector<ScannedBlock> scanBlocks(const BlockSequence& blocks, const ParsedSequence& parsed,
-                                     const CompilerOptions& options);
+ScanResult scanBlocks(const BlockSequence& blocks, const ParsedSequence& parsed,
+                      const CompilerOptions& options);
 
 /// The scale from programmed to geometric units of axis `name` (0.5 for the
 /// X axis under diameter programming).

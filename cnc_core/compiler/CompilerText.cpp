@@ -74,27 +74,37 @@ std::size_t commentOffset(std::string_view text) {
 }
 
 std::string formatCoordinate(double value) {
+    std::string text;
+    appendCoordinate(text, value);
+    return text;
+}
+
+void appendCoordinate(std::string& out, double value) {
     if (!std::isfinite(value) || std::fabs(value) > 1e14) value = 0.0;
     long long scaled = std::llround(value * 10000.0);
-    std::string text;
+    // llround of a value that rounds to zero gives 0, so "-0" cannot occur
     if (scaled < 0) {
-        text += '-';
+        out += '-';
         scaled = -scaled;
     }
-    text += std::to_string(scaled / 10000);
-    int fraction = static_cast<int>(scaled % 10000);
-    if (fraction != 0) {
-        char digits[5] = {
-            static_cast<char>('0' + fraction / 1000), static_cast<char>('0' + fraction / 100 % 10),
-            static_cast<char>('0' + fraction / 10 % 10), static_cast<char>('0' + fraction % 10), 0};
-        int length = 4;
-        while (length > 0 && digits[length - 1] == '0')
-            --length;
-        text += '.';
-        text.append(digits, static_cast<std::size_t>(length));
-    }
-    if (text == "-0") text = "0";
-    return text;
+    char digits[24];
+    char* first = digits + sizeof digits;
+    long long whole = scaled / 10000;
+    do {
+        *--first = static_cast<char>('0' + whole % 10);
+        whole /= 10;
+    } while (whole > 0);
+    out.append(first, static_cast<std::size_t>(digits + sizeof digits - first));
+    const int fraction = static_cast<int>(scaled % 10000);
+    if (fraction == 0) return;
+    char decimals[4] = {
+        static_cast<char>('0' + fraction / 1000), static_cast<char>('0' + fraction / 100 % 10),
+        static_cast<char>('0' + fraction / 10 % 10), static_cast<char>('0' + fraction % 10)};
+    int length = 4;
+    while (length > 0 && decimals[length - 1] == '0')
+        --length;
+    out += '.';
+    out.append(decimals, static_cast<std::size_t>(length));
 }
 
 bool containsAnyCaseless(std::string_view text,

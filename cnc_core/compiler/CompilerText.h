@@ -40,6 +40,8 @@ std::size_t commentOffset(std::string_view text);
 /// The number formatted for a block text: up to 4 decimals, no trailing
 /// zeros, "-0" written as "0".
 std::string formatCoordinate(double value);
+/// Appends formatCoordinate(value) to `out` (no temporary string).
+void appendCoordinate(std::string& out, double value);
 
 /// True when `text` contains one of `upperNeedles` (written in capitals),
 /// letters of `text` compared without case. A cheap pre-check of passes that
