@@ -67,6 +67,7 @@ void checkObject(const ObjectText& object, const std::set<std::string>& handled,
         error.details.insert(error.details.end(), d.details.begin(), d.details.end());
         if (!context.submit(std::move(error))) return;
     }
+    if (!program.usesCompilerKeywords) return;  // no word needs a compiler
     for (std::size_t b = 0; b < program.blocks.size(); ++b) {
         const Block block = program.blocks[b];
         for (std::uint32_t w = block.firstWord; w < block.firstWord + block.wordCount; ++w) {

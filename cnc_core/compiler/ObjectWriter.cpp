@@ -93,10 +93,47 @@ bool sourceLayoutLines(const std::string& lead, const CompileBlock& block,
     return fits(lines);
 }
 
-std::string blockLead(const CompileBlock& block, int number, int sub) {
-    std::string lead = block.prefix;
-    if (number >= 0) lead += formatBlockNumber(number) + ":" + formatFourDigits(sub);
-    return lead;
+void appendFourDigits(std::string& out, int number) {
+    if (number < 0) number = 0;
+    if (number > 9999) {
+        out += formatFourDigits(number);
+        return;
+    }
+    const char digits[4] = {
+        static_cast<char>('0' + number / 1000), static_cast<char>('0' + number / 100 % 10),
+        static_cast<char>('0' + number / 10 % 10), static_cast<char>('0' + number % 10)};
+    out.append(digits, 4);
+}
+
+/// `lead` becomes "/N0053:0001" (prefix and enhanced number; "" without number).
+void setBlockLead(std::string& lead, const CompileBlock& block, int number, int sub) {
+    lead = block.prefix;
+    if (number < 0) return;
+    lead += 'N';
+    appendFourDigits(lead, number);
+    lead += ':';
+    appendFourDigits(lead, sub);
+}
+
+/// The common case of a block that is one line of at most 71 characters:
+/// appends that line (with '\n') to `out` and returns true; false (nothing
+/// appended) when the block needs the general layout (sourceLayoutLines,
+/// wrapBlock). Writes exactly the line those would give.
+bool appendSingleLine(const std::string& lead, const CompileBlock& block, std::string& out) {
+    const std::string& text = block.text;
+    const bool asSource = !block.intermediate && !block.changed;
+    if (asSource && !block.sourceLayout.empty()) return false;  // continuation lines
+    if (text.find('\n') != std::string::npos) return false;
+    // sourceLayoutLines writes "lead text"; wrapBlock drops the blank after an empty lead
+    const bool blank = !text.empty() && (asSource || !lead.empty());
+    // (wrapBlock's one-line case counts the blank even after an empty lead)
+    const std::size_t counted = lead.size() + (blank || !asSource ? 1 : 0) + text.size();
+    if (text.empty() ? lead.size() > kMaxObjectLine : counted > kMaxObjectLine) return false;
+    out += lead;
+    if (blank) out += ' ';
+    out += text;
+    out += '\n';
+    return true;
 }
 
 }  // namespace
@@ -129,6 +166,7 @@ ObjectText writeObjectText(const SourceFrame& frame, const BlockSequence& blocks
     }
     int number = -1, sub = 0;
     std::vector<std::string> lines;
+    std::string lead;
     bool endWritten = false;
     for (std::size_t i = 0; i < blocks.size(); ++i) {
         const CompileBlock& block = blocks[i];
@@ -138,7 +176,18 @@ ObjectText writeObjectText(const SourceFrame& frame, const BlockSequence& blocks
             number = block.number;
             sub = 0;
         }
-        const std::string lead = blockLead(block, number, sub);
+        setBlockLead(lead, block, number, sub);
+        const ObjectLineKind kind =
+            block.programEnd ? ObjectLineKind::ProgramEnd : ObjectLineKind::Block;
+        if (appendSingleLine(lead, block, out.text)) {
+            out.lineMap.push_back({kind, block.sourceLine, number, sub, block.intermediate});
+            if (block.programEnd) {
+                endWritten = true;
+                break;
+            }
+            ++out.blocks;
+            continue;
+        }
         if (block.intermediate || block.changed || !sourceLayoutLines(lead, block, lines)) {
             lines = wrapBlock(lead, block.text);
             if (!fits(lines)) {
@@ -153,12 +202,9 @@ ObjectText writeObjectText(const SourceFrame& frame, const BlockSequence& blocks
                                    "Measure: split the block or shorten its macros."}))
                 break;
         }
-        const ObjectLineKind kind =
-            block.programEnd ? ObjectLineKind::ProgramEnd : ObjectLineKind::Block;
         for (std::size_t l = 0; l < lines.size(); ++l)
-            addLine(lines[l], {l == 0 ? kind : ObjectLineKind::Continuation,
-                               block.sourceLine + (block.intermediate ? 0u : 0u), number, sub,
-                               block.intermediate});
+            addLine(lines[l], {l == 0 ? kind : ObjectLineKind::Continuation, block.sourceLine,
+                               number, sub, block.intermediate});
         if (block.programEnd) {
             endWritten = true;
             break;

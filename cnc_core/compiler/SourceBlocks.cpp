@@ -44,7 +44,7 @@ std::string joinContinuationLines(std::string_view layout) {
 }
 
 /// Reads "[/][:] Nxxxx[:yyyy] " off the front of `raw`.
-void splitNumber(const std::string& raw, CompileBlock& block) {
+void splitNumber(std::string_view raw, CompileBlock& block) {
     std::size_t i = 0;
     while (i < raw.size() && (raw[i] == ' ' || raw[i] == '/' || raw[i] == ':')) {
         if (raw[i] != ' ') block.prefix += raw[i];
@@ -54,7 +54,10 @@ void splitNumber(const std::string& raw, CompileBlock& block) {
     while (digits < raw.size() && isDigit(raw[digits]))
         ++digits;
     if (i < raw.size() && raw[i] == 'N' && digits > i + 1 && digits - i - 1 <= 6) {
-        block.number = std::stoi(raw.substr(i + 1, digits - i - 1));
+        int number = 0;  // at most 6 digits: no overflow
+        for (std::size_t d = i + 1; d < digits; ++d)
+            number = number * 10 + (raw[d] - '0');
+        block.number = number;
         i = digits;
         if (i + 4 < raw.size() + 0 && raw[i] == ':' &&
             std::all_of(raw.begin() + static_cast<long>(i) + 1,
@@ -68,7 +71,7 @@ void splitNumber(const std::string& raw, CompileBlock& block) {
         while (i < raw.size() && raw[i] == ' ')
             ++i;
     }
-    const std::string_view layout = std::string_view(raw).substr(i);
+    const std::string_view layout = raw.substr(i);
     block.text = joinContinuationLines(layout);
     if (layout.find('\n') != std::string_view::npos) block.sourceLayout = std::string(layout);
 }
@@ -88,7 +91,11 @@ BlockSequence splitSourceBlocks(const Program& program, SourceFrame& frame) {
         out.sourceIndex = static_cast<std::uint32_t>(b);
         out.sourceLine = block.line;
         out.programEnd = (block.flags & kBlockProgramEnd) != 0;
-        splitNumber(withoutCarriageReturns(program.text(block.sourceText)), out);
+        const std::string_view raw = program.text(block.sourceText);
+        if (raw.find('\r') == std::string_view::npos)
+            splitNumber(raw, out);
+        else
+            splitNumber(withoutCarriageReturns(raw), out);
         if (out.number < 0 && block.number >= 0) out.number = block.number;
         frame.lastNumber = std::max(frame.lastNumber, out.number);
         if (out.programEnd) frame.hasProgramEnd = true;
