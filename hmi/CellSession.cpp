@@ -40,6 +40,7 @@ CellSession::CellSession(mtc::core::MachineConfig config, QObject* parent)
       machineData_(std::make_shared<mtc::core::MachineDataStore>(config_)) {
     mtc::core::InterpreterServices services;
     services.machineData = machineData_;
+    services.axisTransfer = &axisTransfer_;  // GAX / FAX of normal runs
     for (int slot = 0; slot < processCount(); ++slot) {
         stations_.push_back(
             std::make_unique<Station>(processConfig(slot), store_, services, *machineData_));

@@ -47,6 +47,7 @@ void SimulationClock::hold() {
 void SimulationClock::reset() {
     timer_.stop();
     interpreter_.controlReset();
+    waitingAxis_.clear();
     machine_.reset();
     lastProgram_.reset();
     control_.setCurrentBlock({});
@@ -67,6 +68,10 @@ void SimulationClock::tick() {
         lastProgram_ = state.program;
         lastBlock_ = state.block;
         auto result = interpreter_.step();
+        if (!waitingAxis_.empty() && result.blocksInterpreted > 0) {
+            waitingAxis_.clear();  // the GAX was granted
+            control_.setAlarm({});
+        }
         switch (result.status) {
             case RunStatus::Running:
                 if (!control_.singleBlock()) continue;
@@ -78,6 +83,7 @@ void SimulationClock::tick() {
             case RunStatus::Ended:
                 return finish({});
             case RunStatus::Stopped:
+                if (waitForAxis()) return;
                 timer_.stop();
                 control_.programStopped("Programmed stop: press Start to continue");
                 showCurrentBlock();
@@ -91,6 +97,20 @@ void SimulationClock::tick() {
         }
     }
     showCurrentBlock();
+}
+
+bool SimulationClock::waitForAxis() {
+    const std::string axis = interpreter_.waitingForAxis();
+    if (axis.empty()) return false;
+    // The timer keeps polling (one look per tick); the simulated clock of this
+    // process stands still meanwhile, the other processes go on.
+    beginTiming();
+    if (axis != waitingAxis_) {
+        waitingAxis_ = axis;
+        control_.setAlarm("Waiting for axis " + axis + " (GAX: another process holds it)");
+        showCurrentBlock();
+    }
+    return true;
 }
 
 void SimulationClock::finish(const std::string& alarm) {

@@ -34,6 +34,8 @@ class SimulationClock : public QObject, public mtc::core::ProgramRunner {
     void setSpeed(double speed) { speed_ = speed > 0 ? speed : 1.0; }
     double speed() const { return speed_; }
     bool running() const { return timer_.isActive(); }
+    /// The axis this process waits for (GAX, R-022), "" when none.
+    const std::string& waitingAxis() const { return waitingAxis_; }
     /// Runs one tick now (the timer calls this; tests may too).
     void tick();
 
@@ -44,6 +46,9 @@ class SimulationClock : public QObject, public mtc::core::ProgramRunner {
   private:
     void beginTiming();
     void finish(const std::string& alarm);
+    /// True while the interpreter waits for a GAX (R-022): shows "Waiting
+    /// for axis X" and keeps ticking without executing blocks.
+    bool waitForAxis();
     void showCurrentBlock();
 
     mtc::core::Interpreter& interpreter_;
@@ -55,6 +60,7 @@ class SimulationClock : public QObject, public mtc::core::ProgramRunner {
     double speed_ = 1.0;
     mtc::core::ProgramPtr lastProgram_;  ///< program and block executed last
     std::uint32_t lastBlock_ = 0;
+    std::string waitingAxis_;  ///< axis of the GAX waited for ("" = none)
 };
 
 }  // namespace mtc::hmi

@@ -243,6 +243,10 @@ int runRunCommand(const CliOptions& options) {
     cell.load(diagnostics);
     core::InterpreterServices services;
     services.machineData = cell.data;
+    // The process runs alone: a GAX is granted at once, a FAX releases the
+    // axis until the next GAX, a move of a released axis is an error.
+    core::AxisTransfer axisOwnership;
+    services.axisTransfer = &axisOwnership;
     core::Interpreter interpreter(*run.process, run.store, sink, services);
     cell.afc = std::make_shared<core::AdaptiveFeedControl>(
         *run.process, *cell.data, core::torqueModelFromConfig(*run.process), &cell.signals);

@@ -48,6 +48,7 @@ Interpreter::Interpreter(const ProcessConfig& config, const ProgramStore& progra
       machineData_(ownMachineData(services, config)),
       events_(ownEvents(services)),
       otherProcesses_(services.otherProcesses),
+      axisTransfer_(services.axisTransfer),
       evaluator_(
           {&state_, &input_, machineData_.get(), services.otherProcesses, config.index, nullptr}),
       executor_({&config_, &axes_, &zeroOffsets_, &defaults_, &mGroupOf_, 0.002}),
@@ -97,6 +98,7 @@ bool Interpreter::select(ProgramPtr program, std::uint32_t startBlock,
     state_.callStack.clear();
     state_.ended = false;
     programFlow_.clearCache();
+    withdrawAxisRequests();
     return true;
 }
 
@@ -190,6 +192,10 @@ RunResult Interpreter::run(std::uint64_t budget) {
 
 Interpreter::Outcome Interpreter::executeNext(DiagnosticList& diagnostics,
                                               std::uint64_t& executed) {
+    if (!axisWaits_.empty()) {  // a GAX waits for the holder's FAX
+        if (!waitingForAxis().empty()) return Outcome::Stopped;
+        axisWaits_.clear();
+    }
     const Program& program = *state_.program;
     const std::uint32_t index = state_.block;
     if (index < program.blocks.size()) block_ = program.blocks[index];
@@ -247,7 +253,8 @@ bool Interpreter::checkedBlock(const Program& program, std::uint32_t index,
     return decoder.decode(block_) && executor_.plan(context, input_, state_, plan_) &&
            planFlow(context) &&
            (input_.mtdCount == 0 && input_.writeCount == 0 ? true : validateMachineData(context)) &&
-           (!adaptiveFeedInvolved() || planAdaptiveFeed(context));
+           (!adaptiveFeedInvolved() || planAdaptiveFeed(context)) &&
+           (axisTransfer_ == nullptr || planAxisOwnership(context));
 }
 
 bool Interpreter::planFlow(const BlockContext& context) {

@@ -17,6 +17,7 @@
 #include "cnc_core/interp/VariableAccess.h"
 #include "cnc_core/language/Diagnostic.h"
 #include "cnc_core/machine/AxisNameTable.h"
+#include "cnc_core/machine/AxisTransfer.h"
 #include "cnc_core/machine/EventTable.h"
 #include "cnc_core/machine/MachineConfig.h"
 #include "cnc_core/machine/MachineDataProvider.h"
@@ -101,6 +102,9 @@ struct InterpreterServices {
     std::shared_ptr<MachineDataProvider> machineData;
     std::shared_ptr<EventTable> events;
     VariableAccess* otherProcesses = nullptr;  ///< @p:n of other processes
+    /// Axis ownership of the cell (GAX / FAX, R-022); nullptr = none: GAX /
+    /// FAX only reach the sink and every axis may move (restart computing).
+    AxisTransfer* axisTransfer = nullptr;
 };
 
 /// Executes the NC programs of one process, block by block: decode (words,
@@ -155,6 +159,9 @@ class Interpreter {
     /// that has to wait for another process): run() / step() return Stopped
     /// after this block instead of going on.
     void requestHold() { holdRequested_ = true; }
+    /// The GAX this process waits for ("X"), "" when it waits for none: step()
+    /// and run() return Stopped without a block until the holder frees it.
+    std::string waitingForAxis() const;
     /// Observer of every aux function (nullptr = none). Not owned.
     void setObserver(AuxObserver* observer) { observer_ = observer; }
 
@@ -210,6 +217,17 @@ class Interpreter {
     /// 510) becomes an error of this block; the extra time joins the clock.
     bool adaptiveFeedAfterMotion(const Program& program, DiagnosticList& diagnostics);
     bool adaptiveFeedInvolved() const;
+    /// GAX / FAX of the block name axes of this process; FAX only of held
+    /// axes; the move only of held axes (InterpreterAxisOwnership.cpp).
+    bool planAxisOwnership(const BlockContext& context);
+    /// Carries out GAX / FAX of the current block on the cell's ownership.
+    void commitAxisTransfer(const std::string& keyword, std::string_view arguments);
+    /// Axes of this process another process holds (or nobody), as a mask.
+    std::uint32_t axesNotHeld();
+    /// Index of this process's axis called `name` in a transfer, or -1.
+    int transferAxisIndex(const std::string& name) const;
+    /// Withdraws the GAX this process waits for (Control reset).
+    void withdrawAxisRequests();
     void resetBaseSystem();
     void resetModal();
     void rebuildNames() { names_ = AxisNameTable::build(axes_, state_.modal.transformation); }
@@ -230,6 +248,14 @@ class Interpreter {
     VariableAccess* otherProcesses_ = nullptr;
     std::shared_ptr<AdaptiveFeedControl> afc_;
     AuxObserver* observer_ = nullptr;
+    AxisTransfer* axisTransfer_ = nullptr;
+    struct AxisWait {
+        AxisTransfer::Ticket ticket;
+        std::string axis;
+    };
+    std::vector<AxisWait> axisWaits_;          ///< GAX not granted yet
+    std::uint64_t ownershipRevision_ = ~0ull;  ///< axisTransfer_ revision seen
+    std::uint32_t axesNotHeld_ = 0;            ///< cached for that revision
     InterpreterOptions options_;
     std::optional<StopTarget> target_;
     std::uint32_t targetArrivals_ = 0;

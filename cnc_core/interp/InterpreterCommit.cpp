@@ -203,6 +203,8 @@ void Interpreter::runCommands(const Program& program, std::uint32_t index) {
                 state_.modal.tool;
         else if (keyword == "TSM")
             state_.modal.toolSpindle[static_cast<size_t>(spindleArgument(args) - 1)] = 0;
+        if (axisTransfer_ && (keyword == "GAX" || keyword == "FAX"))
+            commitAxisTransfer(keyword, args);
         if (options_.output.commands) sink_.command(where, keyword, std::string(args));
     }
 }
@@ -294,6 +296,7 @@ void Interpreter::controlReset() {
     state_.ended = false;
     target_.reset();
     targetArrivals_ = 0;
+    withdrawAxisRequests();
 }
 
 std::vector<StackLevel> Interpreter::callStack() const {
