@@ -1,5 +1,7 @@
 #include "cnc_core/compiler/MacroPass.h"
 
+#include <algorithm>
+#include <cstdint>
 #include <vector>
 
 #include "cnc_core/compiler/CompilerText.h"
@@ -142,11 +144,25 @@ std::string findMacroUse(std::string_view text, const MacroTable& table) {
 }
 
 bool expandMacros(const std::string& text, const MacroTable& table, std::string& out) {
+    // a cheap filter before the hash lookup: first letters and lengths of the names
+    std::uint32_t firstLetters = 0;
+    std::size_t shortest = std::string::npos, longest = 0;
+    for (const auto& entry : table) {
+        const std::string& name = entry.first;
+        if (name.empty() || !isLetter(name[0])) continue;  // can never match a visited name
+        firstLetters |= 1u << (name[0] - 'A');
+        shortest = std::min(shortest, name.size());
+        longest = std::max(longest, name.size());
+    }
+    if (firstLetters == 0) return false;
     bool replaced = false;
     std::size_t copied = 0;
     std::string result;
     forEachName(text, [&](std::size_t begin, std::size_t end) {
-        auto it = table.find(text.substr(begin, end - begin));
+        const std::size_t length = end - begin;  // text[begin] is a letter
+        if (length < shortest || length > longest || !((firstLetters >> (text[begin] - 'A')) & 1u))
+            return;
+        auto it = table.find(text.substr(begin, length));
         if (it == table.end()) return;
         if (!replaced) result.reserve(text.size() + it->second.size());
         result.append(text, copied, begin - copied);
