@@ -1,0 +1,46 @@
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "cnc_core/interp/Interpreter.h"
+#include "cnc_core/interp/InterpreterState.h"
+#include "cnc_core/machine/MachineDataProvider.h"
+#include "cnc_core/restart/RestartRoute.h"
+
+namespace mtc::core {
+
+/// The way the axes will go from where they stand to the re-entry point, as
+/// the rest of ADJUST and the REPOS subroutine command it (seed 000, 2.8,
+/// 2.9; decisions TP-007): machine positions, nothing moved.
+struct ReposPreview {
+    /// Where the axes stand now, then the end of every move (G77 or other).
+    std::vector<std::array<double, kMaxAxes>> corners;
+    /// The block of each move (corners[i + 1]).
+    std::vector<SourceLocation> blocks;
+    /// REPOS returned to the target block (else the preview stopped early:
+    /// an error, a program end, M00 or the block budget; see diagnostics).
+    bool reachesTarget = false;
+    DiagnosticList diagnostics;
+};
+
+/// What previewRepositioning starts from.
+struct ReposPreviewStart {
+    InterpreterState state;  ///< the station's interpreter state now
+    InterpreterOptions options;
+    StopTarget target;                    ///< the target block (the re-entry)
+    std::vector<RouteFrame> targetChain;  ///< the call stack at the target
+    bool beforeAdjust = false;            ///< at the target, ADJUST not started: begin at .ADJUST
+};
+
+/// Interprets the remaining ADJUST / REPOS blocks from `start` on a private
+/// interpreter whose sink only records (nothing of the station changes;
+/// machine data are read from `data`, never written) until REPOS returns to
+/// the target block, at most `budget` blocks. Q9500 (manual mode) does not
+/// stop it: the preview assumes the operator jogs nothing.
+ReposPreview previewRepositioning(const ProcessConfig& config, const ProgramStore& programs,
+                                  const MachineDataProvider& data, const ReposPreviewStart& start,
+                                  std::uint64_t budget = 10'000);
+
+}  // namespace mtc::core
