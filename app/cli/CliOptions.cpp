@@ -192,8 +192,10 @@ class CommandLineReader {
                 "options --target, --runs, --from-primary and --adjust belong to 'restart'";
         } else if (o.machineData.given && o.command != Command::MachineData &&
                    o.command != Command::Help && o.command != Command::Version &&
-                   !(o.command == Command::Run && o.machineData.onlyDataFile())) {
-            out_.error = "options --as, --password, --data and --sub belong to 'md'";
+                   !((o.command == Command::Run || o.command == Command::Restart) &&
+                     o.machineData.onlyDataFile())) {
+            out_.error =
+                "options --as, --password and --sub belong to 'md' (--data to md, run and restart)";
         } else if (o.command == Command::Restart && o.arguments.size() != 1) {
             out_.error = "'restart' takes exactly one program";
         } else if (o.command == Command::Restart && o.target.empty()) {
@@ -234,8 +236,9 @@ Commands available:
                               (1..65536); start at the last primary block;
                               --adjust goes on with ADJUST, manual mode,
                               automatic, REPOS and the re-entry
-  md get [PAGE]               machine data page PAGE of --process as a table
-                              (without PAGE: the pages of the process)
+  md get [PAGE] [--sub N]     machine data page PAGE of --process as a table
+                              (without PAGE: the pages of the process);
+                              --sub N shows only sub-page N (page 61)
   md set PAGE ELEMENT VALUE [--as nc|sps|gui] [--password PW] [--sub N]
                               write one element as NC program, SPS or the
                               operator (default gui; password-protected
@@ -259,7 +262,9 @@ Global options:
   --version           print the version
   --data FILE         machine data file of md (default:
                       $XDG_STATE_HOME/mtc200/machine-data/<cell>.mdt, or
-                      ~/.local/state/...; '-' keeps nothing)
+                      ~/.local/state/...; '-' keeps nothing); run and
+                      restart load it first and save what they changed
+                      (without --data they keep nothing)
 
 A program is a program number (looked up in the program directory for the
 selected process) or a path to a source file (.DAT with %NPG header or a

@@ -1,5 +1,6 @@
 #include "cli/MachineDataCommand.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <optional>
@@ -78,6 +79,8 @@ int get(const CliOptions& options, Session& s) {
     if (options.arguments.size() > 2)
         return reportUsageError("'md get' takes one PAGE", options.json);
     if (options.arguments.size() == 1) {
+        if (options.machineData.sub >= 0)
+            return reportUsageError("--sub needs a PAGE ('md get PAGE --sub N')", options.json);
         printPageList(*s.store, s.report, options.json);
         return 0;
     }
@@ -94,10 +97,19 @@ int get(const CliOptions& options, Session& s) {
         printRefusal(s.report, options.json);
         return 1;
     }
+    const int sub = options.machineData.sub;
+    const std::vector<int> subs = definition->subs();
+    if (sub >= 0 && std::find(subs.begin(), subs.end(), sub) == subs.end())
+        return reportUsageError("page " + options.arguments[1] +
+                                    (definition->subTitles.empty()
+                                         ? std::string(" has no sub-pages (leave --sub out)")
+                                         : " has no sub " + std::to_string(sub) + " (1.." +
+                                               std::to_string(definition->subTitles.size()) + ")"),
+                                options.json);
     if (options.json)
-        printPageJson(*s.store, *definition, s.report);
+        printPageJson(*s.store, *definition, s.report, sub);
     else
-        printPageText(*s.store, *definition, s.report);
+        printPageText(*s.store, *definition, s.report, sub);
     return 0;
 }
 
@@ -178,9 +190,9 @@ int runMachineDataCommand(const CliOptions& options) {
     if (action != "get" && action != "set")
         return reportUsageError("'md' needs 'get [PAGE]' or 'set PAGE ELEMENT VALUE'",
                                 options.json);
-    if (action == "get" && (options.machineData.writer != "gui" ||
-                            !options.machineData.password.empty() || options.machineData.sub >= 0))
-        return reportUsageError("--as, --password and --sub belong to 'md set'", options.json);
+    if (action == "get" &&
+        (options.machineData.writer != "gui" || !options.machineData.password.empty()))
+        return reportUsageError("--as and --password belong to 'md set'", options.json);
     Session session;
     int exitCode = 0;
     if (!open(options, session, exitCode)) return exitCode;

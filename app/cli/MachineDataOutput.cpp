@@ -89,10 +89,11 @@ void writeTail(JsonWriter& json, const MachineDataReport& report) {
 }  // namespace
 
 void printPageText(const MachineDataStore& store, const MachineDataPage& page,
-                   const MachineDataReport& report) {
+                   const MachineDataReport& report, int onlySub) {
     std::printf("page %d \"%s\", process %d (%s)\n", page.number, page.title.c_str(),
                 report.process, report.processName.c_str());
     for (int sub : page.subs()) {
+        if (onlySub >= 0 && sub != onlySub) continue;
         if (sub != 0) std::printf("sub %d: %s\n", sub, page.subTitles[sub - 1].c_str());
         std::printf("%-4s %-32s %12s %-5s %-5s %s\n", "Nr.", "Title", "Value", "Unit", "Type",
                     "Protection");
@@ -107,7 +108,7 @@ void printPageText(const MachineDataStore& store, const MachineDataPage& page,
 }
 
 void printPageJson(const MachineDataStore& store, const MachineDataPage& page,
-                   const MachineDataReport& report) {
+                   const MachineDataReport& report, int onlySub) {
     JsonWriter json(stdout);
     writeHead(json, "ok", report);
     json.key("page");
@@ -117,6 +118,7 @@ void printPageJson(const MachineDataStore& store, const MachineDataPage& page,
     json.key("subs");
     json.beginArray();
     for (int sub : page.subs()) {
+        if (onlySub >= 0 && sub != onlySub) continue;
         json.beginObject();
         json.key("sub");
         json.value(sub);

@@ -16,13 +16,14 @@ struct MachineDataReport {
 };
 
 /// `md get PAGE` as text: a title line, then per sub a table
-/// Nr. / Title / Value / Unit / Type / Protection.
+/// Nr. / Title / Value / Unit / Type / Protection; `onlySub` >= 0: that sub only.
 void printPageText(const core::MachineDataStore& store, const core::MachineDataPage& page,
-                   const MachineDataReport& report);
+                   const MachineDataReport& report, int onlySub = -1);
 /// `md get PAGE --json`:
-/// {"status","process","page","title","data_file","subs":[...],"diagnostics"}.
+/// {"status","process","page","title","data_file","subs":[...],"diagnostics"};
+/// `onlySub` >= 0: "subs" holds that sub only.
 void printPageJson(const core::MachineDataStore& store, const core::MachineDataPage& page,
-                   const MachineDataReport& report);
+                   const MachineDataReport& report, int onlySub = -1);
 /// `md get` without a page: the pages of the process (text or JSON).
 void printPageList(const core::MachineDataStore& store, const MachineDataReport& report, bool json);
 /// The result of `md set` (text or JSON); `status` "ok" or "error".

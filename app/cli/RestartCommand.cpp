@@ -7,6 +7,7 @@
 
 #include "cli/CliOutput.h"
 #include "cli/CommandSetup.h"
+#include "cli/MachineDataKeeper.h"
 #include "cli/MachineSetup.h"
 #include "cli/ProgramMemory.h"
 #include "cli/RestartRecorder.h"
@@ -65,6 +66,7 @@ class RestartDriver {
         : options_(options),
           prepared_(prepared),
           machineData_(std::make_shared<core::MachineDataStore>(prepared.setup.machine)),
+          dataKeeper_(options.machineData.dataFile),
           live_(*prepared.process, prepared.store, recorder_,
                 {machineData_, std::make_shared<core::EventTable>(), nullptr}),
           control_(prepared.request.process),
@@ -86,6 +88,7 @@ class RestartDriver {
         report.signals = &control_.signalTable();
         report.adjust = options_.adjust;
         report.diagnostics = prepared_.diagnostics;
+        dataKeeper_.load(*machineData_, report.diagnostics);
         if (prepared_.request.program->diagnostics.hasErrors()) return true;
         core::TargetPathResult path =
             core::resolveTargetPath(options_.target, prepared_.store, prepared_.request.process,
@@ -112,6 +115,12 @@ class RestartDriver {
         report.diagnostics.append(sequence_.diagnostics());
         report.diagnostics.append(operatorNotes_);
         return true;
+    }
+
+    /// Keeps what the restart changed in the `--data` file (page 60 at the
+    /// target, MTD writes of ADJUST / REPOS).
+    void saveData(core::DiagnosticList& diagnostics) const {
+        dataKeeper_.save(*machineData_, diagnostics);
     }
 
   private:
@@ -165,6 +174,7 @@ class RestartDriver {
     PreparedRestart& prepared_;
     RestartRecorder recorder_;
     std::shared_ptr<core::MachineDataStore> machineData_;  ///< the cell's pages, as in the panel
+    MachineDataKeeper dataKeeper_;                         ///< --data FILE
     core::Interpreter live_;
     core::ProcessControl control_;
     core::SimulatedSps sps_;
@@ -189,6 +199,7 @@ int runRestartCommand(const CliOptions& options) {
     }
     RestartReport report;
     if (!driver.run(report)) return reportSetupFailure(report.diagnostics, options.json);
+    driver.saveData(report.diagnostics);
     if (options.json) {
         JsonWriter json(stdout);
         writeRestartJson(json, report);

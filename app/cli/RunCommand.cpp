@@ -8,6 +8,7 @@
 #include "cli/CliOutput.h"
 #include "cli/CommandSetup.h"
 #include "cli/JsonWriter.h"
+#include "cli/MachineDataKeeper.h"
 #include "cli/MachineSetup.h"
 #include "cli/MotionOutput.h"
 #include "cli/ProgramMemory.h"
@@ -97,32 +98,16 @@ RunOutcome execute(core::Interpreter& interpreter, const PreparedRun& run, std::
 struct RunCell {
     RunCell(const PreparedRun& run, const std::string& dataFile)
         : data(std::make_shared<core::MachineDataStore>(run.setup.machine)),
-          file(dataFile.empty() || dataFile == "-" ? "" : dataFile),
+          keeper(dataFile),
           machine(*run.process) {}
 
     /// Loads the data file; its warnings go to `diagnostics`.
-    void load(core::DiagnosticList& diagnostics) {
-        if (file.empty()) return;
-        core::MachineDataLoadResult loaded = core::MachineDataFile(file).load(*data);
-        mayOverwrite = loaded.mayOverwrite;
-        diagnostics.append(loaded.diagnostics);
-        loadedRevision = data->revision();
-    }
+    void load(core::DiagnosticList& diagnostics) { keeper.load(*data, diagnostics); }
     /// Saves what the program changed (MTD writes, page 30 status).
-    void save(core::DiagnosticList& diagnostics) const {
-        if (file.empty() || data->revision() == loadedRevision) return;
-        std::string reason;
-        if (!mayOverwrite)
-            reason = "the damaged machine data file could not be kept aside";
-        else if (core::MachineDataFile(file).save(*data, reason))
-            return;
-        diagnostics.error("MD_FILE_SAVE", {}, "machine data not saved: " + reason);
-    }
+    void save(core::DiagnosticList& diagnostics) const { keeper.save(*data, diagnostics); }
 
     std::shared_ptr<core::MachineDataStore> data;
-    std::string file;
-    bool mayOverwrite = true;
-    std::uint64_t loadedRevision = 0;
+    MachineDataKeeper keeper;
     core::SimulatedMachine machine;
     core::SignalTable signals;
     std::shared_ptr<core::AdaptiveFeedControl> afc;

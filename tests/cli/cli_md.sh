@@ -59,6 +59,16 @@ expect_rc 0 "values kept" --json --data "$data" md get 30
 json_check "element 10 kept, element 13 unchanged" 'd["subs"][0]["elements"][9]["value"] == 55.6 and d["subs"][0]["elements"][12]["value"] == 0'
 expect_rc 0 "page 61 kept" --json --data "$data" md get 61
 json_check "Q buffer element 40" 'd["subs"][1]["elements"][39]["value"] == 9501 and d["subs"][1]["title"] == "Q functions"'
+expect_rc 0 "md get 61 --sub 2 shows only the Q buffer" --json --data "$data" md get 61 --sub 2
+json_check "one sub, the Q buffer" '[s["sub"] for s in d["subs"]] == [2] and d["subs"][0]["elements"][39]["value"] == 9501'
+expect_rc 0 "md get 61 --sub 1 as text" --data "$data" md get 61 --sub 1
+text_check "sub 1 title" "sub 1: "
+if printf '%s' "$OUT" | grep -q "sub 2: "; then fail "text shows sub 2 too"; else pass "text shows sub 1 only"; fi
+expect_rc 2 "md get 61 --sub 3 does not exist" --data "$data" md get 61 --sub 3
+text_check "sub range told" "has no sub 3 (1..2)"
+expect_rc 2 "md get 30 has no sub-pages" --data "$data" md get 30 --sub 1
+expect_rc 2 "--sub without PAGE" --data "$data" md get --sub 1
+expect_rc 2 "--as still belongs to md set" --data "$data" md get 61 --as nc
 expect_rc 0 "lathe value kept" --json --process 1 --data "$data" md get 180
 json_check "page 180 element 2" 'd["subs"][0]["elements"][1]["value"] == 612.25'
 expect_rc 0 "other process untouched" --json --process 1 --data "$data" md get 30

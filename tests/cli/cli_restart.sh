@@ -55,4 +55,16 @@ json_check "malformed path code" 'd["diagnostics"][0]["code"] == "RESTART_PATH_S
 expect_rc 2 "program that does not exist" restart 7 --target N0001
 cli restart 1 --target N0033 --runs 65536
 [ "$RC" = 1 ] && pass "--runs 65536 accepted (target not found: exit 1)" || fail "--runs 65536 accepted"
+# --data FILE as with run: loaded first, what the restart changed (page 60 at
+# the target) is kept; md get reads it back; md-only options stay refused.
+rdata="$TEST_TMP/restart.mdt"
+expect_rc 0 "md set page 30 element 2 before" --data "$rdata" md set 30 2 10 --as nc
+expect_rc 0 "restart --data" --json restart 1 --target N0033 --data "$rdata"
+json_check "restart with data file ok" 'd["status"] == "ok"'
+expect_rc 0 "page 60 after the restart" --json --data "$rdata" md get 60
+json_check "tool spindle 1 published" 'd["subs"][0]["elements"][4]["value"] == 3'
+expect_rc 0 "page 30 after the restart" --json --data "$rdata" md get 30
+json_check "the loaded value was kept in the saved file" 'd["subs"][0]["elements"][1]["value"] == 10'
+expect_rc 0 "restart --data - keeps nothing" restart 1 --target N0033 --data -
+expect_rc 2 "restart --as refused" restart 1 --target N0033 --data "$rdata" --as nc
 finish
