@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
 #include <cstdio>
 
 namespace mtc::core {
@@ -110,24 +109,15 @@ void appendCoordinate(std::string& out, double value) {
 
 bool containsAnyCaseless(std::string_view text,
                          std::initializer_list<std::string_view> upperNeedles) {
-    const auto upper = [](char c) { return c >= 'a' && c <= 'z' ? static_cast<char>(c - 32) : c; };
-    std::uint64_t firsts[4] = {0, 0, 0, 0};  // first characters of the needles
-    for (std::string_view needle : upperNeedles) {
-        if (needle.empty()) return true;  // the empty needle is in every text
-        const auto c = static_cast<unsigned char>(needle[0]);
-        firsts[c >> 6] |= std::uint64_t{1} << (c & 63);
+    std::string upper;  // only built when the text has small letters
+    if (std::any_of(text.begin(), text.end(), [](char c) { return c >= 'a' && c <= 'z'; })) {
+        upper.assign(text);
+        for (char& c : upper)
+            if (c >= 'a' && c <= 'z') c = static_cast<char>(c - 32);
+        text = upper;
     }
-    for (std::size_t i = 0; i < text.size(); ++i) {
-        const auto c = static_cast<unsigned char>(upper(text[i]));
-        if (!((firsts[c >> 6] >> (c & 63)) & 1u)) continue;
-        for (std::string_view needle : upperNeedles) {
-            if (needle.size() > text.size() - i) continue;
-            std::size_t k = 0;
-            while (k < needle.size() && upper(text[i + k]) == needle[k])
-                ++k;
-            if (k == needle.size()) return true;
-        }
-    }
+    for (std::string_view needle : upperNeedles)
+        if (text.find(needle) != std::string_view::npos) return true;
     return false;
 }
 

@@ -1,5 +1,8 @@
 #include "cnc_core/language/Keywords.h"
 
+#include <algorithm>
+#include <array>
+
 namespace mtc::core {
 
 namespace {
@@ -93,13 +96,38 @@ bool hasNumberedPrefix(std::string_view name, std::string_view prefix) {
     return true;
 }
 
+constexpr std::size_t kJumpCount = sizeof kJumpNames / sizeof kJumpNames[0];
+constexpr std::size_t kEntryCount = sizeof kEntries / sizeof kEntries[0];
+using KeywordTable = std::array<Entry, kJumpCount + kEntryCount>;
+
+/// Jump names and kEntries in one table sorted by name, built at compile
+/// time (insertion sort: stable, so for a name listed twice the first entry
+/// wins, as in a linear scan).
+constexpr KeywordTable sortedKeywords() {
+    KeywordTable table{};
+    std::size_t n = 0;
+    for (std::size_t i = 0; i < kJumpCount; ++i)
+        table[n++] = Entry{kJumpNames[i], KeywordClass::Jump, static_cast<JumpKind>(i)};
+    for (std::size_t i = 0; i < kEntryCount; ++i)
+        table[n++] = kEntries[i];
+    for (std::size_t i = 1; i < n; ++i)
+        for (std::size_t k = i; k > 0 && table[k].name < table[k - 1].name; --k) {
+            const Entry swap = table[k];
+            table[k] = table[k - 1];
+            table[k - 1] = swap;
+        }
+    return table;
+}
+
+constexpr KeywordTable kSortedKeywords = sortedKeywords();
+
 }  // namespace
 
 KeywordInfo lookupKeyword(std::string_view name) {
-    for (std::size_t i = 0; i < sizeof kJumpNames / sizeof kJumpNames[0]; ++i)
-        if (kJumpNames[i] == name) return {KeywordClass::Jump, static_cast<JumpKind>(i)};
-    for (const Entry& entry : kEntries)
-        if (entry.name == name) return {entry.keywordClass, entry.jump};
+    const auto it =
+        std::lower_bound(kSortedKeywords.begin(), kSortedKeywords.end(), name,
+                         [](const Entry& entry, std::string_view key) { return entry.name < key; });
+    if (it != kSortedKeywords.end() && it->name == name) return {it->keywordClass, it->jump};
     if (hasNumberedPrefix(name, "FORM_") || hasNumberedPrefix(name, "CYCLE_") ||
         hasNumberedPrefix(name, "WINDOW_"))
         return {KeywordClass::CompilerCommand, kNoJump};
