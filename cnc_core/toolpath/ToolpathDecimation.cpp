@@ -20,9 +20,16 @@ std::uint32_t firstOf(const ToolpathMove& m, bool developed) {
     return developed ? m.firstDeveloped : m.firstScene;
 }
 
+/// Segments of one run at most (unless the budget needs longer ones):
+/// bounds the work of one Douglas-Peucker pass (its depth) and lets a try
+/// stop early once over the budget.
+constexpr std::size_t kLongestRun = 4096;
+
 /// Runs of the layer in segment order; a new run starts where a chain
-/// breaks or (unless `joinKinds`) where the move kind changes.
-std::vector<Run> runsOf(const ToolpathGeometry& g, bool developed, bool joinKinds) {
+/// breaks, (unless `joinKinds`) where the move kind changes, and after
+/// `longest` segments.
+std::vector<Run> runsOf(const ToolpathGeometry& g, bool developed, bool joinKinds,
+                        std::size_t longest) {
     const ToolpathLayer& layer = developed ? g.developed : g.scene;
     const std::size_t count = layer.segmentCount();
     std::vector<Run> runs;
@@ -31,7 +38,7 @@ std::vector<Run> runsOf(const ToolpathGeometry& g, bool developed, bool joinKind
         while (move + 1 < g.moves.size() && firstOf(g.moves[move + 1], developed) <= s)
             ++move;
         const ToolpathKind kind = g.moves.empty() ? ToolpathKind::Feed : g.moves[move].kind;
-        const bool continues = !runs.empty() &&
+        const bool continues = !runs.empty() && runs.back().count < longest &&
                                layer.segmentStart[s] == layer.segmentStart[s - 1] + 1 &&
                                (joinKinds || runs.back().kind == kind);
         if (continues)
@@ -151,8 +158,11 @@ double distanceToSegment(const std::array<double, 3>& point, const std::array<do
 DecimatedLayer decimateLayer(const ToolpathGeometry& g, bool developed, double tolerance,
                              std::size_t budget) {
     const ToolpathLayer& layer = developed ? g.developed : g.scene;
-    std::vector<Run> runs = runsOf(g, developed, false);
-    if (runs.size() > budget) runs = runsOf(g, developed, true);
+    // Long runs are cut into pieces, never into more than half the budget.
+    const std::size_t longest =
+        std::max(kLongestRun, layer.segmentCount() / std::max<std::size_t>(budget / 2, 1) + 1);
+    std::vector<Run> runs = runsOf(g, developed, false, longest);
+    if (runs.size() > budget) runs = runsOf(g, developed, true, longest);
     if (runs.size() > budget) return everyNthRun(layer, runs, budget);
     const double size = std::max(layer.bounds.size(), 1e-3);
     double tol = std::max(tolerance, size * 1e-9);
@@ -161,21 +171,6 @@ DecimatedLayer decimateLayer(const ToolpathGeometry& g, bool developed, double t
     while (!tryDecimate(layer, runs, tol, budget, out))
         tol *= 2.0;
     return out;
-}
-
-std::uint32_t nearestSegment(const ToolpathLayer& layer, std::uint32_t first, std::uint32_t last,
-                             const std::array<double, 3>& point) {
-    std::uint32_t best = first;
-    double nearest = std::numeric_limits<double>::infinity();
-    for (std::uint32_t s = first; s < last; ++s) {
-        const double d = distanceToSegment(point, layer.vertex(layer.segmentStart[s]),
-                                           layer.vertex(layer.segmentStart[s] + 1));
-        if (d < nearest) {
-            nearest = d;
-            best = s;
-        }
-    }
-    return best;
 }
 
 }  // namespace mtc::core

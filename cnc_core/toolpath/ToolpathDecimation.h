@@ -35,11 +35,6 @@ struct DecimatedLayer {
 DecimatedLayer decimateLayer(const ToolpathGeometry& g, bool developed, double tolerance,
                              std::size_t budget);
 
-/// The segment in [first, last) of `layer` nearest to `point` (first when
-/// the range is empty): maps a pick on a coarse cell to the full segment.
-std::uint32_t nearestSegment(const ToolpathLayer& layer, std::uint32_t first, std::uint32_t last,
-                             const std::array<double, 3>& point);
-
 /// Distance of `point` from the straight segment a-b.
 double distanceToSegment(const std::array<double, 3>& point, const std::array<double, 3>& a,
                          const std::array<double, 3>& b);

@@ -10,13 +10,12 @@ class QVTKOpenGLNativeWidget;
 namespace mtc::screens {
 
 /// The 3D toolpath view with VTK (QVTKOpenGLNativeWidget): one poly-data
-/// with cell colours per layer, a coarser copy while the view moves (level
-/// of detail), the highlighted block, the restart marks and REPOS path, the
-/// stock, axes triad, grid with the extents and their dimensions. With G32
-/// moves the developed plane (left) and the wrapped cylinder (right) are
-/// shown side by side. Render requests are coalesced into one render per
-/// event-loop pass. Needs an OpenGL context: create it only after
-/// openGlAvailable() said yes (VTK aborts the process without one).
+/// with point colours per layer, a decimated coarse copy in its own actor
+/// while the view moves (level of detail, TP-010), the highlighted block, the restart marks and
+/// REPOS path, the stock, axes triad, grid with the extents and their dimensions. With G32 moves
+/// the developed plane (left) and the wrapped cylinder (right) are shown side by side. Render
+/// requests are coalesced into one render per event-loop pass. Needs an OpenGL context: create it
+/// only after openGlAvailable() said yes (VTK aborts the process without one).
 class VtkToolpathCanvas : public ToolpathCanvas {
     Q_OBJECT
   public:

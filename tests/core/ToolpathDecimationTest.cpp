@@ -86,6 +86,20 @@ TEST(ToolpathDecimation, CollinearRunsBecomeOneCellPerRunOfOneKind) {
     expectCoversEverySegmentOnce(g, d);
 }
 
+TEST(ToolpathDecimation, LongRunsAreCutIntoPiecesWithinTheBudget) {
+    std::vector<Point> points;
+    for (int i = 0; i <= 10000; ++i)
+        points.push_back({0.01 * i, 0.0, 0.0});
+    const auto g = allFeed(points);
+    const DecimatedLayer pieces = decimateLayer(g, false, 0.01, 1000);
+    EXPECT_EQ(pieces.cellCount(), 3u);  // 4096 + 4096 + 1808 segments
+    expectCoversEverySegmentOnce(g, pieces);
+    const DecimatedLayer tight = decimateLayer(g, false, 0.01, 4);
+    EXPECT_LE(tight.cellCount(), 4u);  // pieces never more than half the budget
+    EXPECT_FALSE(tight.dropped);
+    expectCoversEverySegmentOnce(g, tight);
+}
+
 TEST(ToolpathDecimation, LeftOutVerticesStayWithinTheTolerance) {
     const auto g = allFeed(wave(20000));
     for (double tolerance : {0.001, 0.01, 0.1}) {
@@ -128,14 +142,6 @@ TEST(ToolpathDecimation, TooManyChainsKeepEveryNthRun) {
     EXPECT_EQ(d.cellCount(), 100u);
     EXPECT_TRUE(d.dropped);
     EXPECT_EQ(d.segmentsOf(1), std::make_pair(10u, 11u));
-}
-
-TEST(ToolpathDecimation, NearestSegmentOfARun) {
-    const auto g = allFeed(wave(1000));
-    const auto at = g.scene.vertex(g.scene.segmentStart[417]);
-    const Point nearBy{at[0] + 0.01, at[1], at[2]};  // inside segment 417
-    EXPECT_EQ(nearestSegment(g.scene, 0, 1000, nearBy), 417u);
-    EXPECT_EQ(nearestSegment(g.scene, 500, 600, nearBy), 500u);  // range limits the answer
 }
 
 /// A top view of 0..100 mm onto 1000 x 1000 pixels (10 pixels per mm).
