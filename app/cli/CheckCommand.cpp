@@ -80,30 +80,20 @@ CheckedProgram checkOne(const std::string& argument, const CommandSetup& setup,
 
 void writeJson(const std::vector<CheckedProgram>& checked, const core::DiagnosticList& all) {
     JsonWriter json(stdout);
-    json.beginObject();
-    json.key("status");
-    json.value(all.hasErrors() ? "error" : "ok");
+    beginStatusDocument(json, all.hasErrors() ? "error" : "ok");
     writeDiagnosticsJson(json, all);
     json.key("programs");
     json.beginArray();
     for (const CheckedProgram& c : checked) {
         json.beginObject();
-        json.key("argument");
-        json.value(c.argument);
-        json.key("name");
-        json.value(c.name);
-        json.key("found");
-        json.value(c.found);
-        json.key("process");
-        json.value(c.process);
-        json.key("program");
-        json.value(c.number);
-        json.key("blocks");
-        json.value(c.blocks);
-        json.key("errors");
-        json.value(c.errors);
-        json.key("warnings");
-        json.value(c.warnings);
+        json.field("argument", c.argument);
+        json.field("name", c.name);
+        json.field("found", c.found);
+        json.field("process", c.process);
+        json.field("program", c.number);
+        json.field("blocks", c.blocks);
+        json.field("errors", c.errors);
+        json.field("warnings", c.warnings);
         json.endObject();
     }
     json.endArray();

@@ -8,20 +8,13 @@ const char* severityName(core::Severity severity) {
 
 void writeDiagnosticJson(JsonWriter& json, const core::Diagnostic& d) {
     json.beginObject();
-    json.key("severity");
-    json.value(severityName(d.severity));
-    json.key("code");
-    json.value(d.code);
-    json.key("program");
-    json.value(d.where.program);
-    json.key("block");
-    json.value(d.where.block);
-    json.key("line");
-    json.value(d.where.line);
-    json.key("column");
-    json.value(d.where.column);
-    json.key("message");
-    json.value(d.message);
+    json.field("severity", severityName(d.severity));
+    json.field("code", d.code);
+    json.field("program", d.where.program);
+    json.field("block", d.where.block);
+    json.field("line", d.where.line);
+    json.field("column", d.where.column);
+    json.field("message", d.message);
     json.key("details");
     json.beginArray();
     for (const std::string& detail : d.details)
@@ -48,36 +41,41 @@ int exitCodeFor(bool fileProblem, const core::DiagnosticList& diagnostics) {
     return diagnostics.hasErrors() ? 1 : 0;
 }
 
+void beginStatusDocument(JsonWriter& json, const char* status) {
+    json.beginObject();
+    json.field("status", status);
+}
+
+void endDocumentWithDiagnostics(JsonWriter& json, const core::DiagnosticList& diagnostics) {
+    writeDiagnosticsJson(json, diagnostics);
+    json.endObject();
+    json.finish();
+}
+
+void printRefusedDiagnostics(const core::DiagnosticList& diagnostics) {
+    for (const core::Diagnostic& d : diagnostics.items())
+        std::fprintf(stderr, "mtc200-cli: %s\n", core::formatDiagnostic(d).c_str());
+}
+
 int reportUsageError(const std::string& message, bool json) {
     std::fprintf(stderr, "mtc200-cli: %s\n(mtc200-cli --help lists commands and options)\n",
                  message.c_str());
     if (json) {
         core::DiagnosticList diagnostics;
         diagnostics.error("CLI_USAGE", {}, message);
-        JsonWriter writer(stdout);
-        writer.beginObject();
-        writer.key("status");
-        writer.value("error");
-        writeDiagnosticsJson(writer, diagnostics);
-        writer.endObject();
-        writer.finish();
+        return reportSetupFailure(diagnostics, true);
     }
     return 2;
 }
 
 int reportSetupFailure(const core::DiagnosticList& diagnostics, bool json) {
     if (!json) {
-        for (const core::Diagnostic& d : diagnostics.items())
-            std::fprintf(stderr, "mtc200-cli: %s\n", core::formatDiagnostic(d).c_str());
+        printRefusedDiagnostics(diagnostics);
         return 2;
     }
     JsonWriter writer(stdout);
-    writer.beginObject();
-    writer.key("status");
-    writer.value("error");
-    writeDiagnosticsJson(writer, diagnostics);
-    writer.endObject();
-    writer.finish();
+    beginStatusDocument(writer, "error");
+    endDocumentWithDiagnostics(writer, diagnostics);
     return 2;
 }
 

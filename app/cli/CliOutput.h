@@ -18,6 +18,16 @@ void writeDiagnosticJson(JsonWriter& json, const core::Diagnostic& diagnostic);
 /// Writes `"diagnostics": [...]` (key and array) into the open object.
 void writeDiagnosticsJson(JsonWriter& json, const core::DiagnosticList& diagnostics);
 
+/// Opens the document object of a command and writes its "status" member
+/// ("ok" / "error") first, as every command's JSON starts.
+void beginStatusDocument(JsonWriter& json, const char* status);
+/// Writes the "diagnostics" member last, closes the document object and ends
+/// the document.
+void endDocumentWithDiagnostics(JsonWriter& json, const core::DiagnosticList& diagnostics);
+/// Prints every diagnostic as "mtc200-cli: <diagnostic>" to stderr (refusals
+/// and setup failures in text mode).
+void printRefusedDiagnostics(const core::DiagnosticList& diagnostics);
+
 /// Prints every diagnostic as one readable line (plus detail lines) to `stream`.
 void printDiagnosticsText(std::FILE* stream, const core::DiagnosticList& diagnostics);
 

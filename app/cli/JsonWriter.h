@@ -41,6 +41,12 @@ class JsonWriter {
     void value(long long number);
     void value(bool flag);
     void null();
+    /// One member of the open object: key(name), then value(v).
+    template <typename T>
+    void field(std::string_view name, const T& v) {
+        key(name);
+        value(v);
+    }
     /// Ends the document with a newline and flushes the stream.
     void finish();
 

@@ -37,53 +37,32 @@ void printFooter(const MachineDataReport& report) {
 
 void writeElementJson(JsonWriter& json, const MachineDataElement& e, double value) {
     json.beginObject();
-    json.key("number");
-    json.value(e.number);
-    json.key("title");
-    json.value(e.designation);
-    json.key("value");
-    json.value(value);
-    json.key("unit");
-    json.value(e.unit);
-    json.key("type");
-    json.value(core::machineDataTypeName(e.type));
-    json.key("min");
-    json.value(e.minimum);
-    json.key("max");
-    json.value(e.maximum);
-    json.key("default");
-    json.value(e.defaultValue);
+    json.field("number", e.number);
+    json.field("title", e.designation);
+    json.field("value", value);
+    json.field("unit", e.unit);
+    json.field("type", core::machineDataTypeName(e.type));
+    json.field("min", e.minimum);
+    json.field("max", e.maximum);
+    json.field("default", e.defaultValue);
     json.key("write_protected");
     json.beginObject();
-    json.key("nc");
-    json.value(e.protectedNc);
-    json.key("sps");
-    json.value(e.protectedSps);
-    json.key("gui");
-    json.value(e.protectedGui);
+    json.field("nc", e.protectedNc);
+    json.field("sps", e.protectedSps);
+    json.field("gui", e.protectedGui);
     json.endObject();
-    json.key("password");
-    json.value(e.password);
+    json.field("password", e.password);
     json.endObject();
 }
 
 void writeHead(JsonWriter& json, const char* status, const MachineDataReport& report) {
-    json.beginObject();
-    json.key("status");
-    json.value(status);
-    json.key("process");
-    json.value(report.process);
+    beginStatusDocument(json, status);
+    json.field("process", report.process);
     json.key("data_file");
     if (report.dataFile.empty())
         json.null();
     else
         json.value(report.dataFile);
-}
-
-void writeTail(JsonWriter& json, const MachineDataReport& report) {
-    writeDiagnosticsJson(json, report.diagnostics);
-    json.endObject();
-    json.finish();
 }
 
 }  // namespace
@@ -111,19 +90,15 @@ void printPageJson(const MachineDataStore& store, const MachineDataPage& page,
                    const MachineDataReport& report, int onlySub) {
     JsonWriter json(stdout);
     writeHead(json, "ok", report);
-    json.key("page");
-    json.value(page.number);
-    json.key("title");
-    json.value(page.title);
+    json.field("page", page.number);
+    json.field("title", page.title);
     json.key("subs");
     json.beginArray();
     for (int sub : page.subs()) {
         if (onlySub >= 0 && sub != onlySub) continue;
         json.beginObject();
-        json.key("sub");
-        json.value(sub);
-        json.key("title");
-        json.value(sub == 0 ? std::string() : page.subTitles[sub - 1]);
+        json.field("sub", sub);
+        json.field("title", sub == 0 ? std::string() : page.subTitles[sub - 1]);
         json.key("elements");
         json.beginArray();
         for (const MachineDataElement& e : page.elements)
@@ -132,7 +107,7 @@ void printPageJson(const MachineDataStore& store, const MachineDataPage& page,
         json.endObject();
     }
     json.endArray();
-    writeTail(json, report);
+    endDocumentWithDiagnostics(json, report.diagnostics);
 }
 
 void printPageList(const MachineDataStore& store, const MachineDataReport& report, bool json) {
@@ -151,14 +126,12 @@ void printPageList(const MachineDataStore& store, const MachineDataReport& repor
     out.beginArray();
     for (int number : numbers) {
         out.beginObject();
-        out.key("page");
-        out.value(number);
-        out.key("title");
-        out.value(store.page(report.process, number)->title);
+        out.field("page", number);
+        out.field("title", store.page(report.process, number)->title);
         out.endObject();
     }
     out.endArray();
-    writeTail(out, report);
+    endDocumentWithDiagnostics(out, report.diagnostics);
 }
 
 void printSetResult(const core::MachineDataAddress& a, const MachineDataElement& e, double before,
@@ -174,32 +147,24 @@ void printSetResult(const core::MachineDataAddress& a, const MachineDataElement&
     }
     JsonWriter out(stdout);
     writeHead(out, "ok", report);
-    out.key("page");
-    out.value(a.page);
-    out.key("sub");
-    out.value(a.sub);
-    out.key("element");
-    out.value(a.element);
-    out.key("title");
-    out.value(e.designation);
-    out.key("old");
-    out.value(before);
-    out.key("value");
-    out.value(after);
-    out.key("saved");
-    out.value(!report.dataFile.empty());
-    writeTail(out, report);
+    out.field("page", a.page);
+    out.field("sub", a.sub);
+    out.field("element", a.element);
+    out.field("title", e.designation);
+    out.field("old", before);
+    out.field("value", after);
+    out.field("saved", !report.dataFile.empty());
+    endDocumentWithDiagnostics(out, report.diagnostics);
 }
 
 void printRefusal(const MachineDataReport& report, bool json) {
     if (!json) {
-        for (const core::Diagnostic& d : report.diagnostics.items())
-            std::fprintf(stderr, "mtc200-cli: %s\n", core::formatDiagnostic(d).c_str());
+        printRefusedDiagnostics(report.diagnostics);
         return;
     }
     JsonWriter out(stdout);
     writeHead(out, "error", report);
-    writeTail(out, report);
+    endDocumentWithDiagnostics(out, report.diagnostics);
 }
 
 }  // namespace mtc::cli
