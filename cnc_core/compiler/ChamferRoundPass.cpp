@@ -320,8 +320,10 @@ void ChamferRoundPass::run(BlockSequence& blocks, CompileContext& context) const
     bool any = false;
     for (const CompileBlock& block : blocks)
         if (block.text.find("CF") != std::string::npos ||
-            block.text.find("RD") != std::string::npos)
+            block.text.find("RD") != std::string::npos) {
             any = true;
+            break;
+        }
     if (!any) return;
     const ScanResult scan = scanBlocks(blocks, context.parsed(blocks), context.options());
     CornerJob job(blocks, context, scan);

@@ -144,6 +144,12 @@ std::string findMacroUse(std::string_view text, const MacroTable& table) {
 }
 
 bool expandMacros(const std::string& text, const MacroTable& table, std::string& out) {
+    if (&out == &text) {  // written in place: expand into a copy first
+        std::string expanded;
+        if (!expandMacros(text, table, expanded)) return false;
+        out = std::move(expanded);
+        return true;
+    }
     // a cheap filter before the hash lookup: first letters and lengths of the names
     std::uint32_t firstLetters = 0;
     std::size_t shortest = std::string::npos, longest = 0;
@@ -157,22 +163,23 @@ bool expandMacros(const std::string& text, const MacroTable& table, std::string&
     if (firstLetters == 0) return false;
     bool replaced = false;
     std::size_t copied = 0;
-    std::string result;
     forEachName(text, [&](std::size_t begin, std::size_t end) {
         const std::size_t length = end - begin;  // text[begin] is a letter
         if (length < shortest || length > longest || !((firstLetters >> (text[begin] - 'A')) & 1u))
             return;
         auto it = table.find(text.substr(begin, length));
         if (it == table.end()) return;
-        if (!replaced) result.reserve(text.size() + it->second.size());
-        result.append(text, copied, begin - copied);
-        result += it->second;
+        if (!replaced) {  // from here on the result is built in `out` (its capacity reused)
+            out.clear();
+            out.reserve(text.size() + it->second.size());
+        }
+        out.append(text, copied, begin - copied);
+        out += it->second;
         copied = end;
         replaced = true;
     });
     if (!replaced) return false;
-    result.append(text, copied, std::string::npos);
-    out = std::move(result);
+    out.append(text, copied, std::string::npos);
     return true;
 }
 
@@ -194,6 +201,7 @@ void MacroPass::run(BlockSequence& blocks, CompileContext& context) const {
         }
         table[global.name] = global.body;
     }
+    std::string expanded;  // reused for every block
     for (std::size_t i = 0; i < blocks.size() && !context.stopped(); ++i) {
         CompileBlock& block = blocks[i];
         if (block.programEnd) continue;
@@ -201,9 +209,8 @@ void MacroPass::run(BlockSequence& blocks, CompileContext& context) const {
         std::size_t labelEnd = 0;
         Definition d = readDefinition(block.text, isDefine, labelEnd);
         if (!isDefine) {
-            std::string expanded;
             if (!table.empty() && expandMacros(block.text, table, expanded)) {
-                block.text = std::move(expanded);
+                block.text.assign(expanded);  // keeps the block's buffer when it is large enough
                 block.changed = true;
             }
             continue;
