@@ -2,6 +2,7 @@
 
 #include <memory>
 
+#include "hmi/ProgramWorkspace.h"
 #include "hmi/ScreenRegistry.h"
 #include "screens/afc_trend/AfcTrendScreen.h"
 #include "screens/editor/EditorScreen.h"
@@ -18,6 +19,7 @@
 #include "screens/restart/RestartScreen.h"
 #include "screens/runtime/RuntimeScreen.h"
 #include "screens/signals/SignalsScreen.h"
+#include "screens/toolpath/ToolpathLink.h"
 #include "screens/toolpath/ToolpathScreen.h"
 
 namespace mtc::screens {
@@ -30,13 +32,20 @@ void registerAllScreens(mtc::hmi::ScreenRegistry& registry) {
     // share one workspace (compile status, error log, program in the editor).
     auto programming = std::make_shared<ProgramWorkspaces>();
     auto restart = std::make_shared<RestartControllers>();
+    // The toolpath view is linked to the restart screen or the editor,
+    // whichever of them was shown last on the station (TP-012).
+    auto links = std::make_shared<ToolpathLinks>();
     registry.add("programs", "Program directory", [programming](const ScreenContext& c) {
         return new ProgramsScreen(c, programming->forStation(c));
     });
     registry.add(
         "editor", "Program editor",
-        [programming](const ScreenContext& c) {
-            return new EditorScreen(c, programming->forStation(c));
+        [programming, links](const ScreenContext& c) {
+            auto* editor = new EditorScreen(c, programming->forStation(c));
+            const auto link = links->attach(editor, ToolpathLink::Partner::Editor);
+            QObject::connect(editor, &EditorScreen::cursorLineChanged, link.get(),
+                             &ToolpathLink::setEditorCursor);
+            return editor;
         },
         false);
     // The graphical NC editor works on the editor's program and line.
@@ -65,8 +74,10 @@ void registerAllScreens(mtc::hmi::ScreenRegistry& registry) {
                  [](const ScreenContext& c) { return new HelpScreen(c); });
     // The restart screens of a station share one controller (selection,
     // computing process, result).
-    registry.add("restart", "NC program restart", [restart](const ScreenContext& c) {
-        return new RestartScreen(c, restart->forStation(c));
+    registry.add("restart", "NC program restart", [restart, links](const ScreenContext& c) {
+        auto* screen = new RestartScreen(c, restart->forStation(c));
+        links->attach(screen, ToolpathLink::Partner::Restart);
+        return screen;
     });
     registry.add(
         "restart-result", "NC program restart: result",
@@ -78,10 +89,18 @@ void registerAllScreens(mtc::hmi::ScreenRegistry& registry) {
         "repos", "Repositioning",
         [restart](const ScreenContext& c) { return new ReposScreen(c, restart->forStation(c)); },
         false);
-    // The toolpath view follows (and moves) the restart screen's cursor.
-    registry.add("toolpath", "Toolpath graphics", [restart](const ScreenContext& c) {
-        return new ToolpathScreen(c, restart->forStation(c));
-    });
+    // The toolpath view follows (and moves) the cursor of the restart screen
+    // or of the editor; a pick for the editor goes through the workspace.
+    registry.add(
+        "toolpath", "Toolpath graphics", [restart, programming, links](const ScreenContext& c) {
+            const auto link = links->forStation(c);
+            const auto workspace = programming->forStation(c);
+            auto* screen = new ToolpathScreen(c, restart->forStation(c), link);
+            QObject::connect(
+                link.get(), &ToolpathLink::editorLineRequested, screen,
+                [workspace](int program, int line) { workspace->requestEdit(program, line); });
+            return screen;
+        });
 }
 
 }  // namespace mtc::screens

@@ -35,6 +35,8 @@ EditorScreen::EditorScreen(const mtc::hmi::ScreenContext& context,
     layout->addWidget(message_);
     setFocusProxy(edit_);
     connect(edit_, &QPlainTextEdit::cursorPositionChanged, this, [this] { updateStatus(); });
+    connect(edit_, &QPlainTextEdit::cursorPositionChanged, this,
+            [this] { emit cursorLineChanged(program_, edit_->cursorLine()); });
     connect(edit_, &NcCodeEdit::loaded, this, [this] {
         if (edit_->loadMs() > 0)
             showMessage(QString("%1 lines loaded in %2 ms (first view after %3 ms)")
@@ -89,6 +91,7 @@ void EditorScreen::open(int number) {
     lastOpenMs_ = timer.elapsed();
     program_ = number;
     loadedSource_ = program;
+    emit cursorLineChanged(program_, edit_->cursorLine());
     workspace_->requestEdit(number, workspace_->editLine());
     if (edit_->loading())
         showMessage(QString("Loading... first %1 lines shown after %2 ms")

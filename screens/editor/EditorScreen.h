@@ -35,6 +35,11 @@ class EditorScreen : public mtc::hmi::Screen {
     /// Milliseconds the last open took (text into the editor).
     qint64 lastOpenMs() const { return lastOpenMs_; }
 
+  signals:
+    /// The cursor is on 1-based `line` of program `program` (the toolpath
+    /// view highlights that block when it is linked to the editor).
+    void cursorLineChanged(int program, int line);
+
   protected:
     bool eventFilter(QObject* watched, QEvent* event) override;
 

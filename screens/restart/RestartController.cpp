@@ -90,6 +90,8 @@ void RestartController::enter() {
     }
     const int number = session_->control(slot_).selectedProgram();
     const mtc::core::SearchReply started = pointer_.begin(number);
+    const int preselected = preselectedProgram_;
+    preselectedProgram_ = 0;  // used by this entry
     shownProgram_ = nullptr;
     accepted_ = {};
     if (!started.ok) {
@@ -97,6 +99,8 @@ void RestartController::enter() {
         reply(started);
     } else {
         showLevel();
+        if (preselected == number)  // a toolpath pick made outside the screen wins
+            clickRow(listing_->rowOfBlock(preselectedBlock_));
         const QString reason = refusalReason();
         if (reason.isEmpty())
             setMessage(RestartMessage::Level::Info,
@@ -105,6 +109,11 @@ void RestartController::enter() {
             setMessage(RestartMessage::Level::Warning, reason);
     }
     emit changed();
+}
+
+void RestartController::preselect(int program, std::uint32_t block) {
+    preselectedProgram_ = program;
+    preselectedBlock_ = block;
 }
 
 void RestartController::showLevel() {

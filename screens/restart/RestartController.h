@@ -49,10 +49,15 @@ class RestartController : public QObject {
     /// What the restart is doing now, for the operator ("" before the first Enter).
     QString phaseText() const;
 
-    /// Entry into the restart screen (seed 000, 2.2): the search starts on
-    /// N0000 of the selected program, number of runs 1. Says why when it
-    /// cannot (no program selected, not in automatic mode, program active).
+    /// Entry into the restart screen (seed 000, 2.2): the search starts in
+    /// the selected program, number of runs 1 (2.6), the cursor on N0000 or
+    /// on the block preselected since the last entry (toolpath pick, TP-006).
+    /// Says why when it cannot (no program selected, not in automatic mode,
+    /// program active).
     void enter();
+    /// The toolpath view picked block `block` of program `program`: the next
+    /// entry puts the cursor there when it is a block of the selected program.
+    void preselect(int program, std::uint32_t block);
     /// True when a program is displayed (enter() succeeded).
     bool active() const { return pointer_.active(); }
 
@@ -123,6 +128,8 @@ class RestartController : public QObject {
     const mtc::core::Program* shownProgram_ = nullptr;
     RestartMessage message_;
     QString lastSearch_;
+    int preselectedProgram_ = 0;  ///< 0 = no pick since the last entry
+    std::uint32_t preselectedBlock_ = 0;
     mtc::core::AcceptResult accepted_;
     RestartRun* run_;
 };

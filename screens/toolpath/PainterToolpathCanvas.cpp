@@ -226,7 +226,10 @@ void PainterToolpathCanvas::drawMarks(QPainter& painter, const View& view) {
     };
     if (marks.hasRepos) {
         painter.setPen(QPen(palette.repos, 2, Qt::DashLine));
-        painter.drawLine(project(view, marks.actual), project(view, marks.reentry));
+        QPolygonF path;  // the corners of ADJUST / REPOS (TP-007)
+        for (const auto& p : marks.repos)
+            path << project(view, p);
+        painter.drawPolyline(path);
     }
     dot(marks.hasStart, marks.start, palette.start);
     dot(marks.hasTarget, marks.target, palette.target);

@@ -1,24 +1,39 @@
 #include "screens/toolpath/ToolpathModel.h"
 
+#include <algorithm>
+
 #include "cnc_core/interp/Interpreter.h"
+#include "cnc_core/restart/ReposPreview.h"
 #include "hmi/CellSession.h"
 #include "screens/restart/ProgramListingModel.h"
 #include "screens/restart/RestartController.h"
 #include "screens/restart/RestartRun.h"
+#include "screens/toolpath/ToolpathLink.h"
 
 namespace mtc::screens {
 
 ToolpathModel::ToolpathModel(mtc::hmi::CellSession* session, int slot,
-                             std::shared_ptr<RestartController> restart, QObject* parent)
-    : QObject(parent), session_(session), slot_(slot), restart_(std::move(restart)) {
+                             std::shared_ptr<RestartController> restart,
+                             std::shared_ptr<ToolpathLink> link, QObject* parent)
+    : QObject(parent),
+      session_(session),
+      slot_(slot),
+      restart_(std::move(restart)),
+      link_(std::move(link)) {
     mtc::core::DiagnosticList ignored;  // the interpreter reports configuration problems
     mapping_ = std::make_unique<mtc::core::ToolpathBuilder>(
         mtc::core::ProcessAxes::build(session_->processConfig(slot_), ignored));
     stock_ = mtc::core::stockOf(session_->processConfig(slot_));
     connect(restart_.get(), &RestartController::changed, this, [this] {
-        followRestartCursor();
+        updateReposPath();
+        followPartner();
         emit marksChanged();
     });
+    for (auto signal : {&ToolpathLink::partnerChanged, &ToolpathLink::editorCursorChanged})
+        connect(link_.get(), signal, this, [this] {
+            followPartner();
+            emit marksChanged();
+        });
 }
 
 ToolpathModel::~ToolpathModel() = default;
@@ -31,7 +46,8 @@ void ToolpathModel::refresh() {
     const int number = session_->control(slot_).selectedProgram();
     const mtc::core::ProgramPtr program = number ? session_->program(slot_, number) : nullptr;
     if (program != built_ || number != number_) build(number);
-    followRestartCursor();
+    updateReposPath();
+    followPartner();
     emit marksChanged();
 }
 
@@ -113,16 +129,69 @@ ToolpathMarks ToolpathModel::marks() const {
     if (reentry.valid) {
         marks.hasReentry = true;
         marks.reentry = mapping_->scenePoint(reentry.machine);
-        if (restart_->run()->active()) {
-            std::array<double, mtc::core::kMaxAxes> actual{};
-            const int count = session_->interpreter(slot_).axes().count();
-            for (int a = 0; a < count && a < mtc::core::kMaxAxes; ++a)
-                actual[static_cast<std::size_t>(a)] = restart_->run()->actualPosition(a);
-            marks.actual = mapping_->scenePoint(actual);
-            marks.hasRepos = true;
-        }
+    }
+    if (reposPath_.size() >= 2) {
+        marks.hasRepos = true;
+        marks.actual = reposPath_.front();
+        marks.repos = reposPath_;
     }
     return marks;
+}
+
+void ToolpathModel::updateReposPath() {
+    using mtc::core::RestartPhase;
+    reposPath_.clear();
+    const auto& sequence = restart_->run()->sequence();
+    const RestartPhase phase = sequence.phase();
+    const bool ahead = phase == RestartPhase::TargetReached || phase == RestartPhase::Adjusting ||
+                       phase == RestartPhase::ManualMode || phase == RestartPhase::AutomaticAgain ||
+                       phase == RestartPhase::Repositioning;
+    const auto& route = sequence.computing().route();
+    if (!ahead || !sequence.reentry().valid || !route.targetProgram) return;
+    auto& live = session_->interpreter(slot_);
+    mtc::core::ReposPreviewStart start;
+    start.state = live.state();
+    start.options = live.options();
+    start.target = {route.targetProgram->number, sequence.computing().selection().target.block, 1};
+    start.targetChain = route.targetChain;
+    start.beforeAdjust = phase == RestartPhase::TargetReached;
+    const auto preview = mtc::core::previewRepositioning(
+        session_->processConfig(slot_), session_->store(), live.machineData(), start);
+    for (const auto& corner : preview.corners) {
+        const auto point = mapping_->scenePoint(corner);
+        if (reposPath_.empty() || point != reposPath_.back()) reposPath_.push_back(point);
+    }
+}
+
+QString ToolpathModel::partnerName() const {
+    return link_->partner() == ToolpathLink::Partner::Editor ? "editor" : "restart";
+}
+
+void ToolpathModel::followPartner() {
+    if (link_->partner() == ToolpathLink::Partner::Editor)
+        followEditorCursor();
+    else
+        followRestartCursor();
+}
+
+void ToolpathModel::followEditorCursor() {
+    const int number = link_->editorProgram();
+    const auto program = number ? session_->program(slot_, number) : nullptr;
+    if (!program || program->blocks.empty()) return;
+    // The block the cursor line belongs to: the last one starting on or
+    // before it (continuation and comment lines belong to the block above).
+    const auto& blocks = program->blocks;
+    const long line = link_->editorLine();
+    std::size_t low = 0, high = blocks.size();  // first block starting after the line
+    while (low < high) {
+        const std::size_t middle = (low + high) / 2;
+        if (static_cast<long>(blocks[middle].line) <= line)
+            low = middle + 1;
+        else
+            high = middle;
+    }
+    const std::size_t index = low == 0 ? 0 : low - 1;
+    setHighlight(number, static_cast<std::uint32_t>(index));
 }
 
 void ToolpathModel::followRestartCursor() {
@@ -165,7 +234,14 @@ void ToolpathModel::pick(long move) {
     const auto& m = geometry_->moves[static_cast<std::size_t>(move)];
     setHighlight(m.program, m.block);
     currentMove_ = move;
-    showInRestartListing(m.program, m.block);
+    if (link_->partner() == ToolpathLink::Partner::Editor) {
+        const auto program = session_->program(slot_, m.program);
+        if (program && m.block < program->blocks.size())
+            link_->requestEditorLine(m.program, program->blocks[m.block].line);
+    } else {
+        restart_->preselect(m.program, m.block);
+        showInRestartListing(m.program, m.block);
+    }
     emit blockPicked(m.program, m.block);
     emit marksChanged();
 }

@@ -18,11 +18,15 @@ class CellSession;
 namespace mtc::screens {
 
 class RestartController;
+class ToolpathLink;
 
 /// The marks the restart screen contributes to the picture (scene coordinates).
 struct ToolpathMarks {
     bool hasStart = false, hasTarget = false, hasReentry = false, hasRepos = false;
     std::array<double, 3> start{}, target{}, reentry{}, actual{};
+    /// The REPOS path (hasRepos): where the axes stand, then the end of every
+    /// move the rest of ADJUST and REPOS commands (TP-007), scene points.
+    std::vector<std::array<double, 3>> repos;
 };
 
 /// The model behind the toolpath view of one station (no display code):
@@ -30,14 +34,16 @@ struct ToolpathMarks {
 /// a private interpreter into a ToolpathBuilder), the stock of the machine
 /// configuration, the highlighted block and the marks of the restart
 /// screen (start block, target block, re-entry point, REPOS path). It
-/// follows the station's restart controller: moving its cursor highlights
-/// the block; picking a segment here puts the cursor there.
+/// follows the screen the station's ToolpathLink names (the restart
+/// controller or the editor): moving its cursor highlights the block;
+/// picking a segment here puts the cursor there (TP-006, TP-012).
 class ToolpathModel : public QObject {
     Q_OBJECT
   public:
-    /// The model of station `slot`; `session` and `restart` must outlive it.
+    /// The model of station `slot`; `session` must outlive it.
     ToolpathModel(mtc::hmi::CellSession* session, int slot,
-                  std::shared_ptr<RestartController> restart, QObject* parent = nullptr);
+                  std::shared_ptr<RestartController> restart, std::shared_ptr<ToolpathLink> link,
+                  QObject* parent = nullptr);
     ~ToolpathModel() override;
 
     /// Rebuilds the geometry when the selected program changed since the last
@@ -63,9 +69,12 @@ class ToolpathModel : public QObject {
     void setTolerance(double millimetres);
     double tolerance() const { return settings_.tolerance; }
 
+    /// "restart" or "editor": the screen the view is linked to.
+    QString partnerName() const;
     /// The operator picked move `move` (a segment of it) in the view: its
-    /// block is highlighted and becomes the restart screen's cursor when that
-    /// program is displayed there. Out of range: nothing happens.
+    /// block is highlighted and becomes the linked screen's cursor (the
+    /// editor's line; the restart cursor, now when that program is displayed
+    /// there and at the next entry). Out of range: nothing happens.
     void pick(long move);
     /// Picks the move after (+1) or before (-1) the current move (the one
     /// picked last, or the first of the highlighted block).
@@ -80,7 +89,12 @@ class ToolpathModel : public QObject {
     void blockPicked(int program, std::uint32_t block);
 
   private:
+    void followPartner();
     void followRestartCursor();
+    void followEditorCursor();
+    /// Re-interprets the rest of ADJUST / REPOS while a restart waits for or
+    /// runs them (ReposPreview); clears the path otherwise.
+    void updateReposPath();
     void setHighlight(int program, std::uint32_t block);
     /// Puts the restart screen's cursor on the block when it shows that program.
     void showInRestartListing(int program, std::uint32_t block);
@@ -89,6 +103,8 @@ class ToolpathModel : public QObject {
     mtc::hmi::CellSession* session_;
     int slot_;
     std::shared_ptr<RestartController> restart_;
+    std::shared_ptr<ToolpathLink> link_;
+    std::vector<std::array<double, 3>> reposPath_;
     mtc::core::ToolpathSettings settings_;
     std::shared_ptr<const mtc::core::ToolpathGeometry> geometry_;
     std::unique_ptr<mtc::core::ToolpathBuilder> mapping_;  ///< scene points of positions

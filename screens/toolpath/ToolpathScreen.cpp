@@ -14,6 +14,7 @@
 #include "hmi/CellSession.h"
 #include "screens/restart/RestartController.h"
 #include "screens/toolpath/PainterToolpathCanvas.h"
+#include "screens/toolpath/ToolpathLink.h"
 #include "screens/toolpath/ToolpathModel.h"
 #include "screens/toolpath/VtkToolpathCanvas.h"
 
@@ -46,9 +47,10 @@ bool openGlAvailable(QString& reason) {
 }
 
 ToolpathScreen::ToolpathScreen(const mtc::hmi::ScreenContext& context,
-                               std::shared_ptr<RestartController> restart)
+                               std::shared_ptr<RestartController> restart,
+                               std::shared_ptr<ToolpathLink> link)
     : Screen(context), restart_(std::move(restart)) {
-    model_ = new ToolpathModel(context.session, context.process, restart_, this);
+    model_ = new ToolpathModel(context.session, context.process, restart_, std::move(link), this);
     summary_ = new QLabel(this);
     summary_->setObjectName("toolpathSummary");
     summary_->setWordWrap(true);
@@ -84,8 +86,8 @@ void ToolpathScreen::activated() {
 
 void ToolpathScreen::renderText() {
     summary_->setText(model_->summary());
-    QString line =
-        model_->highlightText().isEmpty() ? QString() : "Highlighted: " + model_->highlightText();
+    QString line = "Linked to the " + model_->partnerName();
+    if (!model_->highlightText().isEmpty()) line += " · highlighted: " + model_->highlightText();
     if (!model_->problem().isEmpty()) line += (line.isEmpty() ? "" : " · ") + model_->problem();
     if (!glReason_.isEmpty())
         line += (line.isEmpty() ? "" : " · ") + QString("2D view: ") + glReason_;

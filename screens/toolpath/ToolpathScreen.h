@@ -11,6 +11,7 @@ namespace mtc::screens {
 
 class RestartController;
 class ToolpathCanvas;
+class ToolpathLink;
 class ToolpathModel;
 
 /// Says whether an OpenGL context can be made here, before anything of VTK
@@ -22,15 +23,17 @@ bool openGlAvailable(QString& reason);
 
 /// Toolpath graphics of the station's selected program ("toolpath"): the 3D
 /// view (VTK) or, without OpenGL, the 2D view, with the current block
-/// highlighted and the restart screen's start and target blocks, re-entry
-/// point and REPOS path marked. Keys: 1/2/3/4 G17/G18/G19/isometric view,
+/// highlighted (the cursor of the restart screen or of the editor, TP-012)
+/// and the restart screen's start and target blocks, re-entry point and
+/// REPOS path marked. Keys: 1/2/3/4 G17/G18/G19/isometric view,
 /// 0 or Home fit, + / − zoom, arrows rotate, Shift+arrows pan, PgDn/PgUp
-/// next/previous move (moves the restart cursor), P export PNG.
+/// next/previous move (moves the linked screen's cursor), P export PNG.
 class ToolpathScreen : public mtc::hmi::Screen {
     Q_OBJECT
   public:
+    /// `link` says whether the view follows the restart screen or the editor.
     ToolpathScreen(const mtc::hmi::ScreenContext& context,
-                   std::shared_ptr<RestartController> restart);
+                   std::shared_ptr<RestartController> restart, std::shared_ptr<ToolpathLink> link);
     ~ToolpathScreen() override;
     QString screenName() const override { return "toolpath"; }
     QString title() const override { return "Toolpath graphics"; }

@@ -10,12 +10,12 @@
 #include <vtkCylinderSource.h>
 #include <vtkGenericOpenGLRenderWindow.h>
 #include <vtkInteractorStyleTrackballCamera.h>
-#include <vtkLineSource.h>
 #include <vtkMatrix4x4.h>
 #include <vtkNew.h>
 #include <vtkOrientationMarkerWidget.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
+#include <vtkPolyLineSource.h>
 #include <vtkProperty.h>
 #include <vtkRenderWindowInteractor.h>
 #include <vtkRenderer.h>
@@ -386,9 +386,11 @@ void VtkToolpathCanvas::updateMarks() {
     sphere(scene_->reentry, marks.hasReentry, marks.reentry, palette.reentry);
     scene_->repos->SetVisibility(marks.hasRepos);
     if (marks.hasRepos) {
-        vtkNew<vtkLineSource> line;
-        line->SetPoint1(marks.actual.data());
-        line->SetPoint2(marks.reentry.data());
+        vtkNew<vtkPolyLineSource> line;  // the corners of ADJUST / REPOS (TP-007)
+        line->SetNumberOfPoints(static_cast<vtkIdType>(marks.repos.size()));
+        for (std::size_t i = 0; i < marks.repos.size(); ++i)
+            line->SetPoint(static_cast<vtkIdType>(i), marks.repos[i][0], marks.repos[i][1],
+                           marks.repos[i][2]);
         line->Update();
         vtkNew<vtkPolyDataMapper> mapper;
         mapper->SetInputData(line->GetOutput());
