@@ -262,4 +262,51 @@ TEST(CompilerChamfer, ConsecutiveCornersShareTheElementBetweenThem) {
     EXPECT_EQ(r.errors[0].message, "RD reduced to 1.");  // 4 - 3 left of N0003
 }
 
+TEST(CompilerChamfer, MessagesNameTheIllegalFunctionAndTheElementProblem) {
+    auto details = [](const std::string& text) {
+        const CompileResult r = compileText(text);
+        std::string joined;  // the detail lines are wrapped at 65 characters
+        for (const std::string& line :
+             r.errors.empty() ? std::vector<std::string>{} : r.errors[0].details)
+            joined += line + " ";
+        return joined;
+    };
+    EXPECT_NE(details("N1 G1 X0 Y0\nN2 X10 RD1\nN3 G18\nN4 Y10\n").find("a change of plane (G18)"),
+              std::string::npos);
+    EXPECT_NE(
+        details("N1 G1 X0 Y0\nN2 X10 RD1\nN3 G=@1\nN4 Y10\n").find("a computed G function (G=)"),
+        std::string::npos);
+    EXPECT_NE(details("N1 G1 X0 Y0\nN2 X10 RD1\nN3 .MARK M8\nN4 Y10\n").find("a jump label"),
+              std::string::npos);
+    EXPECT_NE(details("N1 G1 X0 Y0\nN2 G2 X10 Y0 I5 J1 RD1\nN3 Y10\n")
+                  .find("N0003: the circle's start point is its centre."),
+              std::string::npos);
+    EXPECT_NE(details("N1 G1 X0 Y0\nN2 G2 X10 Y0 I4 J0 RD1\nN3 G1 Y10\n")
+                  .find("N0002: start and end point are not on one circle."),
+              std::string::npos);
+    EXPECT_NE(
+        details("N1 G1 X0 Y0\nN2 X0 RD1\nN3 Y10\n").find("the block does not move in the plane."),
+        std::string::npos);
+    EXPECT_NE(details("N1 G1 X0 Y0\nN2 X10 RD=@3\nN3 Y10\n").find("must be a number"),
+              std::string::npos);
+}
+
+TEST(CompilerChamfer, EveryCornerOfAZigZagGetsItsBlockRightAfterItsOwnBlock) {
+    std::string text = "N0001 G1 X0 Y0 F100\n";
+    for (int i = 2; i <= 9; ++i)
+        text += "N000" + std::to_string(i) + (i % 2 ? " Y" : " X") + std::to_string(10 * i) +
+                (i < 9 ? (i % 2 ? " CF1" : " RD1") : "") + "\n";
+    const CompileResult r = compileText(text);
+    ASSERT_EQ(r.status, CompileStatus::Compiled);
+    const std::vector<std::string> b = objectBlocks(r);
+    ASSERT_EQ(b.size(), 16u);  // 9 blocks and 7 corners
+    for (int i = 2; i <= 8; ++i) {
+        const std::string number = "N000" + std::to_string(i);
+        EXPECT_EQ(b[static_cast<std::size_t>(2 * i - 3)].substr(0, 10), number + ":0000");
+        EXPECT_EQ(b[static_cast<std::size_t>(2 * i - 2)].substr(0, 13),
+                  number + ":0001 " + (i % 2 ? "G1" : "G3"));
+    }
+    EXPECT_EQ(b.back().substr(0, 10), "N0009:0000");
+}
+
 }  // namespace
