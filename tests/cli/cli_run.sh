@@ -80,4 +80,10 @@ elif [ -x /usr/bin/time ]; then
 else
   pass "streaming check skipped: /usr/bin/time missing"
 fi
+
+# A process alone owns its axes (docs/decisions/restart.md R-022): GAX is
+# granted at once, a move of an axis released with FAX is an error of its block.
+printf 'N0001 FAX(Y)\nN0002 GAX(Y)\nN0003 G0 Y5\nN0004 FAX(X)\nN0005 G0 X6\nN0006 M30\n' >"$TEST_TMP/fax.nc"
+expect_rc 1 "move after FAX" --json run "$TEST_TMP/fax.nc"
+json_check "AXIS_NOT_HELD at N0005 line 5, Y moved after GAX" 'd["diagnostics"][0]["code"] == "AXIS_NOT_HELD" and d["diagnostics"][0]["block"] == "N0005" and d["diagnostics"][0]["line"] == 5 and d["final"]["position"]["Y"] == 5'
 finish
