@@ -70,6 +70,20 @@ std::string insertedText(const ScannedBlock& a, CornerKind kind, const CornerFit
     return text;
 }
 
+/// One blank between words, none at the start or the end; the comment keeps
+/// its own spacing. Works in place.
+void squeezeBlanks(std::string& text) {
+    const std::size_t comment = commentOffset(text);
+    std::size_t kept = 0;
+    for (std::size_t i = 0; i < text.size(); ++i) {
+        if (i < comment && text[i] == ' ' && (kept == 0 || text[kept - 1] == ' ')) continue;
+        text[kept++] = text[i];
+    }
+    text.resize(kept);
+    while (!text.empty() && text.back() == ' ')
+        text.pop_back();
+}
+
 /// Buffers editedText reuses from block to block.
 struct EditScratch {
     struct Span {
@@ -136,16 +150,7 @@ void editedText(const std::string& text, const ScannedBlock& s, const ScanResult
         putInsert();
     }
     out.append(text, copied, std::string::npos);
-    // one blank between words (the comment keeps its own spacing), in place
-    const std::size_t newComment = commentOffset(out);
-    std::size_t kept = 0;
-    for (std::size_t i = 0; i < out.size(); ++i) {
-        if (i < newComment && out[i] == ' ' && (kept == 0 || out[kept - 1] == ' ')) continue;
-        out[kept++] = out[i];
-    }
-    out.resize(kept);
-    while (!out.empty() && out.back() == ' ')
-        out.pop_back();
+    squeezeBlanks(out);
 }
 
 class CornerJob {
