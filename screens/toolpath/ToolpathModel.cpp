@@ -157,6 +157,12 @@ void ToolpathModel::updateReposPath() {
     start.beforeAdjust = phase == RestartPhase::TargetReached;
     const auto preview = mtc::core::previewRepositioning(
         session_->processConfig(slot_), session_->store(), live.machineData(), start);
+    // The path starts where the simulated machine stands (the interpreter's
+    // commanded position when it has not caught up yet).
+    std::array<double, mtc::core::kMaxAxes> actual{};
+    for (int a = 0; a < live.axes().count() && a < mtc::core::kMaxAxes; ++a)
+        actual[static_cast<std::size_t>(a)] = restart_->run()->actualPosition(a);
+    reposPath_.push_back(mapping_->scenePoint(actual));
     for (const auto& corner : preview.corners) {
         const auto point = mapping_->scenePoint(corner);
         if (reposPath_.empty() || point != reposPath_.back()) reposPath_.push_back(point);
