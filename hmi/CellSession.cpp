@@ -132,7 +132,7 @@ std::vector<mtc::core::ProgramPtr> CellSession::programs(int slot) const {
 }
 
 mtc::core::ProgramPtr CellSession::program(int slot, int number) const {
-    return store_.find(processConfig(slot).index, number);
+    return store_.findSource(processConfig(slot).index, number);
 }
 
 bool CellSession::pressKey(int slot, mtc::core::ControlKey key) {
@@ -143,6 +143,12 @@ bool CellSession::pressKey(int slot, mtc::core::ControlKey key) {
 
 bool CellSession::selectProgram(int slot, int number) {
     bool ok = control(slot).selectProgram(number);
+    // The runtime program (compiled when the source has compiler keywords)
+    // is what the station and its NC program restart work on (C-013).
+    if (ok && number > 0) {
+        const std::string alarm = clock(slot).prepare(number);
+        if (!alarm.empty()) control(slot).setAlarm(alarm);
+    }
     emit processChanged(slot);
     return ok;
 }

@@ -8,8 +8,10 @@
 
 #include "cnc_core/compiler/CompilerFiles.h"
 #include "cnc_core/compiler/lookahead/LookAheadPass.h"
+#include "cnc_core/language/Parser.h"
 #include "cnc_core/program/AtomicWrite.h"
 #include "hmi/CellSession.h"
+#include "hmi/SimulationClock.h"
 
 namespace mtc::hmi {
 
@@ -41,6 +43,53 @@ ProgramWorkspace::ProgramWorkspace(CellSession* session, int slot, QObject* pare
     connect(session_, &CellSession::processChanged, this, [this](int changed) {
         if (changed == slot_) watchRuntime();
     });
+    session_->clock(slot_).setPreparer([this](int number) { return prepareRuntime(number); });
+}
+
+ProgramWorkspace::~ProgramWorkspace() {
+    session_->clock(slot_).setPreparer({});
+}
+
+std::string ProgramWorkspace::prepareRuntime(int number) {
+    if (!session_->program(slot_, number)) return {};  // the interpreter reports it
+    if (std::string alarm = prepareOne(number); !alarm.empty()) return alarm;
+    // Program 99 holds the labels a program calls: it runs compiled as well.
+    if (number != 99 && session_->program(slot_, 99)) return prepareOne(99);
+    return {};
+}
+
+std::string ProgramWorkspace::prepareOne(int number) {
+    const int process = session_->processConfig(slot_).index;
+    mtc::core::ProgramStore& store = session_->mutableStore();
+    auto runSource = [&] {
+        store.putRuntime(process, number, nullptr);
+        running_.remove(number);
+    };
+    if (!compilerActive_ || status(number) == CompileStatus::NotNeeded) {
+        runSource();
+        return {};
+    }
+    if (status(number) == CompileStatus::NotCompiled) {
+        QString ignored;  // compile() only refuses cases excluded above
+        compile(number, ignored);
+    }
+    const auto result = status(number) == CompileStatus::Compiled ? runtimeResult(number) : nullptr;
+    if (!result) {
+        runSource();
+        return QString("Start refused: program %1 has compiler errors \u2014 see error window")
+            .arg(number)
+            .toStdString();
+    }
+    if (running_.value(number) == result && store.findRuntime(process, number)) return {};
+    const auto source = session_->program(slot_, number);
+    mtc::core::ParseOptions options;
+    options.programNumber = number;
+    options.name = source->name;
+    store.putRuntime(
+        process, number,
+        std::make_shared<mtc::core::Program>(mtc::core::parseProgram(result->objectText, options)));
+    running_[number] = result;
+    return {};
 }
 
 void ProgramWorkspace::setCompilerActive(bool active) {
@@ -52,6 +101,9 @@ void ProgramWorkspace::setCompilerActive(bool active) {
     results_.clear();
     profiles_.clear();
     status_.clear();
+    for (int number : running_.keys())  // the sources run again
+        session_->mutableStore().putRuntime(session_->processConfig(slot_).index, number, nullptr);
+    running_.clear();
     emit programChanged(0);
 }
 
@@ -125,6 +177,7 @@ void ProgramWorkspace::clearObjects(int number) {
     }
     results_.remove(number);
     profiles_.remove(number);
+    running_.remove(number);  // the store dropped its runtime version with the new source
 }
 
 bool ProgramWorkspace::save(int number, const QString& text, QString& error) {
@@ -240,7 +293,24 @@ void ProgramWorkspace::watchRuntime() {
     ErrorEntry entry;
     if (!entryFromRuntimeAlarm(QString::fromStdString(alarm), entry)) return;
     if (entry.program == 0) entry.program = session_->control(slot_).selectedProgram();
+    mapToSource(entry);
     errors_.add(entry);
+}
+
+void ProgramWorkspace::mapToSource(ErrorEntry& entry) const {
+    const auto result = running_.value(entry.program);
+    const int process = session_->processConfig(slot_).index;
+    if (!result || !session_->store().findRuntime(process, entry.program)) return;
+    // The alarm names the compiled program's block (N0053:0001) and its line
+    // in the object text; the line map leads back to the source line.
+    const int objectLine = entry.line;
+    int sourceLine = 0;
+    if (objectLine > 0 && static_cast<std::size_t>(objectLine) <= result->lineMap.size())
+        sourceLine = static_cast<int>(result->lineMap[objectLine - 1].sourceLine);
+    entry.line = sourceLine;
+    entry.details << QString("compiled program, object line %1; source line %2")
+                         .arg(objectLine)
+                         .arg(sourceLine > 0 ? QString::number(sourceLine) : QString("unknown"));
 }
 
 ErrorEntry entryFromCompilerError(const mtc::core::CompilerError& error) {

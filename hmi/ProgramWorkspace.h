@@ -26,8 +26,10 @@ class CellSession;
 class ProgramWorkspace : public QObject {
     Q_OBJECT
   public:
-    /// Workspace of station `slot`; `session` must outlive it.
+    /// Workspace of station `slot`; `session` must outlive it. It installs
+    /// itself as the station's program preparer (prepareRuntime()).
     ProgramWorkspace(CellSession* session, int slot, QObject* parent = nullptr);
+    ~ProgramWorkspace() override;
 
     CellSession* session() const { return session_; }
     int slot() const { return slot_; }
@@ -68,6 +70,17 @@ class ProgramWorkspace : public QObject {
     /// compiler did not run (not active, no keyword, no program).
     bool compile(int number, QString& error);
 
+    /// Makes the program the station runs for `number` (and its program 99)
+    /// the runtime program (seed 001 ch. 10/11, C-013): with the compiler
+    /// active and compiler keywords, status N is compiled first, status C
+    /// puts the compiled object into the store; otherwise the source runs.
+    /// Returns the alarm that refuses Start (status E), "" when ready.
+    std::string prepareRuntime(int number);
+    /// The compile result the station runs for `number` (nullptr = source).
+    std::shared_ptr<const mtc::core::CompileResult> running(int number) const {
+        return running_.value(number);
+    }
+
     /// 1-based source line of block `block` ("N0030") of program `number`,
     /// 0 when it has no such block.
     int sourceLineOf(int number, const QString& block) const;
@@ -90,6 +103,8 @@ class ProgramWorkspace : public QObject {
 
   private:
     void watchRuntime();
+    std::string prepareOne(int number);
+    void mapToSource(ErrorEntry& entry) const;
     void setStatus(int number, mtc::core::CompileStatus status);
     void clearObjects(int number);
     void writeCompileFiles(int number, const mtc::core::CompileResult& result);
@@ -104,6 +119,7 @@ class ProgramWorkspace : public QObject {
     QMap<int, mtc::core::CompileStatus> status_;
     QMap<int, std::shared_ptr<const mtc::core::CompileResult>> results_;
     QMap<int, VelocityProfile> profiles_;
+    QMap<int, std::shared_ptr<const mtc::core::CompileResult>> running_;  ///< in the store
     std::string lastAlarm_;
     int editProgram_ = 0;
     int editLine_ = 0;

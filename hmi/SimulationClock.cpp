@@ -25,6 +25,9 @@ SimulationClock::SimulationClock(mtc::core::Interpreter& interpreter,
 }
 
 std::string SimulationClock::start(int number) {
+    // Compile on demand / refuse a program with compiler errors: nothing
+    // of the run below has been touched yet when the preparer refuses.
+    if (std::string alarm = prepare(number); !alarm.empty()) return alarm;
     mtc::core::DiagnosticList diagnostics;
     if (!interpreter_.select(number, 0, &diagnostics))
         return firstProblem(diagnostics, "the program cannot be selected");

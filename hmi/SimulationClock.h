@@ -30,6 +30,15 @@ class SimulationClock : public QObject, public mtc::core::ProgramRunner {
     void hold() override;
     void reset() override;
 
+    /// Makes the runtime program of a number ready before it runs (the
+    /// station's ProgramWorkspace: compile on demand, seed 001 ch. 10/11) or
+    /// returns an alarm that refuses Start ("" = ready).
+    using ProgramPreparer = std::function<std::string(int number)>;
+    /// Installs (empty function: removes) the preparer start() calls first.
+    void setPreparer(ProgramPreparer preparer) { preparer_ = std::move(preparer); }
+    /// Runs the preparer for `number` ("" when none is installed).
+    std::string prepare(int number) const { return preparer_ ? preparer_(number) : std::string(); }
+
     /// Simulated seconds per real second (default 1; tests and demos go faster).
     void setSpeed(double speed) { speed_ = speed > 0 ? speed : 1.0; }
     double speed() const { return speed_; }
@@ -54,6 +63,7 @@ class SimulationClock : public QObject, public mtc::core::ProgramRunner {
     mtc::core::Interpreter& interpreter_;
     mtc::core::SimulatedMachine& machine_;
     mtc::core::ProcessControl& control_;
+    ProgramPreparer preparer_;
     QTimer timer_;
     QElapsedTimer realTime_;
     double simulatedBase_ = 0.0;

@@ -4,6 +4,24 @@ namespace mtc::core {
 
 void ProgramStore::put(int process, int number, ProgramPtr program) {
     programs_[{process, number}] = std::move(program);
+    runtime_.erase({process, number});
+}
+
+void ProgramStore::putRuntime(int process, int number, ProgramPtr program) {
+    if (program)
+        runtime_[{process, number}] = std::move(program);
+    else
+        runtime_.erase({process, number});
+}
+
+ProgramPtr ProgramStore::findRuntime(int process, int number) const {
+    auto it = runtime_.find({process, number});
+    return it == runtime_.end() ? nullptr : it->second;
+}
+
+ProgramPtr ProgramStore::findSource(int process, int number) const {
+    auto it = programs_.find({process, number});
+    return it == programs_.end() ? nullptr : it->second;
 }
 
 void ProgramStore::putCycle(const std::string& name, ProgramPtr program) {
@@ -11,8 +29,8 @@ void ProgramStore::putCycle(const std::string& name, ProgramPtr program) {
 }
 
 ProgramPtr ProgramStore::find(int process, int number) const {
-    auto it = programs_.find({process, number});
-    return it == programs_.end() ? nullptr : it->second;
+    if (ProgramPtr runtime = findRuntime(process, number)) return runtime;
+    return findSource(process, number);
 }
 
 bool ProgramStore::findLabel(int process, const ProgramPtr& current, std::string_view label,

@@ -4,6 +4,7 @@
 
 #include "cnc_core/interp/Interpreter.h"
 #include "hmi/CellSession.h"
+#include "hmi/SimulationClock.h"
 #include "screens/restart/ProgramListingModel.h"
 #include "screens/restart/RestartRun.h"
 
@@ -89,6 +90,17 @@ void RestartController::enter() {
         return;
     }
     const int number = session_->control(slot_).selectedProgram();
+    // The restart searches the program the station runs: the compiled one
+    // when the source has compiler keywords (seed 001 ch. 10/11, C-013).
+    if (!session_->control(slot_).programActive() && number > 0) {
+        const std::string refused = session_->clock(slot_).prepare(number);
+        if (!refused.empty()) {
+            listing_->setProgram(nullptr);
+            setMessage(RestartMessage::Level::Error, QString::fromStdString(refused));
+            emit changed();
+            return;
+        }
+    }
     const mtc::core::SearchReply started = pointer_.begin(number);
     const int preselected = preselectedProgram_;
     preselectedProgram_ = 0;  // used by this entry
