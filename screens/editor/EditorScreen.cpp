@@ -34,19 +34,12 @@ EditorScreen::EditorScreen(const mtc::hmi::ScreenContext& context,
     layout->addWidget(status_);
     layout->addWidget(message_);
     setFocusProxy(edit_);
-    connect(edit_, &QPlainTextEdit::cursorPositionChanged, this, [this] { updateStatus(); });
+    // The cursor line only: the status letter is read from the workspace when
+    // it changes (programChanged), not on every key of a million-block text.
+    connect(edit_, &QPlainTextEdit::cursorPositionChanged, this, [this] { updateCursorLine(); });
     connect(edit_, &QPlainTextEdit::cursorPositionChanged, this,
             [this] { emit cursorLineChanged(program_, edit_->cursorLine()); });
-    connect(edit_, &NcCodeEdit::loaded, this, [this] {
-        if (edit_->loadMs() > 0)
-            showMessage(QString("%1 lines loaded in %2 ms (first view after %3 ms)")
-                            .arg(edit_->blockCount())
-                            .arg(edit_->loadMs())
-                            .arg(edit_->firstViewMs()));
-        updateStatus();
-        emit softKeysChanged();
-    });
-    connect(edit_->document(), &QTextDocument::modificationChanged, this, [this] {
+    connect(edit_, &NcCodeEdit::modifiedChanged, this, [this] {
         updateStatus();
         emit softKeysChanged();
     });
@@ -93,12 +86,8 @@ void EditorScreen::open(int number) {
     loadedSource_ = program;
     emit cursorLineChanged(program_, edit_->cursorLine());
     workspace_->requestEdit(number, workspace_->editLine());
-    if (edit_->loading())
-        showMessage(QString("Loading... first %1 lines shown after %2 ms")
-                        .arg(edit_->blockCount())
-                        .arg(lastOpenMs_));
-    else
-        showMessage(QString("%1 lines opened in %2 ms").arg(edit_->blockCount()).arg(lastOpenMs_));
+    updateStatus();
+    showMessage(QString("%1 lines opened in %2 ms").arg(edit_->blockCount()).arg(lastOpenMs_));
 }
 
 bool EditorScreen::save() {
@@ -179,6 +168,10 @@ void EditorScreen::updateStatus() {
                           .arg(name)
                           .arg(QChar(status))
                           .arg(edit_->document()->isModified() ? "  *modified*" : ""));
+    updateCursorLine();
+}
+
+void EditorScreen::updateCursorLine() {
     const QString block = edit_->cursorBlockId();
     status_->setText(QString("Line %1 of %2   Block %3")
                          .arg(edit_->cursorLine())

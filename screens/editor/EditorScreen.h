@@ -53,6 +53,7 @@ class EditorScreen : public mtc::hmi::Screen {
     bool gneAvailable() const;
     void showMessage(const QString& text, bool error = false);
     void updateStatus();
+    void updateCursorLine();
 
     std::shared_ptr<mtc::hmi::ProgramWorkspace> workspace_;
     NcCodeEdit* edit_;

@@ -3,6 +3,8 @@
 #include <QFontDatabase>
 #include <QPaintEvent>
 #include <QPainter>
+#include <QPlainTextDocumentLayout>
+#include <QPointer>
 #include <QRegularExpression>
 #include <QTextBlock>
 
@@ -28,7 +30,6 @@ class Gutter : public QWidget {
 };
 
 constexpr int kHighlightMargin = 40;  // lines highlighted above/below the view
-constexpr int kChunkLines = 10000;    // lines per load step (~50 ms)
 
 }  // namespace
 
@@ -37,83 +38,50 @@ NcCodeEdit::NcCodeEdit(QWidget* parent) : QPlainTextEdit(parent) {
     setLineWrapMode(QPlainTextEdit::NoWrap);
     gutter_ = new Gutter(this);
     highlighter_ = new NcHighlighter(document());
+    highlighter_->setParent(this);  // outlives the documents load() replaces
     connect(this, &QPlainTextEdit::blockCountChanged, this, [this] {
         if (viewportMargins().left() != gutterWidth()) setViewportMargins(gutterWidth(), 0, 0, 0);
     });
     connect(this, &QPlainTextEdit::updateRequest, this, &NcCodeEdit::updateGutter);
     connect(this, &QPlainTextEdit::cursorPositionChanged, gutter_, [this] { gutter_->update(); });
     setViewportMargins(gutterWidth(), 0, 0, 0);
-    loadTimer_.setInterval(0);
-    connect(&loadTimer_, &QTimer::timeout, this, &NcCodeEdit::loadChunk);
+    connect(document(), &QTextDocument::modificationChanged, this, &NcCodeEdit::modifiedChanged);
 }
 
 void NcCodeEdit::load(const QString& text) {
-    if (loadTimer_.isActive()) {
-        loadTimer_.stop();
-        setReadOnly(readOnlyBefore_);
-        setTextInteractionFlags(flagsBefore_);
-    }
-    loadClock_.start();
-    pendingLine_ = 0;
+    QElapsedTimer clock;
+    clock.start();
+    // ED-007: the text goes into a fresh document while no view lays it out
+    // and no highlighter formats it (neither looks at a million blocks).
+    auto* fresh = new QTextDocument(this);
+    fresh->setDocumentLayout(new QPlainTextDocumentLayout(fresh));
+    fresh->setDefaultFont(font());
+    fresh->setUndoRedoEnabled(false);
+    fresh->setPlainText(text);
+    fresh->setUndoRedoEnabled(true);
+    fresh->setModified(false);
+    const QPointer<QTextDocument> old = document();  // the view may delete its own
+    highlighting_ = true;  // no highlighting while the highlighter is on the old text
+    setDocument(fresh);
+    // Deleted before the highlighter moves: it would clear the formats of
+    // every block of the old text (a layout per block) otherwise.
+    if (old && old->parent() == this) delete old;
+    connect(fresh, &QTextDocument::modificationChanged, this, &NcCodeEdit::modifiedChanged);
     highlighter_->setWindow(0, kHighlightMargin * 2);
-    setUndoRedoEnabled(false);
-    clear();
-    pending_ = text;
-    pendingAt_ = 0;
-    readOnlyBefore_ = isReadOnly();
-    flagsBefore_ = textInteractionFlags();
-    loadChunk();
-    firstViewMs_ = loadClock_.elapsed();
-    if (pendingAt_ < pending_.size()) {
-        // Moving around works while the rest loads; editing waits.
-        setReadOnly(true);
-        setTextInteractionFlags(Qt::TextSelectableByKeyboard | Qt::TextSelectableByMouse);
-        loadTimer_.start();
-    }
-}
-
-void NcCodeEdit::loadChunk() {
-    int end = pendingAt_;
-    for (int lines = 0; lines < kChunkLines && end >= 0; ++lines) {
-        end = pending_.indexOf('\n', end);
-        if (end >= 0) ++end;
-    }
-    if (end < 0) end = pending_.size();
-    // Text is appended at the end; the user's cursor stays where it is.
-    const int keep = textCursor().position();
-    QTextCursor cursor(document());
-    cursor.movePosition(QTextCursor::End);
-    cursor.insertText(pending_.mid(pendingAt_, end - pendingAt_));
-    if (textCursor().position() != keep) {
-        QTextCursor back = textCursor();
-        back.setPosition(keep);
-        setTextCursor(back);
-    }
-    pendingAt_ = end;
-    document()->setModified(false);
-    if (pendingLine_ > 0 && pendingLine_ <= blockCount()) {
-        goToLine(pendingLine_);
-        pendingLine_ = 0;
-    }
-    if (pendingAt_ < pending_.size()) return;
-    loadTimer_.stop();
-    pending_.clear();
-    pendingAt_ = 0;
-    setUndoRedoEnabled(true);
-    setReadOnly(readOnlyBefore_);
-    setTextInteractionFlags(flagsBefore_);
-    document()->setModified(false);
+    highlighter_->setDocument(fresh);
+    highlighting_ = false;
+    // setDocument() schedules a rehighlight of every block; a change of the
+    // first block cancels it (only the lines in view are highlighted).
+    fresh->markContentsDirty(0, 1);
+    setViewportMargins(gutterWidth(), 0, 0, 0);
     highlightVisible();
-    loadMs_ = loadClock_.elapsed();
+    firstViewMs_ = loadMs_ = clock.elapsed();
+    emit modifiedChanged(false);
     emit loaded();
 }
 
 void NcCodeEdit::goToLine(int line) {
     const QTextBlock block = document()->findBlockByNumber(qMax(0, line - 1));
-    if (loading() && line > blockCount()) {
-        pendingLine_ = line;  // taken when the loading reaches it
-        return;
-    }
     if (!block.isValid()) return;
     setTextCursor(QTextCursor(block));
     centerCursor();
@@ -165,7 +133,7 @@ void NcCodeEdit::highlightVisible() {
     const int visible = viewport()->height() / qMax(1, fontMetrics().height()) + 1;
     highlighter_->setWindow(qMax(0, first - kHighlightMargin), first + visible + kHighlightMargin);
     for (int i = 0; i <= visible && block.isValid(); ++i, block = block.next())
-        if (block.userState() != 1) highlighter_->rehighlightBlock(block);
+        if (block.userState() != kHighlighted) highlighter_->rehighlightBlock(block);
     highlighting_ = false;
 }
 

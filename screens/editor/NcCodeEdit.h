@@ -2,7 +2,6 @@
 
 #include <QElapsedTimer>
 #include <QPlainTextEdit>
-#include <QTimer>
 
 namespace mtc::screens {
 
@@ -10,20 +9,21 @@ class NcHighlighter;
 
 /// The text area of the program editor: a plain text editor with a gutter
 /// of line numbers and NC syntax highlighting of the visible lines only
-/// (stays fluent on programs of a million blocks). Long texts are loaded in
-/// chunks: the first lines show at once, the rest follows in the background
-/// (read-only until loaded).
+/// (stays fluent on programs of a million blocks). A text is loaded in one
+/// go into a fresh document that no view and no highlighter watches yet
+/// (ED-007): a million blocks are usable after about a second.
 class NcCodeEdit : public QPlainTextEdit {
     Q_OBJECT
   public:
     explicit NcCodeEdit(QWidget* parent = nullptr);
 
-    /// Replaces the text (undo history cleared, not modified): the first
-    /// chunk now, the rest from the event loop (loading() until then).
+    /// Replaces the text (undo history cleared, not modified); the whole
+    /// text is there when it returns.
     void load(const QString& text);
-    /// True while a text is still being loaded.
-    bool loading() const { return loadTimer_.isActive(); }
-    /// Milliseconds to the first view / to the whole text of the last load.
+    /// False: load() is synchronous (kept for callers that wait for it).
+    bool loading() const { return false; }
+    /// Milliseconds to the first view / to the whole text of the last load
+    /// (the same since ED-007's one-go load).
     qint64 firstViewMs() const { return firstViewMs_; }
     qint64 loadMs() const { return loadMs_; }
     /// Puts the cursor on the start of 1-based `line` and centres it.
@@ -42,25 +42,20 @@ class NcCodeEdit : public QPlainTextEdit {
   signals:
     /// A load finished: the whole text is in the editor.
     void loaded();
+    /// The document's modified flag changed (the document is replaced by
+    /// every load(), this signal stays).
+    void modifiedChanged(bool modified);
 
   protected:
     void resizeEvent(QResizeEvent* event) override;
 
   private:
-    void loadChunk();
     void updateGutter(const QRect& rect, int dy);
     void highlightVisible();
 
     QWidget* gutter_;
     NcHighlighter* highlighter_;
     bool highlighting_ = false;
-    QTimer loadTimer_;
-    QElapsedTimer loadClock_;
-    QString pending_;      ///< text still to be loaded
-    int pendingAt_ = 0;    ///< offset in pending_ of the next chunk
-    int pendingLine_ = 0;  ///< goToLine() target beyond the loaded lines
-    bool readOnlyBefore_ = false;
-    Qt::TextInteractionFlags flagsBefore_;
     qint64 firstViewMs_ = 0;
     qint64 loadMs_ = 0;
 };

@@ -48,10 +48,10 @@ QTextCharFormat NcHighlighter::format(Token token) const {
 void NcHighlighter::highlightBlock(const QString& text) {
     const int number = currentBlock().blockNumber();
     if (number < first_ || number > last_) {
-        setCurrentBlockState(0);
+        if (currentBlockState() == kHighlighted) setCurrentBlockState(-1);
         return;
     }
-    setCurrentBlockState(1);
+    setCurrentBlockState(kHighlighted);
     if (isHeaderLine(text)) {
         QSyntaxHighlighter::setFormat(0, text.size(), format(Token::Header));
         return;

@@ -10,7 +10,12 @@ namespace mtc::screens {
 /// the .DAT identification and header lines. Only blocks inside the window
 /// set with setWindow() are highlighted, so a program of a million blocks
 /// loads without formatting every line; the editor highlights what becomes
-/// visible (block state 1 = highlighted, 0 = not yet).
+/// visible (block state kHighlighted = highlighted; a block outside the
+/// window keeps its state, so QSyntaxHighlighter's "state changed, format
+/// the next block too" never runs through the whole document).
+/// Block state of a highlighted block.
+constexpr int kHighlighted = 1;
+
 class NcHighlighter : public QSyntaxHighlighter {
     Q_OBJECT
   public:
