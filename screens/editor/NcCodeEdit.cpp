@@ -70,9 +70,10 @@ void NcCodeEdit::load(const QString& text) {
     highlighter_->setWindow(0, kHighlightMargin * 2);
     highlighter_->setDocument(fresh);
     highlighting_ = false;
-    // setDocument() schedules a rehighlight of every block; a change of the
-    // first block cancels it (only the lines in view are highlighted).
-    fresh->markContentsDirty(0, 1);
+    // setDocument() schedules a rehighlight of every block; a contents
+    // change cancels it (QSyntaxHighlighter formats the changed block and
+    // the next ones while their state changes: the window only).
+    emit fresh->contentsChange(0, 0, 0);
     setViewportMargins(gutterWidth(), 0, 0, 0);
     highlightVisible();
     firstViewMs_ = loadMs_ = clock.elapsed();

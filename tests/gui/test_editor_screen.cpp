@@ -1,6 +1,7 @@
 // Program directory with N/C/E, program editor, error window and runtime
 // view (seed 001 ch. 1, 7, 9-11), driven with real keys.
 #include <QDir>
+#include <QElapsedTimer>
 #include <QFile>
 #include <QLabel>
 #include <QListView>
@@ -356,12 +357,21 @@ class EditorScreenTest : public QObject {
         qInfo("%d-block program opened in %lld ms", kBlocks, editor->lastOpenMs());
         QVERIFY(edit->textCursor().block().userState() == mtc::screens::kHighlighted);
 
+        QElapsedTimer keys;  // figures for ED-007 (not asserted: bench/ and timing do that)
+        keys.start();
         panel.press(Qt::Key_End, Qt::ControlModifier);
         QCOMPARE(edit->textCursor().blockNumber(), 10 + kBlocks);
+        const qint64 endMs = keys.restart();
+        panel.press(Qt::Key_PageUp);
+        const qint64 pageMs = keys.restart();
+        panel.press(Qt::Key_End, Qt::ControlModifier);
         panel.press(Qt::Key_Up);
         panel.press(Qt::Key_End);
         QTRY_VERIFY(edit->textCursor().block().userState() == mtc::screens::kHighlighted);
+        keys.restart();
         QTest::keyClicks(edit, " ;done");
+        qInfo("keys: Ctrl+End %lld ms, PgUp %lld ms, 6 typed characters %lld ms", endMs, pageMs,
+              keys.elapsed());
         auto* heading = child<QLabel>(panel, "editor", "editorHeading");
         QVERIFY(heading->text().contains("modified"));
         panel.press(Qt::Key_S, Qt::ControlModifier);
