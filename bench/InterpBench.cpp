@@ -4,72 +4,20 @@
 // and motion output switched off (the restart computing process, --no-motion).
 #include <benchmark/benchmark.h>
 
-#include <cstdio>
-#include <memory>
 #include <string>
 
+#include "bench/BenchPrograms.h"
 #include "cnc_core/interp/Interpreter.h"
-#include "cnc_core/language/Parser.h"
-#include "cnc_core/machine/MachineConfigReader.h"
-#include "resources/EmbeddedResources.h"
 
 namespace {
 
 using namespace mtc::core;
 
-/// `blocks` blocks in cycles of four that always close: a line to the start
-/// of a quarter circle, a counter-clockwise and a clockwise quarter circle
-/// (radius 10, centre absolute), a line back. The square's size varies so the
-/// numbers differ from cycle to cycle.
-std::string generateClosedMotionProgram(int blocks) {
-    std::string text;
-    text.reserve(static_cast<std::size_t>(blocks) * 40);
-    char line[128];
-    for (int i = 0; i < blocks; ++i) {
-        const int number = i % 10000;
-        const double x0 = 10.0 + (i / 4 % 50) * 0.5;
-        int n = 0;
-        switch (i % 4) {
-            case 0:
-                n = std::snprintf(line, sizeof line, "N%04d G1 X%.3f Y0 F%d\n", number, x0,
-                                  1000 + (i % 5) * 250);
-                break;
-            case 1:
-                n = std::snprintf(line, sizeof line, "N%04d G3 X%.3f Y10 I%.3f J0\n", number,
-                                  x0 + 10.0, x0 + 10.0);
-                break;
-            case 2:
-                n = std::snprintf(line, sizeof line, "N%04d G2 X%.3f Y0 I%.3f J0 F1500\n", number,
-                                  x0 + 20.0, x0 + 10.0);
-                break;
-            default:
-                n = std::snprintf(line, sizeof line, "N%04d G1 X0 Y0\n", number);
-                break;
-        }
-        text.append(line, static_cast<std::size_t>(n));
-    }
-    return text;
-}
+using Fixture = mtc::bench::BenchProgramFixture;
 
-struct Fixture {
-    Fixture() {
-        auto read = readMachineConfig(mtc::resources::find(mtc::resources::kDemoCellName));
-        cell = read.config;
-        ParseOptions options;
-        options.programNumber = 1;
-        auto parsed = std::make_shared<Program>(
-            parseProgram(generateClosedMotionProgram(1'000'000), options));
-        parsed->number = 1;
-        program = parsed;
-        store.put(0, 1, program);
-    }
-    MachineConfig cell;
-    ProgramStore store;
-    ProgramPtr program;
-};
-
+/// The generated moves program (no M30: the run ends at its last block).
 const Fixture& fixture() {
-    static const Fixture f;
+    static const Fixture f(1'000'000, {false, false});
     return f;
 }
 

@@ -6,16 +6,13 @@
 // interpreter alone on the same program (motion off) is the reference.
 #include <benchmark/benchmark.h>
 
-#include <cstdio>
 #include <memory>
 #include <string>
 
+#include "bench/BenchPrograms.h"
 #include "cnc_core/interp/Interpreter.h"
-#include "cnc_core/language/Parser.h"
 #include "cnc_core/machine/InMemoryMachineData.h"
-#include "cnc_core/machine/MachineConfigReader.h"
 #include "cnc_core/restart/ComputingProcess.h"
-#include "resources/EmbeddedResources.h"
 
 namespace {
 
@@ -23,60 +20,13 @@ using namespace mtc::core;
 
 constexpr int kBlocks = 1'000'000;
 
-/// Cycles of four closed moves: a line, a counter-clockwise and a clockwise
-/// quarter circle of radius 10, a line back; `mixed` adds aux functions and
-/// arithmetic to every other block.
-std::string generateProgram(int blocks, bool mixed) {
-    std::string text;
-    text.reserve(static_cast<std::size_t>(blocks) * 48);
-    char line[160];
-    for (int i = 0; i < blocks; ++i) {
-        const int number = i % 10000;
-        const double x0 = 10.0 + (i / 4 % 50) * 0.5;
-        int n = 0;
-        switch (i % 4) {
-            case 0:
-                n = std::snprintf(line, sizeof line, "N%04d G1 X%.3f Y0 F%d%s\n", number, x0,
-                                  1000 + (i % 5) * 250, mixed ? " M108 Q17" : "");
-                break;
-            case 1:
-                n = std::snprintf(line, sizeof line, "N%04d G3 X%.3f Y10 I%.3f J0\n", number,
-                                  x0 + 10.0, x0 + 10.0);
-                break;
-            case 2:
-                n = std::snprintf(line, sizeof line, "N%04d G2 X%.3f Y0 I%.3f J0 F1500%s\n", number,
-                                  x0 + 20.0, x0 + 10.0, mixed ? " M62 @1=@1+1" : "");
-                break;
-            default:
-                n = std::snprintf(line, sizeof line, "N%04d G1 X0 Y0%s\n", number,
-                                  mixed ? " M109 M63" : "");
-                break;
-        }
-        text.append(line, static_cast<std::size_t>(n));
-    }
-    text += "N9999 M30\n";
-    return text;
-}
+using Fixture = mtc::bench::BenchProgramFixture;
 
-struct Fixture {
-    explicit Fixture(bool mixed) {
-        cell = readMachineConfig(mtc::resources::find(mtc::resources::kDemoCellName)).config;
-        ParseOptions options;
-        options.programNumber = 1;
-        auto parsed =
-            std::make_shared<Program>(parseProgram(generateProgram(kBlocks, mixed), options));
-        parsed->number = 1;
-        program = parsed;
-        store.put(0, 1, program);
-    }
-    MachineConfig cell;
-    ProgramStore store;
-    ProgramPtr program;
-};
-
+/// The moves program and the mixed one (aux functions and arithmetic on every
+/// other block), each ending with M30.
 const Fixture& fixture(bool mixed) {
-    static const Fixture plain(false);
-    static const Fixture withAux(true);
+    static const Fixture plain(kBlocks, {false, true});
+    static const Fixture withAux(kBlocks, {true, true});
     return mixed ? withAux : plain;
 }
 

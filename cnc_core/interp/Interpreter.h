@@ -203,7 +203,7 @@ class Interpreter {
     bool planFlow(const BlockContext& context);
     bool validateMachineData(const BlockContext& context);
     void emitAux(const Program& program, std::uint32_t index);
-    void sendAux(char type, int spindle, double value, const SourceLocation& where, bool forwarded);
+    void sendAux(AuxOutput& out, char type, int spindle, double value, bool forwarded);
     void emitMotion(const Program& program, std::uint32_t index);
     void runCommands(const Program& program, std::uint32_t index);
     Outcome applyFlow(const Program& program, std::uint32_t index);

@@ -130,10 +130,7 @@ Interpreter::Outcome Interpreter::commit(const Program& program, std::uint32_t i
     return Outcome::Continue;
 }
 
-void Interpreter::sendAux(char type, int spindle, double value, const SourceLocation& where,
-                          bool forwarded) {
-    AuxOutput out;
-    out.where = where;
+void Interpreter::sendAux(AuxOutput& out, char type, int spindle, double value, bool forwarded) {
     out.type = type;
     out.spindle = spindle;
     out.value = value;
@@ -143,7 +140,8 @@ void Interpreter::sendAux(char type, int spindle, double value, const SourceLoca
 
 void Interpreter::emitAux(const Program& program, std::uint32_t index) {
     const BlockInput& in = input_;
-    const SourceLocation where = sinkLocation(program, index);
+    AuxOutput aux;  // one location for all functions of the block
+    aux.where = sinkLocation(program, index);
     const OutputOptions& out = options_.output;
     if (!in.speedLimit)
         for (int slot = 0; slot < kSpindleSlots; ++slot)
@@ -153,14 +151,14 @@ void Interpreter::emitAux(const Program& program, std::uint32_t index) {
                 const double speed = in.axisFunction == 77
                                          ? state_.modal.spindleSpeed[static_cast<size_t>(spindle)]
                                          : in.spindle[static_cast<size_t>(slot)];
-                sendAux('S', spindle, speed, where, out.s);
+                sendAux(aux, 'S', spindle, speed, out.s);
             }
-    if (in.hasTool) sendAux('T', 0, in.tool, where, out.te);
-    if (in.hasEdge) sendAux('E', 0, in.edge, where, out.te);
+    if (in.hasTool) sendAux(aux, 'T', 0, in.tool, out.te);
+    if (in.hasEdge) sendAux(aux, 'E', 0, in.edge, out.te);
     for (int i = 0; i < in.mCount; ++i)
-        sendAux('M', 0, in.m[static_cast<size_t>(i)].value, where, out.m);
+        sendAux(aux, 'M', 0, in.m[static_cast<size_t>(i)].value, out.m);
     for (int i = 0; i < in.qCount; ++i)
-        sendAux('Q', 0, in.q[static_cast<size_t>(i)].value, where, out.q);
+        sendAux(aux, 'Q', 0, in.q[static_cast<size_t>(i)].value, out.q);
 }
 
 void Interpreter::emitMotion(const Program& program, std::uint32_t index) {
