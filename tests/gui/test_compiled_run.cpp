@@ -1,0 +1,207 @@
+// A station runs the runtime program (seed 001 ch. 1, 10, 11; decision
+// C-013): a program with compiler keywords is compiled on demand when it is
+// selected, runs as the compiled object (N0053:0001 blocks), is refused with
+// status E, and its runtime errors lead back to the source line.
+#include <QDir>
+#include <QLabel>
+#include <QListView>
+#include <QListWidget>
+#include <QPlainTextEdit>
+#include <QRegularExpression>
+#include <QTemporaryDir>
+#include <QTextBlock>
+#include <cmath>
+#include <utility>
+#include <vector>
+
+#include "PanelFixture.h"
+#include "cnc_core/machine/SimulatedMachine.h"
+#include "hmi/SimulationClock.h"
+#include "screens/programs/ProgramDirectoryModel.h"
+
+namespace {
+
+QString header(int number, const char* title) {
+    return QString(
+               "iMTc/01%1/01.00/0000000000/21.11.2026/15:00:00/N1010%1.DAT/1\n"
+               "%NPG:1:01:0:%1\n!01.00\n#01%2\n$\n$\n$\n$\n*%2\n%NPG\n")
+        .arg(number, 3, 10, QChar('0'))
+        .arg(title);
+}
+
+/// A corner X30 Y0 rounded with radius 5 through a macro: the compiled path
+/// touches (25, 0) and (30, 5), the source path only the corner (30, 0).
+const char* kRoundedCorner =
+    "N0000 G0 G17 G90 X0 Y0 Z0\n"
+    "N0001 DEFINE ROUND AS RD5\n"
+    "N0002 G1 X30 Y0 F2000 ROUND\n"
+    "N0003 G1 X30 Y30\n"
+    "N0004 M30\n"
+    "N0005 PROGRAMMENDE\n";
+
+/// A rounding without a following motion: compiler error, status E.
+const char* kBrokenRounding =
+    "N0000 G0 G17 G90 X0 Y0 Z0\n"
+    "N0001 G1 X10 Y0 F1000 RD3\n"
+    "N0002 M30\n"
+    "N0003 PROGRAMMENDE\n";
+
+/// Compiles (a chamfer inserts a block), then fails at run time on T999:
+/// source line 14, a later line in the object program.
+const char* kRuntimeFault =
+    "N0000 G0 G17 G90 X0 Y0 Z0\n"
+    "N0001 G1 X10 Y0 F1000 CF2\n"
+    "N0002 G1 X10 Y10\n"
+    "N0003 T999\n"
+    "N0004 M30\n"
+    "N0005 PROGRAMMENDE\n";
+
+/// Puts the program directory's cursor on program `number`.
+void pickProgram(PanelFixture& panel, int number) {
+    panel.window->showScreen("programs");
+    auto* list = child<QListView>(panel, "programs", "programList");
+    const auto* model = qobject_cast<const mtc::screens::ProgramDirectoryModel*>(list->model());
+    QVERIFY(model && model->rowOf(number) >= 0);
+    list->setCurrentIndex(model->index(model->rowOf(number)));
+}
+
+QString directoryRow(PanelFixture& panel, int number) {
+    auto* list = child<QListView>(panel, "programs", "programList");
+    const auto* model = qobject_cast<const mtc::screens::ProgramDirectoryModel*>(list->model());
+    return model->index(model->rowOf(number)).data().toString();
+}
+
+}  // namespace
+
+class CompiledRunTest : public QObject {
+    Q_OBJECT
+  private:
+    QTemporaryDir dir_;
+
+    mtc::hmi::PanelOptions options() {
+        QDir dir(dir_.path());
+        for (const QString& name : dir.entryList(QDir::Files))
+            dir.remove(name);
+        writeProgram(dir, 5, header(5, "Rounded corner") + kRoundedCorner);
+        writeProgram(dir, 6, header(6, "Broken rounding") + kBrokenRounding);
+        writeProgram(dir, 7, header(7, "Runtime fault") + kRuntimeFault);
+        mtc::hmi::PanelOptions o;
+        o.programsDir = dir_.path();
+        return o;
+    }
+
+    /// Compiler active = Yes, then Enter selects `number` in the directory.
+    static void selectCompiled(PanelFixture& panel, int number) {
+        pickProgram(panel, number);
+        panel.press(Qt::Key_F6);  // NC options: Compiler active = Yes
+        pickProgram(panel, number);
+        panel.press(Qt::Key_Return);
+        QCOMPARE(panel.session->control(0).selectedProgram(), number);
+    }
+
+  private slots:
+    void initTestCase() { useTestSettings(); }
+
+    void aCompiledProgramRunsItsTangentPoints() {
+        PanelFixture panel(options());
+        selectCompiled(panel, 5);
+        QVERIFY2(directoryRow(panel, 5).contains("[C]"), qPrintable(directoryRow(panel, 5)));
+        QVERIFY(QFile::exists(QDir(dir_.path()).filePath("N1010005.NCO")));
+
+        panel.session->clock(0).setSpeed(1000);
+        panel.press(Qt::Key_F8, Qt::ShiftModifier);  // single block on
+        auto* block = panel.window->findChild<QLabel*>("headerProgram");
+        const auto& machine = panel.session->machine(0);
+        std::vector<std::pair<double, double>> reached;
+        bool enhancedShown = false;
+        const QRegularExpression enhanced("Block: N\\d{4}:\\d{4}");
+        for (int step = 0; step < 20 && (step == 0 || panel.session->control(0).programActive());
+             ++step) {
+            panel.press(Qt::Key_F5, Qt::ShiftModifier);  // Start (next block)
+            QTRY_VERIFY(panel.session->control(0).programHeld() ||
+                        !panel.session->control(0).programActive());
+            reached.emplace_back(machine.position(0), machine.position(1));
+            enhancedShown = enhancedShown || enhanced.match(block->text()).hasMatch();
+        }
+        QVERIFY(!panel.session->control(0).programActive());
+        auto touched = [&](double x, double y) {
+            for (const auto& [px, py] : reached)
+                if (std::abs(px - x) < 1e-6 && std::abs(py - y) < 1e-6) return true;
+            return false;
+        };
+        QVERIFY2(touched(25, 0), "the line ends at the rounding's first tangent point");
+        QVERIFY2(touched(30, 5), "the arc ends at the second tangent point");
+        QVERIFY2(!touched(30, 0), "the sharp source corner is never reached");
+        QVERIFY(touched(30, 30));
+        QVERIFY2(enhancedShown, "the inserted arc block shows as N....:0001");
+    }
+
+    void theRestartSearchesTheCompiledProgram() {
+        PanelFixture panel(options());
+        selectCompiled(panel, 5);
+        panel.press(Qt::Key_F1, Qt::ShiftModifier);  // M key NC program restart
+        QCOMPARE(panel.window->currentScreenName(), QString("restart"));
+        auto* listing = child<QListView>(panel, "restart", "restartListing");
+        QVERIFY(listing && listing->model());
+        QString text;
+        for (int row = 0; row < listing->model()->rowCount(); ++row)
+            text += listing->model()->index(row, 0).data().toString() + "\n";
+        QVERIFY2(text.contains(QRegularExpression("N0002:0001")), qPrintable(text));
+        QVERIFY2(!text.contains("ROUND"), qPrintable(text));  // no macro left in the object
+    }
+
+    void startIsRefusedWithCompilerErrors() {
+        PanelFixture panel(options());
+        selectCompiled(panel, 6);
+        QVERIFY2(directoryRow(panel, 6).contains("[E]"), qPrintable(directoryRow(panel, 6)));
+        panel.press(Qt::Key_F5, Qt::ShiftModifier);  // Start
+        const auto& control = panel.session->control(0);
+        QVERIFY(!control.programActive());
+        QCOMPARE(control.selectedProgram(), 6);
+        QCOMPARE(panel.session->machine(0).position(0), 0.0);
+        auto* alarm = panel.window->findChild<QLabel*>("headerAlarm");
+        QTRY_VERIFY2(alarm->text().contains("program 6 has compiler errors") &&
+                         alarm->text().contains("see error window"),
+                     qPrintable(alarm->text()));
+        // No runtime program: the restart refuses as well.
+        QVERIFY(!panel.session->store().findRuntime(control.process(), 6));
+        panel.press(Qt::Key_F1, Qt::ShiftModifier);  // M key NC program restart
+        QCOMPARE(panel.window->currentScreenName(), QString("restart"));
+        auto* message = child<QLabel>(panel, "restart", "restartMessage");
+        QTRY_VERIFY2(message->text().contains("compiler errors"), qPrintable(message->text()));
+    }
+
+    void aRuntimeErrorLeadsToTheSourceLine() {
+        PanelFixture panel(options());
+        selectCompiled(panel, 7);
+        QVERIFY(directoryRow(panel, 7).contains("[C]"));
+        panel.session->clock(0).setSpeed(1000);
+        panel.press(Qt::Key_F5, Qt::ShiftModifier);  // Start
+        QTRY_VERIFY(!panel.session->control(0).programActive());
+        panel.window->showScreen("errors");
+        auto* list = child<QListWidget>(panel, "errors", "errorList");
+        QTRY_VERIFY(list->count() >= 1);
+        const QString text = list->item(list->count() - 1)->text();
+        QVERIFY2(text.contains("runtime") && text.contains("P007") && text.contains("N0003"),
+                 qPrintable(text));
+        list->setCurrentRow(list->count() - 1);
+        panel.press(Qt::Key_Return);
+        QCOMPARE(panel.window->currentScreenName(), QString("editor"));
+        auto* edit = child<QPlainTextEdit>(panel, "editor", "programEditor");
+        QCOMPARE(edit->textCursor().block().text(), QString("N0003 T999"));
+        QCOMPARE(edit->textCursor().blockNumber() + 1, 14);
+        // The run was the compiled program, whose T999 sits on another line.
+        QVERIFY(panel.session->store().findRuntime(panel.session->control(0).process(), 7));
+        QFile object(QDir(dir_.path()).filePath("N1010007.NCO"));
+        QVERIFY(object.open(QIODevice::ReadOnly));
+        const QStringList objectLines = QString::fromUtf8(object.readAll()).split('\n');
+        int objectLine = 0;
+        for (int i = 0; i < objectLines.size() && objectLine == 0; ++i)
+            if (objectLines[i].startsWith("N0003") && objectLines[i].contains("T999"))
+                objectLine = i + 1;
+        QVERIFY2(objectLine > 14, qPrintable(objectLines.join(" | ")));
+    }
+};
+
+QTEST_MAIN(CompiledRunTest)
+#include "test_compiled_run.moc"
