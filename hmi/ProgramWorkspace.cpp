@@ -7,6 +7,7 @@
 #include <QRegularExpression>
 
 #include "cnc_core/compiler/CompilerFiles.h"
+#include "cnc_core/compiler/GlobalMacroFile.h"
 #include "cnc_core/compiler/lookahead/LookAheadPass.h"
 #include "cnc_core/language/Parser.h"
 #include "cnc_core/program/AtomicWrite.h"
@@ -40,6 +41,7 @@ ProgramWorkspace::ProgramWorkspace(CellSession* session, int slot, QObject* pare
       lookAhead_(std::make_shared<mtc::core::lookahead::LookAheadAnalysis>()),
       compiler_(passesCapturing(lookAhead_)) {
     loadErrorFiles();
+    loadGlobalMacros();
     connect(session_, &CellSession::processChanged, this, [this](int changed) {
         if (changed == slot_) watchRuntime();
     });
@@ -112,8 +114,27 @@ mtc::core::CompilerOptions ProgramWorkspace::compilerOptions(int number) const {
     options.compilerActive = compilerActive_;
     options.process = &session_->processConfig(slot_);
     options.programNumber = number;
+    options.globalMacros = globalMacros_;
     if (auto program = session_->program(slot_, number)) options.programName = program->name;
     return options;
+}
+
+void ProgramWorkspace::loadGlobalMacros() {
+    const QString directory = session_->programDirectory();
+    if (directory.isEmpty()) return;  // built-in demo programs: no NC options file
+    const mtc::core::MacroFileContents contents =
+        mtc::core::readGlobalMacroFile(directory.toStdString());
+    globalMacros_ = contents.macros;
+    for (const mtc::core::MacroFileProblem& problem : contents.problems) {
+        ErrorEntry entry;
+        entry.code = "GLOBAL_MACRO_REFUSED";
+        entry.line = problem.line;
+        entry.message = QString("%1 line %2: %3")
+                            .arg(mtc::core::kGlobalMacroFileName)
+                            .arg(problem.line)
+                            .arg(QString::fromStdString(problem.message));
+        errors_.add(entry);
+    }
 }
 
 CompileStatus ProgramWorkspace::status(int number) const {

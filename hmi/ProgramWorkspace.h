@@ -102,6 +102,9 @@ class ProgramWorkspace : public QObject {
     void programChanged(int number);
 
   private:
+    /// Global macros of the NC options from the program directory's
+    /// GLOBAL_MACROS.MAC (GM-005); refused lines go to the error window.
+    void loadGlobalMacros();
     void watchRuntime();
     std::string prepareOne(int number);
     void mapToSource(ErrorEntry& entry) const;
@@ -116,6 +119,7 @@ class ProgramWorkspace : public QObject {
     std::shared_ptr<mtc::core::lookahead::LookAheadAnalysis> lookAhead_;  ///< filled by the pass
     mtc::core::Compiler compiler_;
     bool compilerActive_ = false;
+    std::vector<mtc::core::MacroDefinition> globalMacros_;
     QMap<int, mtc::core::CompileStatus> status_;
     QMap<int, std::shared_ptr<const mtc::core::CompileResult>> results_;
     QMap<int, VelocityProfile> profiles_;

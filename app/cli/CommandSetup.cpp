@@ -4,6 +4,7 @@
 #include <string>
 
 #include "cli/MachineSetup.h"
+#include "cnc_core/compiler/GlobalMacroFile.h"
 
 namespace mtc::cli {
 
@@ -72,8 +73,16 @@ std::optional<CommandSetup> prepareCommand(const CliOptions& options,
     if (!machine) return std::nullopt;
     if (options.processGiven && !checkProcessExists(*machine, options.process, diagnostics))
         return std::nullopt;
-    CommandSetup setup{std::move(*machine), {}};
+    CommandSetup setup{std::move(*machine), {}, {}};
     if (!loadProgramMemory(options.programsDir, setup.programs, diagnostics)) return std::nullopt;
+    if (!options.programsDir.empty()) {
+        core::MacroFileContents macros = core::readGlobalMacroFile(options.programsDir);
+        for (const core::MacroFileProblem& problem : macros.problems)
+            diagnostics.warning("GLOBAL_MACRO_REFUSED", {0, "", problem.line, 0},
+                                std::string(core::kGlobalMacroFileName) + " line " +
+                                    std::to_string(problem.line) + ": " + problem.message);
+        setup.globalMacros = std::move(macros.macros);
+    }
     return setup;
 }
 

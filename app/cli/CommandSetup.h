@@ -4,6 +4,7 @@
 
 #include "cli/CliOptions.h"
 #include "cli/ProgramMemory.h"
+#include "cnc_core/compiler/CompilerTypes.h"
 #include "cnc_core/language/Diagnostic.h"
 #include "cnc_core/machine/MachineConfig.h"
 #include "cnc_core/program/ProgramStore.h"
@@ -15,6 +16,9 @@ namespace mtc::cli {
 struct CommandSetup {
     core::MachineConfig machine;
     ProgramMemory programs;
+    /// Global macros of the NC options: GLOBAL_MACROS.MAC of --programs
+    /// (GM-005); none for the built-in demo programs.
+    std::vector<core::MacroDefinition> globalMacros;
 };
 
 /// Loads machine (--machine or the demo cell) and program directory

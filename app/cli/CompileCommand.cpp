@@ -106,6 +106,7 @@ int runCompileCommand(const CliOptions& options) {
     compilerOptions.process = setup->machine.process(request.process);
     compilerOptions.programNumber = request.number;
     compilerOptions.programName = request.displayName;
+    compilerOptions.globalMacros = setup->globalMacros;
     CompileOutcome outcome;
     core::UserCompilerSlots slots;
     for (const std::string& entry : options.userCompilers) {

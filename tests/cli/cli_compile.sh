@@ -70,6 +70,18 @@ expect_rc 1 "check reports compiler errors" --json check "$TEST_TMP/N0010005.DAT
 json_check "check has COMPILER_ codes" 'any(x["code"] == "COMPILER_CFRD_NO_TARGET" and x["block"] == "N0020" for x in d["diagnostics"])'
 expect_rc 0 "check of a compilable program" check "$TEST_TMP/N0010001.DAT"
 
+# global macros of the NC options: GLOBAL_MACROS.MAC of --programs (GM-005)
+mkdir -p "$TEST_TMP/gm"
+printf 'N0000 G0 G17 G90 X0 Y0\nN0001 G1 F500 X10\nN0002 SLOTFEED Y20\nN0003 M30\n' >"$TEST_TMP/gm/N0010007.DAT"
+printf 'N0000 G0 X0\nN0001 NOSUCHMAC Y20\nN0002 M30\n' >"$TEST_TMP/gm/N0010008.DAT"
+printf '; NC options\nDEFINE SLOTFEED AS F250 G1\nDEFINE 1BAD AS X1\n' >"$TEST_TMP/gm/GLOBAL_MACROS.MAC"
+expect_rc 0 "compile with a global macro" compile --programs "$TEST_TMP/gm" 7
+grep -q "^N0002:0000 F250 G1 Y20$" "$TEST_TMP/gm/N0010007.NCO" && pass "global macro expanded in the object" || fail "global macro expanded in the object"
+text_check "refused macro line named" "GLOBAL_MACRO_REFUSED"
+expect_rc 0 "check accepts a global macro name" check --programs "$TEST_TMP/gm" 7
+expect_rc 1 "check still refuses an unknown word" check --programs "$TEST_TMP/gm" 8
+text_check "unknown word named" "NOSUCHMAC"
+
 # hostile input: never a crash or a hang
 head -c 20000 /dev/urandom >"$TEST_TMP/garbage.DAT"
 cli compile "$TEST_TMP/garbage.DAT"

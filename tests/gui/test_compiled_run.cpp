@@ -56,6 +56,15 @@ const char* kRuntimeFault =
     "N0004 M30\n"
     "N0005 PROGRAMMENDE\n";
 
+/// The corner of kRoundedCorner rounded by the global macro ROUND5 of the
+/// program directory's GLOBAL_MACROS.MAC (GM-005): no DEFINE in the program.
+const char* kGlobalMacroUse =
+    "N0000 G0 G17 G90 X0 Y0 Z0\n"
+    "N0001 G1 X30 Y0 F2000 ROUND5\n"
+    "N0002 G1 X30 Y30\n"
+    "N0003 M30\n"
+    "N0004 PROGRAMMENDE\n";
+
 /// Puts the program directory's cursor on program `number`.
 void pickProgram(PanelFixture& panel, int number) {
     panel.window->showScreen("programs");
@@ -85,6 +94,10 @@ class CompiledRunTest : public QObject {
         writeProgram(dir, 5, header(5, "Rounded corner") + kRoundedCorner);
         writeProgram(dir, 6, header(6, "Broken rounding") + kBrokenRounding);
         writeProgram(dir, 7, header(7, "Runtime fault") + kRuntimeFault);
+        writeProgram(dir, 8, header(8, "Global macro") + kGlobalMacroUse);
+        QFile macros(dir.filePath("GLOBAL_MACROS.MAC"));
+        if (macros.open(QIODevice::WriteOnly))
+            macros.write("; NC options of the test cell\nDEFINE ROUND5 AS RD5\nDEFINE 9X AS X9\n");
         mtc::hmi::PanelOptions o;
         o.programsDir = dir_.path();
         return o;
@@ -101,6 +114,18 @@ class CompiledRunTest : public QObject {
 
   private slots:
     void initTestCase() { useTestSettings(); }
+
+    void aGlobalMacroOfTheProgramDirectoryIsExpanded() {
+        PanelFixture panel(options());
+        selectCompiled(panel, 8);
+        QVERIFY2(directoryRow(panel, 8).contains("[C]"), qPrintable(directoryRow(panel, 8)));
+        QFile object(QDir(dir_.path()).filePath("N1010008.NCO"));
+        QVERIFY(object.open(QIODevice::ReadOnly));
+        const QString text = QString::fromLatin1(object.readAll());
+        QVERIFY2(text.contains("N0001:0000 G1 X25 Y0 F2000"), qPrintable(text));
+        QVERIFY2(text.contains("N0001:0001 G3 X30 Y5 I25 J5"), qPrintable(text));
+        QVERIFY(!text.contains("ROUND5"));
+    }
 
     void aCompiledProgramRunsItsTangentPoints() {
         PanelFixture panel(options());
