@@ -3,6 +3,7 @@
 #include <QApplication>
 #include <QDir>
 #include <QFile>
+#include <QListView>
 #include <QStandardPaths>
 #include <QTest>
 #include <memory>
@@ -12,6 +13,7 @@
 #include "hmi/PanelWindow.h"
 #include "hmi/ScreenRegistry.h"
 #include "screens/ScreenCatalog.h"
+#include "screens/programs/ProgramDirectoryModel.h"
 
 /// The real panel on the built-in demo cell, shown and active, for QtTest.
 struct PanelFixture {
@@ -55,4 +57,30 @@ inline void writeProgram(const QDir& dir, int number, const QString& text) {
 template <typename T>
 T* child(PanelFixture& panel, const char* screen, const char* name) {
     return panel.window->screen(0, screen)->findChild<T*>(name);
+}
+
+/// Header lines of test program `number` (plant 1, package 01, process 0)
+/// with `title`; the blocks follow.
+inline QString programHeader(int number, const char* title) {
+    return QString(
+               "iMTc/01%1/01.00/0000000000/21.11.2026/15:00:00/N1010%1.DAT/1\n"
+               "%NPG:1:01:0:%1\n!01.00\n#01%2\n$\n$\n$\n$\n*%2\n%NPG\n")
+        .arg(number, 3, 10, QChar('0'))
+        .arg(title);
+}
+
+/// Shows the program directory and puts its cursor on program `number`.
+inline void pickProgram(PanelFixture& panel, int number) {
+    panel.window->showScreen("programs");
+    auto* list = child<QListView>(panel, "programs", "programList");
+    const auto* model = qobject_cast<const mtc::screens::ProgramDirectoryModel*>(list->model());
+    QVERIFY(model && model->rowOf(number) >= 0);
+    list->setCurrentIndex(model->index(model->rowOf(number)));
+}
+
+/// The program directory's row text of program `number` (with its N/C/E).
+inline QString directoryRow(PanelFixture& panel, int number) {
+    auto* list = child<QListView>(panel, "programs", "programList");
+    const auto* model = qobject_cast<const mtc::screens::ProgramDirectoryModel*>(list->model());
+    return model->index(model->rowOf(number)).data().toString();
 }

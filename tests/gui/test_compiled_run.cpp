@@ -21,14 +21,6 @@
 
 namespace {
 
-QString header(int number, const char* title) {
-    return QString(
-               "iMTc/01%1/01.00/0000000000/21.11.2026/15:00:00/N1010%1.DAT/1\n"
-               "%NPG:1:01:0:%1\n!01.00\n#01%2\n$\n$\n$\n$\n*%2\n%NPG\n")
-        .arg(number, 3, 10, QChar('0'))
-        .arg(title);
-}
-
 /// A corner X30 Y0 rounded with radius 5 through a macro: the compiled path
 /// touches (25, 0) and (30, 5), the source path only the corner (30, 0).
 const char* kRoundedCorner =
@@ -65,21 +57,6 @@ const char* kGlobalMacroUse =
     "N0003 M30\n"
     "N0004 PROGRAMMENDE\n";
 
-/// Puts the program directory's cursor on program `number`.
-void pickProgram(PanelFixture& panel, int number) {
-    panel.window->showScreen("programs");
-    auto* list = child<QListView>(panel, "programs", "programList");
-    const auto* model = qobject_cast<const mtc::screens::ProgramDirectoryModel*>(list->model());
-    QVERIFY(model && model->rowOf(number) >= 0);
-    list->setCurrentIndex(model->index(model->rowOf(number)));
-}
-
-QString directoryRow(PanelFixture& panel, int number) {
-    auto* list = child<QListView>(panel, "programs", "programList");
-    const auto* model = qobject_cast<const mtc::screens::ProgramDirectoryModel*>(list->model());
-    return model->index(model->rowOf(number)).data().toString();
-}
-
 }  // namespace
 
 class CompiledRunTest : public QObject {
@@ -91,10 +68,10 @@ class CompiledRunTest : public QObject {
         QDir dir(dir_.path());
         for (const QString& name : dir.entryList(QDir::Files))
             dir.remove(name);
-        writeProgram(dir, 5, header(5, "Rounded corner") + kRoundedCorner);
-        writeProgram(dir, 6, header(6, "Broken rounding") + kBrokenRounding);
-        writeProgram(dir, 7, header(7, "Runtime fault") + kRuntimeFault);
-        writeProgram(dir, 8, header(8, "Global macro") + kGlobalMacroUse);
+        writeProgram(dir, 5, programHeader(5, "Rounded corner") + kRoundedCorner);
+        writeProgram(dir, 6, programHeader(6, "Broken rounding") + kBrokenRounding);
+        writeProgram(dir, 7, programHeader(7, "Runtime fault") + kRuntimeFault);
+        writeProgram(dir, 8, programHeader(8, "Global macro") + kGlobalMacroUse);
         QFile macros(dir.filePath("GLOBAL_MACROS.MAC"));
         if (macros.open(QIODevice::WriteOnly))
             macros.write("; NC options of the test cell\nDEFINE ROUND5 AS RD5\nDEFINE 9X AS X9\n");

@@ -25,14 +25,6 @@
 
 namespace {
 
-QString header(int number, const char* title) {
-    return QString(
-               "iMTc/01%1/01.00/0000000000/21.11.2026/15:00:00/N1010%1.DAT/1\n"
-               "%NPG:1:01:0:%1\n!01.00\n#01%2\n$\n$\n$\n$\n*%2\n%NPG\n")
-        .arg(number, 3, 10, QChar('0'))
-        .arg(title);
-}
-
 /// Source lines 11.. after the 10 header lines.
 const char* kMacroProgram =
     "N0000 G0 G17 G90 X0 Y0 Z5\n"
@@ -68,21 +60,6 @@ const char* kLookAheadProgram =
     "N0009 M30\n"
     "N0010 PROGRAMMENDE\n";
 
-/// Puts the program directory's cursor on program `number`.
-void pickProgram(PanelFixture& panel, int number) {
-    panel.window->showScreen("programs");
-    auto* list = child<QListView>(panel, "programs", "programList");
-    const auto* model = qobject_cast<const mtc::screens::ProgramDirectoryModel*>(list->model());
-    QVERIFY(model && model->rowOf(number) >= 0);
-    list->setCurrentIndex(model->index(model->rowOf(number)));
-}
-
-QString directoryRow(PanelFixture& panel, int number) {
-    auto* list = child<QListView>(panel, "programs", "programList");
-    const auto* model = qobject_cast<const mtc::screens::ProgramDirectoryModel*>(list->model());
-    return model->index(model->rowOf(number)).data().toString();
-}
-
 }  // namespace
 
 class EditorScreenTest : public QObject {
@@ -94,10 +71,10 @@ class EditorScreenTest : public QObject {
         QDir dir(dir_.path());
         for (const QString& name : dir.entryList(QDir::Files))
             dir.remove(name);
-        writeProgram(dir, 5, header(5, "Macro test") + kMacroProgram);
-        writeProgram(dir, 6, header(6, "No keyword") + kPlainProgram);
-        writeProgram(dir, 7, header(7, "Chamfer test") + kChamferProgram);
-        writeProgram(dir, 8, header(8, "Look-ahead test") + kLookAheadProgram);
+        writeProgram(dir, 5, programHeader(5, "Macro test") + kMacroProgram);
+        writeProgram(dir, 6, programHeader(6, "No keyword") + kPlainProgram);
+        writeProgram(dir, 7, programHeader(7, "Chamfer test") + kChamferProgram);
+        writeProgram(dir, 8, programHeader(8, "Look-ahead test") + kLookAheadProgram);
         mtc::hmi::PanelOptions o;
         o.programsDir = dir_.path();
         return o;
@@ -343,7 +320,7 @@ class EditorScreenTest : public QObject {
                         .arg(i % 10000, 4, 10, QChar('0'))
                         .arg(i % 97)
                         .arg(i % 89);
-        const QString original = header(9, "Large") + body;
+        const QString original = programHeader(9, "Large") + body;
         mtc::hmi::PanelOptions o = options();
         QDir dir(dir_.path());
         writeProgram(dir, 9, original);

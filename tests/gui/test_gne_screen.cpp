@@ -27,14 +27,6 @@
 
 namespace {
 
-QString header(int number, const char* title) {
-    return QString(
-               "iMTc/01%1/01.00/0000000000/21.11.2026/15:00:00/N1010%1.DAT/1\n"
-               "%NPG:1:01:0:%1\n!01.00\n#01%2\n$\n$\n$\n$\n*%2\n%NPG\n")
-        .arg(number, 3, 10, QChar('0'))
-        .arg(title);
-}
-
 /// Line 11 is the first block, line 12 is empty: the GNE section goes there.
 const char* kEmptyProgram =
     "N0000 G0 G17 G90 X-20 Y-20 Z50\n\nN0001 G0 Z50\nN0002 M30\n"
@@ -147,8 +139,8 @@ class GneScreenTest : public QObject {
         QDir dir(dir_.path());
         for (const QString& name : dir.entryList(QDir::Files))
             dir.remove(name);
-        writeProgram(dir, 8, header(8, "GNE new") + kEmptyProgram);
-        writeProgram(dir, 9, header(9, "GNE section") + kSectionProgram);
+        writeProgram(dir, 8, programHeader(8, "GNE new") + kEmptyProgram);
+        writeProgram(dir, 9, programHeader(9, "GNE section") + kSectionProgram);
         mtc::hmi::PanelOptions o;
         o.programsDir = dir_.path();
         return o;
