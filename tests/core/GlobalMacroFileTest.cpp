@@ -5,9 +5,9 @@
 #include <fstream>
 #include <random>
 
+#include "CompilerTestSupport.h"
 #include "cnc_core/compiler/Compiler.h"
 #include "cnc_core/compiler/GlobalMacroFile.h"
-#include "CompilerTestSupport.h"
 
 namespace fs = std::filesystem;
 using namespace mtc::core;
@@ -156,8 +156,7 @@ TEST(MdiLine, DefinitionsAndOtherCompilerKeywordsAreRefused) {
 TEST(GlobalMacroFile, MacrosReadFromTheFileAreExpandedByTheCompiler) {
     const MacroFileContents contents = parseGlobalMacroFile("DEFINE FAST AS G1 F5000\n");
     ASSERT_EQ(contents.macros.size(), 1u);
-    const CompileResult result =
-        mtc::test::compileText("N0001 FAST X10\n", contents.macros);
+    const CompileResult result = mtc::test::compileText("N0001 FAST X10\n", contents.macros);
     EXPECT_EQ(result.status, CompileStatus::Compiled);
     EXPECT_NE(result.objectText.find("G1 F5000 X10"), std::string::npos) << result.objectText;
 }
