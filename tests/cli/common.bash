@@ -52,7 +52,7 @@ sys.exit(0 if ('"$expr"') else 1)' 2>"$TEST_TMP/pyerr"; then
 
 # text_check NAME PATTERN: passes when stdout+stderr match the grep pattern.
 text_check() {
-  if printf '%s\n%s' "$OUT" "$ERR" | grep -q -- "$2"; then pass "$1"; else fail "$1: no '$2'"; fi
+  if printf '%s\n%s' "$OUT" "$ERR" | grep -- "$2" >/dev/null; then pass "$1"; else fail "$1: no '$2'"; fi
 }
 
 # finish: prints the summary line and sets the exit code.
