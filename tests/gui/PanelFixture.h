@@ -46,6 +46,15 @@ inline void useTestSettings() {
     QApplication::setApplicationName("mtc200-panel-test");
 }
 
+/// The directory at `path` with its files removed (each test case starts
+/// from its own programs only).
+inline QDir emptiedDirectory(const QString& path) {
+    QDir dir(path);
+    for (const QString& name : dir.entryList(QDir::Files))
+        dir.remove(name);
+    return dir;
+}
+
 /// Writes NC program `number` of plant 1, package 01, process 0 into `dir`.
 inline void writeProgram(const QDir& dir, int number, const QString& text) {
     QFile file(dir.filePath(QString("N1010%1.DAT").arg(number, 3, 10, QChar('0'))));

@@ -65,9 +65,7 @@ class CompiledRunTest : public QObject {
     QTemporaryDir dir_;
 
     mtc::hmi::PanelOptions options() {
-        QDir dir(dir_.path());
-        for (const QString& name : dir.entryList(QDir::Files))
-            dir.remove(name);
+        const QDir dir = emptiedDirectory(dir_.path());
         writeProgram(dir, 5, programHeader(5, "Rounded corner") + kRoundedCorner);
         writeProgram(dir, 6, programHeader(6, "Broken rounding") + kBrokenRounding);
         writeProgram(dir, 7, programHeader(7, "Runtime fault") + kRuntimeFault);

@@ -68,9 +68,7 @@ class EditorScreenTest : public QObject {
     QTemporaryDir dir_;
 
     mtc::hmi::PanelOptions options() {
-        QDir dir(dir_.path());
-        for (const QString& name : dir.entryList(QDir::Files))
-            dir.remove(name);
+        const QDir dir = emptiedDirectory(dir_.path());
         writeProgram(dir, 5, programHeader(5, "Macro test") + kMacroProgram);
         writeProgram(dir, 6, programHeader(6, "No keyword") + kPlainProgram);
         writeProgram(dir, 7, programHeader(7, "Chamfer test") + kChamferProgram);

@@ -136,9 +136,7 @@ class GneScreenTest : public QObject {
     QTemporaryDir dir_;
 
     mtc::hmi::PanelOptions options() {
-        QDir dir(dir_.path());
-        for (const QString& name : dir.entryList(QDir::Files))
-            dir.remove(name);
+        const QDir dir = emptiedDirectory(dir_.path());
         writeProgram(dir, 8, programHeader(8, "GNE new") + kEmptyProgram);
         writeProgram(dir, 9, programHeader(9, "GNE section") + kSectionProgram);
         mtc::hmi::PanelOptions o;
