@@ -5,6 +5,7 @@
 
 #include "cnc_core/compiler/CompilerText.h"
 #include "cnc_core/compiler/MacroPass.h"
+#include "cnc_core/compiler/NameScan.h"
 #include "cnc_core/language/Keywords.h"
 #include "cnc_core/program/AtomicWrite.h"
 
@@ -27,25 +28,18 @@ MacroTable tableOf(const std::vector<MacroDefinition>& macros, std::string_view 
     return table;
 }
 
-/// First compiler keyword used in `text` outside the comment ("" = none).
+/// First compiler keyword used in `text` outside the comment and outside
+/// free texts ("" = none); the names the macro pass looks at.
 std::string compilerKeywordIn(std::string_view text) {
-    const std::size_t end = commentOffset(text);
-    std::size_t i = 0;
-    while (i < end) {
-        if (!isNameChar(text[i])) {
-            ++i;
-            continue;
-        }
-        const std::size_t start = i;
-        while (i < end && isNameChar(text[i]))
-            ++i;
-        const char before = start > 0 ? text[start - 1] : ' ';
-        if (before == '.' || before == '@' || before == '*') continue;
-        const KeywordClass kind = lookupKeyword(text.substr(start, i - start)).keywordClass;
+    std::string found;
+    forEachName(text, [&](std::size_t begin, std::size_t end) {
+        if (!found.empty()) return;
+        const std::string_view name = text.substr(begin, end - begin);
+        const KeywordClass kind = lookupKeyword(name).keywordClass;
         if (kind == KeywordClass::CompilerCommand || kind == KeywordClass::CompilerRestOfBlock)
-            return std::string(text.substr(start, i - start));
-    }
-    return {};
+            found = std::string(name);
+    });
+    return found;
 }
 
 /// Splits "DEFINE name AS body"; false when the line does not have that form.

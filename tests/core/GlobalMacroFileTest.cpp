@@ -151,6 +151,8 @@ TEST(MdiLine, DefinitionsAndOtherCompilerKeywordsAreRefused) {
     EXPECT_NE(problem.find("LA_ON"), std::string::npos);
     // a comment may name anything
     EXPECT_TRUE(expandMdiLine("G0 X1 ;LA_ON", kTwo, expanded, problem));
+    // A free text in brackets is no keyword use (the macro pass's name scan).
+    EXPECT_TRUE(expandMdiLine("G0 X1 (LA_ON LATER)", kTwo, expanded, problem)) << problem;
 }
 
 TEST(GlobalMacroFile, MacrosReadFromTheFileAreExpandedByTheCompiler) {

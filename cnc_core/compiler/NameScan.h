@@ -1,0 +1,63 @@
+#pragma once
+
+#include <string_view>
+#include <vector>
+
+#include "cnc_core/compiler/CompilerText.h"
+#include "cnc_core/language/Keywords.h"
+
+namespace mtc::core {
+
+/// A-Z only (names start with a capital letter).
+inline bool isLetter(char c) {
+    return c >= 'A' && c <= 'Z';
+}
+
+/// Calls `visit(begin, end)` for every name in `text` that may be a macro:
+/// a run of A-Z 0-9 _ starting with a letter, not after '.', '*' or '@',
+/// outside the comment and outside free texts (a bracket not directly
+/// after a name, e.g. "(TOOL CHANGE)"); inside keyword arguments
+/// ("MODF_ON(QUICK)", "MTD(...)") names count.
+template <typename Visit>
+void forEachName(std::string_view text, Visit visit) {
+    const std::size_t end = commentOffset(text);
+    std::vector<bool> freeText;  // open brackets: true = a free text
+    std::string_view lastName;   // the name before a bracket
+    bool blankAfterName = false;
+    std::size_t i = 0;
+    while (i < end) {
+        const char c = text[i];
+        if (c == '(' || c == '[') {
+            const bool arguments =
+                !lastName.empty() &&
+                (!blankAfterName || lookupKeyword(lastName).keywordClass != KeywordClass::None);
+            freeText.push_back(freeText.empty() ? !arguments : freeText.back());
+            lastName = {};
+            ++i;
+            continue;
+        }
+        if (!isNameChar(c)) {
+            if (c == ')' || c == ']') {
+                if (!freeText.empty()) freeText.pop_back();
+                lastName = {};
+            } else if (c == ' ') {
+                blankAfterName = true;
+            } else {
+                lastName = {};
+            }
+            ++i;
+            continue;
+        }
+        const std::size_t start = i;
+        while (i < end && isNameChar(text[i]))
+            ++i;
+        const char before = start > 0 ? text[start - 1] : ' ';
+        const bool inFreeText = !freeText.empty() && freeText.back();
+        if (!inFreeText && isLetter(text[start]) && before != '.' && before != '*' && before != '@')
+            visit(start, i);
+        lastName = text.substr(start, i - start);
+        blankAfterName = false;
+    }
+}
+
+}  // namespace mtc::core
