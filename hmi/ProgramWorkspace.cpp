@@ -67,15 +67,17 @@ std::string ProgramWorkspace::prepareOne(int number) {
         store.putRuntime(process, number, nullptr);
         running_.remove(number);
     };
-    if (!compilerActive_ || status(number) == CompileStatus::NotNeeded) {
+    CompileStatus current = compilerActive_ ? status(number) : CompileStatus::NotNeeded;
+    if (current == CompileStatus::NotNeeded) {
         runSource();
         return {};
     }
-    if (status(number) == CompileStatus::NotCompiled) {
+    if (current == CompileStatus::NotCompiled) {
         QString ignored;  // compile() only refuses cases excluded above
         compile(number, ignored);
+        current = status(number);
     }
-    const auto result = status(number) == CompileStatus::Compiled ? runtimeResult(number) : nullptr;
+    const auto result = current == CompileStatus::Compiled ? runtimeResult(number) : nullptr;
     if (!result) {
         runSource();
         return QString("Start refused: program %1 has compiler errors \u2014 see error window")
@@ -137,12 +139,24 @@ void ProgramWorkspace::loadGlobalMacros() {
     }
 }
 
+bool ProgramWorkspace::needsCompiling(int number, const mtc::core::ProgramPtr& program) const {
+    if (program->usesCompilerKeywords) return true;
+    if (globalMacros_.empty()) return false;
+    // With global macros every block text is searched: once per program version.
+    NeedsCompiling& known = needsCompiling_[number];
+    const auto same = known.program.lock();
+    if (same != program) {
+        mtc::core::CompilerOptions options = compilerOptions(number);
+        options.compilerActive = true;  // the bit says whether it needs compiling
+        known = {program, mtc::core::needsCompilation(*program, options)};
+    }
+    return known.needed;
+}
+
 CompileStatus ProgramWorkspace::status(int number) const {
     const auto program = session_->program(slot_, number);
     if (!program) return CompileStatus::NotNeeded;
-    mtc::core::CompilerOptions options = compilerOptions(number);
-    options.compilerActive = true;  // the bit says whether it needs compiling
-    if (!mtc::core::needsCompilation(*program, options)) return CompileStatus::NotNeeded;
+    if (!needsCompiling(number, program)) return CompileStatus::NotNeeded;
     if (status_.contains(number)) return status_.value(number);
     return statusFromFiles(number);
 }

@@ -105,6 +105,8 @@ class ProgramWorkspace : public QObject {
     /// Global macros of the NC options from the program directory's
     /// GLOBAL_MACROS.MAC (GM-005); refused lines go to the error window.
     void loadGlobalMacros();
+    /// Compiler keywords or a global macro in `program` (cached per version).
+    bool needsCompiling(int number, const mtc::core::ProgramPtr& program) const;
     void watchRuntime();
     std::string prepareOne(int number);
     void mapToSource(ErrorEntry& entry) const;
@@ -120,6 +122,11 @@ class ProgramWorkspace : public QObject {
     mtc::core::Compiler compiler_;
     bool compilerActive_ = false;
     std::vector<mtc::core::MacroDefinition> globalMacros_;
+    struct NeedsCompiling {
+        std::weak_ptr<const mtc::core::Program> program;
+        bool needed = false;
+    };
+    mutable QMap<int, NeedsCompiling> needsCompiling_;
     QMap<int, mtc::core::CompileStatus> status_;
     QMap<int, std::shared_ptr<const mtc::core::CompileResult>> results_;
     QMap<int, VelocityProfile> profiles_;
