@@ -41,6 +41,9 @@ class ProgramWorkspace : public QObject {
     void setCompilerActive(bool active);
     /// The compiler options for program `number` (the cell's process, macros).
     mtc::core::CompilerOptions compilerOptions(int number) const;
+    /// The station's global macros of the NC options (valid in every program
+    /// and in MDI, seed 001 ch. 4).
+    const std::vector<mtc::core::MacroDefinition>& globalMacros() const { return globalMacros_; }
 
     /// Status bit of program `number`: ' ' (no keyword), N, C or E.
     mtc::core::CompileStatus status(int number) const;
