@@ -8,6 +8,7 @@
 #include "cnc_core/machine/SimulatedMachine.h"
 #include "cnc_core/machine_data/MachineDataFile.h"
 #include "cnc_core/machine_data/MachineDataStore.h"
+#include "hmi/NcOptionsHolder.h"
 #include "hmi/SimulationClock.h"
 
 namespace mtc::hmi {
@@ -58,6 +59,12 @@ CellSession::CellSession(mtc::core::MachineConfig config, QObject* parent)
         if (machineDataUnsaved() && machineDataWritable_ && !saveTimer_.isActive())
             saveTimer_.start();
     });
+    ncOptions_ = std::make_unique<NcOptionsHolder>(this);
+}
+
+void CellSession::setProgramDirectory(const QString& directory) {
+    programDirectory_ = directory;
+    ncOptions_->load(directory);
 }
 
 CellSession::~CellSession() {

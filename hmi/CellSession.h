@@ -25,6 +25,7 @@ class SimulatedMachine;
 namespace mtc::hmi {
 
 class SimulationClock;
+class NcOptionsHolder;
 
 /// The simulated cell behind the panel: machine configuration, program
 /// memory (parsed programs), and per process its ProcessControl, its
@@ -67,7 +68,10 @@ class CellSession : public QObject {
     /// programs: the editor and the compiler write no files for them).
     const QString& programDirectory() const { return programDirectory_; }
     /// Sets the directory programs are saved to (with .NCO/.ERR beside them).
-    void setProgramDirectory(const QString& directory) { programDirectory_ = directory; }
+    /// Also loads the cell's NC options from it (ncOptions()).
+    void setProgramDirectory(const QString& directory);
+    /// The NC options of the cell, shared by both stations (seed 001 ch. 4, 7, 8).
+    NcOptionsHolder& ncOptions() { return *ncOptions_; }
 
     /// Sends a machine control key to a station and announces the change.
     bool pressKey(int slot, mtc::core::ControlKey key);
@@ -118,6 +122,7 @@ class CellSession : public QObject {
     std::uint64_t savedRevision_ = 0;  ///< store revision the file holds
     QString autoSaveError_;
     std::vector<std::unique_ptr<Station>> stations_;
+    std::unique_ptr<NcOptionsHolder> ncOptions_;
 };
 
 }  // namespace mtc::hmi

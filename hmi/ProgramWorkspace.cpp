@@ -5,13 +5,16 @@
 #include <QFile>
 #include <QFileInfo>
 #include <QRegularExpression>
+#include <QTemporaryDir>
 
 #include "cnc_core/compiler/CompilerFiles.h"
 #include "cnc_core/compiler/GlobalMacroFile.h"
+#include "cnc_core/compiler/UserCompilers.h"
 #include "cnc_core/compiler/lookahead/LookAheadPass.h"
 #include "cnc_core/language/Parser.h"
 #include "cnc_core/program/AtomicWrite.h"
 #include "hmi/CellSession.h"
+#include "hmi/NcOptionsHolder.h"
 #include "hmi/SimulationClock.h"
 
 namespace mtc::hmi {
@@ -39,9 +42,14 @@ ProgramWorkspace::ProgramWorkspace(CellSession* session, int slot, QObject* pare
       session_(session),
       slot_(slot),
       lookAhead_(std::make_shared<mtc::core::lookahead::LookAheadAnalysis>()),
-      compiler_(passesCapturing(lookAhead_)) {
+      compiler_(passesCapturing(lookAhead_)),
+      options_(&session->ncOptions()) {
     loadErrorFiles();
-    loadGlobalMacros();
+    reportOptionProblems();
+    connect(options_, &NcOptionsHolder::programsInvalidated, this,
+            [this](int slot, const QList<int>& numbers) {
+                if (slot == slot_) invalidate(numbers);
+            });
     connect(session_, &CellSession::processChanged, this, [this](int changed) {
         if (changed == slot_) watchRuntime();
     });
@@ -67,7 +75,7 @@ std::string ProgramWorkspace::prepareOne(int number) {
         store.putRuntime(process, number, nullptr);
         running_.remove(number);
     };
-    CompileStatus current = compilerActive_ ? status(number) : CompileStatus::NotNeeded;
+    CompileStatus current = compilerActive() ? status(number) : CompileStatus::NotNeeded;
     if (current == CompileStatus::NotNeeded) {
         runSource();
         return {};
@@ -96,52 +104,79 @@ std::string ProgramWorkspace::prepareOne(int number) {
     return {};
 }
 
+bool ProgramWorkspace::compilerActive() const {
+    return options_->compilerActive();
+}
+
+bool ProgramWorkspace::setCompilerActive(bool active, QString& error) {
+    // The holder clears the objects of both stations (invalidate()).
+    return options_->setCompilerActive(active, error);
+}
+
+const std::vector<mtc::core::MacroDefinition>& ProgramWorkspace::globalMacros() const {
+    return options_->globalMacros();
+}
+
 void ProgramWorkspace::setCompilerActive(bool active) {
-    if (active == compilerActive_) return;
-    compilerActive_ = active;
-    // Seed 001 ch. 11: changing the compiler settings clears all objects.
-    for (const auto& program : session_->programs(slot_))
-        clearObjects(program->number);
-    results_.clear();
-    profiles_.clear();
-    status_.clear();
-    for (int number : running_.keys())  // the sources run again
-        session_->mutableStore().putRuntime(session_->processConfig(slot_).index, number, nullptr);
-    running_.clear();
+    QString ignored;
+    setCompilerActive(active, ignored);
+}
+
+void ProgramWorkspace::invalidate(const QList<int>& numbers) {
+    const int process = session_->processConfig(slot_).index;
+    for (int number : numbers) {
+        if (running_.contains(number))  // the source runs again
+            session_->mutableStore().putRuntime(process, number, nullptr);
+        clearObjects(number);
+        status_.remove(number);  // no files any more: N
+        errors_.setCompilerErrors(number, {});
+    }
+    needsCompiling_.clear();  // the global macros may have changed
     emit programChanged(0);
 }
 
 mtc::core::CompilerOptions ProgramWorkspace::compilerOptions(int number) const {
     mtc::core::CompilerOptions options;
-    options.compilerActive = compilerActive_;
+    options.compilerActive = compilerActive();
     options.process = &session_->processConfig(slot_);
     options.programNumber = number;
-    options.globalMacros = globalMacros_;
+    options.globalMacros = options_->globalMacros();
     if (auto program = session_->program(slot_, number)) options.programName = program->name;
     return options;
 }
 
-void ProgramWorkspace::loadGlobalMacros() {
-    const QString directory = session_->programDirectory();
-    if (directory.isEmpty()) return;  // built-in demo programs: no NC options file
-    const mtc::core::MacroFileContents contents =
-        mtc::core::readGlobalMacroFile(directory.toStdString());
-    globalMacros_ = contents.macros;
-    for (const mtc::core::MacroFileProblem& problem : contents.problems) {
+void ProgramWorkspace::reportOptionProblems() {
+    for (const mtc::core::NcOptionsProblem& problem : options_->loadProblems()) {
         ErrorEntry entry;
-        entry.code = "GLOBAL_MACRO_REFUSED";
+        entry.code = problem.file == mtc::core::kGlobalMacroFileName ? "GLOBAL_MACRO_REFUSED"
+                                                                     : "NC_OPTION_REFUSED";
         entry.line = problem.line;
         entry.message = QString("%1 line %2: %3")
-                            .arg(mtc::core::kGlobalMacroFileName)
+                            .arg(QString::fromStdString(problem.file))
                             .arg(problem.line)
                             .arg(QString::fromStdString(problem.message));
         errors_.add(entry);
     }
 }
 
+mtc::core::CompileResult ProgramWorkspace::runCompilers(
+    const mtc::core::Program& program, const mtc::core::CompilerOptions& options) const {
+    const mtc::core::UserCompilerSlots& chain = options_->userCompilers();
+    if (chain.empty()) return compiler_.compile(program, options);
+    // C-011: the user compilers exchange files in the program directory (a
+    // temporary one for the built-in programs).
+    QString directory = session_->programDirectory();
+    QTemporaryDir scratch;
+    if (directory.isEmpty()) directory = scratch.path();
+    return mtc::core::compileWithUserCompilers(compiler_, program.source, options, chain,
+                                               directory.toStdString());
+}
+
 bool ProgramWorkspace::needsCompiling(int number, const mtc::core::ProgramPtr& program) const {
     if (program->usesCompilerKeywords) return true;
-    if (globalMacros_.empty()) return false;
+    // Seed 001 ch. 8: a user compiler runs even without INDRAMAT keywords.
+    if (!options_->userCompilers().empty()) return true;
+    if (options_->globalMacros().empty()) return false;
     // With global macros every block text is searched: once per program version.
     NeedsCompiling& known = needsCompiling_[number];
     const auto same = known.program.lock();
@@ -172,7 +207,7 @@ std::shared_ptr<const mtc::core::CompileResult> ProgramWorkspace::runtimeResult(
     mtc::core::CompilerOptions options = compilerOptions(number);
     options.compilerActive = true;
     *lookAhead_ = {};
-    auto result = std::make_shared<mtc::core::CompileResult>(compiler_.compile(*program, options));
+    auto result = std::make_shared<mtc::core::CompileResult>(runCompilers(*program, options));
     if (result->status != CompileStatus::Compiled) return nullptr;
     profiles_[number] = profileFromAnalysis(*lookAhead_);
     results_[number] = result;
@@ -241,17 +276,17 @@ bool ProgramWorkspace::compile(int number, QString& error) {
         error = QString("program %1 does not exist").arg(number);
         return false;
     }
-    if (!compilerActive_) {
+    if (!compilerActive()) {
         error = "the compiler is not active (NC options: Compiler active = No)";
         return false;
     }
     const mtc::core::CompilerOptions options = compilerOptions(number);
-    if (!mtc::core::needsCompilation(*program, options)) {
+    if (!mtc::core::needsCompilation(*program, options) && options_->userCompilers().empty()) {
         error = "the program uses no compiler keyword: nothing to compile";
         return false;
     }
     *lookAhead_ = {};
-    auto result = std::make_shared<mtc::core::CompileResult>(compiler_.compile(*program, options));
+    auto result = std::make_shared<mtc::core::CompileResult>(runCompilers(*program, options));
     profiles_[number] = profileFromAnalysis(*lookAhead_);
     QVector<ErrorEntry> entries;
     for (const auto& e : result->errors)

@@ -17,6 +17,7 @@ struct LookAheadAnalysis;
 namespace mtc::hmi {
 
 class CellSession;
+class NcOptionsHolder;
 
 /// The NC programming side of one station (seed 001, ch. 7-11): saving
 /// edited programs, the NC options of the compiler, compiling, the N/C/E
@@ -35,15 +36,20 @@ class ProgramWorkspace : public QObject {
     int slot() const { return slot_; }
     ErrorLog& errors() { return errors_; }
 
-    /// NC option "Compiler active" (seed 001 ch. 7; preset No). Changing it
-    /// clears every object file and compile result of the station (ch. 11).
-    bool compilerActive() const { return compilerActive_; }
+    /// NC option "Compiler active" of the cell (seed 001 ch. 7; preset No;
+    /// CellSession::ncOptions()). Changing it clears every object file and
+    /// compile result of both stations (ch. 11).
+    bool compilerActive() const;
+    /// Sets "Compiler active" in the cell's NC options; false with `error`
+    /// when it was refused (a station runs, the file was not written).
+    bool setCompilerActive(bool active, QString& error);
+    /// As above, the refusal is dropped (the option stays as it was).
     void setCompilerActive(bool active);
     /// The compiler options for program `number` (the cell's process, macros).
     mtc::core::CompilerOptions compilerOptions(int number) const;
-    /// The station's global macros of the NC options (valid in every program
+    /// The cell's global macros of the NC options (valid in every program
     /// and in MDI, seed 001 ch. 4).
-    const std::vector<mtc::core::MacroDefinition>& globalMacros() const { return globalMacros_; }
+    const std::vector<mtc::core::MacroDefinition>& globalMacros() const;
 
     /// Status bit of program `number`: ' ' (no keyword), N, C or E.
     mtc::core::CompileStatus status(int number) const;
@@ -105,9 +111,15 @@ class ProgramWorkspace : public QObject {
     void programChanged(int number);
 
   private:
-    /// Global macros of the NC options from the program directory's
-    /// GLOBAL_MACROS.MAC (GM-005); refused lines go to the error window.
-    void loadGlobalMacros();
+    /// The lines of the NC options files (GLOBAL_MACROS.MAC, NC_OPTIONS.CFG)
+    /// that were refused go to the error window (GM-005, NO-002).
+    void reportOptionProblems();
+    /// The NC options made the compile results of `numbers` stale: their
+    /// files are gone (NcOptionsHolder), status N, the sources run again.
+    void invalidate(const QList<int>& numbers);
+    /// Runs the compiler chain (user compilers 1, 2, INDRAMAT, 3, 4).
+    mtc::core::CompileResult runCompilers(const mtc::core::Program& program,
+                                          const mtc::core::CompilerOptions& options) const;
     /// Compiler keywords or a global macro in `program` (cached per version).
     bool needsCompiling(int number, const mtc::core::ProgramPtr& program) const;
     void watchRuntime();
@@ -123,8 +135,7 @@ class ProgramWorkspace : public QObject {
     ErrorLog errors_;
     std::shared_ptr<mtc::core::lookahead::LookAheadAnalysis> lookAhead_;  ///< filled by the pass
     mtc::core::Compiler compiler_;
-    bool compilerActive_ = false;
-    std::vector<mtc::core::MacroDefinition> globalMacros_;
+    NcOptionsHolder* options_;  ///< the cell's NC options (owned by the session)
     struct NeedsCompiling {
         std::weak_ptr<const mtc::core::Program> program;
         bool needed = false;

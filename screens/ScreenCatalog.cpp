@@ -12,6 +12,7 @@
 #include "screens/help/HelpScreen.h"
 #include "screens/machine_data/MachineDataScreen.h"
 #include "screens/menu/MenuScreen.h"
+#include "screens/nc_options/NcOptionsScreen.h"
 #include "screens/programs/ProgramsScreen.h"
 #include "screens/restart/ReposScreen.h"
 #include "screens/restart/RestartControllers.h"
@@ -64,6 +65,9 @@ void registerAllScreens(mtc::hmi::ScreenRegistry& registry) {
             return new RuntimeScreen(c, programming->forStation(c));
         },
         false);
+    // The cell's NC options (compiler settings, global macros), NO-001.
+    registry.add("nc-options", "NC options",
+                 [](const ScreenContext& c) { return new NcOptionsScreen(c); });
     registry.add("signals", "Interface signals",
                  [](const ScreenContext& c) { return new SignalsScreen(c); });
     registry.add("machine-data", "Machine data",

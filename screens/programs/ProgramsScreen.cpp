@@ -99,9 +99,12 @@ void ProgramsScreen::compileCurrent() {
 }
 
 void ProgramsScreen::toggleCompiler() {
-    workspace_->setCompilerActive(!workspace_->compilerActive());
-    message_->setText(QString("NC options: Compiler active = %1")
-                          .arg(workspace_->compilerActive() ? "Yes" : "No"));
+    QString error;
+    if (!workspace_->setCompilerActive(!workspace_->compilerActive(), error))
+        message_->setText(error);
+    else
+        message_->setText(QString("NC options: Compiler active = %1")
+                              .arg(workspace_->compilerActive() ? "Yes" : "No"));
     emit softKeysChanged();
 }
 
@@ -126,7 +129,7 @@ mtc::hmi::SoftKeys ProgramsScreen::softKeys() {
                    workspace_->requestEdit(currentNumber(), 0);
                    emit navigateTo("runtime");
                }};
-
+    keys[4] = {"NC\noptions", [this] { emit navigateTo("nc-options"); }};
     keys[5] = {workspace_->compilerActive() ? "Compiler\nactive: Yes" : "Compiler\nactive: No",
                [this] { toggleCompiler(); }};
     keys[6] = {"Error\ndisplay", [this] { emit navigateTo("errors"); }};
