@@ -22,6 +22,7 @@ EditorScreen::EditorScreen(const mtc::hmi::ScreenContext& context,
     heading_->setObjectName("editorHeading");
     edit_ = new NcCodeEdit(this);
     edit_->setObjectName("programEditor");
+    edit_->setWindowing(true);  // ED-009: a window of a large program in the view
     edit_->installEventFilter(this);
     status_ = new QLabel(this);
     status_->setObjectName("editorStatus");
@@ -59,11 +60,11 @@ void EditorScreen::activated() {
     const auto program = context().session->program(context().process, wanted);
     const bool other = wanted != program_ || (program && program != loadedSource_);
     if (program && other) {
-        if (edit_->document()->isModified() && wanted != program_) {
+        if (edit_->isModified() && wanted != program_) {
             showMessage(QString("Program %1 has unsaved changes: Save (F1) or Discard (F7) first")
                             .arg(program_),
                         true);
-        } else if (!edit_->document()->isModified()) {
+        } else if (!edit_->isModified()) {
             open(wanted);
         }
     }
@@ -80,25 +81,25 @@ void EditorScreen::open(int number) {
     if (!program) return;
     QElapsedTimer timer;
     timer.start();
-    edit_->load(QString::fromStdString(program->source));
+    edit_->load(program->source);
     lastOpenMs_ = timer.elapsed();
     program_ = number;
     loadedSource_ = program;
     emit cursorLineChanged(program_, edit_->cursorLine());
     workspace_->requestEdit(number, workspace_->editLine());
     updateStatus();
-    showMessage(QString("%1 lines opened in %2 ms").arg(edit_->blockCount()).arg(lastOpenMs_));
+    showMessage(QString("%1 lines opened in %2 ms").arg(edit_->lineCount()).arg(lastOpenMs_));
 }
 
 bool EditorScreen::save() {
     if (program_ == 0 || edit_->loading()) return false;
     QString error;
-    if (!workspace_->save(program_, edit_->toPlainText(), error)) {
+    if (!workspace_->save(program_, edit_->wholeText(), error)) {
         showMessage(error, true);
         return false;
     }
     loadedSource_ = context().session->program(context().process, program_);
-    edit_->document()->setModified(false);
+    edit_->setModified(false);
     const QString file = workspace_->filePath(program_, "DAT");
     showMessage(file.isEmpty() ? "Saved (program memory; built-in program without file)"
                                : "Saved to " + file);
@@ -107,7 +108,7 @@ bool EditorScreen::save() {
 
 void EditorScreen::compile() {
     if (program_ == 0 || edit_->loading()) return;
-    if (edit_->document()->isModified() && !save()) return;
+    if (edit_->isModified() && !save()) return;
     QString error;
     if (!workspace_->compile(program_, error)) {
         showMessage(error, true);
@@ -142,14 +143,14 @@ void EditorScreen::openGne() {
         return;
     }
     // The GNE works on the saved program: unsaved changes are saved first.
-    if (program_ != 0 && edit_->document()->isModified() && !save()) return;
+    if (program_ != 0 && edit_->isModified() && !save()) return;
     workspace_->requestEdit(program_, edit_->cursorLine());
     emit navigateTo(kGneScreen);
 }
 
 void EditorScreen::reload() {
     if (program_ == 0) return;
-    edit_->document()->setModified(false);
+    edit_->setModified(false);
     open(program_);
     showMessage("Changes discarded, program reloaded");
 }
@@ -167,7 +168,7 @@ void EditorScreen::updateStatus() {
                           .arg(program_, 3, 10, QChar('0'))
                           .arg(name)
                           .arg(QChar(status))
-                          .arg(edit_->document()->isModified() ? "  *modified*" : ""));
+                          .arg(edit_->isModified() ? "  *modified*" : ""));
     updateCursorLine();
 }
 
@@ -175,7 +176,7 @@ void EditorScreen::updateCursorLine() {
     const QString block = edit_->cursorBlockId();
     status_->setText(QString("Line %1 of %2   Block %3")
                          .arg(edit_->cursorLine())
-                         .arg(edit_->blockCount())
+                         .arg(edit_->lineCount())
                          .arg(block.isEmpty() ? "-" : block));
 }
 
@@ -205,7 +206,7 @@ mtc::hmi::SoftKeys EditorScreen::softKeys() {
                    workspace_->requestEdit(program_, 0);
                    emit navigateTo("runtime");
                }};
-    keys[6] = {"Discard\nchanges", [this] { reload(); }, open && edit_->document()->isModified()};
+    keys[6] = {"Discard\nchanges", [this] { reload(); }, open && edit_->isModified()};
     keys[7] = {"Back", [this] { emit navigateTo("programs"); }};
     return keys;
 }

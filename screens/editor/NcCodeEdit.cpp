@@ -1,12 +1,17 @@
 #include "screens/editor/NcCodeEdit.h"
 
 #include <QFontDatabase>
+#include <QKeyEvent>
 #include <QPaintEvent>
 #include <QPainter>
 #include <QPlainTextDocumentLayout>
 #include <QPointer>
 #include <QRegularExpression>
+#include <QScrollBar>
+#include <QSignalBlocker>
 #include <QTextBlock>
+#include <algorithm>
+#include <climits>
 
 #include "screens/editor/NcHighlighter.h"
 
@@ -37,22 +42,78 @@ NcCodeEdit::NcCodeEdit(QWidget* parent) : QPlainTextEdit(parent) {
     setFont(QFontDatabase::systemFont(QFontDatabase::FixedFont));
     setLineWrapMode(QPlainTextEdit::NoWrap);
     gutter_ = new Gutter(this);
+    wholeBar_ = new QScrollBar(Qt::Vertical, this);
+    wholeBar_->setObjectName("editorWholeScrollBar");
+    wholeBar_->hide();
+    connect(wholeBar_, &QScrollBar::valueChanged, this, &NcCodeEdit::wholeBarMoved);
     highlighter_ = new NcHighlighter(document());
     highlighter_->setParent(this);  // outlives the documents load() replaces
-    connect(this, &QPlainTextEdit::blockCountChanged, this, [this] {
-        if (viewportMargins().left() != gutterWidth()) setViewportMargins(gutterWidth(), 0, 0, 0);
-    });
+    connect(this, &QPlainTextEdit::blockCountChanged, this, &NcCodeEdit::updateMargins);
     connect(this, &QPlainTextEdit::updateRequest, this, &NcCodeEdit::updateGutter);
     connect(this, &QPlainTextEdit::cursorPositionChanged, gutter_, [this] { gutter_->update(); });
-    setViewportMargins(gutterWidth(), 0, 0, 0);
-    connect(document(), &QTextDocument::modificationChanged, this, &NcCodeEdit::modifiedChanged);
+    // Cursor moves by mouse or by a caller: the window follows once the
+    // event is done (keys follow at once, keyPressEvent()).
+    connect(this, &QPlainTextEdit::cursorPositionChanged, this, [this] {
+        if (windowed_ && !movingWindow_)
+            QMetaObject::invokeMethod(this, &NcCodeEdit::followCursor, Qt::QueuedConnection);
+    });
+    connect(verticalScrollBar(), &QScrollBar::valueChanged, this, [this] {
+        syncWholeBar();
+        if (windowed_ && !movingWindow_)
+            QMetaObject::invokeMethod(this, &NcCodeEdit::followView, Qt::QueuedConnection);
+    });
+    connect(verticalScrollBar(), &QScrollBar::rangeChanged, this, &NcCodeEdit::syncWholeBar);
+    updateMargins();
+    connect(document(), &QTextDocument::modificationChanged, this, &NcCodeEdit::reportModified);
 }
 
 void NcCodeEdit::load(const QString& text) {
+    if (windowingAllowed_ && text.count(QLatin1Char('\n')) >= kWholeTextLines) {
+        load(text.toStdString());
+        return;
+    }
     QElapsedTimer clock;
     clock.start();
+    windowed_ = false;
+    store_ = LineStore();
+    windowStart_ = 0;
+    storeModified_ = false;
+    setVerticalScrollBarPolicy(Qt::ScrollBarAsNeeded);
+    showDocumentText(text);
+    updateMargins();
+    firstViewMs_ = loadMs_ = clock.elapsed();
+    reportedModified_ = false;
+    emit modifiedChanged(false);
+    emit loaded();
+}
+
+void NcCodeEdit::load(const std::string& text) {
+    if (!windowingAllowed_ ||
+        std::count(text.begin(), text.end(), '\n') < std::ptrdiff_t{kWholeTextLines}) {
+        load(QString::fromStdString(text));
+        return;
+    }
+    QElapsedTimer clock;
+    clock.start();
+    // ED-009: the whole text in the line store, a window of it in the view.
+    store_ = LineStore(text);
+    windowed_ = true;
+    storeModified_ = false;
+    windowStart_ = 0;
+    windowLines_ = std::min(kWindowLines, store_.count());
+    setVerticalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    showDocumentText(store_.text(0, windowLines_));
+    updateMargins();
+    syncWholeBar();
+    firstViewMs_ = loadMs_ = clock.elapsed();
+    reportedModified_ = false;
+    emit modifiedChanged(false);
+    emit loaded();
+}
+
+void NcCodeEdit::showDocumentText(const QString& text) {
     // ED-007: the text goes into a fresh document while no view lays it out
-    // and no highlighter formats it (neither looks at a million blocks).
+    // and no highlighter formats it.
     auto* fresh = new QTextDocument(this);
     fresh->setDocumentLayout(new QPlainTextDocumentLayout(fresh));
     fresh->setDefaultFont(font());
@@ -66,7 +127,7 @@ void NcCodeEdit::load(const QString& text) {
     // Deleted before the highlighter moves: it would clear the formats of
     // every block of the old text (a layout per block) otherwise.
     if (old && old->parent() == this) delete old;
-    connect(fresh, &QTextDocument::modificationChanged, this, &NcCodeEdit::modifiedChanged);
+    connect(fresh, &QTextDocument::modificationChanged, this, &NcCodeEdit::reportModified);
     highlighter_->setWindow(0, kHighlightMargin * 2);
     highlighter_->setDocument(fresh);
     highlighting_ = false;
@@ -74,15 +135,15 @@ void NcCodeEdit::load(const QString& text) {
     // change cancels it (QSyntaxHighlighter formats the changed block and
     // the next ones while their state changes: the window only).
     emit fresh->contentsChange(0, 0, 0);
-    setViewportMargins(gutterWidth(), 0, 0, 0);
+    shownRevision_ = fresh->revision();
     highlightVisible();
-    firstViewMs_ = loadMs_ = clock.elapsed();
-    emit modifiedChanged(false);
-    emit loaded();
 }
 
 void NcCodeEdit::goToLine(int line) {
-    const QTextBlock block = document()->findBlockByNumber(qMax(0, line - 1));
+    const int target = std::clamp(line - 1, 0, lineCount() - 1);
+    if (windowed_ && nearWindowEdge(target - windowStart_, 1))
+        moveWindow(target - kWindowLines / 2, -1);
+    const QTextBlock block = document()->findBlockByNumber(target - windowStart_);
     if (!block.isValid()) return;
     setTextCursor(QTextCursor(block));
     centerCursor();
@@ -90,7 +151,35 @@ void NcCodeEdit::goToLine(int line) {
 }
 
 int NcCodeEdit::cursorLine() const {
-    return textCursor().blockNumber() + 1;
+    return windowStart_ + textCursor().blockNumber() + 1;
+}
+
+int NcCodeEdit::lineCount() const {
+    if (!windowed_) return blockCount();
+    return store_.count() - windowLines_ + document()->blockCount();
+}
+
+QString NcCodeEdit::wholeText() {
+    if (!windowed_) return toPlainText();
+    spliceWindow();
+    return QString::fromStdString(store_.whole());
+}
+
+bool NcCodeEdit::isModified() const {
+    return storeModified_ || document()->isModified();
+}
+
+void NcCodeEdit::setModified(bool modified) {
+    if (!modified) storeModified_ = false;
+    document()->setModified(modified);
+    reportModified();
+}
+
+void NcCodeEdit::reportModified() {
+    const bool now = isModified();
+    if (now == reportedModified_) return;
+    reportedModified_ = now;
+    emit modifiedChanged(now);
 }
 
 QString NcCodeEdit::cursorBlockId() const {
@@ -107,21 +196,34 @@ QString NcCodeEdit::cursorBlockId() const {
 
 int NcCodeEdit::gutterWidth() const {
     int digits = 1;
-    for (int count = qMax(1, blockCount()); count >= 10; count /= 10)
+    for (int count = qMax(1, lineCount()); count >= 10; count /= 10)
         ++digits;
     return 10 + fontMetrics().horizontalAdvance(QLatin1Char('9')) * qMax(4, digits);
 }
 
-void NcCodeEdit::resizeEvent(QResizeEvent* event) {
-    QPlainTextEdit::resizeEvent(event);
+void NcCodeEdit::updateMargins() {
+    const int right = windowed_ ? wholeBar_->sizeHint().width() : 0;
+    const QMargins wanted(gutterWidth(), 0, right, 0);
+    if (viewportMargins() != wanted) setViewportMargins(wanted);
+    wholeBar_->setVisible(windowed_);
     const QRect area = contentsRect();
     gutter_->setGeometry(QRect(area.left(), area.top(), gutterWidth(), area.height()));
+    wholeBar_->setGeometry(QRect(area.right() - right + 1, area.top(), right, area.height()));
+}
+
+void NcCodeEdit::resizeEvent(QResizeEvent* event) {
+    QPlainTextEdit::resizeEvent(event);
+    updateMargins();
 }
 
 void NcCodeEdit::updateGutter(const QRect& rect, int dy) {
-    if (dy != 0)
+    if (dy != 0) {
         gutter_->scroll(0, dy);
-    else
+        // QPlainTextEdit moves its scroll bar with the bar's signals blocked.
+        syncWholeBar();
+        if (windowed_ && !movingWindow_)
+            QMetaObject::invokeMethod(this, &NcCodeEdit::followView, Qt::QueuedConnection);
+    } else
         gutter_->update(0, rect.y(), gutter_->width(), rect.height());
     highlightVisible();
 }
@@ -131,11 +233,15 @@ void NcCodeEdit::highlightVisible() {
     highlighting_ = true;
     QTextBlock block = firstVisibleBlock();
     const int first = block.blockNumber();
-    const int visible = viewport()->height() / qMax(1, fontMetrics().height()) + 1;
+    const int visible = pageLines() + 1;
     highlighter_->setWindow(qMax(0, first - kHighlightMargin), first + visible + kHighlightMargin);
     for (int i = 0; i <= visible && block.isValid(); ++i, block = block.next())
         if (block.userState() != kHighlighted) highlighter_->rehighlightBlock(block);
     highlighting_ = false;
+}
+
+int NcCodeEdit::pageLines() const {
+    return viewport()->height() / qMax(1, fontMetrics().height());
 }
 
 void NcCodeEdit::paintGutter(QPaintEvent* event) {
@@ -152,7 +258,7 @@ void NcCodeEdit::paintGutter(QPaintEvent* event) {
             font.setBold(block.blockNumber() == current);
             painter.setFont(font);
             painter.drawText(0, top, gutter_->width() - 5, fontMetrics().height(), Qt::AlignRight,
-                             QString::number(block.blockNumber() + 1));
+                             QString::number(windowStart_ + block.blockNumber() + 1));
         }
         top += height;
         block = block.next();
