@@ -5,9 +5,9 @@ namespace mtc::hmi {
 using mtc::core::ControlKey;
 
 QVector<ControlKey> machineKeys() {
-    return {ControlKey::ProgramRestart, ControlKey::Repos,      ControlKey::Manual,
-            ControlKey::Automatic,      ControlKey::Start,      ControlKey::Stop,
-            ControlKey::ControlReset,   ControlKey::SingleBlock};
+    return {ControlKey::ProgramRestart, ControlKey::Repos,       ControlKey::Manual,
+            ControlKey::Automatic,      ControlKey::Start,       ControlKey::Stop,
+            ControlKey::ControlReset,   ControlKey::SingleBlock, ControlKey::Mdi};
 }
 
 QKeySequence machineKeyShortcut(ControlKey key) {
@@ -28,6 +28,8 @@ QKeySequence machineKeyShortcut(ControlKey key) {
             return QKeySequence(Qt::SHIFT | Qt::Key_F7);
         case ControlKey::SingleBlock:
             return QKeySequence(Qt::SHIFT | Qt::Key_F8);
+        case ControlKey::Mdi:
+            return QKeySequence(Qt::SHIFT | Qt::Key_F9);
     }
     return {};
 }

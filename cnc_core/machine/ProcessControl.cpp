@@ -34,6 +34,8 @@ const char* keyName(ControlKey key) {
             return "Control reset";
         case ControlKey::SingleBlock:
             return "Single block";
+        case ControlKey::Mdi:
+            return "MDI";
     }
     return "?";
 }
@@ -60,6 +62,8 @@ bool ProcessControl::press(ControlKey key) {
             return setMode(OperatingMode::Manual);
         case ControlKey::Automatic:
             return setMode(OperatingMode::Automatic);
+        case ControlKey::Mdi:
+            return setMode(OperatingMode::Mdi);
         case ControlKey::Start:
             return start();
         case ControlKey::Stop:
@@ -118,11 +122,12 @@ void ProcessControl::setModeBySps(OperatingMode mode) {
 
 bool ProcessControl::start() {
     const std::string p = signalPrefix();
-    if (mode_ != OperatingMode::Automatic) {
+    const bool mdi = mode_ == OperatingMode::Mdi;
+    if (mode_ == OperatingMode::Manual) {
         alarm_ = "Start refused: select automatic mode first";
         return false;
     }
-    if (selectedProgram_ == 0) {
+    if (!mdi && selectedProgram_ == 0) {
         alarm_ = "Start refused: no program selected";
         return false;
     }
@@ -135,7 +140,9 @@ bool ProcessControl::start() {
     const bool resuming = active_;
     if (!resuming) setProgramActive(true);
     alarm_.clear();
-    std::string result = resuming ? runner_->resume() : runner_->start(selectedProgram_);
+    std::string result = resuming ? runner_->resume()
+                         : mdi    ? runner_->startMdi()
+                                  : runner_->start(selectedProgram_);
     signals_.set(p + "CADV", 0);
     if (resuming && result.empty()) {
         held_ = false;

@@ -21,6 +21,7 @@ enum class ControlKey {
     Stop,
     ControlReset,
     SingleBlock,  ///< switches single-block mode on / off (PxxCSBLK)
+    Mdi,          ///< manual data input mode (Start runs the MDI entry)
 };
 
 /// Readable names: "automatic", "manual", "MDI"; "NC program restart", ...
@@ -34,6 +35,8 @@ class ProgramRunner {
     virtual ~ProgramRunner() = default;
     /// Starts program `number` from its first block. Returns "" or an alarm.
     virtual std::string start(int number) = 0;
+    /// Starts the MDI entry of the process (MDI mode). Returns "" or an alarm.
+    virtual std::string startMdi() { return "Start refused: this station has no MDI input"; }
     /// Continues a held run. Returns "" or an alarm.
     virtual std::string resume() = 0;
     /// Stop key: feed hold; the program stays active.
@@ -56,9 +59,10 @@ class ControlKeyHandler {
 /// operating mode, selected program, current alarm and the interface
 /// signals. One object per process; no globals.
 ///
-/// Key handling of this layer: Manual/Automatic switch the mode (refused
+/// Key handling of this layer: Manual/Automatic/MDI switch the mode (refused
 /// while a program is active), Start starts the selected program in
-/// automatic mode through the ProgramRunner (or continues a held one), Stop
+/// automatic mode (the MDI entry in MDI mode) through the ProgramRunner (or
+/// continues a held one), Stop
 /// holds it (PxxSHOLD = 1, the program stays active), Control reset
 /// abandons it and clears the alarm; Single block toggles PxxCSBLK at any
 /// time (the runner holds after the block); NC program restart toggles the M-key

@@ -220,6 +220,9 @@ std::optional<bool> RestartSequence::handleKey(ControlKey key) {
             return changeMode(OperatingMode::Automatic);
         case ControlKey::Repos:
             return repositionKey();
+        case ControlKey::Mdi:  // MDI-005: no MDI inside an NC program restart
+            control_.setAlarm("MDI refused: an NC program restart is active (Control reset first)");
+            return false;
         case ControlKey::ProgramRestart:
         case ControlKey::SingleBlock:  // ProcessControl switches it; advance() reads it
             return std::nullopt;
