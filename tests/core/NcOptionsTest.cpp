@@ -110,14 +110,14 @@ TEST(NcOptionsFile, WriteAndReadBothFilesOfTheProgramDirectory) {
     ASSERT_TRUE(writeGlobalMacroFile(dir.path(), {{"QUICK", "G1 F9000"}}, error)) << error;
     {
         std::ofstream(fs::path(dir.path()) / kGlobalMacroFileName, std::ios::app)
-            << "DEFINE X AS Y\n";
+            << "DEFINE LA_ON AS G1\n";
     }
     const NcOptionsContents back = readNcOptions(dir.path());
     EXPECT_TRUE(back.options.compilerActive);
     EXPECT_EQ(userCompilerCommand(back.options.userCompilers, 4), "checker");
     ASSERT_EQ(back.options.globalMacros.size(), 1u);
     EXPECT_EQ(back.options.globalMacros[0].name, "QUICK");
-    ASSERT_EQ(back.problems.size(), 1u);  // X is an address letter (keyword)
+    ASSERT_EQ(back.problems.size(), 1u);  // LA_ON is a keyword
     EXPECT_EQ(back.problems[0].file, kGlobalMacroFileName);
     EXPECT_EQ(back.problems[0].line, 3);
 }

@@ -24,6 +24,13 @@ const char* kUsesMacro =
     "N0002 M30\n"
     "N0003 PROGRAMMENDE\n";
 
+/// Uses FAST and a rounding without a following motion: status E.
+const char* kBrokenWithMacro =
+    "N0000 FAST X0 Y0 Z0\n"
+    "N0001 G1 X10 Y0 F1000 RD3\n"
+    "N0002 M30\n"
+    "N0003 PROGRAMMENDE\n";
+
 /// Neither a keyword nor a macro: never compiled.
 const char* kPlain =
     "N0000 G0 G90 X0 Y0 Z0\n"
@@ -48,6 +55,7 @@ class NcOptionsTest : public QObject {
     mtc::hmi::PanelOptions options() {
         const QDir dir = emptiedDirectory(dir_.path());
         writeProgram(dir, 8, programHeader(8, "Global macro") + kUsesMacro);
+        writeProgram(dir, 7, programHeader(7, "Broken") + kBrokenWithMacro);
         writeProgram(dir, 9, programHeader(9, "Plain") + kPlain);
         // station 2 (process 1) uses the macro as well
         QFile second(dir.filePath("N1011008.DAT"));
@@ -222,6 +230,10 @@ class NcOptionsTest : public QObject {
         panel.press(Qt::Key_F3);  // Compile
         QTRY_VERIFY2(directoryRow(panel, 8).contains("[C]"), qPrintable(directoryRow(panel, 8)));
         QVERIFY(QFile::exists(path("N1010008.NCO")));
+        pickProgram(panel, 7);
+        panel.press(Qt::Key_F3);
+        QTRY_VERIFY2(directoryRow(panel, 7).contains("[E]"), qPrintable(directoryRow(panel, 7)));
+        QVERIFY(QFile::exists(path("N1010007.ERR")));
         QVERIFY(!directoryRow(panel, 9).contains("[N]"));
         {  // station 2's object again, after the compiler setting cleared it
             QFile object(path("N1011008.NCO"));
@@ -238,6 +250,9 @@ class NcOptionsTest : public QObject {
         QVERIFY2(rowOf(panel, 1, 8).contains("[N]"), qPrintable(rowOf(panel, 1, 8)));
         QVERIFY(!QFile::exists(path("N1010008.NCO")));
         QVERIFY(!QFile::exists(path("N1011008.NCO")));
+        // seed 001 ch. 9: the error files are cleared as well
+        QVERIFY2(directoryRow(panel, 7).contains("[N]"), qPrintable(directoryRow(panel, 7)));
+        QVERIFY(!QFile::exists(path("N1010007.ERR")));
         QVERIFY(!directoryRow(panel, 9).contains("[N]"));  // uses no macro
         // the new status compiles again with the new macro list
         pickProgram(panel, 8);
