@@ -10,6 +10,8 @@ QString originName(ErrorOrigin origin) {
             return "runtime";
         case ErrorOrigin::Restart:
             return "restart";
+        case ErrorOrigin::Mdi:
+            return "MDI";
     }
     return "?";
 }

@@ -8,10 +8,11 @@
 namespace mtc::hmi {
 
 /// Where an entry of the error window comes from (seed 001, ch. 9: the
-/// compilers; the panel adds the interpreter and the restart computing process).
-enum class ErrorOrigin { Compiler, Runtime, Restart };
+/// compilers; the panel adds the interpreter, the restart computing process
+/// and manual data input, docs/decisions/mdi.md).
+enum class ErrorOrigin { Compiler, Runtime, Restart, Mdi };
 
-/// "compiler", "runtime", "restart".
+/// "compiler", "runtime", "restart", "MDI".
 QString originName(ErrorOrigin origin);
 
 /// One message of the error window: brief message, additional text and the

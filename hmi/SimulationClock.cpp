@@ -2,6 +2,7 @@
 
 #include "cnc_core/interp/Interpreter.h"
 #include "cnc_core/machine/SimulatedMachine.h"
+#include "cnc_core/mdi/MdiEntry.h"
 
 namespace mtc::hmi {
 
@@ -38,6 +39,21 @@ std::string SimulationClock::start(int number) {
     return {};
 }
 
+std::string SimulationClock::startMdi() {
+    if (!mdiSource_) return "Start refused: this station has no MDI input";
+    mtc::core::ProgramPtr program;
+    if (std::string alarm = mdiSource_(program); !alarm.empty()) return alarm;
+    mtc::core::DiagnosticList diagnostics;
+    if (!mdi_.begin(interpreter_, program, &diagnostics))
+        return firstProblem(diagnostics, "the MDI entry cannot be selected");
+    mdiRunning_ = true;
+    mdiDiagnostics_.clear();
+    lastProgram_.reset();
+    beginTiming();
+    showCurrentBlock();
+    return {};
+}
+
 std::string SimulationClock::resume() {
     beginTiming();
     return {};
@@ -50,6 +66,11 @@ void SimulationClock::hold() {
 void SimulationClock::reset() {
     timer_.stop();
     interpreter_.controlReset();
+    if (mdiRunning_) {  // the entry is abandoned; the automatic program comes back
+        mdi_.abandon();
+        mdiRunning_ = false;
+        emit mdiEnded(false);
+    }
     waitingAxis_.clear();
     machine_.reset();
     lastProgram_.reset();
@@ -70,7 +91,7 @@ void SimulationClock::tick() {
         const auto& state = interpreter_.state();
         lastProgram_ = state.program;
         lastBlock_ = state.block;
-        auto result = interpreter_.step();
+        auto result = mdiRunning_ ? mdi_.step() : interpreter_.step();
         if (!waitingAxis_.empty() && result.blocksInterpreted > 0) {
             waitingAxis_.clear();  // the GAX was granted
             control_.setAlarm({});
@@ -84,6 +105,7 @@ void SimulationClock::tick() {
                 showCurrentBlock();
                 return;
             case RunStatus::Ended:
+                if (mdiRunning_) return finishMdi(result);
                 return finish({});
             case RunStatus::Stopped:
                 if (waitForAxis()) return;
@@ -95,6 +117,7 @@ void SimulationClock::tick() {
                 return finish({});
             case RunStatus::BudgetExceeded:
             case RunStatus::Error:
+                if (mdiRunning_) return finishMdi(result);
                 return finish(
                     firstProblem(result.diagnostics, "the program stopped with an error"));
         }
@@ -121,6 +144,21 @@ void SimulationClock::finish(const std::string& alarm) {
     showCurrentBlock();
     control_.programFinished(alarm);
     emit changed();
+}
+
+void SimulationClock::finishMdi(const mtc::core::RunResult& result) {
+    mdiRunning_ = false;
+    mdiDiagnostics_ = result.diagnostics;
+    std::string alarm;
+    for (const auto& d : mdiDiagnostics_.items())
+        if (d.severity == mtc::core::Severity::Error) {
+            alarm = mtc::core::formatMdiDiagnostic(d);
+            break;
+        }
+    if (alarm.empty() && result.status != mtc::core::RunStatus::Ended)
+        alarm = "MDI: the entry stopped with an error";
+    finish(alarm);
+    emit mdiEnded(alarm.empty());
 }
 
 void SimulationClock::showCurrentBlock() {

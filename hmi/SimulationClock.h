@@ -7,6 +7,7 @@
 
 #include "cnc_core/language/Program.h"
 #include "cnc_core/machine/ProcessControl.h"
+#include "cnc_core/mdi/MdiRun.h"
 
 namespace mtc::core {
 class Interpreter;
@@ -26,6 +27,9 @@ class SimulationClock : public QObject, public mtc::core::ProgramRunner {
                     mtc::core::ProcessControl& control, QObject* parent = nullptr);
 
     std::string start(int number) override;
+    /// MDI mode: runs the entry the MDI source gives from the station's
+    /// current state (MdiRun, MDI-002).
+    std::string startMdi() override;
     std::string resume() override;
     void hold() override;
     void reset() override;
@@ -39,6 +43,16 @@ class SimulationClock : public QObject, public mtc::core::ProgramRunner {
     /// Runs the preparer for `number` ("" when none is installed).
     std::string prepare(int number) const { return preparer_ ? preparer_(number) : std::string(); }
 
+    /// Gives the program of the station's MDI entry for Start in MDI mode,
+    /// or an alarm that refuses Start ("" = the program is set).
+    using MdiSource = std::function<std::string(mtc::core::ProgramPtr& program)>;
+    /// Installs (empty function: removes) the MDI source (the MDI screen).
+    void setMdiSource(MdiSource source) { mdiSource_ = std::move(source); }
+    /// True while an MDI entry runs (or is held).
+    bool mdiRunning() const { return mdiRunning_; }
+    /// Diagnostics of the last MDI run (lines = lines of the MDI input).
+    const mtc::core::DiagnosticList& lastMdiDiagnostics() const { return mdiDiagnostics_; }
+
     /// Simulated seconds per real second (default 1; tests and demos go faster).
     void setSpeed(double speed) { speed_ = speed > 0 ? speed : 1.0; }
     double speed() const { return speed_; }
@@ -51,10 +65,15 @@ class SimulationClock : public QObject, public mtc::core::ProgramRunner {
   signals:
     /// The process's state changed (block, position, end of program).
     void changed();
+    /// The MDI entry ended: `completed` false after an error or Control
+    /// reset (lastMdiDiagnostics() has the errors).
+    void mdiEnded(bool completed);
 
   private:
     void beginTiming();
     void finish(const std::string& alarm);
+    /// End of an MDI run: the alarm names the MDI line, mdiEnded is sent.
+    void finishMdi(const mtc::core::RunResult& result);
     /// True while the interpreter waits for a GAX (R-022): shows "Waiting
     /// for axis X" and keeps ticking without executing blocks.
     bool waitForAxis();
@@ -64,6 +83,10 @@ class SimulationClock : public QObject, public mtc::core::ProgramRunner {
     mtc::core::SimulatedMachine& machine_;
     mtc::core::ProcessControl& control_;
     ProgramPreparer preparer_;
+    MdiSource mdiSource_;
+    mtc::core::MdiRun mdi_;
+    bool mdiRunning_ = false;
+    mtc::core::DiagnosticList mdiDiagnostics_;
     QTimer timer_;
     QElapsedTimer realTime_;
     double simulatedBase_ = 0.0;

@@ -11,6 +11,7 @@
 #include "screens/gne/GneScreen.h"
 #include "screens/help/HelpScreen.h"
 #include "screens/machine_data/MachineDataScreen.h"
+#include "screens/mdi/MdiScreen.h"
 #include "screens/menu/MenuScreen.h"
 #include "screens/nc_options/NcOptionsScreen.h"
 #include "screens/programs/ProgramsScreen.h"
@@ -68,6 +69,10 @@ void registerAllScreens(mtc::hmi::ScreenRegistry& registry) {
     // The cell's NC options (compiler settings, global macros), NO-001.
     registry.add("nc-options", "NC options",
                  [](const ScreenContext& c) { return new NcOptionsScreen(c); });
+    // MDI uses the station's global macros and error log (docs/decisions/mdi.md).
+    registry.add("mdi", "MDI (manual data input)", [programming](const ScreenContext& c) {
+        return new MdiScreen(c, programming->forStation(c));
+    });
     registry.add("signals", "Interface signals",
                  [](const ScreenContext& c) { return new SignalsScreen(c); });
     registry.add("machine-data", "Machine data",

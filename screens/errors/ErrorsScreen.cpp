@@ -88,7 +88,10 @@ QString ErrorsScreen::itemText(const ErrorEntry& entry, bool expanded) const {
                        .arg(entry.block.isEmpty() ? QString("-") : entry.block, -10)
                        .arg(entry.message);
     if (expanded) {
-        if (entry.line > 0) text += QString("\n      source line %1").arg(entry.line);
+        if (entry.line > 0)
+            text += QString("\n      %1 line %2")
+                        .arg(entry.origin == ErrorOrigin::Mdi ? "MDI input" : "source")
+                        .arg(entry.line);
         if (!entry.code.isEmpty()) text += "\n      [" + entry.code + "]";
         for (const QString& line : entry.details)
             text += "\n      " + line;
@@ -156,6 +159,7 @@ mtc::hmi::SoftKeys ErrorsScreen::softKeys() {
     keys[5] = {"Clear\nruntime", [this] {
                    workspace_->errors().clear(ErrorOrigin::Runtime);
                    workspace_->errors().clear(ErrorOrigin::Restart);
+                   workspace_->errors().clear(ErrorOrigin::Mdi);
                }};
     keys[7] = {"Back",
                [this] { emit navigateTo(workspace_->editProgram() ? "editor" : "programs"); }};
