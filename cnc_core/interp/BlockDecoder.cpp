@@ -24,8 +24,11 @@ bool BlockDecoder::decode(const Block& block) const {
     const std::size_t end = std::min<std::size_t>(std::size_t{block.firstWord} + block.wordCount,
                                                   t_.program.words.size());
     bool ok = true;
-    for (std::size_t i = block.firstWord; i < end; ++i)
-        if (!word(t_.program.words[i], static_cast<std::uint32_t>(i))) ok = false;
+    Word w;
+    for (std::size_t i = block.firstWord; i < end; ++i) {
+        t_.program.words.read(i, w);
+        if (!word(w, static_cast<std::uint32_t>(i))) ok = false;
+    }
     return ok;
 }
 

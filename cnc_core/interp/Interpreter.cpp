@@ -198,7 +198,7 @@ Interpreter::Outcome Interpreter::executeNext(DiagnosticList& diagnostics,
     }
     const Program& program = *state_.program;
     const std::uint32_t index = state_.block;
-    if (index < program.blocks.size()) block_ = program.blocks[index];
+    if (index < program.blocks.size()) program.blocks.read(index, block_);
     if (index >= program.blocks.size() || (block_.flags & kBlockProgramEnd)) {
         const SourceLocation where = currentLocation();
         if (!state_.callStack.empty()) {
@@ -250,10 +250,11 @@ bool Interpreter::checkedBlock(const Program& program, std::uint32_t index,
     if (!planSynced_) plan_.next = state_.modal;
     planSynced_ = false;
     const BlockDecoder decoder(axes_, names_, evaluator_, {program, index, input_, diagnostics});
-    return decoder.decode(block_) && executor_.plan(context, input_, state_, plan_) &&
-           planFlow(context) &&
+    if (!decoder.decode(block_)) return false;
+    afcInvolved_ = adaptiveFeedInvolved();  // the commit asks again: once per block
+    return executor_.plan(context, input_, state_, plan_) && planFlow(context) &&
            (input_.mtdCount == 0 && input_.writeCount == 0 ? true : validateMachineData(context)) &&
-           (!adaptiveFeedInvolved() || planAdaptiveFeed(context)) &&
+           (!afcInvolved_ || planAdaptiveFeed(context)) &&
            (axisTransfer_ == nullptr || planAxisOwnership(context));
 }
 

@@ -265,7 +265,8 @@ class Interpreter {
     Block block_;  ///< copy of the block being executed
     BlockInput input_;
     BlockPlan plan_;
-    bool planSynced_ = false;  ///< plan_.next == state_.modal (saves a copy per block)
+    bool planSynced_ = false;   ///< plan_.next == state_.modal (saves a copy per block)
+    bool afcInvolved_ = false;  ///< adaptiveFeedInvolved() of the block being executed
     FlowPlan flow_;
     Motion motion_;
     ExpressionEvaluator evaluator_;

@@ -81,7 +81,7 @@ Interpreter::Outcome Interpreter::commit(const Program& program, std::uint32_t i
         plan_.next.transformation.kind() != state_.modal.transformation.kind();
     const bool motion = plan_.hasMotion && options_.output.motion;
     if (motion) motion_.start = state_.modal.machine;
-    state_.modal = plan_.next;
+    assignModalState(state_.modal, plan_.next);
     planSynced_ = true;
     for (int i = 0; i < input_.writeCount; ++i) {
         const auto& w = input_.writes[static_cast<size_t>(i)];
@@ -104,7 +104,7 @@ Interpreter::Outcome Interpreter::commit(const Program& program, std::uint32_t i
     const BlockInput& in = input_;
     if (in.spindleMask != 0 || in.hasTool || in.hasEdge || in.mCount != 0 || in.qCount != 0)
         emitAux(program, index);
-    const bool adaptive = adaptiveFeedInvolved();
+    const bool adaptive = afcInvolved_;
     if (adaptive) commitAdaptiveFeed();
     if (motion) emitMotion(program, index);
     if (adaptive && !adaptiveFeedAfterMotion(program, diagnostics)) return Outcome::Error;

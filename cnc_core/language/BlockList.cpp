@@ -4,12 +4,6 @@
 
 namespace mtc::core {
 
-namespace {
-
-constexpr std::uint8_t kExtendedBit = 0x80;
-
-}  // namespace
-
 bool BlockList::packable(const Block& block) {
     return block.label.length == 0 && block.comment.length == 0 && block.text.length == 0 &&
            block.subNumber == -1 && block.number >= -1 && block.number <= 32767 &&
@@ -38,12 +32,12 @@ long BlockList::findExtended(std::size_t index) const {
     return static_cast<long>(it - extendedIndex_.begin());
 }
 
-const Block BlockList::operator[](std::size_t index) const {
+const Block BlockList::extendedBlock(std::size_t index) const {
+    const long slot = findExtended(index);
+    if (slot >= 0) return extended_[static_cast<std::size_t>(slot)];
+    // The bit without an entry cannot happen (set() and push_back() keep both);
+    // unpack what the packed form holds rather than fail.
     const Packed& p = packed_[index];
-    if (p.lineCount & kExtendedBit) {
-        long slot = findExtended(index);
-        if (slot >= 0) return extended_[static_cast<std::size_t>(slot)];
-    }
     Block block;
     block.firstWord = p.firstWord;
     block.wordCount = p.wordCount;

@@ -17,7 +17,32 @@ class BlockList {
     std::size_t size() const { return packed_.size(); }
     bool empty() const { return packed_.empty(); }
     /// The block at `index` (by value). Precondition: index < size().
-    const Block operator[](std::size_t index) const;
+    const Block operator[](std::size_t index) const {
+        Block block;
+        read(index, block);
+        return block;
+    }
+    /// Writes the block at `index` into `out` field by field. Inline, and
+    /// without a temporary: the interpreter reads every block through it, and
+    /// copying a freshly built Block stalls on store forwarding.
+    void read(std::size_t index, Block& out) const {
+        const Packed& p = packed_[index];
+        if (p.lineCount & kExtendedBit) {
+            out = extendedBlock(index);
+            return;
+        }
+        out.firstWord = p.firstWord;
+        out.wordCount = p.wordCount;
+        out.flags = p.flags;
+        out.number = p.number;
+        out.line = p.line;
+        out.lineCount = p.lineCount;
+        out.label = {};
+        out.comment = {};
+        out.sourceText = TextSpan{p.sourceOffset, p.sourceLength};
+        out.subNumber = -1;
+        out.text = {};
+    }
     const Block back() const { return (*this)[size() - 1]; }
     const Block front() const { return (*this)[0]; }
     const_iterator begin() const;
@@ -38,6 +63,7 @@ class BlockList {
     std::size_t memoryBytes() const;
 
   private:
+    static constexpr std::uint8_t kExtendedBit = 0x80;
     struct Packed {
         std::uint32_t firstWord;
         std::uint32_t sourceOffset;
@@ -51,6 +77,8 @@ class BlockList {
     static bool packable(const Block& block);
     Packed pack(const Block& block) const;
     long findExtended(std::size_t index) const;
+    /// The block at `index` kept whole (labels, comments, long lines).
+    const Block extendedBlock(std::size_t index) const;
     std::vector<Packed> packed_;
     std::vector<std::uint32_t> extendedIndex_;  ///< sorted block indices
     std::vector<Block> extended_;

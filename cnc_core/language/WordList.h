@@ -17,17 +17,36 @@ class WordList {
     std::size_t size() const { return packed_.size(); }
     bool empty() const { return packed_.empty(); }
     /// The word at `index` (by value). Precondition: index < size().
-    /// Inline: the interpreter reads every word of every block through it.
     const Word operator[](std::size_t index) const {
-        const Packed& p = packed_[index];
-        if (p.bits & kExtendedBit) return extended_[static_cast<std::size_t>(p.payload)];
         Word word;
-        word.kind = static_cast<WordKind>(p.kind);
-        word.letter = static_cast<char>(p.letter);
-        word.axisIndex = p.bits & 3u;
-        word.column = p.column;
-        word.number = static_cast<double>(p.payload) / kPow10[(p.bits >> 2) & 7u];
+        read(index, word);
         return word;
+    }
+    /// Writes the word at `index` into `out` field by field. Inline, and
+    /// without a temporary: the interpreter reads every word of every block
+    /// through it, and copying a freshly built Word stalls on store forwarding.
+    void read(std::size_t index, Word& out) const {
+        const Packed& p = packed_[index];
+        if (p.bits & kExtendedBit) {
+            out = extended_[static_cast<std::size_t>(p.payload)];
+            return;
+        }
+        out.kind = static_cast<WordKind>(p.kind);
+        out.letter = static_cast<char>(p.letter);
+        out.axisIndex = p.bits & 3u;
+        out.jump = JumpKind::BRA;
+        out.column = p.column;
+        out.expr = -1;
+        out.target = -1;
+        const unsigned scale = (p.bits >> 2) & 7u;
+        // Most words are integers (G1, Y0, F1000): skip the slow division.
+        out.number = scale == 0 ? static_cast<double>(p.payload)
+                                : static_cast<double>(p.payload) / kPow10[scale];
+        out.text = {};
+        out.eventProcess = -1;
+        out.eventNumber = -1;
+        out.flags = 0;
+        out.args = {};
     }
     const Word back() const { return (*this)[size() - 1]; }
     const Word front() const { return (*this)[0]; }
