@@ -1,6 +1,7 @@
 #include "screens/nc_options/NcOptionsScreen.h"
 
 #include <QFontDatabase>
+#include <QItemSelectionModel>
 #include <QKeyEvent>
 #include <QLabel>
 #include <QLineEdit>
@@ -48,7 +49,13 @@ NcOptionsScreen::NcOptionsScreen(const mtc::hmi::ScreenContext& context)
     setFocusProxy(list_);
     closeInput();
     moveTo(0);
-    connect(model_, &QAbstractItemModel::modelReset, this, [this] { emit softKeysChanged(); });
+    // A change of the options (here or on the other station) rebuilds the
+    // rows: the cursor stays on its row.
+    connect(model_, &QAbstractItemModel::modelAboutToBeReset, this,
+            [this] { keptRow_ = std::max(0, currentRow()); });
+    connect(model_, &QAbstractItemModel::modelReset, this, [this] { moveTo(keptRow_); });
+    connect(list_->selectionModel(), &QItemSelectionModel::currentChanged, this,
+            [this] { emit softKeysChanged(); });
 }
 
 void NcOptionsScreen::activated() {
@@ -244,7 +251,6 @@ bool NcOptionsScreen::eventFilter(QObject* watched, QEvent* event) {
         }
         if (key == Qt::Key_Up || key == Qt::Key_Down) {
             moveTo(currentRow() + (key == Qt::Key_Up ? -1 : 1));
-            emit softKeysChanged();
             return true;
         }
     }

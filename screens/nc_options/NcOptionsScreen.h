@@ -60,6 +60,7 @@ class NcOptionsScreen : public mtc::hmi::Screen {
     QLabel* message_;
     Input input_ = Input::None;
     int inputIndex_ = 0;  ///< user compiler slot or macro index of the input
+    int keptRow_ = 0;     ///< cursor row while the model is rebuilt
 };
 
 }  // namespace mtc::screens

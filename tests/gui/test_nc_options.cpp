@@ -131,9 +131,11 @@ class NcOptionsTest : public QObject {
         QCOMPARE(softKeyLabel(panel, 0, "programs", 5), QString("Compiler\nactive: Yes"));
         QCOMPARE(softKeyLabel(panel, 1, "programs", 5), QString("Compiler\nactive: Yes"));
         QVERIFY(readAll(path("NC_OPTIONS.CFG")).contains("COMPILER_ACTIVE = YES"));
+        QCOMPARE(optionList(panel)->currentIndex().row(), 0);  // the cursor stays
         panel.press(Qt::Key_F4);
         QTRY_VERIFY(!panel.session->ncOptions().compilerActive());
         QCOMPARE(softKeyLabel(panel, 1, "programs", 5), QString("Compiler\nactive: No"));
+        QVERIFY(readAll(path("NC_OPTIONS.CFG")).contains("COMPILER_ACTIVE = NO"));
         // the other station's program directory switches it back for both
         panel.window->showStation(1);
         panel.window->showScreen("programs");
@@ -297,6 +299,35 @@ class NcOptionsTest : public QObject {
         QTRY_VERIFY2(message(panel).contains("more than 200"), qPrintable(message(panel)));
         QVERIFY(
             mtc::core::userCompilerCommand(panel.session->ncOptions().userCompilers(), 2).empty());
+        QTest::keyClick(child<QLineEdit>(panel, "nc-options", "ncoEditor"), Qt::Key_Escape);
+        // seed 001 ch. 8: with a user compiler every program goes through the chain
+        panel.press(Qt::Key_F4);  // Compiler active = Yes
+        QTRY_VERIFY(panel.session->ncOptions().compilerActive());
+        pickProgram(panel, 9);
+        QVERIFY2(directoryRow(panel, 9).contains("[N]"), qPrintable(directoryRow(panel, 9)));
+        panel.press(Qt::Key_F3);  // Compile: user compiler 1 `true`, then INDRAMAT
+        QTRY_VERIFY2(directoryRow(panel, 9).contains("[C]"), qPrintable(directoryRow(panel, 9)));
+        QVERIFY(QFile::exists(path("N1010009.NCO")));
+    }
+
+    void nothingChangesWhileAStationRunsAProgram() {
+        PanelFixture panel(options());
+        pickProgram(panel, 9);
+        panel.press(Qt::Key_Return);
+        QCOMPARE(panel.session->control(0).selectedProgram(), 9);
+        panel.press(Qt::Key_F8, Qt::ShiftModifier);  // single block: holds after a block
+        panel.press(Qt::Key_F5, Qt::ShiftModifier);  // Start
+        QTRY_VERIFY(panel.session->control(0).programActive());
+        panel.window->showScreen("nc-options");
+        panel.press(Qt::Key_F4);
+        QTRY_VERIFY2(message(panel).contains("is running a program"), qPrintable(message(panel)));
+        QVERIFY(!panel.session->ncOptions().compilerActive());
+        panel.press(Qt::Key_F2);
+        typeEntry(panel, "DEFINE COOL AS M8");
+        QTRY_VERIFY2(message(panel).startsWith("Global macros not changed"),
+                     qPrintable(message(panel)));
+        QCOMPARE(panel.session->ncOptions().globalMacros().size(), std::size_t(1));
+        QCOMPARE(readAll(path("GLOBAL_MACROS.MAC")), QString("DEFINE FAST AS G0\n"));
     }
 
     void theBuiltInCellKeepsTheOptionsInMemory() {
