@@ -88,15 +88,15 @@ void NcCodeEdit::load(const QString& text) {
 }
 
 void NcCodeEdit::load(const std::string& text) {
-    if (!windowingAllowed_ ||
-        std::count(text.begin(), text.end(), '\n') < std::ptrdiff_t{kWholeTextLines}) {
+    QElapsedTimer clock;
+    clock.start();
+    LineStore store(windowingAllowed_ ? text : std::string());
+    if (store.count() <= kWholeTextLines) {
         load(QString::fromStdString(text));
         return;
     }
-    QElapsedTimer clock;
-    clock.start();
     // ED-009: the whole text in the line store, a window of it in the view.
-    store_ = LineStore(text);
+    store_ = std::move(store);
     windowed_ = true;
     storeModified_ = false;
     windowStart_ = 0;
@@ -135,7 +135,12 @@ void NcCodeEdit::showDocumentText(const QString& text) {
     // change cancels it (QSyntaxHighlighter formats the changed block and
     // the next ones while their state changes: the window only).
     emit fresh->contentsChange(0, 0, 0);
-    shownRevision_ = fresh->revision();
+    windowEdited_ = false;
+    // An edit of the window (the highlighter's own format changes come
+    // while highlighting_ is set and change no text).
+    connect(fresh, &QTextDocument::contentsChange, this, [this](int, int removed, int added) {
+        if (!highlighting_ && (removed != 0 || added != 0)) windowEdited_ = true;
+    });
     highlightVisible();
 }
 
@@ -208,7 +213,8 @@ void NcCodeEdit::updateMargins() {
     wholeBar_->setVisible(windowed_);
     const QRect area = contentsRect();
     gutter_->setGeometry(QRect(area.left(), area.top(), gutterWidth(), area.height()));
-    wholeBar_->setGeometry(QRect(area.right() - right + 1, area.top(), right, area.height()));
+    const QRect view = viewport()->geometry();
+    wholeBar_->setGeometry(QRect(view.right() + 1, view.top(), right, view.height()));
 }
 
 void NcCodeEdit::resizeEvent(QResizeEvent* event) {

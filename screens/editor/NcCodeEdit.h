@@ -29,10 +29,10 @@ class NcCodeEdit : public QPlainTextEdit {
     /// Texts up to this many lines are held whole in the document.
     static constexpr int kWholeTextLines = 20000;
     /// Lines in the document's window over a larger text.
-    static constexpr int kWindowLines = 3000;
+    static constexpr int kWindowLines = 1500;
     /// The window moves when the cursor or the view comes this close to a
     /// window edge that is not the end of the text.
-    static constexpr int kWindowMargin = 500;
+    static constexpr int kWindowMargin = 300;
 
     explicit NcCodeEdit(QWidget* parent = nullptr);
 
@@ -111,10 +111,10 @@ class NcCodeEdit : public QPlainTextEdit {
     bool windowingAllowed_ = false;
     bool windowed_ = false;
     bool movingWindow_ = false;
-    LineStore store_;        ///< the whole text while windowed
-    int windowStart_ = 0;    ///< store line of the document's first block
-    int windowLines_ = 1;    ///< store lines the document stood for when shown
-    int shownRevision_ = 0;  ///< document revision when the window was shown/spliced
+    LineStore store_;            ///< the whole text while windowed
+    int windowStart_ = 0;        ///< store line of the document's first block
+    int windowLines_ = 1;        ///< store lines the document stood for when shown
+    bool windowEdited_ = false;  ///< the document changed since it was shown/spliced
     bool storeModified_ = false;
     bool reportedModified_ = false;
 };

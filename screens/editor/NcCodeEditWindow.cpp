@@ -22,10 +22,10 @@ bool NcCodeEdit::nearWindowEdge(int local, int extent) const {
 }
 
 void NcCodeEdit::spliceWindow() {
-    if (!windowed_ || document()->revision() == shownRevision_) return;
+    if (!windowed_ || !windowEdited_) return;
     store_.replace(windowStart_, windowLines_, document()->toPlainText());
     windowLines_ = document()->blockCount();
-    shownRevision_ = document()->revision();
+    windowEdited_ = false;
     if (document()->isModified()) storeModified_ = true;
 }
 

@@ -11,6 +11,7 @@
 #include <QScrollBar>
 #include <QTemporaryDir>
 #include <QTextBlock>
+#include <QWheelEvent>
 
 #include "PanelFixture.h"
 #include "screens/editor/EditorScreen.h"
@@ -255,6 +256,24 @@ class EditorWindowTest : public QObject {
                      20000);
         QVERIFY(qAbs(edit->cursorLine() - 20001) < NcCodeEdit::kWindowLines);
         QCOMPARE(edit->cursorForPosition(QPoint(1, 1)).block().text(), lineOf(original_, 20001));
+        // The mouse wheel through two windows (15 lines a turn, 150 turns).
+        auto topLine = [edit] {
+            return edit->windowStart() + edit->cursorForPosition(QPoint(1, 1)).blockNumber() + 1;
+        };
+        const int before = topLine();
+        for (int turn = 0; turn < 150; ++turn) {
+            const QPoint at(20, 20);
+            QWheelEvent wheel(at, edit->viewport()->mapToGlobal(at), QPoint(),
+                              QPoint(0, -120 * 5), Qt::NoButton, Qt::NoModifier,
+                              Qt::NoScrollPhase, false);
+            QApplication::sendEvent(edit->viewport(), &wheel);
+            QApplication::processEvents();
+        }
+        QTRY_COMPARE(topLine(), before + 150 * 15);
+        QVERIFY(edit->windowStart() > 20000);
+        QCOMPARE(edit->cursorForPosition(QPoint(1, 1)).block().text(),
+                 lineOf(original_, topLine()));
+        QCOMPARE(bar->value(), topLine() - 1);
         bar->setValue(0);
         QTRY_COMPARE(edit->windowStart(), 0);
         QCOMPARE(edit->cursorForPosition(QPoint(1, 1)).blockNumber(), 0);
