@@ -58,6 +58,8 @@ class BlockParser {
 
     // Keywords (BlockParserKeywords.cpp).
     bool parseKeyword(std::string_view name, std::uint32_t start);
+    /// MQxxx / QQxxx: an M or Q word marked kWordSwift.
+    bool parseSwiftAux(std::string_view name, std::uint32_t start);
     bool parseJump(JumpKind kind, std::uint32_t start);
     bool parseJumpLabel(Word& word, std::uint32_t start);
     bool parseEvent(Word& word, std::uint32_t start);

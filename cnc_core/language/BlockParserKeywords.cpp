@@ -44,6 +44,15 @@ std::uint32_t findMacroUse(std::string_view text, std::uint32_t begin, std::uint
     return kNotFound;
 }
 
+/// "MQ" / "QQ" alone or followed by digits only (the value's first digits
+/// were read into the identifier): a swift auxiliary function.
+bool isSwiftAuxName(std::string_view name) {
+    if (name.size() < 2 || (name[0] != 'M' && name[0] != 'Q') || name[1] != 'Q') return false;
+    for (std::size_t i = 2; i < name.size(); ++i)
+        if (name[i] < '0' || name[i] > '9') return false;
+    return true;
+}
+
 }  // namespace
 
 bool BlockParser::parseKeyword(std::string_view name, std::uint32_t start) {
@@ -71,7 +80,20 @@ bool BlockParser::parseKeyword(std::string_view name, std::uint32_t start) {
         case KeywordClass::None:
             break;
     }
+    if (isSwiftAuxName(name)) return parseSwiftAux(name, start);
     return error("PARSE_UNKNOWN_WORD", start, "unknown word '" + shortened(name) + "'");
+}
+
+bool BlockParser::parseSwiftAux(std::string_view name, std::uint32_t start) {
+    lexer_.seek(start + 2);  // the value follows "MQ" / "QQ" like after M / Q
+    const std::size_t before = program_.words.size();
+    const bool m = name[0] == 'M';
+    if (!parseValue(m ? WordKind::M : WordKind::Q, name[0], 0, start)) return false;
+    if (program_.words.size() != before + 1) return true;
+    Word word = program_.words.back();
+    word.flags |= kWordSwift;
+    program_.words.set(before, word);
+    return true;
 }
 
 // ---------------------------------------------------------------- jumps

@@ -57,6 +57,9 @@ enum WordFlags : std::uint8_t {
     /// The control cannot run it uncompiled: the interpreter reports
     /// "needs the NC compiler".
     kWordNeedsCompiler = 1,
+    /// M or Q written as a swift auxiliary function, MQxxx / QQxxx (seed
+    /// 001 ch. 6: allowed inside a look-ahead segment). Runs like M / Q.
+    kWordSwift = 2,
 };
 
 /// One word of a block.

@@ -47,6 +47,16 @@ TEST(InterpCommit, RejectedBlockChangesNothing) {
         << "aux functions leave before the move of their block";
 }
 
+TEST(InterpCommit, SwiftFunctionsLeaveLikeMAndQ) {
+    Station mill(demoCell(), 0);
+    const RunResult r = mill.run("N1 MQ3 QQ17 G0 X5\nN2 M0\n");
+    ASSERT_EQ(r.status, RunStatus::Stopped) << r.diagnostics.size();
+    EXPECT_EQ(mill.sink->text.substr(0, mill.sink->text.find("motion")),
+              "aux P1 N0001 L1 M3\naux P1 N0001 L1 Q17\n");
+    EXPECT_EQ(mill.interpreter->state().mGroups[2], 3);
+    EXPECT_EQ(mill.interpreter->state().lastQ, 17);
+}
+
 TEST(InterpCommit, RejectedJumpChangesNothing) {
     Station mill(demoCell(), 0);
     RunResult r = mill.run("N1 @1=1\nN2 @1=2 M3 BSR .MISSING\n");

@@ -113,7 +113,7 @@ TEST(LookAheadPass, DecelerationSplitsALongBlockIntoSubBlocks) {
 
 TEST(LookAheadPass, AxisFeedAccEffAndSwiftFunctions) {
     const CompileResult r = compileLa(
-        "N0001 G0 X0 Y0\nN0002 LA_ON\nN0003 G1 X100 Y100 FY=3000 ACC_EFF=50 SE 1:5 Q12\n"
+        "N0001 G0 X0 Y0\nN0002 LA_ON\nN0003 G1 X100 Y100 FY=3000 ACC_EFF=50 SE 1:5 QQ12 MQ7\n"
         "N0004 LA_OFF\n");
     ASSERT_EQ(r.status, CompileStatus::Compiled) << errorList(r);
     const auto moves = objectMoves(r.objectText, millLimits());
@@ -121,7 +121,7 @@ TEST(LookAheadPass, AxisFeedAccEffAndSwiftFunctions) {
         EXPECT_LE(m.feed / std::sqrt(2.0), 3000.0 + 1e-9);
     EXPECT_TRUE(objectViolations(moves, millLimits(), 5.0, 0.5).empty());
     const auto lines = mtc::test::objectBlocks(r);
-    EXPECT_NE(lines[2].find("SE 1:5 Q12"), std::string::npos) << lines[2];
+    EXPECT_NE(lines[2].find("SE 1:5 QQ12 MQ7"), std::string::npos) << lines[2];
     EXPECT_EQ(r.objectText.find("FY="), std::string::npos);
     EXPECT_EQ(r.objectText.find("ACC_EFF"), std::string::npos);
 }
@@ -208,6 +208,7 @@ TEST(LookAheadPass, EveryErrorConditionIsReportedAtItsBlock) {
         {"N0001 LA_ON\nN0002 LA_ON\nN0003 LA_OFF\n", "LA_NESTED", "N0002"},
         {"N0001 LA_ON G1 X5\nN0002 LA_OFF\n", "LA_KEYWORD_NOT_ALONE", "N0001"},
         {"N0001 LA_ON\nN0002 G1 X5 F100 M8\nN0003 LA_OFF\n", "LA_COMMAND_NOT_ALLOWED", "N0002"},
+        {"N0001 LA_ON\nN0002 G1 X5 F100 Q12\nN0003 LA_OFF\n", "LA_COMMAND_NOT_ALLOWED", "N0002"},
         {"N0001 LA_ON\nN0002 G4 F100\nN0003 LA_OFF\n", "LA_COMMAND_NOT_ALLOWED", "N0002"},
         {"N0001 LA_ON\nN0002 @1=2\nN0003 LA_OFF\n", "LA_COMMAND_NOT_ALLOWED", "N0002"},
         {"N0001 LA_ON\nN0002 BRA .X\nN0003 .X LA_OFF\n", "LA_COMMAND_NOT_ALLOWED", "N0002"},

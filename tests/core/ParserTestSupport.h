@@ -92,10 +92,10 @@ inline std::string describeWord(const Program& p, const Word& w) {
             name = "G";
             break;
         case WordKind::M:
-            name = "M";
+            name = w.flags & kWordSwift ? "MQ" : "M";
             break;
         case WordKind::Q:
-            name = "Q";
+            name = w.flags & kWordSwift ? "QQ" : "Q";
             break;
         case WordKind::S:
             name = "S";

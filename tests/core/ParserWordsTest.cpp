@@ -30,6 +30,24 @@ TEST(ParserWords, MotionBlockWithNumberAndFeed) {
     EXPECT_EQ(p.words[2].number, -3.5);
 }
 
+TEST(ParserWords, SwiftAuxiliaryFunctions) {
+    EXPECT_EQ(words("G1 X5 MQ12 QQ340 M8 Q7 MQ=@3"), "G1 X5 MQ12 QQ340 M8 Q7 MQ=@3");
+    Program p = parse("MQ12 QQ340");
+    EXPECT_EQ(p.words[0].kind, WordKind::M);
+    EXPECT_EQ(p.words[0].number, 12.0);
+    EXPECT_TRUE(p.words[0].flags & kWordSwift);
+    EXPECT_EQ(p.words[1].kind, WordKind::Q);
+    EXPECT_EQ(p.words[1].number, 340.0);
+    // Only MQ / QQ followed by a value; other names stay unknown words.
+    for (const char* bad : {"MQX12", "QQQ5", "MQ_1"}) {
+        Program wrong = parse(std::string("G1 ") + bad);
+        ASSERT_FALSE(wrong.diagnostics.empty()) << bad;
+        EXPECT_EQ(wrong.diagnostics.items()[0].code, "PARSE_UNKNOWN_WORD") << bad;
+    }
+    Program noValue = parse("MQ");
+    ASSERT_FALSE(noValue.diagnostics.empty());
+}
+
 TEST(ParserWords, AxisLettersWithoutIndex) {
     EXPECT_EQ(words("X50 Z-36.15 U1.25 V+4 W0 A90 B-45 C360"),
               "X50 Z-36.15 U1.25 V4 W0 A90 B-45 C360");

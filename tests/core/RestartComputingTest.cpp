@@ -227,6 +227,17 @@ TEST(RestartComputing, BuffersKeepTheLast40AndSkipM19) {
     EXPECT_EQ(c.state().mGroups[2], 19);
 }
 
+TEST(RestartComputing, SwiftFunctionsAreCollectedLikeTheirPlainForms) {
+    RestartCell mill(0);  // MQ / QQ are M / Q output without waiting (decision LA-013)
+    mill.add("N0001 MQ108 QQ31\nN0002 MQ512 M19\nN0003 @1=1\nN0004 M30\n", 1);
+    auto c = compute(mill, mill.selection(1, 1, 3));
+    ASSERT_EQ(c->progress().status, ComputingStatus::TargetReached);
+    EXPECT_EQ(c->state().mGroups[5], 108) << "MQ108 sets its M group";
+    ASSERT_EQ(c->collector().m16().size(), 1u);
+    EXPECT_EQ(mill.page(61, 1, 1), 512) << "MQ512 is kept in the M(16) buffer";
+    EXPECT_EQ(mill.page(61, 2, 1), 31) << "QQ31 is kept in the Q buffer";
+}
+
 TEST(RestartComputing, AuxOutputFollowsBxx058To061) {
     RestartCell mill(0);  // Bxx.058..061 = No
     mill.add("N0001 T3 S1200 M3 M108 Q7\nN0002 @1=1\nN0003 M30\n", 1);

@@ -18,6 +18,8 @@ std::string describeWord(const Word& w) {
     switch (w.kind) {
         case WordKind::M:
             return constant ? "M" + formatCoordinate(w.number) : "M";
+        case WordKind::Q:
+            return constant ? "Q" + formatCoordinate(w.number) : "Q";
         case WordKind::D:
             return constant ? "D" + formatCoordinate(w.number) : "D";
         case WordKind::EffectiveRadius:
@@ -120,7 +122,7 @@ bool Analyzer::insideWord(std::size_t i, const Program& program, const Word& w, 
         report(i, "LA_COMMAND_NOT_ALLOWED", what + " not allowed in LA segment",
                {"Between LA_ON and LA_OFF only these may be programmed:",
                 "G1, G2, G3, axis end points, I/J/K, F, F<axis>=, ACC_EFF=,",
-                "events SE/RE and swift auxiliary functions (Q, S)."});
+                "events SE/RE and swift auxiliary functions (MQ, QQ, S)."});
         return true;
     };
     const bool constant = w.expr < 0;
@@ -163,9 +165,14 @@ bool Analyzer::insideWord(std::size_t i, const Program& program, const Word& w, 
             state_.pathFeed = w.number;
             state_.axisFeedAxis = -1;
             return true;
+        case WordKind::M:
         case WordKind::Q:
+            // Only the swift outputs MQxxx / QQxxx (LA-008); a plain M or Q
+            // waits for its acknowledgement and would break the profile.
+            if (w.flags & kWordSwift) return false;
+            return notAllowed(raw.empty() ? describeWord(w) : raw);
         case WordKind::S:
-            return false;  // swift auxiliary functions stay
+            return false;  // S counts as a swift auxiliary function (LA-008)
         case WordKind::T:
         case WordKind::E:
             report(i, "LA_TOOL_CHANGE", "tool change not allowed in LA segment",
