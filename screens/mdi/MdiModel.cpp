@@ -133,6 +133,13 @@ QString MdiModel::modeSummary() const {
     if (session_->clock(slot_).mdiRunning())
         return control.programHeld() ? "MDI entry held: Start continues" : "MDI entry running";
     if (refusal.empty()) return "MDI mode: Start runs the input";
+    if (control.mode() != mtc::core::OperatingMode::Mdi) {
+        QString mode = QString::fromUtf8(mtc::core::modeName(control.mode()));
+        mode[0] = mode[0].toUpper();
+        return mode +
+               " mode: Start does not run this input; select MDI mode with the M key MDI "
+               "(Shift+F9)";
+    }
     return QString::fromStdString(refusal);
 }
 

@@ -20,6 +20,7 @@ QLabel* makeLabel(QWidget* parent, const char* name, const QFont& font) {
     label->setObjectName(name);
     label->setFont(font);
     label->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    label->setWordWrap(true);  // long texts must not widen the panel's minimum size
     return label;
 }
 
@@ -48,7 +49,6 @@ MdiScreen::MdiScreen(const mtc::hmi::ScreenContext& context,
     input_->setPlaceholderText("NC blocks, one a line (global macros allowed); Start runs them");
     input_->setMaximumHeight(input_->fontMetrics().lineSpacing() * 6);
     message_ = makeLabel(this, "mdiMessage", font());
-    message_->setWordWrap(true);
     history_ = new QListWidget(this);
     history_->setObjectName("mdiHistory");
     history_->setFont(fixed);

@@ -190,7 +190,7 @@ class MdiScreenTest : public QObject {
         panel.session->clock(0).setSpeed(1000);
         openMdi(panel);
         type(panel, "G1 X33 F1000");
-        QVERIFY2(label(panel, "mdiMode").contains("select MDI mode"),
+        QVERIFY2(label(panel, "mdiMode").contains("Start does not run this input"),
                  qPrintable(label(panel, "mdiMode")));
         panel.press(Qt::Key_F5, Qt::ShiftModifier);  // automatic, nothing selected
         QVERIFY(!panel.session->control(0).programActive());
