@@ -98,7 +98,13 @@ void MdiModel::ended(bool completed) {
     QString outcome = completed ? "done" : "reset";
     if (diagnostics.hasErrors()) {
         report(diagnostics, running_);
-        outcome = "error: " + message_;
+        for (const auto& d : diagnostics.items())
+            if (d.severity == mtc::core::Severity::Error) {
+                outcome = QString("error line %1: %2")
+                              .arg(d.where.line)
+                              .arg(QString::fromStdString(d.message));
+                break;
+            }
     } else if (completed) {
         setMessage("MDI entry done", false);
         if (input_ == running_) input_.clear();  // MDI-004: ready for the next entry

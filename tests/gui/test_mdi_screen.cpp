@@ -162,7 +162,8 @@ class MdiScreenTest : public QObject {
         QVERIFY2(label(panel, "mdiMessage").startsWith("MDI line 2: error [AXIS_UNKNOWN]"),
                  qPrintable(label(panel, "mdiMessage")));
         auto* history = child<QListWidget>(panel, "mdi", "mdiHistory");
-        QVERIFY2(history->item(0)->text().contains("error"), qPrintable(history->item(0)->text()));
+        QVERIFY2(history->item(0)->text().contains("[error line 2: this process has no axis A]"),
+                 qPrintable(history->item(0)->text()));
 
         panel.press(Qt::Key_F4);  // Error display
         QCOMPARE(panel.window->currentScreenName(), QString("errors"));
