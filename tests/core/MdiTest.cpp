@@ -8,6 +8,7 @@
 #include <random>
 
 #include "InterpTestSupport.h"
+#include "RestartStation.h"
 #include "cnc_core/mdi/MdiEntry.h"
 #include "cnc_core/mdi/MdiRun.h"
 
@@ -188,6 +189,18 @@ TEST(MdiRefusalTest, OnlyInMdiModeAndWithoutAnActiveProgram) {
     control.setProgramActive(true);
     EXPECT_NE(mdiRefusal(control).find("program is active"), std::string::npos);
     EXPECT_FALSE(control.press(ControlKey::Automatic)) << "no mode change while the entry runs";
+}
+
+TEST(MdiRefusalTest, TheMdiKeyIsRefusedDuringAnNcProgramRestart) {
+    RestartStation mill(0);
+    mill.cell.add(kLibrary, 99);
+    mill.cell.add(kMain, 1);
+    ASSERT_TRUE(mill.accept(mill.cell.selection(1, 1, 4)));
+    ASSERT_EQ(mill.runUntilWaiting(), RestartPhase::TargetReached);
+    EXPECT_FALSE(mill.control.press(ControlKey::Mdi));
+    EXPECT_NE(mill.control.alarm().find("MDI refused"), std::string::npos) << mill.control.alarm();
+    EXPECT_EQ(mill.control.mode(), OperatingMode::Automatic);
+    EXPECT_EQ(mill.sequence.phase(), RestartPhase::TargetReached) << "the restart goes on";
 }
 
 struct MdiRunner : ProgramRunner {

@@ -220,7 +220,7 @@ class MdiScreenTest : public QObject {
         panel.press(Qt::Key_F5, Qt::ShiftModifier);
         QTRY_VERIFY(panel.session->control(0).programHeld());
         QCOMPARE(panel.session->machine(0).position(0), 3.0);
-        panel.press(Qt::Key_F9, Qt::ShiftModifier);  // no mode change while it is active
+        panel.press(Qt::Key_F4, Qt::ShiftModifier);  // Automatic: refused while the entry is active
         QCOMPARE(panel.session->control(0).mode(), OperatingMode::Mdi);
         panel.press(Qt::Key_F7, Qt::ShiftModifier);  // Control reset
         QVERIFY(!panel.session->control(0).programActive());
