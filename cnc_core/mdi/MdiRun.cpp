@@ -32,6 +32,11 @@ RunResult MdiRun::step() {
         return result;
     }
     result = interpreter_->step();
+    if (result.status == RunStatus::Running && entryDone()) {
+        abandon();  // the last block was executed: the entry ends with it
+        result.status = RunStatus::Ended;
+        return result;
+    }
     if (result.status == RunStatus::Ended || result.status == RunStatus::Error ||
         result.status == RunStatus::BudgetExceeded)
         abandon();

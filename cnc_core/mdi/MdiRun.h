@@ -18,9 +18,9 @@ class MdiRun {
     /// Selects `program` on `interpreter` (not owned; must outlive the run).
     /// False with `diagnostics` when the interpreter refuses it.
     bool begin(Interpreter& interpreter, ProgramPtr program, DiagnosticList* diagnostics = nullptr);
-    /// Executes at most one block of the entry. Ended once the entry is done
-    /// (then the run is over); Error ends the run as well (the state is the
-    /// one before the rejected block); Stopped (M00, a held GAX) keeps it.
+    /// Executes at most one block of the entry. Ended with the entry's last
+    /// block (then the run is over, no extra step for the end); Error ends the run as well (the
+    /// state is the one before the rejected block); Stopped (M00, a held GAX) keeps it.
     RunResult step();
     /// Steps until the entry ends, stops, fails or `budget` blocks ran
     /// (BLOCK_BUDGET; the run is abandoned).

@@ -169,6 +169,20 @@ TEST(MdiRunTest, StepsStopAtM00AndGoOn) {
     EXPECT_DOUBLE_EQ(mill.interpreter->state().modal.machine[0], 2.0);
 }
 
+TEST(MdiRunTest, TheLastBlockEndsTheEntry) {
+    Station mill(demoCell(), 0);
+    const MdiEntry entry = prepareMdiEntry("G1 X1 F100\n\nX2 ;last", kMacros);
+    MdiRun run;
+    ASSERT_TRUE(run.begin(*mill.interpreter, entry.program));
+    EXPECT_EQ(run.step().status, RunStatus::Running);
+    EXPECT_TRUE(run.active());
+    const RunResult last = run.step();
+    EXPECT_EQ(last.status, RunStatus::Ended) << "no extra step (or single-block hold) after X2";
+    EXPECT_EQ(last.blocksInterpreted, 1u);
+    EXPECT_FALSE(run.active());
+    EXPECT_DOUBLE_EQ(mill.interpreter->state().modal.machine[0], 2.0);
+}
+
 TEST(MdiRunTest, AnEndlessEntryIsBoundedByTheBudget) {
     Station mill(demoCell(), 0);
     const MdiEntry entry = prepareMdiEntry("N1 .LOOP @1=@1+1\nN2 BRA .LOOP", kMacros);

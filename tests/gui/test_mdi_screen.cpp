@@ -235,6 +235,23 @@ class MdiScreenTest : public QObject {
         QCOMPARE(panel.session->machine(0).position(0), 9.0);
     }
 
+    void singleBlockHoldsAfterEachBlockOfTheEntry() {
+        PanelFixture panel(options());
+        panel.session->clock(0).setSpeed(1000);
+        openMdi(panel);
+        mdiMode(panel);
+        type(panel, "G1 X2 F600\nX4");
+        panel.press(Qt::Key_F8, Qt::ShiftModifier);  // single block on
+        panel.press(Qt::Key_F5, Qt::ShiftModifier);
+        QTRY_VERIFY(panel.session->control(0).programHeld());
+        QCOMPARE(panel.session->machine(0).position(0), 2.0);
+        QVERIFY2(label(panel, "mdiMode").contains("held"), qPrintable(label(panel, "mdiMode")));
+        startAndWait(panel);  // the last block ends the entry: no further hold
+        QCOMPARE(panel.session->machine(0).position(0), 4.0);
+        QVERIFY(!panel.session->control(0).programHeld());
+        QVERIFY(child<QListWidget>(panel, "mdi", "mdiHistory")->item(0)->text().contains("[done]"));
+    }
+
     void eachStationKeepsItsInput() {
         PanelFixture panel(options());
         QPlainTextEdit* mill = openMdi(panel);
