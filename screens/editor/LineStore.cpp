@@ -24,7 +24,11 @@ void appendLineStarts(const char* bytes, std::size_t size, std::size_t base,
 }  // namespace
 
 LineStore::LineStore(std::string text) : text_(std::move(text)) {
-    starts_.reserve(static_cast<std::size_t>(std::count(text_.begin(), text_.end(), '\n')) + 1);
+    // Room for edits: an insert must not copy the whole text to a new
+    // buffer (untouched reserve costs no resident memory).
+    text_.reserve(text_.size() + text_.size() / 16 + 65536);
+    const auto lines = static_cast<std::size_t>(std::count(text_.begin(), text_.end(), '\n')) + 1;
+    starts_.reserve(lines + lines / 16 + 4096);
     appendLineStarts(text_.data(), text_.size(), 0, starts_);
 }
 

@@ -96,7 +96,15 @@ class NcCodeEdit : public QPlainTextEdit {
     bool nearWindowEdge(int local, int extent) const;
     void spliceWindow();
     void moveWindow(int start, int viewTop);
-    void placeCursor(int line, int column, int viewTop);
+    /// A place in the whole text: 0-based line and column.
+    struct TextPoint {
+        int line;
+        int column;
+    };
+    TextPoint textPoint(int position) const;
+    int documentPosition(const TextPoint& point) const;
+    int windowEnd() const { return windowStart_ + document()->blockCount(); }
+    void placeCursor(TextPoint position, const TextPoint& anchor, int viewTop);
     void followCursor();
     void followView();
     void syncWholeBar();

@@ -34,9 +34,8 @@ void NcCodeEdit::moveWindow(int start, int viewTop) {
     const int total = store_.count();
     start = std::clamp(start, 0, std::max(0, total - kWindowLines));
     if (start == windowStart_) return;
-    const QTextCursor cursor = textCursor();
-    const int line = windowStart_ + cursor.blockNumber();
-    const int column = cursor.positionInBlock();
+    const TextPoint position = textPoint(textCursor().position());
+    const TextPoint anchor = textPoint(textCursor().anchor());
     const int top = viewTop >= 0 ? viewTop : windowStart_ + firstVisibleBlock().blockNumber();
     movingWindow_ = true;
     {
@@ -45,7 +44,7 @@ void NcCodeEdit::moveWindow(int start, int viewTop) {
         windowStart_ = start;
         windowLines_ = std::min(kWindowLines, total - start);
         showDocumentText(store_.text(start, windowLines_));
-        placeCursor(line, column, top);
+        placeCursor(position, anchor, top);
         verticalScrollBar()->setValue(top - windowStart_);
     }
     movingWindow_ = false;
@@ -57,16 +56,30 @@ void NcCodeEdit::moveWindow(int start, int viewTop) {
     emit cursorPositionChanged();
 }
 
-void NcCodeEdit::placeCursor(int line, int column, int viewTop) {
+NcCodeEdit::TextPoint NcCodeEdit::textPoint(int position) const {
+    const QTextBlock block = document()->findBlock(position);
+    return {windowStart_ + block.blockNumber(), position - block.position()};
+}
+
+int NcCodeEdit::documentPosition(const TextPoint& point) const {
+    const QTextBlock block = document()->findBlockByNumber(point.line - windowStart_);
+    return block.position() + std::min(point.column, block.length() - 1);
+}
+
+void NcCodeEdit::placeCursor(TextPoint position, const TextPoint& anchor, int viewTop) {
     // The cursor keeps its place unless the window left it (or nearly): it
-    // goes to the top line of the view then.
-    int local = line - windowStart_;
-    if (nearWindowEdge(local, 1)) {
-        local = std::clamp(viewTop - windowStart_, 0, document()->blockCount() - 1);
-        column = 0;
+    // goes to the top line of the view then. A selection stays while its
+    // anchor is in the window.
+    if (nearWindowEdge(position.line - windowStart_, 1)) {
+        position = {std::clamp(viewTop, windowStart_, windowEnd() - 1), 0};
+        setTextCursor(QTextCursor(document()->findBlockByNumber(position.line - windowStart_)));
+        return;
     }
-    QTextCursor cursor(document()->findBlockByNumber(local));
-    cursor.setPosition(cursor.block().position() + std::min(column, cursor.block().length() - 1));
+    QTextCursor cursor(document());
+    const int local = anchor.line - windowStart_;
+    const bool anchorInside = local >= 0 && local < document()->blockCount();
+    cursor.setPosition(documentPosition(anchorInside ? anchor : position));
+    cursor.setPosition(documentPosition(position), QTextCursor::KeepAnchor);
     setTextCursor(cursor);
 }
 

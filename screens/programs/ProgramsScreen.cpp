@@ -30,6 +30,7 @@ ProgramsScreen::ProgramsScreen(const mtc::hmi::ScreenContext& context,
     listing_->setFocusPolicy(Qt::NoFocus);
     listing_->setFont(QFontDatabase::systemFont(QFontDatabase::FixedFont));
     listing_->setLineWrapMode(QPlainTextEdit::NoWrap);
+    listing_->setWindowing(true);  // ED-009: a large program shows at once
     message_ = new QLabel(this);
     message_->setObjectName("programsMessage");
     auto* columns = new QHBoxLayout;
@@ -64,7 +65,7 @@ void ProgramsScreen::showListing() {
     const auto program = context().session->program(context().process, number);
     if (program == shownProgram_ && program) return;
     shownProgram_ = program;
-    listing_->load(program ? QString::fromStdString(program->source) : QString());
+    listing_->load(program ? program->source : std::string());
 }
 
 int ProgramsScreen::currentNumber() const {

@@ -176,6 +176,17 @@ class EditorWindowTest : public QObject {
         for (int presses = 0; edit->cursorLine() < lines && presses < 400; ++presses)
             panel.press(Qt::Key_PageDown);
         QCOMPARE(edit->cursorLine(), lines);
+        // A selection across a window move keeps its anchor (while the anchor
+        // is in the window: it starts about 700 lines above the window's end).
+        while (edit->textCursor().blockNumber() > edit->document()->blockCount() - 700)
+            panel.press(Qt::Key_PageUp);
+        const int from = edit->cursorLine();
+        const int window = edit->windowStart();
+        for (int presses = 0; edit->windowStart() == window && presses < 400; ++presses)
+            panel.press(Qt::Key_PageUp, Qt::ShiftModifier);
+        QVERIFY(edit->windowStart() < window);
+        QCOMPARE(edit->textCursor().selectedText().count(QChar::ParagraphSeparator),
+                 from - edit->cursorLine());
         qInfo("200,000 blocks: open %lld ms, Ctrl+End %lld ms, slowest PgUp %lld ms", openMs, endMs,
               slowestPageMs);
     }
@@ -229,6 +240,9 @@ class EditorWindowTest : public QObject {
     void errorWindowEnterAndScrollBarReachFarLines() {
         PanelFixture panel(options());
         pickProgram(panel, 9);
+        auto* listing = child<NcCodeEdit>(panel, "programs", "programListing");
+        QVERIFY(listing->windowed());  // the directory's listing shows it at once too
+        QCOMPARE(listing->lineCount(), kHeaderLines + kBlocks + 1);
         panel.press(Qt::Key_F6);  // Compiler active = Yes
         panel.press(Qt::Key_F3);  // Compile: the faulty definition at kFaultyLine
         QVERIFY2(directoryRow(panel, 9).contains("[E]"),
@@ -263,9 +277,8 @@ class EditorWindowTest : public QObject {
         const int before = topLine();
         for (int turn = 0; turn < 150; ++turn) {
             const QPoint at(20, 20);
-            QWheelEvent wheel(at, edit->viewport()->mapToGlobal(at), QPoint(),
-                              QPoint(0, -120 * 5), Qt::NoButton, Qt::NoModifier,
-                              Qt::NoScrollPhase, false);
+            QWheelEvent wheel(at, edit->viewport()->mapToGlobal(at), QPoint(), QPoint(0, -120 * 5),
+                              Qt::NoButton, Qt::NoModifier, Qt::NoScrollPhase, false);
             QApplication::sendEvent(edit->viewport(), &wheel);
             QApplication::processEvents();
         }
