@@ -55,9 +55,11 @@ class PanelShellTest : public QObject {
         PanelFixture panel;
         panel.press(Qt::Key_F1);
         QCOMPARE(panel.window->currentScreenName(), QString("programs"));
+        panel.press(Qt::Key_F5);  // NC options: F5-F7 are blank there
+        QCOMPARE(panel.window->currentScreenName(), QString("nc-options"));
         QVERIFY(!panel.window->findChild<QPushButton*>("softkey5")->isEnabled());
         panel.press(Qt::Key_F5);
-        QCOMPARE(panel.window->currentScreenName(), QString("programs"));
+        QCOMPARE(panel.window->currentScreenName(), QString("nc-options"));
     }
 
     void stationsSwitchWithCtrlPageKeysAndKeepTheirScreen() {
