@@ -41,6 +41,7 @@ void NcCodeEdit::moveWindow(int start, int viewTop) {
     {
         // The view's own signals would report lines of a half-moved window.
         const QSignalBlocker quiet(this);
+        setExtraSelections({});  // marks belong to the old document
         windowStart_ = start;
         windowLines_ = std::min(kWindowLines, total - start);
         showDocumentText(store_.text(start, windowLines_));

@@ -21,10 +21,12 @@ RuntimeScreen::RuntimeScreen(const mtc::hmi::ScreenContext& context,
     source_->setObjectName("runtimeSource");
     source_->setReadOnly(true);
     source_->setFocusPolicy(Qt::NoFocus);
+    source_->setWindowing(true);  // ED-009: large programs through a window
     compiled_ = new NcCodeEdit(this);
     compiled_->setObjectName("runtimeCompiled");
     compiled_->setReadOnly(true);
     compiled_->setTextInteractionFlags(Qt::TextSelectableByKeyboard | Qt::TextSelectableByMouse);
+    compiled_->setWindowing(true);
     note_ = new QLabel(this);
     note_->setObjectName("runtimeNote");
     note_->setWordWrap(true);
@@ -60,7 +62,7 @@ void RuntimeScreen::showProgram() {
                           .arg(program_, 3, 10, QChar('0'))
                           .arg(program ? QString::fromStdString(program->name) : "(none)")
                           .arg(QChar(mtc::core::statusLetter(status))));
-    source_->load(program ? QString::fromStdString(program->source) : QString());
+    source_->load(program ? program->source : std::string());
     showSegment(segment_);
     listing_ = {};
     if (result && result->status == mtc::core::CompileStatus::Compiled) {
@@ -70,7 +72,7 @@ void RuntimeScreen::showProgram() {
                            .arg(listing_.intermediateBlocks)
                            .arg(kIntermediateArrow.trimmed()));
     } else if (status == mtc::core::CompileStatus::NotNeeded && program) {
-        compiled_->load(QString::fromStdString(program->source));
+        compiled_->load(program->source);
         note_->setText("The program needs no compilation: it runs as written.");
     } else {
         compiled_->load(QString());
@@ -99,17 +101,16 @@ void RuntimeScreen::showSegment(int index) {
 }
 
 void RuntimeScreen::followCompiledCursor() {
-    const int row = compiled_->textCursor().blockNumber();
+    const int row = compiled_->cursorLine() - 1;
     if (row < 0 || row >= listing_.sourceLine.size()) return;
     const int line = listing_.sourceLine[row];
     if (line <= 0) return;
     QTextEdit::ExtraSelection mark;
     mark.format.setBackground(QColor(255, 236, 150));
     mark.format.setProperty(QTextFormat::FullWidthSelection, true);
-    mark.cursor = QTextCursor(source_->document()->findBlockByNumber(line - 1));
+    source_->goToLine(line);  // moves the source's window when needed
+    mark.cursor = source_->textCursor();
     source_->setExtraSelections({mark});
-    source_->setTextCursor(mark.cursor);
-    source_->centerCursor();
 }
 
 mtc::hmi::SoftKeys RuntimeScreen::softKeys() {

@@ -18,6 +18,7 @@
 #include "screens/editor/LineStore.h"
 #include "screens/editor/NcCodeEdit.h"
 #include "screens/editor/NcHighlighter.h"
+#include "screens/runtime/RuntimeScreen.h"
 
 namespace {
 
@@ -43,6 +44,18 @@ QString largeProgram() {
             body += number + QString("G1 X%1 Y%2 F1000\n").arg(i % 97).arg(i % 89);
     }
     return programHeader(9, "Large") + body;
+}
+
+/// Program 10: moves after a good macro definition (compiles).
+QString compilableProgram() {
+    QString body = "N0000 DEFINE SAFE AS G0 Z50\n";
+    body.reserve(26 * kBlocks);
+    for (int i = 1; i < kBlocks; ++i)
+        body += QString("N%1 G1 X%2 Y%3 F1000\n")
+                    .arg(i % 10000, 4, 10, QChar('0'))
+                    .arg(i % 97)
+                    .arg(i % 89);
+    return body + "N9999 SAFE\n";
 }
 
 /// The 1-based line `line` of `text`.
@@ -71,6 +84,9 @@ class EditorWindowTest : public QObject {
     }
 
     mtc::hmi::PanelOptions options() {
+        // Every case starts with the compiler off (F6 toggles the cell's
+        // NC options, which a compile case leaves in the directory).
+        QFile::remove(QDir(dir_.path()).filePath("NC_OPTIONS.CFG"));
         mtc::hmi::PanelOptions o;
         o.programsDir = dir_.path();
         return o;
@@ -290,6 +306,40 @@ class EditorWindowTest : public QObject {
         bar->setValue(0);
         QTRY_COMPARE(edit->windowStart(), 0);
         QCOMPARE(edit->cursorForPosition(QPoint(1, 1)).blockNumber(), 0);
+    }
+
+    void runtimeViewFollowsAcrossWindows() {
+        PanelFixture panel(options());
+        // Not a .DAT file: no 10,000-line limit of the object file (seed 001 ch. 11).
+        panel.session->addProgram(0, 10, "large.nc", compilableProgram().toStdString());
+        pickProgram(panel, 10);
+        panel.press(Qt::Key_F6);  // Compiler active = Yes
+        panel.press(Qt::Key_F3);  // Compile
+        if (!directoryRow(panel, 10).contains("[C]")) {
+            panel.window->showScreen("errors");
+            QFAIL(qPrintable(child<QListWidget>(panel, "errors", "errorList")->item(0)->text()));
+        }
+        panel.session->selectProgram(0, 10);
+        QVERIFY(panel.window->showScreen("runtime"));
+        auto* source = child<NcCodeEdit>(panel, "runtime", "runtimeSource");
+        auto* compiled = child<NcCodeEdit>(panel, "runtime", "runtimeCompiled");
+        QVERIFY(source->windowed() && compiled->windowed());
+        compiled->setFocus();
+        const auto* screen =
+            qobject_cast<mtc::screens::RuntimeScreen*>(panel.window->currentScreen());
+        // Far down the compiled program: the source's window follows its line.
+        panel.press(Qt::Key_End, Qt::ControlModifier);
+        for (int i = 0; i < 40; ++i)
+            panel.press(Qt::Key_PageUp);
+        const int row = compiled->cursorLine() - 1;
+        const int line = screen->listing().sourceLine[row];
+        QVERIFY(line > 150000);
+        QCOMPARE(source->cursorLine(), line);
+        QVERIFY(source->windowStart() > 0);
+        const QString block = source->textCursor().block().text().section(' ', 0, 0);
+        QVERIFY2(compiled->textCursor().block().text().contains(block + ":"),
+                 qPrintable(compiled->textCursor().block().text() + " / " + block));
+        QCOMPARE(source->extraSelections().size(), 1);
     }
 };
 
