@@ -168,6 +168,7 @@ class EditorWindowTest : public QObject {
         QCOMPARE(edit->wholeScrollBar()->value(), edit->wholeScrollBar()->maximum());
         panel.press(Qt::Key_Up);
         QCOMPARE(edit->textCursor().block().text(), lineOf(original_, lines - 1));
+        QTRY_VERIFY(edit->textCursor().block().userState() == mtc::screens::kHighlighted);
         QCOMPARE(edit->cursorBlockId(), QString("N9999"));
 
         // PgUp until the window has moved twice: every stop shows its line.
