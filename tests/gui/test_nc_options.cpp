@@ -243,6 +243,10 @@ class NcOptionsTest : public QObject {
             object.write("stale\n");
         }
         QVERIFY2(rowOf(panel, 1, 8).contains("[C]"), qPrintable(rowOf(panel, 1, 8)));
+        pickProgram(panel, 8);
+        panel.press(Qt::Key_F2);  // the editor shows program 8 with its status
+        auto* heading = child<QLabel>(panel, "editor", "editorHeading");
+        QTRY_VERIFY2(heading->text().contains("status [C]"), qPrintable(heading->text()));
 
         panel.window->showScreen("nc-options");
         panel.press(Qt::Key_F2);
@@ -252,6 +256,7 @@ class NcOptionsTest : public QObject {
         QVERIFY2(rowOf(panel, 1, 8).contains("[N]"), qPrintable(rowOf(panel, 1, 8)));
         QVERIFY(!QFile::exists(path("N1010008.NCO")));
         QVERIFY(!QFile::exists(path("N1011008.NCO")));
+        QVERIFY2(heading->text().contains("status [N]"), qPrintable(heading->text()));
         // seed 001 ch. 9: the error files are cleared as well
         QVERIFY2(directoryRow(panel, 7).contains("[N]"), qPrintable(directoryRow(panel, 7)));
         QVERIFY(!QFile::exists(path("N1010007.ERR")));
