@@ -335,6 +335,25 @@ class NcOptionsTest : public QObject {
         QCOMPARE(readAll(path("GLOBAL_MACROS.MAC")), QString("DEFINE FAST AS G0\n"));
     }
 
+    void theOptionsFileIsReadAtStartAndItsBadLinesReported() {
+        mtc::hmi::PanelOptions o = options();
+        QFile file(path("NC_OPTIONS.CFG"));
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        file.write("COMPILER_ACTIVE = YES\nUSER_COMPILER_9 = x\n");
+        file.close();
+        PanelFixture panel(o);
+        QVERIFY(panel.session->ncOptions().compilerActive());
+        QVERIFY(panel.session->ncOptions().userCompilers().empty());
+        for (int slot = 0; slot < 2; ++slot) {  // both stations' error windows
+            panel.window->showStation(slot);
+            panel.window->showScreen("errors");
+            auto* list = panel.window->screen(slot, "errors")->findChild<QListWidget*>("errorList");
+            QTRY_VERIFY(list->count() >= 1);
+            QVERIFY2(!list->findItems("NC_OPTIONS.CFG line 2", Qt::MatchContains).isEmpty(),
+                     qPrintable(list->item(0)->text()));
+        }
+    }
+
     void theBuiltInCellKeepsTheOptionsInMemory() {
         PanelFixture panel;  // built-in demo programs, no directory
         panel.window->showScreen("nc-options");
