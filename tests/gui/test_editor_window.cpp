@@ -134,11 +134,16 @@ class EditorWindowTest : public QObject {
 
     void smallProgramsAreNotWindowed() {
         PanelFixture panel(options());
+        NcCodeEdit* edit = openLarge(panel);  // a large one first: the editor goes back
+        QVERIFY(edit && edit->windowed());
         panel.session->addProgram(0, 31, "small.nc", "N0000 G1 X1 F100\nN0001 M30\n");
-        panel.session->selectProgram(0, 31);
-        QVERIFY(panel.window->showScreen("editor"));
-        auto* edit = child<NcCodeEdit>(panel, "editor", "programEditor");
+        pickProgram(panel, 31);
+        panel.press(Qt::Key_F2);  // Edit
+        QCOMPARE(panel.window->currentScreenName(), QString("editor"));
         QVERIFY(!edit->windowed());
+        QCOMPARE(edit->windowStart(), 0);
+        QCOMPARE(edit->toPlainText(), QString("N0000 G1 X1 F100\nN0001 M30\n"));
+        QVERIFY(edit->verticalScrollBarPolicy() == Qt::ScrollBarAsNeeded);
         QVERIFY(!edit->wholeScrollBar());
         QCOMPARE(edit->lineCount(), 3);
         QCOMPARE(edit->blockCount(), 3);
