@@ -163,6 +163,21 @@ void BM_EnterAndBackspace(benchmark::State& state) {
 }
 BENCHMARK(BM_EnterAndBackspace)->Unit(benchmark::kMillisecond);
 
+/// Ctrl+End after a character typed near the start: the window's splice
+/// moves the whole text behind it (the worst case of a window move).
+void BM_CtrlEndAfterEditAtStart(benchmark::State& state) {
+    NcCodeEdit& edit = openEditor();
+    for (auto _ : state) {
+        state.PauseTiming();
+        press(edit, Qt::Key_Home, Qt::ControlModifier);
+        press(edit, Qt::Key_Down);
+        press(edit, Qt::Key_X, Qt::NoModifier, "x");
+        state.ResumeTiming();
+        press(edit, Qt::Key_End, Qt::ControlModifier);
+    }
+}
+BENCHMARK(BM_CtrlEndAfterEditAtStart)->Unit(benchmark::kMillisecond);
+
 /// What Save hands the workspace: the whole text with a fresh edit spliced in.
 void BM_WholeTextAfterEdit(benchmark::State& state) {
     NcCodeEdit& edit = openEditor();
