@@ -33,7 +33,9 @@ void NcCodeEdit::moveWindow(int start, int viewTop) {
     spliceWindow();
     const int total = store_.count();
     start = std::clamp(start, 0, std::max(0, total - kWindowLines));
-    if (start == windowStart_) return;
+    // The same place: nothing to do unless edits changed the window's size
+    // (a large delete could leave too few lines to move on).
+    if (start == windowStart_ && windowLines_ == std::min(kWindowLines, total - start)) return;
     const TextPoint position = textPoint(textCursor().position());
     const TextPoint anchor = textPoint(textCursor().anchor());
     const int top = viewTop >= 0 ? viewTop : windowStart_ + firstVisibleBlock().blockNumber();
@@ -85,6 +87,10 @@ void NcCodeEdit::placeCursor(TextPoint position, const TextPoint& anchor, int vi
 }
 
 void NcCodeEdit::keyPressEvent(QKeyEvent* event) {
+    if (windowed_ && event->matches(QKeySequence::SelectAll)) {
+        event->accept();  // would select the window only (ED-009)
+        return;
+    }
     if (windowed_ && (event->modifiers() & Qt::ControlModifier)) {
         if (event->key() == Qt::Key_End) moveWindow(INT_MAX, -1);
         if (event->key() == Qt::Key_Home) moveWindow(0, -1);

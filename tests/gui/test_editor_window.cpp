@@ -259,6 +259,26 @@ class EditorWindowTest : public QObject {
         writeProgram(QDir(dir_.path()), 9, original_);  // for the next test cases
     }
 
+    void aLargeDeleteInTheWindowLeavesTheRestReachable() {
+        PanelFixture panel(options());
+        NcCodeEdit* edit = openLarge(panel);
+        QVERIFY(edit);
+        panel.press(Qt::Key_A, Qt::ControlModifier);  // Select all: not offered while windowed
+        QVERIFY(!edit->textCursor().hasSelection());
+        QTextCursor all = edit->textCursor();  // the whole window, as a long selection would
+        all.select(QTextCursor::Document);
+        edit->setTextCursor(all);
+        panel.press(Qt::Key_Delete);
+        const int lines = kHeaderLines + kBlocks + 1 - NcCodeEdit::kWindowLines + 1;
+        QCOMPARE(edit->lineCount(), lines);
+        panel.press(Qt::Key_Down);
+        QCOMPARE(edit->cursorLine(), 2);
+        QCOMPARE(edit->textCursor().block().text(),
+                 lineOf(original_, NcCodeEdit::kWindowLines + 1));
+        panel.press(Qt::Key_End, Qt::ControlModifier);
+        QCOMPARE(edit->cursorLine(), lines);
+    }
+
     void errorWindowEnterAndScrollBarReachFarLines() {
         PanelFixture panel(options());
         pickProgram(panel, 9);
