@@ -44,6 +44,7 @@ NcCodeEdit::NcCodeEdit(QWidget* parent) : QPlainTextEdit(parent) {
     gutter_ = new Gutter(this);
     wholeBar_ = new QScrollBar(Qt::Vertical, this);
     wholeBar_->setObjectName("editorWholeScrollBar");
+    wholeBar_->setFocusPolicy(Qt::NoFocus);  // keys stay with the text
     wholeBar_->hide();
     connect(wholeBar_, &QScrollBar::valueChanged, this, &NcCodeEdit::wholeBarMoved);
     highlighter_ = new NcHighlighter(document());
