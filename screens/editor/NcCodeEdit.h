@@ -6,6 +6,7 @@
 
 #include "screens/editor/LineStore.h"
 
+class QMenu;
 class QScrollBar;
 
 namespace mtc::screens {
@@ -70,6 +71,9 @@ class NcCodeEdit : public QPlainTextEdit {
     NcHighlighter* highlighter() const { return highlighter_; }
     /// The scroll bar over the whole text while windowed (else nullptr).
     QScrollBar* wholeScrollBar() const { return windowed_ ? wholeBar_ : nullptr; }
+    /// The context menu at `position` (Qt's standard one; Select all is
+    /// disabled while windowed, as its key is). The caller owns it.
+    QMenu* contextMenu(const QPoint& position);
     /// Width of the line number gutter in pixels.
     int gutterWidth() const;
     /// Paints the gutter (called by the gutter widget).
@@ -85,6 +89,7 @@ class NcCodeEdit : public QPlainTextEdit {
   protected:
     void resizeEvent(QResizeEvent* event) override;
     void keyPressEvent(QKeyEvent* event) override;
+    void contextMenuEvent(QContextMenuEvent* event) override;
 
   private:
     void showDocumentText(const QString& text);

@@ -1,12 +1,15 @@
 // The window of NcCodeEdit over a large text (ED-009): the document holds
 // kWindowLines lines of the LineStore; the window moves with the cursor and
 // the view, edits are spliced back into the store before it moves.
+#include <QContextMenuEvent>
 #include <QKeyEvent>
+#include <QMenu>
 #include <QScrollBar>
 #include <QSignalBlocker>
 #include <QTextBlock>
 #include <algorithm>
 #include <climits>
+#include <memory>
 
 #include "screens/editor/NcCodeEdit.h"
 
@@ -97,6 +100,19 @@ void NcCodeEdit::keyPressEvent(QKeyEvent* event) {
     }
     QPlainTextEdit::keyPressEvent(event);
     followCursor();
+}
+
+QMenu* NcCodeEdit::contextMenu(const QPoint& position) {
+    QMenu* menu = createStandardContextMenu(position);
+    for (QAction* action : menu->actions())
+        if (windowed_ && action->objectName() == QLatin1String("select-all"))
+            action->setEnabled(false);
+    return menu;
+}
+
+void NcCodeEdit::contextMenuEvent(QContextMenuEvent* event) {
+    std::unique_ptr<QMenu> menu(contextMenu(event->pos()));
+    menu->exec(event->globalPos());
 }
 
 void NcCodeEdit::followCursor() {

@@ -7,11 +7,13 @@
 #include <QFile>
 #include <QLabel>
 #include <QListWidget>
+#include <QMenu>
 #include <QRandomGenerator>
 #include <QScrollBar>
 #include <QTemporaryDir>
 #include <QTextBlock>
 #include <QWheelEvent>
+#include <memory>
 
 #include "PanelFixture.h"
 #include "screens/editor/EditorScreen.h"
@@ -265,6 +267,11 @@ class EditorWindowTest : public QObject {
         QVERIFY(edit);
         panel.press(Qt::Key_A, Qt::ControlModifier);  // Select all: not offered while windowed
         QVERIFY(!edit->textCursor().hasSelection());
+        std::unique_ptr<QMenu> menu(edit->contextMenu(QPoint(5, 5)));
+        int selectAll = 0;
+        for (QAction* action : menu->actions())
+            if (action->objectName() == "select-all") selectAll += action->isEnabled() ? 10 : 1;
+        QCOMPARE(selectAll, 1);                // there, and disabled
         QTextCursor all = edit->textCursor();  // the whole window, as a long selection would
         all.select(QTextCursor::Document);
         edit->setTextCursor(all);
