@@ -6,20 +6,13 @@
 #include "cnc_core/compiler/CompilerText.h"
 #include "cnc_core/compiler/MacroPass.h"
 #include "cnc_core/compiler/NameScan.h"
+#include "cnc_core/compiler/SettingsText.h"
 #include "cnc_core/language/Keywords.h"
 #include "cnc_core/program/AtomicWrite.h"
 
 namespace mtc::core {
 
 namespace {
-
-std::string_view trimmed(std::string_view text) {
-    while (!text.empty() && (text.front() == ' ' || text.front() == '\t'))
-        text.remove_prefix(1);
-    while (!text.empty() && (text.back() == ' ' || text.back() == '\t' || text.back() == '\r'))
-        text.remove_suffix(1);
-    return text;
-}
 
 MacroTable tableOf(const std::vector<MacroDefinition>& macros, std::string_view skip) {
     MacroTable table;
@@ -44,15 +37,15 @@ std::string compilerKeywordIn(std::string_view text) {
 
 /// Splits "DEFINE name AS body"; false when the line does not have that form.
 bool splitDefinition(std::string_view line, MacroDefinition& macro) {
-    line = trimmed(line);
+    line = trimmedSettingText(line);
     if (line.substr(0, 7) != "DEFINE ") return false;
-    line = trimmed(line.substr(7));
+    line = trimmedSettingText(line.substr(7));
     const std::size_t nameEnd = line.find(' ');
     if (nameEnd == std::string_view::npos) return false;
     macro.name = std::string(line.substr(0, nameEnd));
-    line = trimmed(line.substr(nameEnd));
+    line = trimmedSettingText(line.substr(nameEnd));
     if (line.substr(0, 2) != "AS" || (line.size() > 2 && line[2] != ' ')) return false;
-    macro.body = std::string(trimmed(line.substr(2)));
+    macro.body = std::string(trimmedSettingText(line.substr(2)));
     return true;
 }
 
@@ -65,7 +58,7 @@ std::string checkGlobalMacro(const MacroDefinition& candidate,
     for (const MacroDefinition& other : others)
         if (other.name == candidate.name && other.name != replacing)
             return "the macro " + candidate.name + " is already defined";
-    if (trimmed(candidate.body).empty()) return "the macro has no instructions";
+    if (trimmedSettingText(candidate.body).empty()) return "the macro has no instructions";
     if (candidate.body.size() > kMaxGlobalMacroBodyLength)
         return "the instructions have more than 156 characters";
     if (candidate.body.find_first_of("\n\r") != std::string::npos)
@@ -93,26 +86,18 @@ std::string checkGlobalMacro(const MacroDefinition& candidate,
 
 MacroFileContents parseGlobalMacroFile(std::string_view text) {
     MacroFileContents contents;
-    int lineNumber = 0;
-    std::size_t pos = 0;
-    while (pos <= text.size()) {
-        std::size_t end = text.find('\n', pos);
-        if (end == std::string_view::npos) end = text.size();
-        const std::string_view line = trimmed(text.substr(pos, end - pos));
-        ++lineNumber;
-        pos = end + 1;
-        if (line.empty() || line.front() == ';') continue;
+    forEachSettingLine(text, [&contents](int lineNumber, std::string_view line) {
         MacroDefinition macro;
         if (!splitDefinition(line, macro)) {
             contents.problems.push_back({lineNumber, "expected DEFINE <name> AS <instructions>"});
-            continue;
+            return;
         }
         if (std::string problem = checkGlobalMacro(macro, contents.macros); !problem.empty()) {
             contents.problems.push_back({lineNumber, macro.name.substr(0, 20) + ": " + problem});
-            continue;
+            return;
         }
         contents.macros.push_back(std::move(macro));
-    }
+    });
     return contents;
 }
 

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "cnc_core/compiler/GlobalMacroFile.h"
+#include "cnc_core/compiler/SettingsText.h"
 #include "cnc_core/program/AtomicWrite.h"
 
 namespace mtc::core {
@@ -15,14 +16,6 @@ namespace {
 const std::array<const char*, kUserCompilerSlotCount> kSlotKeys = {
     "USER_COMPILER_1", "USER_COMPILER_2", "USER_COMPILER_3", "USER_COMPILER_4"};
 constexpr const char* kCompilerActiveKey = "COMPILER_ACTIVE";
-
-std::string_view trimmed(std::string_view text) {
-    while (!text.empty() && (text.front() == ' ' || text.front() == '\t'))
-        text.remove_prefix(1);
-    while (!text.empty() && (text.back() == ' ' || text.back() == '\t' || text.back() == '\r'))
-        text.remove_suffix(1);
-    return text;
-}
 
 std::string upper(std::string_view text) {
     std::string out(text);
@@ -44,8 +37,8 @@ std::string applySetting(std::string_view line, NcOptions& options,
                          std::array<bool, kUserCompilerSlotCount + 1>& seen) {
     const std::size_t equals = line.find('=');
     if (equals == std::string_view::npos) return "expected KEY = value";
-    const std::string key = upper(trimmed(line.substr(0, equals)));
-    const std::string_view value = trimmed(line.substr(equals + 1));
+    const std::string key = upper(trimmedSettingText(line.substr(0, equals)));
+    const std::string_view value = trimmedSettingText(line.substr(equals + 1));
     const int index = keyIndex(key);
     if (index < 0) return "unknown setting '" + key.substr(0, 30) + "'";
     if (seen[static_cast<std::size_t>(index)]) return key + " is given twice (the first is kept)";
@@ -88,7 +81,8 @@ std::string checkUserCompilerCommand(std::string_view command) {
     for (char c : command)
         if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f)
             return "the command contains a control character or a line break";
-    if (trimmed(command).size() != command.size()) return "the command starts or ends with a blank";
+    if (trimmedSettingText(command).size() != command.size())
+        return "the command starts or ends with a blank";
     return {};
 }
 
@@ -117,18 +111,10 @@ bool parseGlobalMacroEntry(std::string_view line, const std::vector<MacroDefinit
 NcOptionsContents parseNcOptionsFile(std::string_view text) {
     NcOptionsContents contents;
     std::array<bool, kUserCompilerSlotCount + 1> seen{};
-    int lineNumber = 0;
-    std::size_t pos = 0;
-    while (pos <= text.size()) {
-        std::size_t end = text.find('\n', pos);
-        if (end == std::string_view::npos) end = text.size();
-        const std::string_view line = trimmed(text.substr(pos, end - pos));
-        ++lineNumber;
-        pos = end + 1;
-        if (line.empty() || line.front() == ';') continue;
+    forEachSettingLine(text, [&contents, &seen](int lineNumber, std::string_view line) {
         if (std::string problem = applySetting(line, contents.options, seen); !problem.empty())
             contents.problems.push_back({kNcOptionsFileName, lineNumber, problem});
-    }
+    });
     return contents;
 }
 
