@@ -3,7 +3,6 @@
 #include <QHeaderView>
 #include <QKeyEvent>
 #include <QLabel>
-#include <QLineEdit>
 #include <QLocale>
 #include <QTableView>
 #include <QVBoxLayout>
@@ -12,6 +11,7 @@
 #include "cnc_core/machine_data/MachineDataStore.h"
 #include "cnc_core/machine_data/StandardPages.h"
 #include "hmi/CellSession.h"
+#include "hmi/PromptedInput.h"
 #include "screens/machine_data/MachineDataModel.h"
 
 namespace mtc::screens {
@@ -40,19 +40,18 @@ MachineDataScreen::MachineDataScreen(const mtc::hmi::ScreenContext& context) : S
     table_->setSelectionMode(QAbstractItemView::NoSelection);
     table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
     table_->installEventFilter(this);
-    prompt_ = new QLabel(this);
-    prompt_->setObjectName("mdPrompt");
-    editor_ = new QLineEdit(this);
-    editor_->setObjectName("mdEditor");
-    editor_->installEventFilter(this);
+    inputLine_ = new mtc::hmi::PromptedInput("mdPrompt", "mdEditor", this);
+    inputLine_->setReturnFocus(table_);
+    connect(inputLine_, &mtc::hmi::PromptedInput::confirmed, this,
+            &MachineDataScreen::confirmInput);
+    connect(inputLine_, &mtc::hmi::PromptedInput::cancelled, this, &MachineDataScreen::cancelInput);
     message_ = new QLabel(this);
     message_->setObjectName("mdMessage");
     message_->setWordWrap(true);
     auto* layout = new QVBoxLayout(this);
     layout->addWidget(header_);
     layout->addWidget(table_, 1);
-    layout->addWidget(prompt_);
-    layout->addWidget(editor_);
+    layout->addWidget(inputLine_);
     layout->addWidget(message_);
     setFocusProxy(table_);
     closeInput();
@@ -140,25 +139,8 @@ mtc::hmi::SoftKeys MachineDataScreen::softKeys() {
 }
 
 bool MachineDataScreen::eventFilter(QObject* watched, QEvent* event) {
-    if (event->type() == QEvent::ShortcutOverride && watched == editor_ &&
-        static_cast<QKeyEvent*>(event)->key() == Qt::Key_Escape) {
-        event->accept();  // Escape cancels the input instead of leaving the screen
-        return true;
-    }
     if (event->type() != QEvent::KeyPress) return Screen::eventFilter(watched, event);
     const int key = static_cast<QKeyEvent*>(event)->key();
-    if (watched == editor_) {
-        if (key == Qt::Key_Escape) {
-            closeInput();
-            say("Input cancelled: the value stays " + model_->currentValueText());
-            return true;
-        }
-        if (key == Qt::Key_Return || key == Qt::Key_Enter) {
-            confirmInput();
-            return true;
-        }
-        return false;
-    }
     if (watched == table_) return browseKey(key);
     return Screen::eventFilter(watched, event);
 }
@@ -216,29 +198,25 @@ void MachineDataScreen::startEdit() {
 
 void MachineDataScreen::openInput(Input input, const QString& prompt, const QString& text) {
     input_ = input;
-    prompt_->setText(prompt);
-    editor_->setEchoMode(input == Input::Password ? QLineEdit::Password : QLineEdit::Normal);
-    editor_->setText(text);
-    editor_->selectAll();
-    prompt_->show();
-    editor_->show();
-    editor_->setFocus();
+    inputLine_->open(prompt, text,
+                     input == Input::Password ? QLineEdit::Password : QLineEdit::Normal);
 }
 
 void MachineDataScreen::closeInput() {
     input_ = Input::None;
-    editor_->clear();
-    editor_->hide();
-    prompt_->hide();
-    if (isVisible()) table_->setFocus();
+    inputLine_->close();
 }
 
-void MachineDataScreen::confirmInput() {
-    const Input input = input_;
-    const QString text = editor_->text().trimmed();
+void MachineDataScreen::cancelInput() {
     closeInput();
-    if (input == Input::Value) confirmValue(text);
-    if (input == Input::Password) confirmPassword(text);
+    say("Input cancelled: the value stays " + model_->currentValueText());
+}
+
+void MachineDataScreen::confirmInput(const QString& text) {
+    const Input input = input_;
+    closeInput();
+    if (input == Input::Value) confirmValue(text.trimmed());
+    if (input == Input::Password) confirmPassword(text.trimmed());
 }
 
 void MachineDataScreen::confirmValue(const QString& text) {

@@ -5,8 +5,11 @@
 #include "hmi/Screen.h"
 
 class QLabel;
-class QLineEdit;
 class QTableView;
+
+namespace mtc::hmi {
+class PromptedInput;
+}
 
 namespace mtc::screens {
 
@@ -47,7 +50,9 @@ class MachineDataScreen : public mtc::hmi::Screen {
     void startEdit();
     void openInput(Input input, const QString& prompt, const QString& text);
     void closeInput();
-    void confirmInput();
+    void cancelInput();
+    /// Closes the input and acts on the confirmed `text` (value or password).
+    void confirmInput(const QString& text);
     void confirmValue(const QString& text);
     void confirmPassword(const QString& text);
     /// Writes `value` to the element under the cursor and reports the outcome.
@@ -58,8 +63,7 @@ class MachineDataScreen : public mtc::hmi::Screen {
     MachineDataModel* model_;
     QLabel* header_;
     QTableView* table_;
-    QLabel* prompt_;
-    QLineEdit* editor_;
+    mtc::hmi::PromptedInput* inputLine_;
     QLabel* message_;
     Input input_ = Input::None;
     double pendingValue_ = 0.0;

@@ -13,6 +13,7 @@
 #include "cnc_core/compiler/NcOptions.h"
 #include "hmi/CellSession.h"
 #include "hmi/NcOptionsHolder.h"
+#include "hmi/PromptedInput.h"
 #include "screens/nc_options/NcOptionsModel.h"
 
 namespace mtc::screens {
@@ -31,20 +32,18 @@ NcOptionsScreen::NcOptionsScreen(const mtc::hmi::ScreenContext& context)
     list_->setFont(QFontDatabase::systemFont(QFontDatabase::FixedFont));
     list_->setEditTriggers(QAbstractItemView::NoEditTriggers);
     list_->installEventFilter(this);
-    prompt_ = new QLabel(this);
-    prompt_->setObjectName("ncoPrompt");
-    editor_ = new QLineEdit(this);
-    editor_->setObjectName("ncoEditor");
-    editor_->setFont(QFontDatabase::systemFont(QFontDatabase::FixedFont));
-    editor_->installEventFilter(this);
+    inputLine_ = new mtc::hmi::PromptedInput("ncoPrompt", "ncoEditor", this);
+    inputLine_->field()->setFont(QFontDatabase::systemFont(QFontDatabase::FixedFont));
+    inputLine_->setReturnFocus(list_);
+    connect(inputLine_, &mtc::hmi::PromptedInput::confirmed, this, &NcOptionsScreen::confirmInput);
+    connect(inputLine_, &mtc::hmi::PromptedInput::cancelled, this, &NcOptionsScreen::cancelInput);
     message_ = new QLabel(this);
     message_->setObjectName("ncoMessage");
     message_->setWordWrap(true);
     auto* layout = new QVBoxLayout(this);
     layout->addWidget(header_);
     layout->addWidget(list_, 1);
-    layout->addWidget(prompt_);
-    layout->addWidget(editor_);
+    layout->addWidget(inputLine_);
     layout->addWidget(message_);
     setFocusProxy(list_);
     closeInput();
@@ -146,8 +145,8 @@ void NcOptionsScreen::startNewMacro() {
               "New global macro (DEFINE name AS instructions; name <= 20 characters, "
               "instructions <= 156):",
               "DEFINE ");
-    editor_->deselect();
-    editor_->end(false);
+    inputLine_->field()->deselect();
+    inputLine_->field()->end(false);
 }
 
 void NcOptionsScreen::deleteCurrentMacro() {
@@ -167,24 +166,20 @@ void NcOptionsScreen::openInput(Input input, int index, const QString& prompt,
                                 const QString& text) {
     input_ = input;
     inputIndex_ = index;
-    prompt_->setText(prompt);
-    editor_->setText(text);
-    editor_->selectAll();
-    prompt_->show();
-    editor_->show();
-    editor_->setFocus();
+    inputLine_->open(prompt, text);
 }
 
 void NcOptionsScreen::closeInput() {
     input_ = Input::None;
-    editor_->clear();
-    editor_->hide();
-    prompt_->hide();
-    if (isVisible()) list_->setFocus();
+    inputLine_->close();
 }
 
-void NcOptionsScreen::confirmInput() {
-    const QString text = editor_->text();
+void NcOptionsScreen::cancelInput() {
+    closeInput();
+    say("Input cancelled: the NC options are unchanged");
+}
+
+void NcOptionsScreen::confirmInput(const QString& text) {
     QString error;
     bool taken = false;
     switch (input_) {
@@ -221,25 +216,8 @@ void NcOptionsScreen::confirmInput() {
 }
 
 bool NcOptionsScreen::eventFilter(QObject* watched, QEvent* event) {
-    if (event->type() == QEvent::ShortcutOverride && watched == editor_ &&
-        static_cast<QKeyEvent*>(event)->key() == Qt::Key_Escape) {
-        event->accept();  // Escape cancels the input instead of leaving the screen
-        return true;
-    }
     if (event->type() != QEvent::KeyPress) return Screen::eventFilter(watched, event);
     const int key = static_cast<QKeyEvent*>(event)->key();
-    if (watched == editor_) {
-        if (key == Qt::Key_Escape) {
-            closeInput();
-            say("Input cancelled: the NC options are unchanged");
-            return true;
-        }
-        if (key == Qt::Key_Return || key == Qt::Key_Enter) {
-            confirmInput();
-            return true;
-        }
-        return false;
-    }
     if (watched == list_) {
         if (key == Qt::Key_Return || key == Qt::Key_Enter) {
             changeCurrent();

@@ -3,12 +3,12 @@
 #include "hmi/Screen.h"
 
 class QLabel;
-class QLineEdit;
 class QListView;
 
 namespace mtc::hmi {
 class NcOptionsHolder;
-}
+class PromptedInput;
+}  // namespace mtc::hmi
 
 namespace mtc::screens {
 
@@ -46,7 +46,9 @@ class NcOptionsScreen : public mtc::hmi::Screen {
     void deleteCurrentMacro();
     void openInput(Input input, int index, const QString& prompt, const QString& text);
     void closeInput();
-    void confirmInput();
+    void cancelInput();
+    /// Takes the confirmed `text` for the open input, or says why not.
+    void confirmInput(const QString& text);
     /// Puts the cursor on `row` (clamped).
     void moveTo(int row);
     void say(const QString& message);
@@ -55,8 +57,7 @@ class NcOptionsScreen : public mtc::hmi::Screen {
     NcOptionsModel* model_;
     QLabel* header_;
     QListView* list_;
-    QLabel* prompt_;
-    QLineEdit* editor_;
+    mtc::hmi::PromptedInput* inputLine_;
     QLabel* message_;
     Input input_ = Input::None;
     int inputIndex_ = 0;  ///< user compiler slot or macro index of the input
