@@ -62,6 +62,13 @@ inline void writeProgram(const QDir& dir, int number, const QString& text) {
     file.write(text.toUtf8());
 }
 
+/// Writes the program directory's global macro file (GM-005) with `text`.
+inline void writeGlobalMacros(const QDir& dir, const QString& text) {
+    QFile file(dir.filePath("GLOBAL_MACROS.MAC"));
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write(text.toUtf8());
+}
+
 /// The child `name` of station 0's screen `screen`.
 template <typename T>
 T* child(PanelFixture& panel, const char* screen, const char* name) {

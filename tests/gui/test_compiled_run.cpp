@@ -70,9 +70,8 @@ class CompiledRunTest : public QObject {
         writeProgram(dir, 6, programHeader(6, "Broken rounding") + kBrokenRounding);
         writeProgram(dir, 7, programHeader(7, "Runtime fault") + kRuntimeFault);
         writeProgram(dir, 8, programHeader(8, "Global macro") + kGlobalMacroUse);
-        QFile macros(dir.filePath("GLOBAL_MACROS.MAC"));
-        if (macros.open(QIODevice::WriteOnly))
-            macros.write("; NC options of the test cell\nDEFINE ROUND5 AS RD5\nDEFINE 9X AS X9\n");
+        writeGlobalMacros(dir,
+                          "; NC options of the test cell\nDEFINE ROUND5 AS RD5\nDEFINE 9X AS X9\n");
         mtc::hmi::PanelOptions o;
         o.programsDir = dir_.path();
         return o;

@@ -23,9 +23,7 @@ class MdiScreenTest : public QObject {
     mtc::hmi::PanelOptions options() {
         const QDir dir = emptiedDirectory(dir_.path());
         writeProgram(dir, 3, programHeader(3, "Move to X44") + "N0000 G0 G90 X44\nN0001 M30\n");
-        QFile macros(dir.filePath("GLOBAL_MACROS.MAC"));
-        if (macros.open(QIODevice::WriteOnly))
-            macros.write("DEFINE FAST AS G1 F3000\nDEFINE ROUND AS RD2\n");
+        writeGlobalMacros(dir, "DEFINE FAST AS G1 F3000\nDEFINE ROUND AS RD2\n");
         mtc::hmi::PanelOptions o;
         o.programsDir = dir_.path();
         return o;

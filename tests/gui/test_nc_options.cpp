@@ -64,8 +64,7 @@ class NcOptionsTest : public QObject {
                              .replace("N1010008", "N1011008")
                              .replace("%NPG:1:01:0:", "%NPG:1:01:1:")
                              .toUtf8());
-        QFile macros(dir.filePath("GLOBAL_MACROS.MAC"));
-        if (macros.open(QIODevice::WriteOnly)) macros.write("DEFINE FAST AS G0\n");
+        writeGlobalMacros(dir, "DEFINE FAST AS G0\n");
         mtc::hmi::PanelOptions o;
         o.programsDir = dir_.path();
         return o;
