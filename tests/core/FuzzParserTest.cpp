@@ -35,7 +35,7 @@ const std::vector<std::string> kCorpus = {
     "N0012 G0 G17 X-0.1\n      Y3.4 S1 3000 M3 ;continued\n"
     "N0013 BES .BP1 1:15\nAXD (X:S-0-0104)=7000\n.BP1\nJMP @2\nJEV 5 1:3\n",
     "DEFINE FAST AS G01 F15000\nFAST X5\nTL_RADIUS[1,1]=2.5\nLA_ON\nG1 X1 CF2\nLA_OFF\n"
-    "@1:120=(@1+2)*MTD(60,,4)-SPC/TIME+S2-T+E+G(1)\nT=MTD(60,,,5) MTP MRY\n"
+    "@1:120=(@1+2)*MTD(60,,4)-SPC/TIME+S2-T+E+G(1)\nT=MTD(60,,,5) MTP MRY MQ12 QQ=@3\n"
     "/N0020 (text) [more] ;comment\n",
 };
 
