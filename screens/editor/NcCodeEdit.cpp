@@ -68,6 +68,15 @@ NcCodeEdit::NcCodeEdit(QWidget* parent) : QPlainTextEdit(parent) {
     connect(document(), &QTextDocument::modificationChanged, this, &NcCodeEdit::reportModified);
 }
 
+NcCodeEdit::~NcCodeEdit() {
+    // QPlainTextEdit's teardown still changes the document and the scroll
+    // bar after this part of the object is gone; their signals must not reach
+    // the lambdas above (UBSan: member access in a destroyed NcCodeEdit).
+    if (document()) document()->disconnect(this);
+    verticalScrollBar()->disconnect(this);
+    disconnect(this, nullptr, this, nullptr);
+}
+
 void NcCodeEdit::load(const QString& text) {
     if (windowingAllowed_ && text.count(QLatin1Char('\n')) >= kWholeTextLines) {
         load(text.toStdString());

@@ -36,6 +36,7 @@ class NcCodeEdit : public QPlainTextEdit {
     static constexpr int kWindowMargin = 300;
 
     explicit NcCodeEdit(QWidget* parent = nullptr);
+    ~NcCodeEdit() override;
 
     /// Allows the window over large texts (takes effect at the next load).
     void setWindowing(bool on) { windowingAllowed_ = on; }
