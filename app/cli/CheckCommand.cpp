@@ -34,21 +34,6 @@ void countSeverities(const core::DiagnosticList& diagnostics, CheckedProgram& ch
         (d.severity == core::Severity::Error ? checked.errors : checked.warnings) += 1;
 }
 
-/// The parser's diagnostics less "unknown word" for a global macro's name:
-/// the compiler expands those (GM-005) and checks the result.
-core::DiagnosticList withoutGlobalMacroNames(const core::DiagnosticList& parsed,
-                                             const std::vector<core::MacroDefinition>& macros) {
-    core::DiagnosticList kept;
-    for (const core::Diagnostic& d : parsed.items()) {
-        bool macroName = false;
-        for (const core::MacroDefinition& macro : macros)
-            macroName = macroName || (d.code == "PARSE_UNKNOWN_WORD" &&
-                                      d.message.find("'" + macro.name + "'") != std::string::npos);
-        if (!macroName) kept.add(d);
-    }
-    return kept;
-}
-
 /// True when the program has compiler keywords or uses a global macro.
 bool usesCompiler(const core::Program& program, const CommandSetup& setup) {
     core::CompilerOptions options;
@@ -94,7 +79,7 @@ CheckedProgram checkOne(const std::string& argument, const CommandSetup& setup,
     const core::ProgramStore store = storeWith(setup.programs.store, request);
     const core::ProgramPtr& program = request.program;
     checked.blocks = program->blocks.size();
-    found.append(withoutGlobalMacroNames(program->diagnostics, setup.globalMacros));
+    found.append(program->diagnostics);
     found.append(checkProgramReferences(*program, store, request.process));
     if (usesCompiler(*program, setup)) found.append(compileCheck(*program, setup, request));
     countSeverities(found, checked);

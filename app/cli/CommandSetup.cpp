@@ -74,15 +74,17 @@ std::optional<CommandSetup> prepareCommand(const CliOptions& options,
     if (options.processGiven && !checkProcessExists(*machine, options.process, diagnostics))
         return std::nullopt;
     CommandSetup setup{std::move(*machine), {}, {}};
-    if (!loadProgramMemory(options.programsDir, setup.programs, diagnostics)) return std::nullopt;
-    if (!options.programsDir.empty()) {
+    if (!options.programsDir.empty()) {  // first: the programs are parsed knowing the names
         core::MacroFileContents macros = core::readGlobalMacroFile(options.programsDir);
         for (const core::MacroFileProblem& problem : macros.problems)
             diagnostics.warning("GLOBAL_MACRO_REFUSED", {0, "", problem.line, 0},
                                 std::string(core::kGlobalMacroFileName) + " line " +
                                     std::to_string(problem.line) + ": " + problem.message);
         setup.globalMacros = std::move(macros.macros);
+        for (const core::MacroDefinition& macro : setup.globalMacros)
+            setup.programs.macroNames.push_back(macro.name);
     }
+    if (!loadProgramMemory(options.programsDir, setup.programs, diagnostics)) return std::nullopt;
     return setup;
 }
 

@@ -87,6 +87,7 @@ bool readTextFile(const std::string& path, std::string& text, std::string& error
 bool loadProgramMemory(const std::string& directory, ProgramMemory& memory,
                        core::DiagnosticList& diagnostics) {
     core::ProgramLoader loader(memory.store);
+    loader.setMacroNames(memory.macroNames);
     if (directory.empty()) {
         memory.origin = "built-in demo programs";
         loader.loadTexts(resources::demoPrograms());
@@ -128,7 +129,7 @@ bool resolveProgram(const std::string& argument, const ProgramMemory& memory, in
                                     std::to_string(process) + " as --process says");
         }
     }
-    core::ParseOptions options{request.number, request.displayName};
+    core::ParseOptions options{request.number, request.displayName, memory.macroNames};
     request.program = std::make_shared<const core::Program>(
         core::DatFile::parse(std::move(text), request.displayName, options));
     return true;

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "cnc_core/language/Diagnostic.h"
 #include "cnc_core/program/ProgramStore.h"
@@ -17,6 +18,9 @@ bool readTextFile(const std::string& path, std::string& text, std::string& error
 struct ProgramMemory {
     core::ProgramStore store;
     std::string origin;  ///< "built-in demo programs" or "program directory 'DIR'"
+    /// Global macro names of the directory's NC options: every program
+    /// (memory and file arguments) is parsed knowing them (GM-005).
+    std::vector<std::string> macroNames;
 };
 
 /// Loads `directory` (empty = the built-in demo programs) into `memory`.

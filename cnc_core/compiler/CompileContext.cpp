@@ -79,7 +79,8 @@ const ParsedSequence& CompileContext::parsed(const BlockSequence& blocks) {
         text += '\n';
         lineOwner.push_back(static_cast<std::uint32_t>(i));
     }
-    parsed_.program = parseProgram(std::move(text), {options_.programNumber, options_.programName});
+    parsed_.program =
+        parseProgram(std::move(text), {options_.programNumber, options_.programName, {}});
     for (std::size_t b = 0; b < parsed_.program.blocks.size(); ++b) {
         const std::uint32_t line = parsed_.program.blocks[b].line;
         const std::uint32_t owner = line >= 1 && line <= lineOwner.size()

@@ -56,7 +56,7 @@ CompilerError errorAtObjectLine(const ObjectText& object, int line,
 void checkObject(const ObjectText& object, const std::set<std::string>& handled,
                  const std::set<int>& reported, CompileContext& context) {
     const CompilerOptions& options = context.options();
-    Program program = parseProgram(object.text, {options.programNumber, options.programName});
+    Program program = parseProgram(object.text, {options.programNumber, options.programName, {}});
     for (const Diagnostic& d : program.diagnostics.items()) {
         if (d.severity != Severity::Error || d.code == "FILE_TOO_MANY_LINES") continue;  // A error
         CompilerError error = errorAtObjectLine(object, d.where.line, options);
@@ -120,8 +120,9 @@ void Compiler::addPass(std::shared_ptr<const CompilerPass> pass) {
 }
 
 CompileResult Compiler::compile(std::string_view source, const CompilerOptions& options) const {
-    return compile(parseProgram(std::string(source), {options.programNumber, options.programName}),
-                   options);
+    return compile(
+        parseProgram(std::string(source), {options.programNumber, options.programName, {}}),
+        options);
 }
 
 CompileResult Compiler::compile(const Program& program, const CompilerOptions& options) const {

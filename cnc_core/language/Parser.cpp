@@ -187,6 +187,8 @@ Program parseProgram(std::string source, const ParseOptions& options) {
     program.name = options.name;
     program.source = std::move(source);
     ParseContext context(program);
+    for (const std::string& name : options.macroNames)
+        context.addMacro(name);
     if (program.source.size() >= std::numeric_limits<std::uint32_t>::max() - 1) {
         context.report(Severity::Error, "FILE_TOO_LARGE", 1, 1, "",
                        "program text larger than 4 GiB is not supported");

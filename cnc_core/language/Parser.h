@@ -1,6 +1,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "cnc_core/language/Program.h"
 
@@ -9,6 +10,10 @@ namespace mtc::core {
 struct ParseOptions {
     int programNumber = 0;  ///< goes into every diagnostic and Program::number
     std::string name;       ///< file name / title for Program::name
+    /// Global macros of the NC options (seed 001 ch. 4) known before the
+    /// first block: a block using one is kept whole as a compiler command,
+    /// like a block using a DEFINE macro of the program itself.
+    std::vector<std::string> macroNames;
 };
 
 /// Parses NC source text: a .DAT file (identification line, %NPG/%MAC header,

@@ -75,7 +75,9 @@ bool ProgramLoader::store(const std::string& fileName, std::string text) {
         diagnostics_.error("FILE_BAD_NAME", SourceLocation{}, name + ": " + why);
         return false;
     }
-    auto program = std::make_shared<Program>(DatFile::parse(std::move(text), name));
+    ParseOptions options;
+    options.macroNames = macroNames_;
+    auto program = std::make_shared<Program>(DatFile::parse(std::move(text), name, options));
     if (program->isCycle) {
         std::string cycleName = name.substr(0, name.size() - 4);
         if (store_.cycles().count(cycleName)) return false;

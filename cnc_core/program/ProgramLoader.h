@@ -32,6 +32,9 @@ class ProgramLoader {
     /// ignored. Returns how many programs were stored.
     std::size_t loadTexts(const std::vector<std::pair<std::string, std::string>>& files);
 
+    /// Global macro names every later load parses with (ParseOptions::macroNames).
+    void setMacroNames(std::vector<std::string> names) { macroNames_ = std::move(names); }
+
     /// File-level problems found so far.
     const DiagnosticList& diagnostics() const { return diagnostics_; }
 
@@ -40,6 +43,7 @@ class ProgramLoader {
 
     ProgramStore& store_;
     DiagnosticList diagnostics_;
+    std::vector<std::string> macroNames_;
 };
 
 }  // namespace mtc::core

@@ -81,6 +81,8 @@ text_check "refused macro line named" "GLOBAL_MACRO_REFUSED"
 expect_rc 0 "check accepts a global macro name" check --programs "$TEST_TMP/gm" 7
 expect_rc 1 "check still refuses an unknown word" check --programs "$TEST_TMP/gm" 8
 text_check "unknown word named" "NOSUCHMAC"
+expect_rc 1 "run of a source with a global macro asks for the compiler" run --programs "$TEST_TMP/gm" 7 --no-motion
+text_check "global macro use is a compiler function at run time" "NEEDS_COMPILER"
 
 # hostile input: never a crash or a hang
 head -c 20000 /dev/urandom >"$TEST_TMP/garbage.DAT"

@@ -165,6 +165,19 @@ TEST(ParserCommand, MacroNamedLikeAnAddressWord) {
     EXPECT_EQ(describeBlock(p, 2), "M60");
 }
 
+TEST(ParserCommand, GlobalMacroNamesOfTheNcOptions) {
+    ParseOptions options;
+    options.macroNames = {"FAST", "M6"};
+    const Program p = parseProgram("N0001 FAST X5\nN0002 T3 M6\nN0003 M60 X1\n", options);
+    ASSERT_TRUE(p.diagnostics.empty()) << formatDiagnostic(p.diagnostics.items()[0]);
+    EXPECT_EQ(describeBlock(p, 0), "COMPILER[FAST X5]");
+    EXPECT_EQ(describeBlock(p, 1), "COMPILER[T3 M6]");
+    EXPECT_EQ(describeBlock(p, 2), "M60 X1");
+    EXPECT_TRUE(p.usesCompilerKeywords);
+    // Without the names the same text has an unknown word.
+    EXPECT_NE(find(parse("N0001 FAST X5\n"), "PARSE_UNKNOWN_WORD"), nullptr);
+}
+
 TEST(ParserCommand, DefineErrors) {
     EXPECT_NE(find(parse("DEFINE AS X"), "PARSE_BAD_DEFINE"), nullptr);
     EXPECT_NE(find(parse("DEFINE FAST G1"), "PARSE_BAD_DEFINE"), nullptr);
