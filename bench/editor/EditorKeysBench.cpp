@@ -18,11 +18,12 @@
 #include <memory>
 #include <string>
 
-#include <sys/resource.h>
-
+#include "bench/ProcessMeters.h"
 #include "screens/editor/NcCodeEdit.h"
 
 namespace {
+
+using mtc::bench::peakRssMb;
 
 using mtc::screens::NcCodeEdit;
 
@@ -41,12 +42,6 @@ const std::string& programText() {
         return t;
     }();
     return text;
-}
-
-double peakRssMb() {
-    rusage usage{};
-    getrusage(RUSAGE_SELF, &usage);
-    return static_cast<double>(usage.ru_maxrss) / 1024.0;
 }
 
 std::unique_ptr<NcCodeEdit> shownEditor(bool windowing) {

@@ -16,8 +16,7 @@
 #include <cstdio>
 #include <string>
 
-#include <sys/resource.h>
-
+#include "bench/ProcessMeters.h"
 #include "hmi/CellSession.h"
 #include "hmi/PanelStartup.h"
 #include "hmi/PanelWindow.h"
@@ -28,11 +27,7 @@
 
 namespace {
 
-double peakRssMb() {
-    rusage usage{};
-    getrusage(RUSAGE_SELF, &usage);
-    return static_cast<double>(usage.ru_maxrss) / 1024.0;
-}
+using mtc::bench::peakRssMb;
 
 /// The process's resident memory now (VmRSS), in MB.
 double rssMb() {

@@ -11,13 +11,11 @@
 #include <QFile>
 #include <QTemporaryDir>
 #include <algorithm>
-#include <chrono>
 #include <cstdio>
 #include <string>
 #include <vector>
 
-#include <sys/resource.h>
-
+#include "bench/ProcessMeters.h"
 #include "hmi/CellSession.h"
 #include "hmi/PanelStartup.h"
 #include "hmi/PanelWindow.h"
@@ -29,17 +27,9 @@
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
-
-double msSince(Clock::time_point start) {
-    return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
-
-double peakRssMb() {
-    rusage usage{};
-    getrusage(RUSAGE_SELF, &usage);
-    return static_cast<double>(usage.ru_maxrss) / 1024.0;
-}
+using mtc::bench::Clock;
+using mtc::bench::msSince;
+using mtc::bench::peakRssMb;
 
 /// Program 9 of the mill: `count` 0.1 mm moves in 100 mm passes over the
 /// stock, every 100th a rapid (the shape mtc_toolpath_bench draws).

@@ -22,15 +22,14 @@
 #include <vtkRenderer.h>
 #include <vtkUnsignedCharArray.h>
 
-#include <sys/resource.h>
 #include <algorithm>
-#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <string>
 #include <vector>
 
+#include "bench/ProcessMeters.h"
 #include "cnc_core/machine/MachineConfigReader.h"
 #include "cnc_core/toolpath/ToolpathBuilder.h"
 #include "cnc_core/toolpath/ToolpathDecimation.h"
@@ -40,19 +39,11 @@
 
 namespace {
 
+using mtc::bench::Clock;
+using mtc::bench::msSince;
+using mtc::bench::peakRssMb;
+
 using namespace mtc::core;
-using Clock = std::chrono::steady_clock;
-
-double msSince(Clock::time_point start) {
-    return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
-
-double peakRssMb() {
-    rusage usage{};
-    getrusage(RUSAGE_SELF, &usage);
-    return static_cast<double>(usage.ru_maxrss) / 1024.0;
-}
-
 /// `count` straight moves on process 0 of the demo cell: 0.1 mm segments in
 /// 100 mm passes, 60 mm wide layers (what a finishing path of that size draws).
 ToolpathGeometry million(int count) {

@@ -207,10 +207,8 @@ TEST(MdiRefusalTest, OnlyInMdiModeAndWithoutAnActiveProgram) {
 
 TEST(MdiRefusalTest, TheMdiKeyIsRefusedDuringAnNcProgramRestart) {
     RestartStation mill(0);
-    mill.cell.add(kLibrary, 99);
-    mill.cell.add(kMain, 1);
-    ASSERT_TRUE(mill.accept(mill.cell.selection(1, 1, 4)));
-    ASSERT_EQ(mill.runUntilWaiting(), RestartPhase::TargetReached);
+    mill.addDemoPrograms();
+    ASSERT_EQ(mill.restartAtDemoTarget(), RestartPhase::TargetReached);
     EXPECT_FALSE(mill.control.press(ControlKey::Mdi));
     EXPECT_NE(mill.control.alarm().find("MDI refused"), std::string::npos) << mill.control.alarm();
     EXPECT_EQ(mill.control.mode(), OperatingMode::Automatic);

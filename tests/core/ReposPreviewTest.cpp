@@ -33,11 +33,9 @@ void expectSamePosition(const std::array<double, core::kMaxAxes>& a,
 
 TEST(ReposPreview, BeforeStartItIsTheWayAdjustAndReposWillMoveTheAxes) {
     RestartStation mill(0);
-    mill.cell.add(kLibrary, 99);
-    mill.cell.add(kMain, 1);
+    mill.addDemoPrograms();
     mill.cell.live.takeMachinePositions({5, 6, 7});
-    ASSERT_TRUE(mill.accept(mill.cell.selection(1, 1, 4)));
-    ASSERT_EQ(mill.runUntilWaiting(), RestartPhase::TargetReached);
+    ASSERT_EQ(mill.restartAtDemoTarget(), RestartPhase::TargetReached);
     const auto before = mill.cell.live.state().modal.machine;
     const ReposPreview path = preview(mill);
     EXPECT_TRUE(path.reachesTarget) << diagnosticsText(path.diagnostics);
@@ -66,12 +64,8 @@ TEST(ReposPreview, BeforeStartItIsTheWayAdjustAndReposWillMoveTheAxes) {
 
 TEST(ReposPreview, AfterAJogItStartsWhereTheOperatorLeftTheAxes) {
     RestartStation mill(0);
-    mill.cell.add(kLibrary, 99);
-    mill.cell.add(kMain, 1);
-    ASSERT_TRUE(mill.accept(mill.cell.selection(1, 1, 4)));
-    mill.runUntilWaiting();
-    mill.control.press(ControlKey::Start);
-    ASSERT_EQ(mill.runUntilWaiting(), RestartPhase::ManualMode);
+    mill.addDemoPrograms();
+    ASSERT_EQ(mill.adjustUntilManualMode(), RestartPhase::ManualMode);
     ASSERT_TRUE(mill.sequence.jog(1, 40.0));
     const ReposPreview path = preview(mill);
     EXPECT_TRUE(path.reachesTarget) << diagnosticsText(path.diagnostics);

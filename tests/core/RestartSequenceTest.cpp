@@ -18,8 +18,7 @@ using namespace mtc::test;
 
 TEST(RestartSequence, SignalsFollowFigure68) {
     RestartStation mill(0);
-    mill.cell.add(kLibrary, 99);
-    mill.cell.add(kMain, 1);
+    mill.addDemoPrograms();
     mill.control.press(ControlKey::ProgramRestart);
     ASSERT_TRUE(mill.accept(mill.cell.selection(1, 1, 4)));
     EXPECT_EQ(mill.runUntilWaiting(), RestartPhase::TargetReached);
@@ -51,13 +50,9 @@ TEST(RestartSequence, SignalsFollowFigure68) {
 
 TEST(RestartSequence, AdjustAndReposMoveFromWhereTheAxesAre) {
     RestartStation mill(0);
-    mill.cell.add(kLibrary, 99);
-    mill.cell.add(kMain, 1);
+    mill.addDemoPrograms();
     mill.cell.live.takeMachinePositions({5, 6, 7});
-    ASSERT_TRUE(mill.accept(mill.cell.selection(1, 1, 4)));
-    mill.runUntilWaiting();
-    ASSERT_TRUE(mill.control.press(ControlKey::Start));
-    ASSERT_EQ(mill.runUntilWaiting(), RestartPhase::ManualMode);
+    ASSERT_EQ(mill.adjustUntilManualMode(), RestartPhase::ManualMode);
     const auto& moves = mill.cell.sps.motions;
     ASSERT_EQ(moves.size(), 1u);
     EXPECT_EQ(moves[0].start[0], 5.0) << "the computing process moved nothing";
@@ -149,12 +144,8 @@ TEST(RestartSequence, RequestAbortFromAnotherThread) {
 
 TEST(RestartSequence, ControlResetInManualModeAfterAdjust) {
     RestartStation mill(0);
-    mill.cell.add(kLibrary, 99);
-    mill.cell.add(kMain, 1);
-    ASSERT_TRUE(mill.accept(mill.cell.selection(1, 1, 4)));
-    mill.runUntilWaiting();
-    mill.control.press(ControlKey::Start);
-    ASSERT_EQ(mill.runUntilWaiting(), RestartPhase::ManualMode);
+    mill.addDemoPrograms();
+    ASSERT_EQ(mill.adjustUntilManualMode(), RestartPhase::ManualMode);
     mill.control.press(ControlKey::ControlReset);
     mill.expectAllRestartSignalsOff();
     EXPECT_EQ(mill.signal("SMANU"), 1) << "the mode the SPS selected stays";

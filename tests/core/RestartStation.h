@@ -59,6 +59,22 @@ struct RestartStation {
         EXPECT_FALSE(d.hasErrors()) << diagnosticsText(d);
         return ok;
     }
+    /// Program 99 with ADJUST/REPOS (kLibrary) and main program 1 (kMain).
+    void addDemoPrograms() {
+        cell.add(kLibrary, 99);
+        cell.add(kMain, 1);
+    }
+    /// Restart of program 1 at block 4: accepted, computing process run.
+    RestartPhase restartAtDemoTarget() {
+        EXPECT_TRUE(accept(cell.selection(1, 1, 4)));
+        return runUntilWaiting();
+    }
+    /// restartAtDemoTarget(), then Start: ADJUST runs up to its Q9500.
+    RestartPhase adjustUntilManualMode() {
+        restartAtDemoTarget();
+        EXPECT_TRUE(control.press(core::ControlKey::Start));
+        return runUntilWaiting();
+    }
     RestartPhase runUntilWaiting() {
         for (int i = 0; i < 100; ++i) {
             const RestartPhase p = sequence.advance(100'000);
