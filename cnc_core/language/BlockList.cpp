@@ -32,21 +32,11 @@ long BlockList::findExtended(std::size_t index) const {
     return static_cast<long>(it - extendedIndex_.begin());
 }
 
-const Block BlockList::extendedBlock(std::size_t index) const {
+bool BlockList::readExtended(std::size_t index, Block& out) const {
     const long slot = findExtended(index);
-    if (slot >= 0) return extended_[static_cast<std::size_t>(slot)];
-    // The bit without an entry cannot happen (set() and push_back() keep both);
-    // unpack what the packed form holds rather than fail.
-    const Packed& p = packed_[index];
-    Block block;
-    block.firstWord = p.firstWord;
-    block.wordCount = p.wordCount;
-    block.flags = p.flags;
-    block.number = p.number;
-    block.line = p.line;
-    block.lineCount = p.lineCount & 0x7f;
-    block.sourceText = TextSpan{p.sourceOffset, p.sourceLength};
-    return block;
+    if (slot < 0) return false;
+    out = extended_[static_cast<std::size_t>(slot)];
+    return true;
 }
 
 std::int32_t BlockList::numberAt(std::size_t index) const {

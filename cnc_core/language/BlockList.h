@@ -27,16 +27,13 @@ class BlockList {
     /// copying a freshly built Block stalls on store forwarding.
     void read(std::size_t index, Block& out) const {
         const Packed& p = packed_[index];
-        if (p.lineCount & kExtendedBit) {
-            out = extendedBlock(index);
-            return;
-        }
+        if ((p.lineCount & kExtendedBit) && readExtended(index, out)) return;
         out.firstWord = p.firstWord;
         out.wordCount = p.wordCount;
         out.flags = p.flags;
         out.number = p.number;
         out.line = p.line;
-        out.lineCount = p.lineCount;
+        out.lineCount = p.lineCount & 0x7f;
         out.label = {};
         out.comment = {};
         out.sourceText = TextSpan{p.sourceOffset, p.sourceLength};
@@ -77,8 +74,9 @@ class BlockList {
     static bool packable(const Block& block);
     Packed pack(const Block& block) const;
     long findExtended(std::size_t index) const;
-    /// The block at `index` kept whole (labels, comments, long lines).
-    const Block extendedBlock(std::size_t index) const;
+    /// The block at `index` kept whole (labels, comments, long lines) into
+    /// `out`; false when it has no whole copy (then the packed form holds it).
+    bool readExtended(std::size_t index, Block& out) const;
     std::vector<Packed> packed_;
     std::vector<std::uint32_t> extendedIndex_;  ///< sorted block indices
     std::vector<Block> extended_;
