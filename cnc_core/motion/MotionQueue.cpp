@@ -1,0 +1,38 @@
+#include "cnc_core/motion/MotionQueue.h"
+
+#include <algorithm>
+
+namespace mtc::core::motion {
+
+MotionQueue::MotionQueue(std::size_t capacity)
+    : storage_(std::max<std::size_t>(capacity, 1) + 8),
+      capacity_(std::max<std::size_t>(capacity, 1)) {}
+
+QueueItem& MotionQueue::pushBack() {
+    if (size_ == storage_.size()) {
+        std::vector<QueueItem> grown(storage_.size() * 2);
+        for (std::size_t i = 0; i < size_; ++i)
+            grown[i] = std::move(at(i));
+        storage_ = std::move(grown);
+        head_ = 0;
+    }
+    ++size_;
+    return at(size_ - 1);
+}
+
+void MotionQueue::popFront() {
+    if (size_ == 0) return;
+    head_ = (head_ + 1) % storage_.size();
+    --size_;
+}
+
+const QueueItem* MotionQueue::moveBeforeEnd() const {
+    for (std::size_t i = size_; i-- > 0;) {
+        const QueueItem& item = at(i);
+        if (item.kind == QueueItem::Kind::Move) return &item;
+        if (item.kind == QueueItem::Kind::Dwell || item.action.stopsPath) return nullptr;
+    }
+    return nullptr;
+}
+
+}  // namespace mtc::core::motion

@@ -1,0 +1,70 @@
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "cnc_core/motion/JunctionRule.h"
+#include "cnc_core/motion/PathLimits.h"
+
+namespace mtc::core::motion {
+
+/// A machine action between moves (an auxiliary function the SPS
+/// acknowledges, a spindle command, a command of the interpreter).
+struct MachineAction {
+    int spindle = 0;              ///< 1..3; 0 = no spindle
+    double speed = -1.0;          ///< new commanded speed, rpm; < 0 = unchanged
+    int rotation = -1;            ///< SpindleSet::Rotation as int; -1 = unchanged
+    bool waitForSpindle = false;  ///< the program waits until the spindle is at speed
+    bool stopsPath = true;        ///< the axes come to rest before it (MOT-007)
+    std::uint32_t tag = 0;        ///< the caller's id, reported when the action is reached
+};
+
+/// One entry of the look-ahead queue.
+struct QueueItem {
+    enum class Kind : std::uint8_t { Move, Dwell, Action };
+    Kind kind = Kind::Move;
+    SourceLocation where;
+    std::uint32_t blockIndex = 0;
+    // Move:
+    SegmentGeometry geometry;
+    PathLimits limits;
+    bool rapid = false;
+    BlockTransition mode;
+    double feed = 0.0;        ///< programmed path feed, plane units/s (0 for G0)
+    double entryLimit = 0.0;  ///< junction velocity with the move before (0: starts at rest)
+    double exitLimit = 0.0;   ///< planned velocity at the end (look-ahead), plane units/s
+    // Dwell:
+    double seconds = 0.0;
+    // Action:
+    MachineAction action;
+};
+
+/// The bounded look-ahead queue: a ring of items in program order.
+/// `capacity` is the look-ahead depth; a block may overfill it (one block
+/// can give several items), the storage then grows once and stays.
+class MotionQueue {
+  public:
+    explicit MotionQueue(std::size_t capacity);
+
+    std::size_t capacity() const { return capacity_; }
+    std::size_t size() const { return size_; }
+    bool empty() const { return size_ == 0; }
+    bool full() const { return size_ >= capacity_; }
+    QueueItem& at(std::size_t i) { return storage_[(head_ + i) % storage_.size()]; }
+    const QueueItem& at(std::size_t i) const { return storage_[(head_ + i) % storage_.size()]; }
+    QueueItem& front() { return at(0); }
+    const QueueItem& front() const { return at(0); }
+    /// A new item at the end (grows the storage when it is full).
+    QueueItem& pushBack();
+    void popFront();
+    void clear() { head_ = size_ = 0; }
+    /// The last move in the queue with only transparent actions after it, or nullptr.
+    const QueueItem* moveBeforeEnd() const;
+
+  private:
+    std::vector<QueueItem> storage_;
+    std::size_t capacity_;
+    std::size_t head_ = 0, size_ = 0;
+};
+
+}  // namespace mtc::core::motion

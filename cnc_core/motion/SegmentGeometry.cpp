@@ -1,0 +1,165 @@
+#include "cnc_core/motion/SegmentGeometry.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "cnc_core/toolpath/CurveMath.h"
+
+namespace mtc::core::motion {
+
+namespace {
+
+using curve::kPi;
+
+void normalise(Position& v, int count) {
+    double sum = 0.0;
+    for (int i = 0; i < count; ++i)
+        sum += v[static_cast<std::size_t>(i)] * v[static_cast<std::size_t>(i)];
+    const double norm = std::sqrt(sum);
+    if (norm <= 0.0) return;
+    for (int i = 0; i < count; ++i)
+        v[static_cast<std::size_t>(i)] /= norm;
+}
+
+}  // namespace
+
+double arcTangentExtreme(double angle0, double sweep, bool secondAxis) {
+    // The tangent of a circle at polar angle a is (-sin a, cos a): the first
+    // plane axis's share is |sin|, the second's |cos|. Extremes of |cos| lie
+    // at k*pi, of |sin| at pi/2 + k*pi.
+    const double lo = std::min(angle0, angle0 + sweep), hi = std::max(angle0, angle0 + sweep);
+    const double phase = secondAxis ? 0.0 : kPi / 2.0;
+    if (std::ceil((lo - phase) / kPi) * kPi + phase <= hi) return 1.0;
+    auto share = [secondAxis](double a) {
+        return std::fabs(secondAxis ? std::cos(a) : std::sin(a));
+    };
+    return std::max(share(lo), share(hi));
+}
+
+SegmentGeometry SegmentGeometry::of(const Motion& m, const MotionLimits& limits) {
+    SegmentGeometry g;
+    g.mapping_ = PlaneMapping::of(m, limits);
+    g.axisCount_ = std::min(m.axisCount, limits.axisCount);
+    g.machineEnd_ = m.end;
+    g.mapping_.toPlane(m.start, g.start_);
+    g.mapping_.toPlane(m.end, g.end_);
+    const bool arc = (m.type == MotionType::ArcCW || m.type == MotionType::ArcCCW) &&
+                     m.planeAxis1 >= 0 && m.planeAxis2 >= 0 && m.planeAxis1 < g.axisCount_ &&
+                     m.planeAxis2 < g.axisCount_ && m.planeAxis1 != m.planeAxis2;
+    if (!arc) {
+        g.describeLine();
+        return g;
+    }
+    g.p1_ = m.planeAxis1;
+    g.p2_ = m.planeAxis2;
+    double c1 = m.center1, c2 = m.center2;
+    if (g.mapping_.kind() == 32) {  // the interpreter gives the centre in machine positions
+        Position centre = m.start;
+        centre[static_cast<std::size_t>(g.p1_)] = c1;
+        centre[static_cast<std::size_t>(g.p2_)] = c2;
+        Position plane{};
+        g.mapping_.toPlane(centre, plane);
+        c1 = plane[static_cast<std::size_t>(g.p1_)];
+        c2 = plane[static_cast<std::size_t>(g.p2_)];
+    }
+    g.describeArc(c1, c2, m.type == MotionType::ArcCW);
+    return g;
+}
+
+void SegmentGeometry::describeLine() {
+    arc_ = false;
+    double sum = 0.0;
+    for (int i = 0; i < axisCount_; ++i) {
+        const auto k = static_cast<std::size_t>(i);
+        const double d = end_[k] - start_[k];
+        startTangent_[k] = d;
+        sum += d * d;
+    }
+    length_ = std::sqrt(sum);
+    normalise(startTangent_, axisCount_);
+    endTangent_ = startTangent_;
+}
+
+void SegmentGeometry::describeArc(double c1, double c2, bool clockwise) {
+    arc_ = true;
+    center1_ = c1;
+    center2_ = c2;
+    const auto k1 = static_cast<std::size_t>(p1_), k2 = static_cast<std::size_t>(p2_);
+    radius0_ = std::hypot(start_[k1] - c1, start_[k2] - c2);
+    radius1_ = std::hypot(end_[k1] - c1, end_[k2] - c2);
+    angle0_ = std::atan2(start_[k2] - c2, start_[k1] - c1);
+    const double sweep = curve::arcSweep(start_[k1], start_[k2], end_[k1], end_[k2], c1, c2,
+                                         clockwise, kFullCircleTolerance);
+    sweep_ = clockwise ? -sweep : sweep;
+    double helix = 0.0;
+    for (int i = 0; i < axisCount_; ++i) {
+        if (i == p1_ || i == p2_) continue;
+        const double d = end_[static_cast<std::size_t>(i)] - start_[static_cast<std::size_t>(i)];
+        helix += d * d;
+    }
+    const double arcLength = 0.5 * (radius0_ + radius1_) * sweep;
+    length_ = std::sqrt(arcLength * arcLength + helix);
+    arcTangent(0.0, startTangent_);
+    arcTangent(1.0, endTangent_);
+}
+
+void SegmentGeometry::arcTangent(double u, Position& tangent) const {
+    const double angle = angle0_ + sweep_ * u;
+    const double r = radius0_ + (radius1_ - radius0_) * u;
+    const double dr = radius1_ - radius0_;
+    for (int i = 0; i < axisCount_; ++i) {
+        const auto k = static_cast<std::size_t>(i);
+        tangent[k] = end_[k] - start_[k];
+    }
+    tangent[static_cast<std::size_t>(p1_)] = dr * std::cos(angle) - r * sweep_ * std::sin(angle);
+    tangent[static_cast<std::size_t>(p2_)] = dr * std::sin(angle) + r * sweep_ * std::cos(angle);
+    normalise(tangent, axisCount_);
+}
+
+void SegmentGeometry::planePoint(double s, Position& plane) const {
+    const double u = length_ > 0.0 ? std::clamp(s / length_, 0.0, 1.0) : 1.0;
+    for (int i = 0; i < axisCount_; ++i) {
+        const auto k = static_cast<std::size_t>(i);
+        plane[k] = start_[k] + (end_[k] - start_[k]) * u;
+    }
+    if (!arc_) return;
+    const double angle = angle0_ + sweep_ * u;
+    const double r = radius0_ + (radius1_ - radius0_) * u;
+    plane[static_cast<std::size_t>(p1_)] = center1_ + r * std::cos(angle);
+    plane[static_cast<std::size_t>(p2_)] = center2_ + r * std::sin(angle);
+}
+
+void SegmentGeometry::machinePoint(double s, Position& machine) const {
+    if (s >= length_) {
+        for (int i = 0; i < axisCount_; ++i)
+            machine[static_cast<std::size_t>(i)] = machineEnd_[static_cast<std::size_t>(i)];
+        return;
+    }
+    Position plane = machine;
+    planePoint(s, plane);
+    if (mapping_.identity()) {
+        for (int i = 0; i < axisCount_; ++i)
+            machine[static_cast<std::size_t>(i)] = plane[static_cast<std::size_t>(i)];
+        return;
+    }
+    mapping_.toMachine(plane, machine);
+}
+
+double SegmentGeometry::maxTangentComponent(int axis) const {
+    if (axis < 0 || axis >= axisCount_) return 0.0;
+    const auto k = static_cast<std::size_t>(axis);
+    if (!arc_ || (axis != p1_ && axis != p2_))
+        return std::max(std::fabs(startTangent_[k]), std::fabs(endTangent_[k]));
+    // In-plane share of the tangent times the largest |sin| (axis 1) or |cos| (axis 2).
+    double helix = 0.0;
+    for (int i = 0; i < axisCount_; ++i) {
+        if (i == p1_ || i == p2_) continue;
+        const double d = end_[static_cast<std::size_t>(i)] - start_[static_cast<std::size_t>(i)];
+        helix += d * d;
+    }
+    const double planeShare =
+        length_ > 0.0 ? std::sqrt(std::max(0.0, 1.0 - helix / (length_ * length_))) : 0.0;
+    return planeShare * arcTangentExtreme(angle0_, sweep_, axis == p2_);
+}
+
+}  // namespace mtc::core::motion

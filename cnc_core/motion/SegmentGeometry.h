@@ -1,0 +1,71 @@
+#pragma once
+
+#include "cnc_core/motion/PlaneMapping.h"
+
+namespace mtc::core::motion {
+
+/// The path of one move, parameterised by its length: a straight line over
+/// every moving axis, or an arc in the plane of two axes with the other axes
+/// moving linearly with it (helix). Coordinates are those of the move's
+/// plane (PlaneMapping); the end is exactly Motion::end in machine positions.
+class SegmentGeometry {
+  public:
+    /// Geometry of `motion` (G0/G1 lines, G2/G3 arcs and helices). The arc's
+    /// sweep follows the toolpath's rule (start = end within
+    /// kFullCircleTolerance: a full circle).
+    static SegmentGeometry of(const Motion& motion, const MotionLimits& limits);
+
+    bool arc() const { return arc_; }
+    double length() const { return length_; }
+    const PlaneMapping& mapping() const { return mapping_; }
+    int axisCount() const { return axisCount_; }
+    /// Start and end in plane coordinates.
+    const Position& planeStart() const { return start_; }
+    const Position& planeEnd() const { return end_; }
+    /// Exact machine end position (Motion::end).
+    const Position& machineEnd() const { return machineEnd_; }
+    /// Unit tangent in plane coordinates at the start / end of the path.
+    const Position& startTangent() const { return startTangent_; }
+    const Position& endTangent() const { return endTangent_; }
+    /// Arcs: radius at the start (plane units), signed sweep (radians, > 0
+    /// counter-clockwise), plane axes.
+    double radius() const { return radius0_; }
+    double sweep() const { return sweep_; }
+    int planeAxis1() const { return p1_; }
+    int planeAxis2() const { return p2_; }
+
+    /// Plane coordinates at path distance `s` (clamped to 0 .. length).
+    void planePoint(double s, Position& plane) const;
+    /// Machine position at path distance `s`; `machine` holds the previous
+    /// machine position on entry (G31 angle continuity). s >= length gives
+    /// exactly the end.
+    void machinePoint(double s, Position& machine) const;
+    /// Largest |tangent component| of `axis` anywhere along the path.
+    double maxTangentComponent(int axis) const;
+
+  private:
+    void describeLine();
+    void describeArc(double c1, double c2, bool clockwise);
+    void arcTangent(double u, Position& tangent) const;
+
+    PlaneMapping mapping_;
+    int axisCount_ = 0;
+    bool arc_ = false;
+    Position start_{}, end_{}, machineEnd_{};
+    Position startTangent_{}, endTangent_{};
+    double length_ = 0.0;
+    int p1_ = -1, p2_ = -1;
+    double center1_ = 0.0, center2_ = 0.0;
+    double radius0_ = 0.0, radius1_ = 0.0;
+    double angle0_ = 0.0, sweep_ = 0.0;
+};
+
+/// Largest share of the first (`secondAxis` false) or second plane axis in
+/// the unit tangent of a circle swept from polar angle `angle0` by `sweep`
+/// radians (signed): max |sin| or max |cos| over the swept angles.
+double arcTangentExtreme(double angle0, double sweep, bool secondAxis);
+
+/// Start and end closer than this (plane units) make a G2/G3 a full circle.
+inline constexpr double kFullCircleTolerance = 0.002;
+
+}  // namespace mtc::core::motion

@@ -1,0 +1,295 @@
+#include "cnc_core/motion/TrajectoryEngine.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace mtc::core::motion {
+
+namespace {
+constexpr double kForever = std::numeric_limits<double>::infinity();
+}  // namespace
+
+TrajectoryEngine::TrajectoryEngine(const MotionLimits& limits, std::size_t lookAhead)
+    : limits_(limits), queue_(lookAhead), spindles_(limits) {}
+
+// ----------------------------------------------------------------- input
+
+void TrajectoryEngine::pushMove(const Motion& motion, BlockTransition mode) {
+    SegmentGeometry geometry = SegmentGeometry::of(motion, limits_);
+    if (!(geometry.length() > 1e-12)) return;  // nothing moves: no time, no stop
+    const QueueItem* before = queue_.moveBeforeEnd();
+    double entry = 0.0;
+    const bool rapid = motion.type == MotionType::Rapid;
+    if (before != nullptr)
+        entry = junctionVelocity({&before->geometry, before->rapid, before->mode},
+                                 {&geometry, rapid, mode}, limits_);
+    QueueItem& item = queue_.pushBack();
+    item.kind = QueueItem::Kind::Move;
+    item.where = motion.where;
+    item.blockIndex = motion.blockIndex;
+    item.geometry = geometry;
+    item.limits = pathLimits(item.geometry, limits_);
+    item.rapid = rapid;
+    item.mode = mode;
+    item.feed = rapid ? 0.0 : std::max(0.0, motion.feed) / 60.0;
+    item.entryLimit = entry;
+    item.exitLimit = 0.0;
+    afterPlanChange(planBackward(true));
+}
+
+void TrajectoryEngine::pushDwell(const SourceLocation& where, double seconds) {
+    QueueItem& item = queue_.pushBack();
+    item.kind = QueueItem::Kind::Dwell;
+    item.where = where;
+    item.seconds = std::isfinite(seconds) ? std::max(0.0, seconds) : 0.0;
+}
+
+void TrajectoryEngine::pushAction(const SourceLocation& where, const MachineAction& action) {
+    QueueItem& item = queue_.pushBack();
+    item.kind = QueueItem::Kind::Action;
+    item.where = where;
+    item.action = action;
+}
+
+// --------------------------------------------------------------- planning
+
+double TrajectoryEngine::capOf(const QueueItem& move) const {
+    if (held_) return 0.0;
+    if (move.rapid) return move.limits.velocity * rapidOverride_ / 100.0;
+    return std::min(move.feed * feedOverride_ / 100.0, move.limits.velocity);
+}
+
+bool TrajectoryEngine::planBackward(bool early) {
+    double following = 0.0;  // largest velocity at the start of what follows
+    bool frontChanged = false;
+    bool last = true;
+    for (std::size_t i = queue_.size(); i-- > 0;) {
+        QueueItem& item = queue_.at(i);
+        if (item.kind == QueueItem::Kind::Dwell ||
+            (item.kind == QueueItem::Kind::Action && item.action.stopsPath)) {
+            following = 0.0;
+            last = false;
+            continue;
+        }
+        if (item.kind != QueueItem::Kind::Move) continue;
+        const bool unchanged = item.exitLimit == following;
+        if (early && unchanged && !last) break;  // everything before stays as planned
+        last = false;
+        item.exitLimit = following;
+        if (i == 0) {
+            frontChanged = !unchanged || !planned_ || plannedExit_ != following;
+            break;
+        }
+        const double reach = std::sqrt(following * following +
+                                       2.0 * item.limits.acceleration * item.geometry.length());
+        following = std::min({item.entryLimit, capOf(item), reach});
+    }
+    return frontChanged;
+}
+
+void TrajectoryEngine::replanFront() {
+    if (queue_.empty() || queue_.front().kind != QueueItem::Kind::Move) return;
+    const QueueItem& move = queue_.front();
+    const double length = move.geometry.length() - pathS_;
+    profile_.plan(pathS_, velocity_, length, capOf(move), move.exitLimit, move.limits.acceleration);
+    plannedExit_ = move.exitLimit;
+    profileTime_ = 0.0;
+    planned_ = true;
+}
+
+void TrajectoryEngine::afterPlanChange(bool frontChanged) {
+    if (frontChanged && planned_) replanFront();
+}
+
+void TrajectoryEngine::replanAll() {
+    planBackward(false);
+    if (planned_) replanFront();
+}
+
+// ------------------------------------------------------------------- time
+
+void TrajectoryEngine::spend(double seconds) {
+    seconds_ += seconds;
+    spindles_.advance(seconds);
+}
+
+double TrajectoryEngine::advance(double seconds) {
+    if (!(seconds > 0.0) || !std::isfinite(seconds)) return 0.0;
+    double remaining = seconds;
+    while (remaining > 0.0) {
+        if (queue_.empty()) {
+            spend(remaining);
+            return seconds;
+        }
+        QueueItem& item = queue_.front();
+        bool finished = false;
+        double used = 0.0;
+        switch (item.kind) {
+            case QueueItem::Kind::Move:
+                used = runMove(item, remaining, finished);
+                break;
+            case QueueItem::Kind::Dwell:
+                used = runDwell(item, remaining, finished);
+                break;
+            case QueueItem::Kind::Action:
+                used = runAction(item, remaining, finished);
+                break;
+        }
+        remaining = used >= remaining ? 0.0 : remaining - used;
+        if (finished) {
+            finishFront();
+            if (remaining > 0.0) return seconds - remaining;
+        }
+    }
+    return seconds;
+}
+
+double TrajectoryEngine::runMove(QueueItem& move, double room, bool& finished) {
+    if (!planned_) replanFront();
+    const double left = profile_.reachesEnd() ? profile_.duration() - profileTime_ : kForever;
+    if (left <= room) {
+        spend(std::max(0.0, left));
+        move.geometry.machinePoint(move.geometry.length(), position_);
+        velocity_ = profile_.endVelocity();
+        finished = true;
+        return std::max(0.0, left);
+    }
+    spend(room);
+    profileTime_ += room;
+    profile_.sample(profileTime_, pathS_, velocity_);
+    move.geometry.machinePoint(pathS_, position_);
+    return room;
+}
+
+double TrajectoryEngine::runDwell(QueueItem& dwell, double room, bool& finished) {
+    const double left = dwell.seconds - dwelt_;
+    if (left <= room) {
+        spend(std::max(0.0, left));
+        finished = true;
+        return std::max(0.0, left);
+    }
+    spend(room);
+    dwelt_ += room;
+    return room;
+}
+
+double TrajectoryEngine::runAction(QueueItem& item, double room, bool& finished) {
+    const MachineAction& action = item.action;
+    if (!actionApplied_) {
+        if (action.speed >= 0.0) spindles_.setSpeed(action.spindle, action.speed);
+        if (action.rotation >= 0)
+            spindles_.setRotation(action.spindle,
+                                  static_cast<SpindleSet::Rotation>(action.rotation));
+        actionApplied_ = true;
+    }
+    if (!action.waitForSpindle || spindles_.atSpeed(action.spindle)) {
+        finished = true;
+        return 0.0;
+    }
+    const double left = spindles_.secondsToSpeed(action.spindle);
+    if (left <= room) {
+        spend(left);
+        finished = spindles_.atSpeed(action.spindle);
+        return left;
+    }
+    spend(room);
+    return room;
+}
+
+void TrajectoryEngine::finishFront() {
+    QueueItem& item = queue_.front();
+    lastWhere_ = item.where;
+    lastBlock_ = item.blockIndex;
+    if (item.kind == QueueItem::Kind::Action) reached_.push_back(item.action.tag);
+    const bool flowsOut = item.kind == QueueItem::Kind::Move ||
+                          (item.kind == QueueItem::Kind::Action && !item.action.stopsPath);
+    queue_.popFront();
+    planned_ = false;
+    pathS_ = 0.0;
+    dwelt_ = 0.0;
+    actionApplied_ = false;
+    // Velocity flows only from a move into the next one (across transparent
+    // actions); anything else starts at rest.
+    const bool flowsOn =
+        !queue_.empty() &&
+        (queue_.front().kind == QueueItem::Kind::Move ||
+         (queue_.front().kind == QueueItem::Kind::Action && !queue_.front().action.stopsPath));
+    if (!flowsOut || !flowsOn) velocity_ = 0.0;
+}
+
+// --------------------------------------------------------------- operator
+
+void TrajectoryEngine::setFeedOverride(double percent) {
+    if (!std::isfinite(percent)) return;
+    feedOverride_ = std::clamp(percent, 0.0, limits_.feedOverrideMax);
+    replanAll();
+}
+
+void TrajectoryEngine::setRapidOverride(double percent) {
+    if (!std::isfinite(percent)) return;
+    rapidOverride_ = std::clamp(percent, 0.0, limits_.rapidOverrideMax);
+    replanAll();
+}
+
+void TrajectoryEngine::hold() {
+    if (held_) return;
+    held_ = true;
+    replanAll();
+}
+
+void TrajectoryEngine::resume() {
+    if (!held_) return;
+    held_ = false;
+    replanAll();
+}
+
+void TrajectoryEngine::stop() {
+    if (!queue_.empty()) {
+        lastWhere_ = queue_.front().where;
+        lastBlock_ = queue_.front().blockIndex;
+    }
+    queue_.clear();
+    planned_ = false;
+    pathS_ = velocity_ = dwelt_ = 0.0;
+    actionApplied_ = false;
+    held_ = false;
+    spindles_.stopAll();
+}
+
+// ------------------------------------------------------------------ state
+
+double TrajectoryEngine::position(int axis) const {
+    return axis >= 0 && axis < kMaxAxes ? position_[static_cast<std::size_t>(axis)] : 0.0;
+}
+
+bool TrajectoryEngine::moving() const {
+    return !queue_.empty() && queue_.front().kind == QueueItem::Kind::Move;
+}
+
+const QueueItem* TrajectoryEngine::currentMove() const {
+    return moving() ? &queue_.front() : nullptr;
+}
+
+double TrajectoryEngine::distanceToGo(int axis) const {
+    const QueueItem* move = currentMove();
+    if (move == nullptr || axis < 0 || axis >= move->geometry.axisCount()) return 0.0;
+    const auto k = static_cast<std::size_t>(axis);
+    return move->geometry.machineEnd()[k] - position_[k];
+}
+
+const SourceLocation& TrajectoryEngine::currentLocation() const {
+    return queue_.empty() ? lastWhere_ : queue_.front().where;
+}
+
+std::uint32_t TrajectoryEngine::currentBlockIndex() const {
+    return queue_.empty() ? lastBlock_ : queue_.front().blockIndex;
+}
+
+std::vector<std::uint32_t> TrajectoryEngine::takeReached() {
+    std::vector<std::uint32_t> out;
+    out.swap(reached_);
+    return out;
+}
+
+}  // namespace mtc::core::motion

@@ -1,0 +1,133 @@
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "cnc_core/motion/MotionQueue.h"
+#include "cnc_core/motion/SegmentProfile.h"
+#include "cnc_core/motion/SpindleSet.h"
+
+namespace mtc::core::motion {
+
+/// Look-ahead depth of the simulated machine in queue entries (MOT-002).
+inline constexpr std::size_t kDefaultLookAhead = 32;
+
+/// Moves the axes of one process in time (docs/decisions/motion.md): the
+/// interpreter's moves, dwells and actions go into a bounded look-ahead
+/// queue; advance() interpolates them under the axes' velocity and
+/// acceleration limits with the overrides, feed hold and Control reset of
+/// the operator. Every figure is exact at any time (closed-form profiles),
+/// so the result does not depend on how the time is cut into ticks as long
+/// as the driver refills the queue whenever advance() returns early.
+///
+/// The driver's loop (panel tick, CLI, tests):
+///   while (time left) {
+///       while (engine.wantsMore() && the program can go on) step the interpreter;
+///       time left -= engine.advance(time left);
+///   }
+class TrajectoryEngine {
+  public:
+    explicit TrajectoryEngine(const MotionLimits& limits,
+                              std::size_t lookAhead = kDefaultLookAhead);
+
+    // --- input, in program order ---
+    /// True while the look-ahead queue has room for another block.
+    bool wantsMore() const { return !queue_.full(); }
+    /// A G0/G1/G2/G3 move (Motion::start .. Motion::end). A move of length 0
+    /// takes no time and is not queued.
+    void pushMove(const Motion& motion, BlockTransition mode);
+    /// A dwell of `seconds` (the axes are at rest during it).
+    void pushDwell(const SourceLocation& where, double seconds);
+    /// A machine action; its tag is reported by takeReached() when it is executed.
+    void pushAction(const SourceLocation& where, const MachineAction& action);
+
+    // --- time ---
+    /// Moves everything on by up to `seconds` and returns the time taken. It
+    /// returns early (less than `seconds`) when a queue entry is finished, so
+    /// the driver can refill the queue before the planning goes on.
+    double advance(double seconds);
+
+    // --- the operator ---
+    /// Feed override of G1/G2/G3, 0 .. feedOverrideMax %.
+    void setFeedOverride(double percent);
+    /// Rapid traverse override of G0, 0 .. 100 %.
+    void setRapidOverride(double percent);
+    double feedOverride() const { return feedOverride_; }
+    double rapidOverride() const { return rapidOverride_; }
+    /// Feed hold: the axes brake along the path and stay there.
+    void hold();
+    /// Continues after hold() from where the axes stand, mid-block.
+    void resume();
+    bool held() const { return held_; }
+    /// Control reset: the axes stop where they are at once, the queue is
+    /// emptied, the spindles ramp down, a hold is cleared.
+    void stop();
+
+    // --- the state ---
+    /// Nothing queued: every move and dwell is done, the axes are at rest.
+    bool idle() const { return queue_.empty(); }
+    double seconds() const { return seconds_; }
+    /// Machine positions (mm, degrees for rotary axes).
+    const Position& position() const { return position_; }
+    double position(int axis) const;
+    /// Sets where the axes are (start, or after a move outside the engine).
+    void setPosition(const Position& position) { position_ = position; }
+    /// Path velocity, units/s of the move's plane (0 at rest).
+    double velocity() const { return velocity_; }
+    /// End of the move being executed minus the position, per axis (0 between moves).
+    double distanceToGo(int axis) const;
+    /// The entry being executed, or the last one executed when idle.
+    const SourceLocation& currentLocation() const;
+    std::uint32_t currentBlockIndex() const;
+    /// True while a move is being executed (its geometry is currentMove()).
+    bool moving() const;
+    const QueueItem* currentMove() const;
+    /// Path distance travelled along the current move.
+    double pathPosition() const { return pathS_; }
+    const SpindleSet& spindles() const { return spindles_; }
+    const MotionLimits& limits() const { return limits_; }
+    /// Tags of the actions executed since the last call, oldest first.
+    std::vector<std::uint32_t> takeReached();
+    const QueueItem* queued(std::size_t i) const {
+        return i < queue_.size() ? &queue_.at(i) : nullptr;
+    }
+    std::size_t queuedCount() const { return queue_.size(); }
+
+  private:
+    double capOf(const QueueItem& move) const;
+    /// Look-ahead: the velocity each move may leave with, from the end of
+    /// the queue backwards (0 at the end). With `early` it stops at the
+    /// first move whose limit did not change. Returns true when the front's changed.
+    bool planBackward(bool early);
+    void replanFront();
+    void afterPlanChange(bool frontChanged);
+    /// Caps changed (override, hold): the whole queue and the front from where it is.
+    void replanAll();
+    void spend(double seconds);
+    double runMove(QueueItem& move, double room, bool& finished);
+    double runDwell(QueueItem& dwell, double room, bool& finished);
+    double runAction(QueueItem& action, double room, bool& finished);
+    void finishFront();
+
+    MotionLimits limits_;
+    MotionQueue queue_;
+    SpindleSet spindles_;
+    SegmentProfile profile_;
+    bool planned_ = false;  ///< profile_ belongs to the front move
+    double profileTime_ = 0.0;
+    double plannedExit_ = 0.0;
+    double pathS_ = 0.0;
+    double velocity_ = 0.0;
+    double dwelt_ = 0.0;          ///< seconds of the front dwell done
+    bool actionApplied_ = false;  ///< the front action's spindle change is made
+    Position position_{};
+    double seconds_ = 0.0;
+    double feedOverride_ = 100.0;
+    double rapidOverride_ = 100.0;
+    bool held_ = false;
+    SourceLocation lastWhere_;
+    std::uint32_t lastBlock_ = 0;
+    std::vector<std::uint32_t> reached_;
+};
+
+}  // namespace mtc::core::motion
