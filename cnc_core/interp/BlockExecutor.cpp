@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -24,6 +25,12 @@ bool reportProblems(const BlockContext& c, const std::vector<PlaneProblem>& prob
 
 bool isProgramControl(int m) {
     return m == 0 || m == 1 || m == 2 || m == 30;
+}
+
+std::string formatNumber(double value) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.10g", value);
+    return text;
 }
 
 }  // namespace
@@ -201,10 +208,28 @@ bool BlockExecutor::spindles(const BlockContext& c, const BlockInput& in, ModalS
     for (int slot = 0; slot < kSpindleSlots; ++slot) {
         if (!((in.spindleMask >> slot) & 1u)) continue;
         const int spindle = slot == 0 ? reference : slot;
+        const double speed = in.spindle[static_cast<size_t>(slot)];
+        // A speed in rpm (G97) above the spindle's max_speed is refused
+        // (issue 22 §6; docs/decisions/motion.md MOT-010). Under G96 S is a
+        // cutting speed, and G92 S is itself a limit.
+        if (!in.speedLimit && next.g[kGroupSurfaceSpeed] != 96) {
+            const double limit = maxSpindleSpeed(spindle);
+            if (limit > 0.0 && !(std::fabs(speed) <= limit))
+                return c.error("SPEED_ABOVE_MAXIMUM", "S" + std::to_string(spindle) + " " +
+                                                          formatNumber(speed) +
+                                                          " rpm is above the spindle's max_speed " +
+                                                          formatNumber(limit) + " rpm");
+        }
         auto& target = in.speedLimit ? next.spindleLimit : next.spindleSpeed;
-        target[static_cast<size_t>(spindle)] = in.spindle[static_cast<size_t>(slot)];
+        target[static_cast<size_t>(spindle)] = speed;
     }
     return true;
+}
+
+double BlockExecutor::maxSpindleSpeed(int spindle) const {
+    const int axis = setup_.axes->spindleAxis(spindle);
+    if (axis < 0 || static_cast<std::size_t>(axis) >= setup_.config->axes.size()) return 0.0;
+    return setup_.config->axes[static_cast<std::size_t>(axis)].maxSpeed;
 }
 
 bool BlockExecutor::auxiliaries(const BlockContext& c, const BlockInput& in,

@@ -60,6 +60,8 @@ class BlockExecutor {
     /// programmed with (ToolCheck.h, docs/decisions/gne.md G-011).
     void checkGneTool(const BlockContext& c, const BlockInput& in) const;
     bool spindles(const BlockContext& c, const BlockInput& in, ModalState& next) const;
+    /// max_speed (rpm) of spindle 1..3 in the configuration; 0 = none / not limited.
+    double maxSpindleSpeed(int spindle) const;
     bool auxiliaries(const BlockContext& c, const BlockInput& in, const InterpreterState& state,
                      BlockPlan& plan) const;
     /// G74 (homing: to machine 0 within the travel range), G75 (hard stop: a

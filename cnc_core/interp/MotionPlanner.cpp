@@ -1,7 +1,10 @@
 #include "cnc_core/interp/MotionPlanner.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+
+#include "cnc_core/motion/SegmentGeometry.h"
 
 namespace mtc::core {
 namespace {
@@ -16,6 +19,12 @@ double distance(double dx, double dy) {
 std::string format(double value) {
     char text[32];
     std::snprintf(text, sizeof text, "%.4f", value);
+    return text;
+}
+
+std::string shortNumber(double value) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.6g", value);
     return text;
 }
 
@@ -112,14 +121,16 @@ bool MotionPlanner::plan(const BlockContext& context, const BlockInput& input,
         return true;
     }
     double length = 0.0;
+    double axisSeconds = 0.0;  // the time the slowest axis needs at its max_velocity
     if (g >= 2) {
-        if (!arc(context, input, current, plan, arcTolerance, length)) return false;
+        if (!arc(context, input, current, plan, arcTolerance, length, axisSeconds)) return false;
     } else {
         for (int a = 0; moved >> a; ++a) {
             if (!((moved >> a) & 1u)) continue;
             const double d =
                 next.work[static_cast<size_t>(a)] - current.work[static_cast<size_t>(a)];
             length += d * d;
+            axisSeconds = std::max(axisSeconds, std::fabs(d) * secondsPerPlaneUnit(next, a));
         }
         length = std::sqrt(length);
     }
@@ -132,12 +143,30 @@ bool MotionPlanner::plan(const BlockContext& context, const BlockInput& input,
         return context.error(
             "FEED_PER_REVOLUTION_NO_SPEED",
             "G95 feed per revolution needs a spindle speed S of the reference spindle");
+    if (plan.feedRate < kMinimumFeed)  // bounded simulated time (issue 22 §6, MOT-010)
+        return context.error("FEED_TOO_SMALL", "the path feed " + shortNumber(plan.feedRate) +
+                                                   " mm/min is below the smallest feed " +
+                                                   shortNumber(kMinimumFeed) + " mm/min");
     if (plan.feedRate != feedCache_.feed) {  // the feed changes far less often than blocks
         feedCache_.feed = plan.feedRate;
         feedCache_.secondsPerUnit = 60.0 / plan.feedRate;
     }
-    next.time += length * feedCache_.secondsPerUnit;
+    // No axis moves faster than its max_velocity (MOT-003): F60000 on a
+    // 30000 mm/min axis takes the time of 30000 mm/min.
+    next.time += std::max(length * feedCache_.secondsPerUnit, axisSeconds);
     return true;
+}
+
+double MotionPlanner::secondsPerPlaneUnit(const ModalState& next, int axis) const {
+    const AxisModel& m = axes_->axis(axis);
+    const Transformation& t = next.transformation;
+    if (!t.transforms(axis)) return m.rapidSecondsPerUnit;
+    if (t.kind() == 32)  // developed surface: mm of the cylinder with radius RI
+        return m.rotary ? m.rapidSecondsPerUnit * 180.0 / (kPi * t.effectiveRadius())
+                        : m.rapidSecondsPerUnit;
+    // G31: both plane coordinates move with the linear plane axis's limit.
+    const int linear = axes_->axis(t.planeAxis(0)).rotary ? t.planeAxis(1) : t.planeAxis(0);
+    return axes_->axis(linear).rapidSecondsPerUnit;
 }
 
 std::uint32_t MotionPlanner::movedAxes(const BlockInput& input, const ModalState& next) const {
@@ -163,7 +192,7 @@ double MotionPlanner::rapidTime(const ModalState& current, const ModalState& nex
 
 bool MotionPlanner::arc(const BlockContext& context, const BlockInput& input,
                         const ModalState& current, BlockPlan& plan, double arcTolerance,
-                        double& length) const {
+                        double& length, double& axisSeconds) const {
     ModalState& next = plan.next;
     const int p1 = next.plane.firstAxis(), p2 = next.plane.secondAxis();
     if (p1 < 0 || p2 < 0)
@@ -218,14 +247,24 @@ bool MotionPlanner::arc(const BlockContext& context, const BlockInput& input,
         if (plan.motionType == MotionType::ArcCW) angle = -angle;
         if (angle <= 0.0) angle += 2.0 * kPi;
     }
-    double helix = 0.0;
+    double helix = 0.0, helixSeconds = 0.0;
     const std::uint32_t others = input.axisMask & ~((1u << p1) | (1u << p2));
     for (int a = 0; others >> a; ++a) {
         if (!((others >> a) & 1u)) continue;
         const double d = next.work[static_cast<size_t>(a)] - current.work[static_cast<size_t>(a)];
         helix += d * d;
+        helixSeconds = std::max(helixSeconds, std::fabs(d) * secondsPerPlaneUnit(next, a));
     }
     length = helix == 0.0 ? r1 * angle : std::sqrt(r1 * angle * r1 * angle + helix);
+    // The plane axes' shares of the tangent peak where the circle runs
+    // along them (motion::arcTangentExtreme).
+    const double signedSweep = plan.motionType == MotionType::ArcCW ? -angle : angle;
+    const double a0 = std::atan2(s2 - centre[1], s1 - centre[0]);
+    axisSeconds = std::max({helixSeconds,
+                            r1 * angle * motion::arcTangentExtreme(a0, signedSweep, false) *
+                                secondsPerPlaneUnit(next, p1),
+                            r1 * angle * motion::arcTangentExtreme(a0, signedSweep, true) *
+                                secondsPerPlaneUnit(next, p2)});
     plan.planeAxis1 = p1;
     plan.planeAxis2 = p2;
     const Transformation& t = next.transformation;

@@ -19,6 +19,10 @@ namespace mtc::core {
 ///    checked against the tolerance, the centre must lie in the plane;
 ///  - travel limits of every programmed axis, feed present for G1/G2/G3,
 ///    simulated time of the move.
+/// Smallest path feed a move may have, mm/min (MOT-010): a smaller one
+/// would give a simulated duration that grows with the programmed number.
+inline constexpr double kMinimumFeed = 0.001;
+
 class MotionPlanner {
   public:
     MotionPlanner(const ProcessAxes* axes, const ZeroOffsetTable* offsets)
@@ -45,8 +49,14 @@ class MotionPlanner {
     bool travelLimit(const BlockContext& context, const BlockInput& input, const AxisModel& m,
                      int axis, double position) const;
     double rapidTime(const ModalState& current, const ModalState& next, std::uint32_t moved) const;
+    /// Arc centre, sweep and length; `axisSeconds` = the time the slowest
+    /// axis needs for its share of the arc at its max_velocity.
     bool arc(const BlockContext& context, const BlockInput& input, const ModalState& current,
-             BlockPlan& plan, double arcTolerance, double& length) const;
+             BlockPlan& plan, double arcTolerance, double& length, double& axisSeconds) const;
+    /// Seconds per unit of the move's plane for `axis` at its max_velocity
+    /// (under G32 a rotary plane axis in mm of the developed surface, under
+    /// G31 both plane coordinates at the linear plane axis's velocity).
+    double secondsPerPlaneUnit(const ModalState& next, int axis) const;
 
     const ProcessAxes* axes_;
     const ZeroOffsetTable* offsets_;
