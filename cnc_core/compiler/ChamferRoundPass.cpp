@@ -15,6 +15,7 @@ constexpr int kMaxBlocksBetween = 20;  // seed 001 ch. 2
 /// Changes to make to one block's text.
 struct BlockEdit {
     std::optional<Point2> newStart, newEnd;
+    bool consumed = false;  ///< the corners used up the whole element: its motion goes
     bool removeCorner = false;
     int prependG = -1;
 };
@@ -36,36 +37,55 @@ const char* kindName(CornerKind kind) {
     return kind == CornerKind::Chamfer ? "CF" : "RD";
 }
 
-/// Appends "X12.5 Y3" for a point of the plane, in programmed units.
-void appendPlaneWords(std::string& out, const CompilerPlane& plane, bool diameter,
-                      const Point2& p) {
+/// Ticks (0.0001 steps) of coordinate k of `p` in programmed units.
+long long planeTicks(const CompilerPlane& plane, bool diameter, const Point2& p, int k) {
+    return coordinateTicks(p[k] / axisScale(plane.axis[k], diameter));
+}
+
+/// Appends "X12.5 Y3" for the point `to` of the plane in programmed units:
+/// absolute (G90), or incremental from `from` (G91) as the difference of the
+/// two points' rounded values, so that a chain of incremental blocks ends
+/// exactly where the programmed one does (no drift from rounding).
+void appendPlaneWords(std::string& out, const CompilerPlane& plane, bool diameter, bool absolute,
+                      const Point2& from, const Point2& to) {
     for (int k = 0; k < 2; ++k) {
         if (k) out += ' ';
         out += plane.axis[k];
-        appendCoordinate(out, p[k] / axisScale(plane.axis[k], diameter));
+        const long long end = planeTicks(plane, diameter, to, k);
+        appendTicks(out, absolute ? end : end - planeTicks(plane, diameter, from, k));
     }
 }
 
-/// Appends "I2 J-1.5" for a circle centre of the plane, in programmed units.
-void appendCentreWords(std::string& out, const CompilerPlane& plane, bool diameter,
-                       const Point2& c) {
+/// Appends "I2 J-1.5" for the circle centre `c`: absolute (G90) or relative
+/// to the arc's start `from` (G91), in programmed units.
+void appendCentreWords(std::string& out, const CompilerPlane& plane, bool diameter, bool absolute,
+                       const Point2& from, const Point2& c) {
     for (int k = 0; k < 2; ++k) {
         if (k) out += ' ';
         out += plane.centre[k];
-        appendCoordinate(out, c[k] / axisScale(plane.axis[k], diameter));
+        const long long centre = planeTicks(plane, diameter, c, k);
+        appendTicks(out, absolute ? centre : centre - planeTicks(plane, diameter, from, k));
     }
+}
+
+/// True when `p` and `q` are written as the same point: a block between
+/// them would not move (an arc would even run as a full circle).
+bool samePoint(const ScannedBlock& s, const Point2& p, const Point2& q) {
+    for (int k = 0; k < 2; ++k)
+        if (planeTicks(s.plane, s.diameter, p, k) != planeTicks(s.plane, s.diameter, q, k))
+            return false;
+    return true;
 }
 
 /// The words of the inserted block.
 std::string insertedText(const ScannedBlock& a, CornerKind kind, const CornerFit& fit) {
-    const Point2 origin = a.absolute ? Point2::Zero() : fit.pointA;
     std::string text;
     text.reserve(48);
     text = kind == CornerKind::Chamfer ? "G1 " : (fit.ccw ? "G3 " : "G2 ");
-    appendPlaneWords(text, a.plane, a.diameter, fit.pointB - origin);
+    appendPlaneWords(text, a.plane, a.diameter, a.absolute, fit.pointA, fit.pointB);
     if (kind == CornerKind::Rounding) {
         text += ' ';
-        appendCentreWords(text, a.plane, a.diameter, fit.center - origin);
+        appendCentreWords(text, a.plane, a.diameter, a.absolute, fit.pointA, fit.center);
     }
     return text;
 }
@@ -105,7 +125,7 @@ void editedText(const std::string& text, const ScannedBlock& s, const ScanResult
     remove.clear();
     insert.clear();
     out.clear();
-    const bool geometry = edit.newEnd || (edit.newStart && !s.absolute);
+    const bool geometry = edit.consumed || edit.newEnd || (edit.newStart && !s.absolute);
     if (geometry) {
         for (std::uint32_t a = s.axes.begin; a < s.axes.end; ++a) {
             const ScannedWord& w = scan.axisWords[a];
@@ -114,12 +134,14 @@ void editedText(const std::string& text, const ScannedBlock& s, const ScanResult
         }
         const Point2 start = edit.newStart.value_or(s.element.start);
         const Point2 end = edit.newEnd.value_or(s.element.end);
-        appendPlaneWords(insert, s.plane, s.diameter, s.absolute ? end : Point2(end - start));
-        if (s.element.arc && !s.absolute) {
+        if (!edit.consumed) appendPlaneWords(insert, s.plane, s.diameter, s.absolute, start, end);
+        if (s.element.arc && (edit.consumed || !s.absolute)) {
             for (std::uint32_t c = s.centres.begin; c < s.centres.end; ++c)
                 remove.push_back({scan.centreWords[c].begin, scan.centreWords[c].end});
-            insert += ' ';
-            appendCentreWords(insert, s.plane, s.diameter, s.element.center - start);
+            if (!edit.consumed) {
+                insert += ' ';
+                appendCentreWords(insert, s.plane, s.diameter, false, start, s.element.center);
+            }
         }
     }
     if (edit.removeCorner) remove.push_back({s.cornerBegin, s.cornerEnd});
@@ -243,8 +265,8 @@ bool CornerJob::corner(std::size_t i) {
         a = i - 1;
     }
     std::size_t b = i + 1;
-    int between = 0;
-    std::size_t illegalAt = 0;  // 0: none (block 0 never lies between)
+    int between = c.motion ? 0 : 1;  // an own CF/RD block lies between the motion blocks too
+    std::size_t illegalAt = 0;       // 0: none (block 0 never lies between)
     for (; b < blocks_.size() && !blocks_[b].programEnd; ++b) {
         if (illegalAt == 0 && scanned_[b].illegal) illegalAt = b;
         if (scanned_[b].motion) break;
@@ -262,7 +284,13 @@ bool CornerJob::corner(std::size_t i) {
     if (!checkMotion(i, a, "first") || !checkMotion(i, b, "second")) return !context_.stopped();
     const ScannedBlock& sa = scanned_[a];
     const ScannedBlock& sb = scanned_[b];
-    const CornerFit fit = fitCorner(c.kind, sa.element, minimum_[a], sb.element, c.size);
+    CornerFit fit = fitCorner(c.kind, sa.element, minimum_[a], sb.element, c.size);
+    if (fit.applied > 0.0 && samePoint(sa, fit.pointA, fit.pointB)) {
+        // smaller than what is written (0.0001): the inserted block would not
+        // move, an inserted arc would run as a full circle
+        fit = CornerFit{};
+        fit.reduced = true;
+    }
     edits_[i].removeCorner = true;
     if (fit.reduced &&
         !context_.reportAt(
@@ -277,6 +305,11 @@ bool CornerJob::corner(std::size_t i) {
     if (fit.applied <= 0.0) return true;
     edits_[a].newEnd = fit.pointA;
     edits_[b].newStart = fit.pointB;
+    // An element used up by its corners disappears: a block from a point to
+    // itself would not move, and an arc would run as a full circle.
+    if (samePoint(sa, edits_[a].newStart.value_or(sa.element.start), fit.pointA))
+        edits_[a].consumed = true;
+    if (samePoint(sb, fit.pointB, sb.element.end)) edits_[b].consumed = true;
     minimum_[b] = sb.element.parameterOf(fit.pointB);
     const int insertedG = c.kind == CornerKind::Chamfer ? 1 : (fit.ccw ? 3 : 2);
     if (!sb.explicitMotionG && sb.motionG != insertedG) edits_[b].prependG = sb.motionG;
@@ -288,7 +321,7 @@ void CornerJob::apply() {
     EditScratch scratch;
     for (std::size_t i = 0; i < blocks_.size(); ++i) {
         const BlockEdit& e = edits_[i];
-        if (!e.newStart && !e.newEnd && !e.removeCorner && e.prependG < 0) continue;
+        if (!e.newStart && !e.newEnd && !e.consumed && !e.removeCorner && e.prependG < 0) continue;
         editedText(blocks_[i].text, scanned_[i], scan_, e, scratch);
         blocks_[i].text.assign(scratch.out);
         blocks_[i].changed = true;

@@ -1,5 +1,7 @@
 #include "cnc_core/compiler/ChamferRoundScan.h"
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdlib>
 
@@ -179,6 +181,9 @@ void readWords(const Program& program, const Block& block, std::size_t prefixSiz
                 break;
             case WordKind::Command: {
                 const std::string_view raw = program.text(word.text);
+                if (raw.substr(0, 3) == "BRJ" &&
+                    (raw.size() == 3 || !isalnum(static_cast<unsigned char>(raw[3]))))
+                    setIllegal(out, "a jump instruction (BRJ)", false, 0);
                 if (raw.size() >= 2 && (raw.substr(0, 2) == "CF" || raw.substr(0, 2) == "RD") &&
                     (raw.size() == 2 || !isalpha(static_cast<unsigned char>(raw[2])) ||
                      raw[2] == '=')) {
@@ -190,6 +195,8 @@ void readWords(const Program& program, const Block& block, std::size_t prefixSiz
                         out.sizeProblem = "the value must be a number (no variable)";
                     else if (out.size < 0.0)
                         out.sizeProblem = "the value must not be negative";
+                    else if (out.size > kMaxCornerSize)
+                        out.sizeProblem = "the value must be at most 99999.9999 mm";
                 }
                 break;
             }
@@ -241,6 +248,13 @@ void buildMotion(ScanState& state, ScannedBlock& out, const ScanResult& result) 
         if (w.variable) out.planeVariable = true;
         const double v = w.value * axisScale(plane.axis[k], state.diameter);
         centre[k] = state.absolute ? v : start[k] + v;
+    }
+    const double largest = std::max(
+        {start.cwiseAbs().maxCoeff(), end.cwiseAbs().maxCoeff(), centre.cwiseAbs().maxCoeff()});
+    if (!(largest <= kMaxCornerCoordinate)) {  // also NaN
+        out.elementProblem = "a coordinate lies beyond +-1e9 mm";
+        out.validElement = false;
+        return;
     }
     if (out.motionG == 2 || out.motionG == 3) {
         out.element = PathElement::circle(start, end, centre, out.motionG == 3);

@@ -9,6 +9,13 @@
 
 namespace mtc::core {
 
+/// Largest CF/RD value (mm): the NC's 5 + 4 digit range. Larger values are
+/// refused (COMPILER_CFRD_VALUE) instead of being reduced step by step.
+constexpr double kMaxCornerSize = 99999.9999;
+/// Largest plane coordinate (mm) of a CF/RD motion block: beyond it a
+/// double no longer holds the 0.0001 mm the corner is written with.
+constexpr double kMaxCornerCoordinate = 1e9;
+
 /// An axis or centre word of a block, with its place in the block text.
 struct ScannedWord {
     std::string name;       ///< "X", "Z2", "I"

@@ -80,9 +80,16 @@ std::string formatCoordinate(double value) {
 }
 
 void appendCoordinate(std::string& out, double value) {
-    if (!std::isfinite(value) || std::fabs(value) > 1e14) value = 0.0;
-    long long scaled = std::llround(value * 10000.0);
-    // llround of a value that rounds to zero gives 0, so "-0" cannot occur
+    appendTicks(out, coordinateTicks(value));
+}
+
+long long coordinateTicks(double value) {
+    if (!std::isfinite(value) || std::fabs(value) > 1e14) return 0;
+    return std::llround(value * 10000.0);
+}
+
+void appendTicks(std::string& out, long long scaled) {
+    // a count of zero has no sign, so "-0" cannot occur
     if (scaled < 0) {
         out += '-';
         scaled = -scaled;

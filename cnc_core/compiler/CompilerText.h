@@ -42,6 +42,12 @@ std::size_t commentOffset(std::string_view text);
 std::string formatCoordinate(double value);
 /// Appends formatCoordinate(value) to `out` (no temporary string).
 void appendCoordinate(std::string& out, double value);
+/// `value` in whole steps of 0.0001 (the resolution written), rounded; 0
+/// for values that are not finite or beyond 1e14.
+long long coordinateTicks(double value);
+/// Appends a number of 0.0001 steps as formatCoordinate does. Incremental
+/// words written as differences of ticks add up exactly along a chain.
+void appendTicks(std::string& out, long long ticks);
 
 /// True when `text` contains one of `upperNeedles` (written in capitals),
 /// letters of `text` compared without case. A cheap pre-check of passes that

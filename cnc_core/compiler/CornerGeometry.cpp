@@ -1,8 +1,10 @@
 #include "cnc_core/compiler/CornerGeometry.h"
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 
 namespace mtc::core {
 
@@ -11,6 +13,9 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kEpsilon = 1e-9;
 constexpr double kStep = 1e-4;  // applied sizes are multiples of 0.0001
+/// The largest step count the bisection considers (2^40 steps = 1.1e8 mm),
+/// so that the count stays exact in a double and an int64.
+constexpr double kMaxCornerSteps = 1099511627776.0;
 
 /// (x, y) turned by +90 degrees.
 Point2 leftOf(const Point2& v) {
@@ -203,26 +208,29 @@ CornerFit fitCorner(CornerKind kind, const PathElement& a, double aMinimum, cons
     fit.pointA = a.end;
     fit.pointB = b.start;
     fit.parameterA = a.length();
-    if (requested <= 0.0) return fit;
+    if (!(requested > 0.0) || !std::isfinite(requested)) return fit;
     if (tryCorner(kind, a, aMinimum, b, requested, fit)) return fit;
-    double low = 0.0, high = requested;
-    for (int i = 0; i < 60 && high - low > kStep * 0.01; ++i) {
-        const double mid = 0.5 * (low + high);
-        CornerFit probe;
-        if (tryCorner(kind, a, aMinimum, b, mid, probe))
-            low = mid;
-        else
-            high = mid;
-    }
-    double applied = std::floor(high / kStep + 1e-6) * kStep;  // the largest step that fits
+    // Bisection over whole steps of 0.0001: `low` steps fit (0 = nothing),
+    // `high` steps do not. The number of probes is the bit length of the
+    // step count (at most 64), whatever the requested size.
+    const double maximumSteps = std::min(std::ceil(requested / kStep), kMaxCornerSteps);
+    std::int64_t low = 0, high = static_cast<std::int64_t>(maximumSteps);
     CornerFit reduced;
-    while (applied >= kStep && !tryCorner(kind, a, aMinimum, b, applied, reduced))
-        applied -= kStep;
-    if (applied < kStep) {
+    while (high - low > 1) {
+        const std::int64_t middle = low + (high - low) / 2;
+        CornerFit probe;
+        if (tryCorner(kind, a, aMinimum, b, static_cast<double>(middle) * kStep, probe)) {
+            low = middle;
+            reduced = probe;  // the fit of `low`
+        } else {
+            high = middle;
+        }
+    }
+    if (low == 0) {
         fit.reduced = true;
         return fit;
     }
-    reduced.applied = applied;
+    reduced.applied = static_cast<double>(low) * kStep;
     reduced.reduced = true;
     return reduced;
 }

@@ -57,8 +57,9 @@ struct CornerFit {
 /// shortened down to path length `aMinimum` (an earlier corner used the rest);
 /// `b` may be shortened down to its full length. When the requested size does
 /// not fit, the largest size that fits (0.0001 steps, possibly 0) is applied
-/// (seed 001, ch. 2 note). A corner without a bend (tangent continuation) or a
-/// reversal takes 0.
+/// (seed 001, ch. 2 note), found by bisection: at most 64 probes whatever
+/// the requested size (a loop over the size would never end for 1e23). A corner without a bend
+/// (tangent continuation) or a reversal takes 0.
 CornerFit fitCorner(CornerKind kind, const PathElement& a, double aMinimum, const PathElement& b,
                     double requested);
 
