@@ -11,6 +11,7 @@
 #include "cnc_core/compiler/GlobalMacroFile.h"
 #include "cnc_core/compiler/UserCompilers.h"
 #include "cnc_core/compiler/lookahead/LookAheadPass.h"
+#include "cnc_core/language/CompilerWords.h"
 #include "cnc_core/language/Parser.h"
 #include "cnc_core/program/AtomicWrite.h"
 #include "hmi/CellSession.h"
@@ -75,7 +76,17 @@ std::string ProgramWorkspace::prepareOne(int number) {
         store.putRuntime(process, number, nullptr);
         running_.remove(number);
     };
-    CompileStatus current = compilerActive() ? status(number) : CompileStatus::NotNeeded;
+    if (!compilerActive()) {
+        runSource();
+        // Seed 001 ch. 7: with the compiler off, a compiler keyword is an
+        // error at download, before any block of the program runs.
+        mtc::core::Diagnostic keyword;
+        const auto source = session_->program(slot_, number);
+        if (source && mtc::core::findCompilerWord(*source, keyword))
+            return mtc::core::formatDiagnostic(keyword);
+        return {};
+    }
+    CompileStatus current = status(number);
     if (current == CompileStatus::NotNeeded) {
         runSource();
         return {};
@@ -211,6 +222,7 @@ std::shared_ptr<const mtc::core::CompileResult> ProgramWorkspace::runtimeResult(
     if (result->status != CompileStatus::Compiled) return nullptr;
     profiles_[number] = profileFromAnalysis(*lookAhead_);
     results_[number] = result;
+    showCompilerMessages(number, *result);  // the warnings are in no file (C-014)
     return result;
 }
 
@@ -229,7 +241,14 @@ CompileStatus ProgramWorkspace::statusFromFiles(int number) const {
     if (dat.isEmpty()) return CompileStatus::NotCompiled;
     const QDateTime source = QFileInfo(dat).lastModified();
     const QFileInfo error(filePath(number, "ERR"));
-    if (error.exists() && error.lastModified() >= source) return CompileStatus::Error;
+    if (error.exists() && error.lastModified() >= source) {
+        // C-014: only errors make status E (an .ERR with notices only, as
+        // older versions wrote beside a good .NCO, does not)
+        QFile file(error.filePath());
+        if (!file.open(QIODevice::ReadOnly) ||
+            mtc::core::errorFileHasErrors(file.readAll().toStdString()))
+            return CompileStatus::Error;
+    }
     const QFileInfo object(filePath(number, "NCO"));
     if (object.exists() && object.lastModified() >= source) return CompileStatus::Compiled;
     return CompileStatus::NotCompiled;
@@ -288,10 +307,7 @@ bool ProgramWorkspace::compile(int number, QString& error) {
     *lookAhead_ = {};
     auto result = std::make_shared<mtc::core::CompileResult>(runCompilers(*program, options));
     profiles_[number] = profileFromAnalysis(*lookAhead_);
-    QVector<ErrorEntry> entries;
-    for (const auto& e : result->errors)
-        entries.push_back(entryFromCompilerError(e));
-    errors_.setCompilerErrors(number, entries);
+    showCompilerMessages(number, *result);
     writeCompileFiles(number, *result);
     results_[number] = result;
     setStatus(number, result->status == CompileStatus::Compiled ? CompileStatus::Compiled
@@ -349,6 +365,13 @@ void ProgramWorkspace::loadErrorFiles() {
         }
         errors_.setCompilerErrors(program->number, entries);
     }
+}
+
+void ProgramWorkspace::showCompilerMessages(int number, const mtc::core::CompileResult& result) {
+    QVector<ErrorEntry> entries;
+    for (const auto& e : result.errors)
+        entries.push_back(entryFromCompilerError(e));
+    errors_.setCompilerErrors(number, entries);
 }
 
 void ProgramWorkspace::requestEdit(int number, int line) {

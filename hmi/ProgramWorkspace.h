@@ -128,6 +128,9 @@ class ProgramWorkspace : public QObject {
     void setStatus(int number, mtc::core::CompileStatus status);
     void clearObjects(int number);
     void writeCompileFiles(int number, const mtc::core::CompileResult& result);
+    /// The messages of a compile of `number` (errors and warnings) replace
+    /// its compiler entries in the error window.
+    void showCompilerMessages(int number, const mtc::core::CompileResult& result);
     mtc::core::CompileStatus statusFromFiles(int number) const;
 
     CellSession* session_;

@@ -7,10 +7,9 @@
 
 #include "cli/CliOutput.h"
 #include "cli/CommandSetup.h"
-#include "cli/CompileCommand.h"
 #include "cli/JsonWriter.h"
 #include "cli/ProgramMemory.h"
-#include "cnc_core/compiler/Compiler.h"
+#include "cnc_core/compiler/ProgramCheck.h"
 #include "cnc_core/program/ProgramStore.h"
 
 namespace mtc::cli {
@@ -34,30 +33,16 @@ void countSeverities(const core::DiagnosticList& diagnostics, CheckedProgram& ch
         (d.severity == core::Severity::Error ? checked.errors : checked.warnings) += 1;
 }
 
-/// True when the program has compiler keywords or uses a global macro.
-bool usesCompiler(const core::Program& program, const CommandSetup& setup) {
-    core::CompilerOptions options;
-    options.compilerActive = true;
-    options.globalMacros = setup.globalMacros;
-    return core::needsCompilation(program, options);
-}
-
-/// The NC compiler's own findings (COMPILER_* codes; syntax errors are
-/// already in the parse diagnostics) for a program with compiler keywords.
-core::DiagnosticList compileCheck(const core::Program& program, const CommandSetup& setup,
-                                  const ProgramRequest& request) {
+/// The options of the compiler a check asks (the process's axes and
+/// parameters, the global macros of the program directory).
+core::CompilerOptions checkOptions(const CommandSetup& setup, const ProgramRequest& request) {
     core::CompilerOptions options;
     options.compilerActive = true;
     options.process = setup.machine.process(request.process);
     options.programNumber = request.number;
     options.programName = request.displayName;
     options.globalMacros = setup.globalMacros;
-    core::DiagnosticList found;
-    const core::CompileResult result = core::Compiler().compile(program, options);
-    const core::DiagnosticList all = compilerDiagnostics(result.errors);
-    for (const core::Diagnostic& d : all.items())
-        if (d.code.rfind("COMPILER_", 0) == 0) found.add(d);
-    return found;
+    return options;
 }
 
 CheckedProgram checkOne(const std::string& argument, const CommandSetup& setup,
@@ -79,9 +64,8 @@ CheckedProgram checkOne(const std::string& argument, const CommandSetup& setup,
     const core::ProgramStore store = storeWith(setup.programs.store, request);
     const core::ProgramPtr& program = request.program;
     checked.blocks = program->blocks.size();
-    found.append(program->diagnostics);
+    found.append(core::checkProgram(*program, checkOptions(setup, request)));
     found.append(checkProgramReferences(*program, store, request.process));
-    if (usesCompiler(*program, setup)) found.append(compileCheck(*program, setup, request));
     countSeverities(found, checked);
     all.append(found);
     return checked;

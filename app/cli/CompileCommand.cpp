@@ -10,6 +10,7 @@
 #include "cnc_core/compiler/Compiler.h"
 #include "cnc_core/compiler/CompilerFiles.h"
 #include "cnc_core/compiler/CompilerText.h"
+#include "cnc_core/compiler/ProgramCheck.h"
 #include "cnc_core/compiler/UserCompilers.h"
 
 namespace mtc::cli {
@@ -73,23 +74,6 @@ void writeText(const CompileOutcome& outcome, const core::DiagnosticList& diagno
 
 }  // namespace
 
-core::DiagnosticList compilerDiagnostics(const std::vector<core::CompilerError>& errors) {
-    core::DiagnosticList list;
-    for (const core::CompilerError& e : errors) {
-        core::Diagnostic d;
-        d.severity = e.severity;
-        d.code = e.code;
-        d.where.program = e.program;
-        d.where.block =
-            e.generalNumber > 0 ? "A" + core::formatFourDigits(e.generalNumber) : e.block;
-        d.where.line = e.sourceLine;
-        d.message = e.message;
-        d.details = e.details;
-        list.add(std::move(d));
-    }
-    return list;
-}
-
 int runCompileCommand(const CliOptions& options) {
     if (options.arguments.size() != 1)
         return reportUsageError("compile takes exactly one program (FILE.DAT or number)",
@@ -142,7 +126,7 @@ int runCompileCommand(const CliOptions& options) {
         diagnostics.error("CLI_FILE_UNWRITABLE", {}, error);
         return reportSetupFailure(diagnostics, options.json);
     }
-    diagnostics.append(compilerDiagnostics(outcome.result.errors));
+    diagnostics.append(core::compilerDiagnostics(outcome.result.errors));
     if (options.json)
         writeJson(outcome, diagnostics);
     else

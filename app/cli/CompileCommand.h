@@ -12,8 +12,4 @@ namespace mtc::cli {
 /// or file problems.
 int runCompileCommand(const CliOptions& options);
 
-/// The compiler's messages as CLI diagnostics (general errors get the block
-/// "A0001" ...).
-core::DiagnosticList compilerDiagnostics(const std::vector<core::CompilerError>& errors);
-
 }  // namespace mtc::cli

@@ -16,6 +16,7 @@
 #include "cnc_core/afc/AdaptiveFeedControl.h"
 #include "cnc_core/afc/AfcMotion.h"
 #include "cnc_core/interp/Interpreter.h"
+#include "cnc_core/language/CompilerWords.h"
 #include "cnc_core/machine/SimulatedMachine.h"
 #include "cnc_core/machine_data/MachineDataFile.h"
 #include "cnc_core/machine_data/MachineDataStore.h"
@@ -69,6 +70,12 @@ bool prepareRun(const CliOptions& options, PreparedRun& run, core::DiagnosticLis
 RunOutcome execute(core::Interpreter& interpreter, const PreparedRun& run, std::uint64_t budget,
                    core::DiagnosticList& diagnostics) {
     RunOutcome outcome;
+    core::Diagnostic keyword;  // the CLI runs sources: the compiler is off
+    if (core::findCompilerWord(*run.program, keyword)) {
+        diagnostics.add(std::move(keyword));
+        outcome.status = core::RunStatus::Error;
+        return outcome;
+    }
     if (!interpreter.select(run.program, 0, &diagnostics)) {
         outcome.status = core::RunStatus::Error;
         return outcome;

@@ -2,6 +2,7 @@
 
 #include "cnc_core/compiler/CompilerPass.h"
 #include "cnc_core/compiler/CompilerText.h"
+#include "cnc_core/compiler/ObjectWriter.h"
 #include "cnc_core/language/Parser.h"
 
 namespace mtc::core {
@@ -95,11 +96,12 @@ const ParsedSequence& CompileContext::parsed(const BlockSequence& blocks) {
 }
 
 std::string CompileContext::blockId(const BlockSequence& blocks, std::size_t index) {
+    // the numbering of writeObjectText: back to the block that starts the run
     std::size_t first = index;
-    while (first > 0 && blocks[first].intermediate)
+    while (first > 0 && continuesNumbering(blocks[first], blocks[first - 1].number))
         --first;
-    const int sub = static_cast<int>(index - first);
     const CompileBlock& owner = blocks[first];
+    const int sub = owner.sourceSub + static_cast<int>(index - first);
     if (owner.number < 0) return std::string();
     return formatBlockNumber(owner.number) + ":" + formatFourDigits(sub);
 }

@@ -51,6 +51,62 @@ CompilerError errorAtObjectLine(const ObjectText& object, int line,
     return error;
 }
 
+/// An error of a parse of the source or the object program as a compiler
+/// message (the parser's code; "Syntax: " before its message).
+CompilerError syntaxError(const Diagnostic& d, CompilerError error) {
+    error.code = d.code;
+    error.message = "Syntax: " + d.message;
+    error.details = {d.message};
+    error.details.insert(error.details.end(), d.details.begin(), d.details.end());
+    return error;
+}
+
+/// "N0053" of the block that holds source `line` (a continuation line
+/// included), "" when no numbered block does (a comment line).
+std::string blockIdAtLine(const Program& program, int line) {
+    std::size_t low = 0, high = program.blocks.size();  // blocks are in line order
+    while (low < high) {
+        const std::size_t middle = low + (high - low) / 2;
+        if (static_cast<int>(program.blocks[middle].line) <= line)
+            low = middle + 1;
+        else
+            high = middle;
+    }
+    if (low == 0) return std::string();
+    const Block block = program.blocks[low - 1];
+    if (block.number < 0 || line >= static_cast<int>(block.line) + block.lineCount) return {};
+    return formatBlockNumber(block.number);
+}
+
+/// Errors of the source parse: the rules of the source file (seed 001 ch.
+/// 10: lines of at most 71 characters, blocks of at most 230 characters in
+/// 4 lines) and syntax errors, for the blocks no pass has reported (a pass
+/// says it in the compiler's words, e.g. a bad DEFINE). A pass may rewrite a
+/// block so that the error is gone from the object program (a long line
+/// wrapped anew), so these are taken from the source: `check` and `compile`
+/// refuse the same programs. More than 10,000 lines is the general error of
+/// the object program.
+void reportSourceErrors(const Program& program, const std::set<int>& reported,
+                        CompileContext& context) {
+    for (const Diagnostic& d : program.diagnostics.items()) {
+        if (d.severity != Severity::Error || d.code == "FILE_TOO_MANY_LINES") continue;
+        if (reported.count(d.where.line)) continue;  // a pass said it in its own words
+        CompilerError error;
+        error.program = context.options().programNumber;
+        error.block = d.where.block.empty() ? blockIdAtLine(program, d.where.line) : d.where.block;
+        error.sourceLine = d.where.line;
+        if (!context.submit(syntaxError(d, std::move(error)))) return;
+    }
+}
+
+/// Source lines with an error so far (one error per block and cause).
+std::set<int> linesWithErrors(const std::vector<CompilerError>& errors) {
+    std::set<int> lines;
+    for (const CompilerError& e : errors)
+        if (e.severity == Severity::Error && e.sourceLine > 0) lines.insert(e.sourceLine);
+    return lines;
+}
+
 /// Syntax of the object program and compiler keywords left in it that no
 /// pass handles (seed 001 ch. 7: keywords of functions this compiler lacks).
 void checkObject(const ObjectText& object, const std::set<std::string>& handled,
@@ -61,11 +117,7 @@ void checkObject(const ObjectText& object, const std::set<std::string>& handled,
         if (d.severity != Severity::Error || d.code == "FILE_TOO_MANY_LINES") continue;  // A error
         CompilerError error = errorAtObjectLine(object, d.where.line, options);
         if (reported.count(error.sourceLine)) continue;  // a pass reported this block already
-        error.code = d.code;
-        error.message = "Syntax: " + d.message;
-        error.details = {d.message};
-        error.details.insert(error.details.end(), d.details.begin(), d.details.end());
-        if (!context.submit(std::move(error))) return;
+        if (!context.submit(syntaxError(d, std::move(error)))) return;
     }
     if (!program.usesCompilerKeywords) return;  // no word needs a compiler
     for (std::size_t b = 0; b < program.blocks.size(); ++b) {
@@ -119,10 +171,21 @@ void Compiler::addPass(std::shared_ptr<const CompilerPass> pass) {
                      [](const auto& a, const auto& b) { return a->order() < b->order(); });
 }
 
+namespace {
+
+/// The parse options of a program compiled with `options`: a block using
+/// a global macro is no unknown word.
+ParseOptions sourceParseOptions(const CompilerOptions& options) {
+    ParseOptions parse{options.programNumber, options.programName, {}};
+    for (const MacroDefinition& macro : options.globalMacros)
+        parse.macroNames.push_back(macro.name);
+    return parse;
+}
+
+}  // namespace
+
 CompileResult Compiler::compile(std::string_view source, const CompilerOptions& options) const {
-    return compile(
-        parseProgram(std::string(source), {options.programNumber, options.programName, {}}),
-        options);
+    return compile(parseProgram(std::string(source), sourceParseOptions(options)), options);
 }
 
 CompileResult Compiler::compile(const Program& program, const CompilerOptions& options) const {
@@ -140,11 +203,20 @@ CompileResult Compiler::compile(const Program& program, const CompilerOptions& o
         context.invalidate();
     }
     if (!context.stopped()) {
+        // A program parsed without the names of the global macros has their
+        // uses as unknown words: its errors come from a parse that knows them.
+        const bool parsedWithoutMacros =
+            !options.globalMacros.empty() && program.diagnostics.hasErrors();
+        const Program renamed = parsedWithoutMacros
+                                    ? parseProgram(program.source, sourceParseOptions(options))
+                                    : Program{};
+        reportSourceErrors(parsedWithoutMacros ? renamed : program, linesWithErrors(result.errors),
+                           context);
+    }
+    if (!context.stopped()) {
         ObjectText object = writeObjectText(frame, blocks, context);
-        std::set<int> reported;
-        for (const CompilerError& e : result.errors)
-            if (e.severity == Severity::Error && e.sourceLine > 0) reported.insert(e.sourceLine);
-        if (!context.stopped()) checkObject(object, handled, reported, context);
+        if (!context.stopped())
+            checkObject(object, handled, linesWithErrors(result.errors), context);
         result.objectText = std::move(object.text);
         result.lineMap = std::move(object.lineMap);
         result.objectBlocks = object.blocks;

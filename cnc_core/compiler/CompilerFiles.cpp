@@ -93,6 +93,13 @@ std::vector<CompilerError> parseErrorFile(const std::string& text, std::string& 
     return errors;
 }
 
+bool errorFileHasErrors(const std::string& text) {
+    std::string identification;
+    for (const CompilerError& e : parseErrorFile(text, identification))
+        if (e.severity == Severity::Error) return true;
+    return false;
+}
+
 std::string updatedIdentification(const std::string& identification, const std::string& fileName,
                                   std::size_t restBytes, const std::string& stamp) {
     std::vector<std::string> fields = splitFields(identification, '/');
@@ -131,7 +138,9 @@ bool writeCompileFiles(const std::string& sourcePath, const std::string& objectP
                        const CompileResult& result, std::string& errorPath, std::string& error) {
     const std::string object = objectPath.empty() ? withExtension(sourcePath, ".NCO") : objectPath;
     errorPath = withExtension(object, ".ERR");
-    if (!result.errors.empty()) {
+    // C-004 / C-014: the error file exists only when there are errors (seed
+    // 001 ch. 9); warnings go with the compile result, not into a file.
+    if (result.hasErrors()) {
         const std::string body =
             formatErrorFile("", result.errors).substr(1);  // without the empty first line
         const std::string text = result.identification.empty()
@@ -139,7 +148,7 @@ bool writeCompileFiles(const std::string& sourcePath, const std::string& objectP
                                      : stamped(result.identification, body, baseName(errorPath));
         if (!writeFileAtomically(errorPath, text, error)) return false;
     } else {
-        std::remove(errorPath.c_str());  // a compile without messages leaves no .ERR
+        std::remove(errorPath.c_str());  // a compile without errors leaves no .ERR
         errorPath.clear();
     }
     if (result.status != CompileStatus::Compiled) {

@@ -23,6 +23,8 @@ namespace mtc::core {
 /// without the line breaks and six-blank indents of continuation lines.
 struct CompileBlock {
     std::int32_t number = -1;       ///< source block number N (-1: the source block had none)
+    std::int32_t sourceSub = 0;     ///< enhanced number written in the source ("N0053:0002"
+                                    ///< from the GNE): the object keeps the order after N0053
     std::uint32_t sourceIndex = 0;  ///< index of the source block it stems from
     std::uint32_t sourceLine = 0;   ///< 1-based first source line of that block
     bool intermediate = false;      ///< inserted by the compiler (gets N....:0001 ...)

@@ -13,26 +13,36 @@ inline bool isLetter(char c) {
     return c >= 'A' && c <= 'Z';
 }
 
+/// True for the operators after which a bracket opens a sub-expression.
+inline bool isExpressionOperator(char c) {
+    return c == '=' || c == '+' || c == '-' || c == '*' || c == '/';
+}
+
 /// Calls `visit(begin, end)` for every name in `text` that may be a macro:
 /// a run of A-Z 0-9 _ starting with a letter, not after '.', '*' or '@',
 /// outside the comment and outside free texts (a bracket not directly
 /// after a name, e.g. "(TOOL CHANGE)"); inside keyword arguments
-/// ("MODF_ON(QUICK)", "MTD(...)") names count.
+/// ("MODF_ON(QUICK)", "MTD(...)") and inside the brackets of an expression
+/// (after = + - * /: "L3_KORR = (D_SOLL - D_IST) /2", seed 001 ch. 4)
+/// names count.
 template <typename Visit>
 void forEachName(std::string_view text, Visit visit) {
     const std::size_t end = commentOffset(text);
     std::vector<bool> freeText;  // open brackets: true = a free text
     std::string_view lastName;   // the name before a bracket
     bool blankAfterName = false;
+    char lastSignificant = ' ';  // the last character that is not a blank
     std::size_t i = 0;
     while (i < end) {
         const char c = text[i];
         if (c == '(' || c == '[') {
             const bool arguments =
-                !lastName.empty() &&
-                (!blankAfterName || lookupKeyword(lastName).keywordClass != KeywordClass::None);
+                isExpressionOperator(lastSignificant) ||
+                (!lastName.empty() &&
+                 (!blankAfterName || lookupKeyword(lastName).keywordClass != KeywordClass::None));
             freeText.push_back(freeText.empty() ? !arguments : freeText.back());
             lastName = {};
+            lastSignificant = c;
             ++i;
             continue;
         }
@@ -45,6 +55,7 @@ void forEachName(std::string_view text, Visit visit) {
             } else {
                 lastName = {};
             }
+            if (c != ' ') lastSignificant = c;
             ++i;
             continue;
         }
@@ -57,6 +68,7 @@ void forEachName(std::string_view text, Visit visit) {
             visit(start, i);
         lastName = text.substr(start, i - start);
         blankAfterName = false;
+        lastSignificant = text[i - 1];
     }
 }
 

@@ -138,6 +138,11 @@ bool appendSingleLine(const std::string& lead, const CompileBlock& block, std::s
 
 }  // namespace
 
+bool continuesNumbering(const CompileBlock& block, int previousNumber) {
+    return block.intermediate ||
+           (block.sourceSub > 0 && block.number >= 0 && block.number == previousNumber);
+}
+
 ObjectText writeObjectText(const SourceFrame& frame, const BlockSequence& blocks,
                            CompileContext& context) {
     ObjectText out;
@@ -170,11 +175,11 @@ ObjectText writeObjectText(const SourceFrame& frame, const BlockSequence& blocks
     bool endWritten = false;
     for (std::size_t i = 0; i < blocks.size(); ++i) {
         const CompileBlock& block = blocks[i];
-        if (block.intermediate) {
+        if (continuesNumbering(block, number)) {
             ++sub;
         } else {
             number = block.number;
-            sub = 0;
+            sub = block.sourceSub;
         }
         setBlockLead(lead, block, number, sub);
         const ObjectLineKind kind =

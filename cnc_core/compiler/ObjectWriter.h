@@ -15,9 +15,15 @@ struct ObjectText {
     std::size_t blocks = 0;  ///< NC blocks without PROGRAMMENDE
 };
 
+/// True when `block` goes on counting the enhanced number of the block
+/// before it (number `previousNumber`): an intermediate block, or a source
+/// block the GNE numbered "N0053:0002" right after the blocks of N0053.
+bool continuesNumbering(const CompileBlock& block, int previousNumber);
+
 /// Writes the object file (seed 001, ch. 11): identification and header
 /// copied, every block as "Nxxxx:yyyy text" (yyyy 0000 for a source block,
-/// counting up for the intermediate blocks after it), lines of at most 71
+/// counting up for the intermediate blocks after it and for source blocks
+/// written with an enhanced number of the same source number), lines of at most 71
 /// characters with six-blank continuation lines, at most 230 characters and
 /// 4 lines per block (comments are dropped first when a block is too long),
 /// the PROGRAMMENDE block last. Problems are reported through `context`:

@@ -61,8 +61,13 @@ void splitNumber(std::string_view raw, CompileBlock& block) {
         i = digits;
         if (i + 4 < raw.size() + 0 && raw[i] == ':' &&
             std::all_of(raw.begin() + static_cast<long>(i) + 1,
-                        raw.begin() + static_cast<long>(i) + 5, isDigit))
-            i += 5;  // an enhanced number of an already compiled program is dropped
+                        raw.begin() + static_cast<long>(i) + 5, isDigit)) {
+            // an enhanced number (a block the GNE inserted, C-015) orders the
+            // block after the others of its number; the object renumbers
+            block.sourceSub = (raw[i + 1] - '0') * 1000 + (raw[i + 2] - '0') * 100 +
+                              (raw[i + 3] - '0') * 10 + (raw[i + 4] - '0');
+            i += 5;
+        }
         if (i < raw.size() && raw[i] == ' ') ++i;
     } else if (!block.prefix.empty()) {
         // prefix without a block number: keep it in the text as written

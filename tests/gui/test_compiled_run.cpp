@@ -1,7 +1,9 @@
 // A station runs the runtime program (seed 001 ch. 1, 10, 11; decision
 // C-013): a program with compiler keywords is compiled on demand when it is
 // selected, runs as the compiled object (N0053:0001 blocks), is refused with
-// status E, and its runtime errors lead back to the source line.
+// status E, and its runtime errors lead back to the source line. Warnings
+// never give status E (C-014); with the compiler off a keyword refuses the
+// program at selection (C-016).
 #include <QDir>
 #include <QLabel>
 #include <QListView>
@@ -57,6 +59,24 @@ const char* kGlobalMacroUse =
     "N0003 M30\n"
     "N0004 PROGRAMMENDE\n";
 
+/// RD 6 does not fit the 4 mm line: reduced to 4 with a warning, no error.
+const char* kReducedRounding =
+    "N0000 G0 G17 G90 X0 Y0 Z0\n"
+    "N0001 G1 X4 Y0 F2000 RD6\n"
+    "N0002 G1 X4 Y10\n"
+    "N0003 M30\n"
+    "N0004 PROGRAMMENDE\n";
+
+/// A rounding in the third block: with the compiler off, the program is
+/// refused at selection (seed 001 ch. 7), not after the first blocks moved.
+const char* kKeywordLate =
+    "N0000 G0 G17 G90 X0 Y0 Z0\n"
+    "N0001 G1 X10 Y0 F2000\n"
+    "N0002 G1 X10 Y10 RD2\n"
+    "N0003 G1 X0 Y10\n"
+    "N0004 M30\n"
+    "N0005 PROGRAMMENDE\n";
+
 }  // namespace
 
 class CompiledRunTest : public QObject {
@@ -70,6 +90,8 @@ class CompiledRunTest : public QObject {
         writeProgram(dir, 6, programHeader(6, "Broken rounding") + kBrokenRounding);
         writeProgram(dir, 7, programHeader(7, "Runtime fault") + kRuntimeFault);
         writeProgram(dir, 8, programHeader(8, "Global macro") + kGlobalMacroUse);
+        writeProgram(dir, 9, programHeader(9, "Reduced rounding") + kReducedRounding);
+        writeProgram(dir, 10, programHeader(10, "Keyword late") + kKeywordLate);
         writeGlobalMacros(dir,
                           "; NC options of the test cell\nDEFINE ROUND5 AS RD5\nDEFINE 9X AS X9\n");
         mtc::hmi::PanelOptions o;
@@ -168,6 +190,63 @@ class CompiledRunTest : public QObject {
         QCOMPARE(panel.window->currentScreenName(), QString("restart"));
         auto* message = child<QLabel>(panel, "restart", "restartMessage");
         QTRY_VERIFY2(message->text().contains("compiler errors"), qPrintable(message->text()));
+    }
+
+    void warningsOnlyCompileStaysRunnableAfterRestart() {
+        const mtc::hmi::PanelOptions opened = options();
+        {
+            PanelFixture panel(opened);
+            selectCompiled(panel, 9);
+            QVERIFY2(directoryRow(panel, 9).contains("[C]"), qPrintable(directoryRow(panel, 9)));
+        }
+        const QDir dir(dir_.path());
+        QVERIFY(QFile::exists(dir.filePath("N1010009.NCO")));
+        QVERIFY2(!QFile::exists(dir.filePath("N1010009.ERR")), "C-014: no error file for warnings");
+        // an error file with notices only, as older versions wrote it
+        QFile notices(dir.filePath("N1010009.ERR"));
+        QVERIFY(notices.open(QIODevice::WriteOnly));
+        notices.write("\nN0001:$I:0000\nRD reduced to 4.\n");
+        notices.close();
+
+        PanelFixture panel(opened);  // the panel starts again on the same directory
+        QVERIFY2(directoryRow(panel, 9).contains("[C]"), qPrintable(directoryRow(panel, 9)));
+        pickProgram(panel, 9);
+        panel.press(Qt::Key_Return);
+        QCOMPARE(panel.session->control(0).selectedProgram(), 9);
+        panel.session->clock(0).setSpeed(1000);
+        panel.press(Qt::Key_F5, Qt::ShiftModifier);  // Start is not refused
+        QTRY_VERIFY(!panel.session->control(0).programActive());
+        QVERIFY2(panel.session->control(0).alarm().empty(),
+                 panel.session->control(0).alarm().c_str());
+        QCOMPARE(panel.session->machine(0).position(1), 10.0);
+        panel.window->showScreen("errors");  // the warning is back in the error window
+        auto* list = child<QListWidget>(panel, "errors", "errorList");
+        QString all;
+        for (int row = 0; row < list->count(); ++row)
+            all += list->item(row)->text() + "\n";
+        QVERIFY2(all.contains("RD reduced to 4"), qPrintable(all));
+    }
+
+    void keywordWithTheCompilerOffIsRefusedAtSelection() {
+        PanelFixture panel(options());  // compiler active = No (preset)
+        pickProgram(panel, 10);
+        panel.press(Qt::Key_Return);
+        QCOMPARE(panel.session->control(0).selectedProgram(), 10);
+        auto* alarm = panel.window->findChild<QLabel*>("headerAlarm");
+        QTRY_VERIFY2(alarm->text().contains("NEEDS_COMPILER") && alarm->text().contains("N0002"),
+                     qPrintable(alarm->text()));
+        panel.session->clock(0).setSpeed(1000);
+        panel.press(Qt::Key_F5, Qt::ShiftModifier);  // Start: refused at once
+        QVERIFY(!panel.session->control(0).programActive());
+        QCOMPARE(panel.session->machine(0).position(0), 0.0);  // N0001 did not move
+        panel.window->showScreen("errors");
+        auto* list = child<QListWidget>(panel, "errors", "errorList");
+        QTRY_VERIFY(list->count() >= 1);
+        list->setCurrentRow(list->count() - 1);
+        panel.press(Qt::Key_Return);  // Enter leads to the keyword's line
+        QCOMPARE(panel.window->currentScreenName(), QString("editor"));
+        auto* edit = child<QPlainTextEdit>(panel, "editor", "programEditor");
+        QCOMPARE(edit->textCursor().block().text(), QString("N0002 G1 X10 Y10 RD2"));
     }
 
     void aRuntimeErrorLeadsToTheSourceLine() {
