@@ -49,12 +49,20 @@ struct CycleInput {
     const GneCall* call = nullptr;
     const Geometry* geometry = nullptr;
     Stock stock;
+    /// The RAW contour (initial part contour) that is the blank, nullptr =
+    /// the window's rectangle is the blank (G-007).
+    const Geometry* rawBlank = nullptr;
     double value(std::size_t i) const { return paramValue(*spec, *call, i); }
 };
 
 /// CYCLE_10 / CYCLE_12: the contour (plus a uniform allowance) once.
 bool turningContourCut(const CycleInput& in, double allowance, BlockWriter& out,
                        std::string& problem);
+/// Most passes a roughing cycle may write: more cannot stand in a program
+/// of at most 10,000 lines (4 blocks a pass), and the count must not grow
+/// with the blank's size over the depth of cut (issue 15 §1).
+constexpr int kMaxRoughingPasses = 2000;
+
 /// CYCLE_11: parallel longitudinal roughing passes.
 bool turningRoughing(const CycleInput& in, BlockWriter& out, std::string& problem);
 /// CYCLE_40: contour cut milling with tool radius compensation.

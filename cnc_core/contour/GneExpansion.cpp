@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <sstream>
 
 #include "cnc_core/contour/ContourSolver.h"
@@ -133,16 +134,17 @@ class Expander {
             failed_.push_back(contour.number);  // its cycles add no second error
             return;
         }
-        if (contour.raw) {
-            rawContours_.push_back(contour.number);
-            return;
-        }
         Geometry g;
         g.number = contour.number;
         g.plane = contour.plane;
         g.line = contour.line;
         g.closed = (solution.path.back().end - solution.path.front().start).norm() < 1e-6;
         g.paths.push_back(solution.path);
+        if (contour.raw) {  // the blank of the cycles after it (G-007), not machined
+            rawContours_.push_back(contour.number);
+            if (contour.plane == GnePlane::Turning) rawBlank_ = std::move(g);
+            return;
+        }
         addGeometry(std::move(g));
     }
 
@@ -151,6 +153,7 @@ class Expander {
         auto v = [&](std::size_t i) { return paramValue(spec, call, i); };
         stock_.known = true;
         stock_.plane = spec.plane;
+        rawBlank_.reset();  // a new window is a new blank
         if (spec.plane == GnePlane::Turning) {
             stock_.low = Point(std::min(v(0), v(1)), v(3));
             stock_.high = Point(std::max(v(0), v(1)), v(2));
@@ -181,6 +184,7 @@ class Expander {
 
     GneExpansion result_;
     Stock stock_;
+    std::optional<Geometry> rawBlank_;  ///< the last RAW contour since the window
     std::vector<int> rawContours_;
     std::vector<int> failed_;  ///< geometry numbers that did not solve
 };
@@ -190,6 +194,7 @@ void Expander::expandCycle(const GneCall& call) {
     in.spec = findCallSpec(call.keyword);
     in.call = &call;
     in.stock = stock_;
+    if (rawBlank_) in.rawBlank = &*rawBlank_;
     const int number = static_cast<int>(in.value(0));
     in.geometry = geometry(number);
     if (std::find(failed_.begin(), failed_.end(), number) != failed_.end()) return;

@@ -279,9 +279,10 @@ void Reader::readElement(const std::string& keyword, const std::string& rest) {
         std::string v = trim(rest);
         if (!v.empty() && v[0] == '=') v = trim(v.substr(1));
         double value = 0;
-        if (!toNumber(v, value) || value <= 0)
+        if (!toNumber(v, value) || value <= 0 || value > kMaxGneValue)
             return error("GNE_BAD_NUMBER", keyword + " needs a positive " +
-                                               (e.kind == ElementKind::Round ? "radius" : "width"));
+                                               (e.kind == ElementKind::Round ? "radius" : "width") +
+                                               " of at most 1000000");
         (e.kind == ElementKind::Round ? e.radius : e.width) = value;
         contour.elements.push_back(e);
         return;
@@ -328,6 +329,10 @@ bool Reader::readWord(ContourElement& e, const std::string& token) {
     double v = 0;
     if (!toNumber(value, v)) {
         error("GNE_BAD_WORD", name + ": '" + token + "' is not a word of this element");
+        return false;
+    }
+    if (std::fabs(v) > kMaxGneValue) {
+        error("GNE_BAD_NUMBER", name + ": '" + token + "' lies beyond +-1000000");
         return false;
     }
     const char* ends = endLetters(plane);

@@ -7,7 +7,7 @@
 namespace mtc::core::gne {
 namespace {
 
-constexpr double kBig = 1e6;
+constexpr double kBig = kMaxGneValue;
 
 ParamSpec req(const char* name, const char* meaning, double lo = -kBig, double hi = kBig) {
     return {name, meaning, true, 0.0, lo, hi, false};

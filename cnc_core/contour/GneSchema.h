@@ -14,6 +14,11 @@
 namespace mtc::core::gne {
 
 /// One positional parameter.
+/// Largest magnitude of any GNE value (mm, degrees): parameters and contour
+/// element words alike, so that no geometry, tessellation or pass count can
+/// grow with a typed number (issue 15 §1).
+constexpr double kMaxGneValue = 1e6;
+
 struct ParamSpec {
     const char* name;      ///< short name as in the documentation ("XC")
     const char* meaning;   ///< one line for the operator

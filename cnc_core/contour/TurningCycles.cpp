@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <string>
 
 #include "cnc_core/contour/CycleSupport.h"
 #include "cnc_core/contour/PathOffset.h"
@@ -90,6 +91,28 @@ struct Roughing {
     }
 };
 
+/// The largest Z of the closed `outline` between the heights `low` and
+/// `high` (where a pass in that band first meets the material), -inf when
+/// the outline does not reach into the band.
+double rightmostMaterial(const std::vector<Point>& outline, double low, double high) {
+    double right = -std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < outline.size(); ++i) {
+        const Point& p = outline[i];
+        const Point& q = outline[(i + 1) % outline.size()];
+        if (std::max(p.y(), q.y()) < low || std::min(p.y(), q.y()) > high) continue;
+        const double dy = q.y() - p.y();
+        if (std::fabs(dy) < 1e-12) {
+            right = std::max({right, p.x(), q.x()});
+            continue;
+        }
+        // the part of the edge inside the band: Z is linear in the height
+        for (double y : {std::clamp(low, std::min(p.y(), q.y()), std::max(p.y(), q.y())),
+                         std::clamp(high, std::min(p.y(), q.y()), std::max(p.y(), q.y()))})
+            right = std::max(right, p.x() + (q.x() - p.x()) * (y - p.y()) / dy);
+    }
+    return right;
+}
+
 }  // namespace
 
 bool turningContourCut(const CycleInput& in, double allowance, BlockWriter& out,
@@ -137,9 +160,25 @@ bool turningRoughing(const CycleInput& in, BlockWriter& out, std::string& proble
     for (const Point& p : tessellate(g.paths[0]))
         minZ = std::min(minZ, p.x());
     const double zLimit = std::max(in.stock.low.x(), minZ) + r.radius;
-    const double top = in.stock.high.y(), bottom = in.stock.low.y() + in.value(kCycleAllowanceX);
+    // G-007: a RAW contour before the cycle is the blank: passes start where
+    // its material starts and do not go above it
+    std::vector<Point> raw;
+    if (in.rawBlank) raw = partOutline(*in.rawBlank, in.stock, kChord);
+    double top = in.stock.high.y();
+    if (!raw.empty()) {
+        double rawTop = -std::numeric_limits<double>::infinity();
+        for (const Point& p : raw)
+            rawTop = std::max(rawTop, p.y());
+        top = std::min(top, rawTop);
+    }
+    const double bottom = in.stock.low.y() + in.value(kCycleAllowanceX);
     if (bottom >= top) return problem = "the allowance leaves nothing to rough", false;
-    const int levels = static_cast<int>(std::ceil((top - bottom) / depth - 1e-9));
+    const double levelCount = std::ceil((top - bottom) / depth - 1e-9);
+    if (!(levelCount <= kMaxRoughingPasses))
+        return problem =
+                   "needs more than " + std::to_string(kMaxRoughingPasses) + " passes: raise DEPTH",
+               false;
+    const int levels = static_cast<int>(levelCount);
     const double step = (top - bottom) / levels;
     const Point safe = in.stock.high + Point(clearance, clearance) + r.radius * Point(2, 2);
     out.rapid(safe);
@@ -151,7 +190,15 @@ bool turningRoughing(const CycleInput& in, BlockWriter& out, std::string& proble
         zEnd = std::max(zEnd + 1e-3, zLimit);
         if (zEnd - r.radius >= in.stock.high.x() - 1e-6) continue;  // no blank left at this level
         const double lift = std::min(clearance, step);
+        double passStart = zStart;
+        if (!raw.empty()) {  // the nose band of the pass and its lifted return
+            const double material =
+                rightmostMaterial(raw, yc - r.radius, yc + std::max(r.radius, lift));
+            passStart = std::min(zStart, material + r.radius + clearance);
+            if (passStart <= zEnd + 1e-6) continue;  // no raw material to cut at this level
+        }
         out.rapid(Point(zStart, yc) + tipShift);
+        if (passStart < zStart) out.rapid(Point(passStart, yc) + tipShift);
         out.feed(Point(zEnd, yc) + tipShift, in.value(kCycleFeed));
         out.segment({Segment::Line, Point(zEnd, yc) + tipShift,
                      Point(zEnd + lift, yc + lift) + tipShift, Point::Zero(), -1});

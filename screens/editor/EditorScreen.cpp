@@ -191,6 +191,10 @@ bool EditorScreen::eventFilter(QObject* watched, QEvent* event) {
             save();
             return true;
         }
+        if (key->key() == Qt::Key_W && (key->modifiers() & Qt::ControlModifier)) {
+            openGne();  // seed 001 ch. 3: <Control W> calls the GNE from the full screen editor
+            return true;
+        }
     }
     return Screen::eventFilter(watched, event);
 }
@@ -201,7 +205,7 @@ mtc::hmi::SoftKeys EditorScreen::softKeys() {
     keys[0] = {"Save", [this] { save(); }, open};
     keys[1] = {"Compile", [this] { compile(); }, open && workspace_->compilerActive()};
     keys[2] = {"Errors\nCtrl+E", [this] { showErrors(); }};
-    keys[3] = {gneAvailable() ? "GNE" : "GNE\n(n/a)", [this] { openGne(); }};
+    keys[3] = {gneAvailable() ? "GNE\nCtrl+W" : "GNE\n(n/a)", [this] { openGne(); }};
     keys[4] = {"Runtime\nprogram", [this] {
                    workspace_->requestEdit(program_, 0);
                    emit navigateTo("runtime");

@@ -3,34 +3,14 @@
 #include <algorithm>
 
 #include "cnc_core/contour/GneText.h"
+#include "screens/gne/GneEditSupport.h"
 
 namespace mtc::screens {
 
 namespace gne = mtc::core::gne;
+using namespace gneedit;
 
 namespace {
-
-/// Section items carry these lines while solved and expanded, so that a
-/// diagnostic names its item and element: base + 1000 * item + element + 1.
-constexpr std::uint32_t kLineBase = 100000;
-constexpr std::uint32_t kItemStride = 1000;
-
-std::string trimmed(const std::string& s) {
-    std::size_t a = s.find_first_not_of(" \t\r"), b = s.find_last_not_of(" \t\r");
-    return a == std::string::npos ? std::string() : s.substr(a, b - a + 1);
-}
-
-std::vector<std::string> splitLines(const std::string& text) {
-    std::vector<std::string> lines;
-    std::size_t start = 0;
-    while (true) {
-        const std::size_t end = text.find('\n', start);
-        lines.push_back(text.substr(start, end == std::string::npos ? end : end - start));
-        if (end == std::string::npos) break;
-        start = end + 1;
-    }
-    return lines;
-}
 
 int lastLineOf(const gne::GneItem& item) {
     if (item.isContour) return static_cast<int>(std::max(item.contour.endLine, item.contour.line));
@@ -39,13 +19,6 @@ int lastLineOf(const gne::GneItem& item) {
 
 int firstLineOf(const gne::GneItem& item) {
     return static_cast<int>(item.isContour ? item.contour.line : item.call.line);
-}
-
-bool isWindow(const gne::GneItem& item) {
-    return !item.isContour && item.call.keyword.rfind("WINDOW_", 0) == 0;
-}
-bool isCycle(const gne::GneItem& item) {
-    return !item.isContour && item.call.keyword.rfind("CYCLE_", 0) == 0;
 }
 
 /// Geometry number of a contour or form item, 0 for others.
@@ -502,80 +475,6 @@ std::string GneEditModel::sectionProblems() const {
                "\n";
     }
     return out;
-}
-
-std::string GneEditModel::keywordText() const {
-    gne::GneDocument doc;
-    doc.items = items_;
-    for (std::size_t i = 0; i < doc.items.size(); ++i)
-        if (doc.items[i].isContour) doc.items[i].contour.plane = planeOf(static_cast<int>(i));
-    return gne::writeGne(doc);
-}
-
-bool GneEditModel::ncBlocks(std::string& text, std::string& problem) const {
-    const std::string open = sectionProblems();
-    if (!open.empty()) {
-        problem = "the section does not expand: " + open.substr(0, open.find('\n'));
-        return false;
-    }
-    text.clear();
-    bool anyCycle = false;
-    for (std::size_t i = 0; i < items_.size(); ++i) {
-        const auto line = static_cast<std::uint32_t>(kLineBase + kItemStride * i);
-        if (isCycle(items_[i])) {
-            anyCycle = true;
-            text += "; GNE " + gne::writeCall(items_[i].call) + " expanded\n";
-            for (const gne::ExpandedCall& call : expansion_.calls)
-                if (call.line == line)
-                    for (const std::string& block : call.blocks)
-                        text += block + "\n";
-            continue;
-        }
-        gne::GneDocument one;
-        one.items.push_back(items_[i]);
-        one.items.back().contour.plane = planeOf(static_cast<int>(i));
-        const std::string keywords = gne::writeGne(one);
-        std::size_t start = 0;
-        while (start < keywords.size()) {
-            const std::size_t end = keywords.find('\n', start);
-            text += "; GNE " + keywords.substr(start, end - start) + "\n";
-            start = end + 1;
-        }
-    }
-    if (!anyCycle) {
-        problem =
-            "NC blocks need a machining cycle: insert a CYCLE_xx for the contour, or save "
-            "as function call";
-        return false;
-    }
-    return true;
-}
-
-std::string GneEditModel::splice(const std::string& output) const {
-    std::vector<std::string> lines = programLines_;
-    std::vector<std::string> add = splitLines(output);
-    if (!add.empty() && add.back().empty()) add.pop_back();
-    std::size_t from = 0, count = 0;
-    if (!isNew()) {
-        from = static_cast<std::size_t>(firstLine_ - 1);
-        count = static_cast<std::size_t>(lastLine_ - firstLine_ + 1);
-    } else {
-        from = std::min(static_cast<std::size_t>(std::max(insertLine_, 1) - 1), lines.size());
-        if (from == lines.size() && !lines.empty() && lines.back().empty()) from = lines.size() - 1;
-        count = replaceEmptyLine_ ? 1 : 0;
-    }
-    lines.erase(lines.begin() + static_cast<std::ptrdiff_t>(from),
-                lines.begin() + static_cast<std::ptrdiff_t>(from + count));
-    lines.insert(lines.begin() + static_cast<std::ptrdiff_t>(from), add.begin(), add.end());
-    std::string out;
-    for (std::size_t i = 0; i < lines.size(); ++i)
-        out += (i ? "\n" : "") + lines[i];
-    return out;
-}
-
-int GneEditModel::spliceLine() const {
-    if (!isNew()) return firstLine_;
-    return std::max(insertLine_, 1);
 }
 
 }  // namespace mtc::screens

@@ -15,6 +15,7 @@
 #include "cnc_core/contour/GneExpansion.h"
 #include "cnc_core/contour/GneModel.h"
 #include "screens/gne/GneFields.h"
+#include "screens/gne/GneNumbering.h"
 
 namespace mtc::screens {
 
@@ -99,12 +100,24 @@ class GneEditModel {
     /// The section as NC blocks: cycles expanded, windows and geometry as
     /// comments. False with `problem` when the section does not expand.
     bool ncBlocks(std::string& text, std::string& problem) const;
+    /// What goes back into the program for `kind`, numbered as the
+    /// program (GS-007): lines that stem from program lines keep their
+    /// block numbers and comments, new lines get "N0053:0001" after the
+    /// numbered line before them. An unchanged section as function call is
+    /// returned exactly as it was. False with `problem` when NC blocks are
+    /// refused (see ncBlocks).
+    bool output(GneOutput kind, std::string& text, std::string& problem) const;
     /// The program text with the section replaced by `output` (lines).
     std::string splice(const std::string& output) const;
     /// Line of the section's first line in splice()'s result.
     int spliceLine() const;
 
   private:
+    /// The section as keyword lines with the program lines they stem from.
+    std::vector<GneOutputLine> keywordLines() const;
+    /// The section as NC block lines (see ncBlocks) with their origins.
+    bool ncBlockLines(std::vector<GneOutputLine>& lines, std::string& problem) const;
+
     struct Snapshot {
         std::vector<mtc::core::gne::GneItem> items;
         int current = 0;

@@ -388,14 +388,14 @@ void GneScreen::toggleZoom() {
 
 void GneScreen::finish(GneOutput output) {
     if (program_ == 0) return showMessage("No program: open the GNE from the editor", true);
-    std::string text = model_.keywordText();
-    if (output == GneOutput::NcBlocks) {
-        std::string problem;
-        if (!model_.ncBlocks(text, problem)) return showMessage(q(problem), true);
-    } else if (const std::string open = model_.sectionProblems(); !open.empty()) {
-        return showMessage(
-            "Not saved - the section is not complete: " + q(open.substr(0, open.find('\n'))), true);
+    if (output == GneOutput::FunctionCall) {
+        if (const std::string open = model_.sectionProblems(); !open.empty())
+            return showMessage(
+                "Not saved - the section is not complete: " + q(open.substr(0, open.find('\n'))),
+                true);
     }
+    std::string text, problem;
+    if (!model_.output(output, text, problem)) return showMessage(q(problem), true);
     QString error;
     if (!workspace_->save(program_, q(model_.splice(text)), error)) return showMessage(error, true);
     workspace_->requestEdit(program_, model_.spliceLine());

@@ -11,6 +11,8 @@
 #include <QListView>
 #include <QListWidget>
 #include <QPlainTextEdit>
+#include <QRegularExpression>
+#include <QSet>
 #include <QTableWidget>
 #include <QTemporaryDir>
 #include <random>
@@ -42,6 +44,34 @@ const char* kSectionProgram =
     "END_CONT\n"
     "N0001 M30\n"
     "N0002 PROGRAMMENDE\n";
+
+/// Lines 11-20: a numbered turning section (GS-007: numbers are kept).
+const char* kNumberedProgram =
+    "N0000 G0 G90 X40 Z10\n"
+    "N0001 WINDOW_01 (-40, 5, 30, 0)\n"
+    "N0002 CONT (3, FINAL) ;shaft\n"
+    "N0003 START Z0 X10\n"
+    "N0004 LINE Z-20 X10\n"
+    "N0005 LINE Z-20 X25\n"
+    "N0006 END_CONT\n"
+    "N0007 CYCLE_10 (3, 1, 0.2)\n"
+    "N0008 M30\n"
+    "N0009 PROGRAMMENDE\n";
+
+/// Every block line of the object text is numbered Nxxxx:yyyy, no number twice.
+void expectNumberedObject(const std::string& object) {
+    const QStringList lines = QString::fromStdString(object).split('\n');
+    QSet<QString> seen;
+    const QRegularExpression numbered("^N\\d{4}:\\d{4}( |$)");
+    for (const QString& line : lines) {
+        if (!line.startsWith('N')) continue;  // header, continuation lines
+        QVERIFY2(numbered.match(line).hasMatch(), qPrintable(line));
+        const QString id = line.left(10);
+        QVERIFY2(!seen.contains(id), qPrintable("twice: " + id));
+        seen.insert(id);
+    }
+    QVERIFY(seen.size() > 10);
+}
 
 mtc::screens::GneScreen* gneScreen(PanelFixture& panel) {
     return qobject_cast<mtc::screens::GneScreen*>(panel.window->screen(0, "gne"));
@@ -139,6 +169,7 @@ class GneScreenTest : public QObject {
         const QDir dir = emptiedDirectory(dir_.path());
         writeProgram(dir, 8, programHeader(8, "GNE new") + kEmptyProgram);
         writeProgram(dir, 9, programHeader(9, "GNE section") + kSectionProgram);
+        writeProgram(dir, 10, programHeader(10, "GNE numbered") + kNumberedProgram);
         mtc::hmi::PanelOptions o;
         o.programsDir = dir_.path();
         return o;
@@ -196,11 +227,14 @@ class GneScreenTest : public QObject {
         QCOMPARE(panel.window->currentScreenName(), QString("editor"));
         auto* edit = child<QPlainTextEdit>(panel, "editor", "programEditor");
         const QString text = edit->toPlainText();
-        QVERIFY2(text.contains("WINDOW_02 (-10, -10, 110, 70)\nCONT (1, FINAL)\nSTART X5 Y5\n"
-                               "LINE X85 Y5\nLINE X85 Y45\nRD 6\nLINE X5 Y45\nLINE X5 Y5\n"
-                               "END_CONT\nCYCLE_40 (1, 1, 300"),
+        // GS-007: new lines are numbered after the numbered line before them
+        QVERIFY2(text.contains("N0000:0001 WINDOW_02 (-10, -10, 110, 70)\n"
+                               "N0000:0002 CONT (1, FINAL)\nN0000:0003 START X5 Y5\n"
+                               "N0000:0004 LINE X85 Y5\nN0000:0005 LINE X85 Y45\n"
+                               "N0000:0006 RD 6\nN0000:0007 LINE X5 Y45\nN0000:0008 LINE X5 Y5\n"
+                               "N0000:0009 END_CONT\nN0000:0010 CYCLE_40 (1, 1, 300"),
                  qPrintable(text));
-        QVERIFY(text.contains("N0000 G0 G17 G90 X-20 Y-20 Z50\nWINDOW_02"));
+        QVERIFY(text.contains("N0000 G0 G17 G90 X-20 Y-20 Z50\nN0000:0001 WINDOW_02"));
         QVERIFY(text.contains(")\nN0001 G0 Z50"));  // the empty line was replaced
         QCOMPARE(edit->textCursor().blockNumber() + 1, 12);
         compileAndRun(panel, 8);
@@ -220,8 +254,8 @@ class GneScreenTest : public QObject {
         QVERIFY2(!text.contains("\nCONT") && !text.contains("\nCYCLE_40"), qPrintable(text));
         QVERIFY2(text.contains("; GNE CONT (1, FINAL)"), qPrintable(text));
         QVERIFY2(text.contains("G17"), qPrintable(text));
-        QVERIFY2(text.contains(QRegularExpression("\\nG[23] X\\S+ Y\\S+ I\\S+ J")),
-                 qPrintable(text));  // the rounding as an arc
+        QVERIFY2(text.contains(QRegularExpression("\\nN0000:\\d{4} G[23] X\\S+ Y\\S+ I\\S+ J")),
+                 qPrintable(text));  // the rounding as an arc, numbered (GS-007)
         compileAndRun(panel, 8);
         // Plain NC blocks need no compiler: the source runs as it is.
         runProgram(panel, 8, panel.session->program(0, 8)->source, 12);
@@ -252,6 +286,70 @@ class GneScreenTest : public QObject {
         model.openText(section);
         QCOMPARE(QString::fromStdString(model.keywordText()), QString::fromStdString(section));
         QCOMPARE(model.rows().size(), std::size_t{12});
+    }
+
+    void numbersOfTheSourceAreKeptAndInsertedLinesNumbered() {
+        PanelFixture panel(options());
+        const QString before = QString::fromStdString(panel.session->program(0, 10)->source);
+        editAt(panel, 10, 15);  // on N0004 LINE
+        panel.press(Qt::Key_F4);
+        panel.press(Qt::Key_F8);  // exit unchanged: the lines stay exactly as they were
+        chooseByKeys(panel, "Save as function call (keywords with parameters)");
+        QCOMPARE(QString::fromStdString(panel.session->program(0, 10)->source), before);
+        panel.press(Qt::Key_F4);  // again, now on the section's first line
+        auto* rows = child<QListWidget>(panel, "gne", "gneRows");
+        panel.press(Qt::Key_Down);
+        panel.press(Qt::Key_Down);
+        QVERIFY(rows->currentItem()->text().contains("START"));
+        panel.press(Qt::Key_Insert);
+        chooseByKeys(panel, "LINE");
+        enterValues(panel, {"-10", "10"});
+        panel.press(Qt::Key_F8);
+        chooseByKeys(panel, "Save as function call (keywords with parameters)");
+        const QString text = QString::fromStdString(panel.session->program(0, 10)->source);
+        QVERIFY2(text.contains("N0001 WINDOW_01 (-40, 5, 30, 0)\nN0002 CONT (3, FINAL) ;shaft\n"
+                               "N0003 START Z0 X10\nN0003:0001 LINE Z-10 X10\n"
+                               "N0004 LINE Z-20 X10\nN0005 LINE Z-20 X25\nN0006 END_CONT\n"
+                               "N0007 CYCLE_10 (3, 1, 0.2)\nN0008 M30"),
+                 qPrintable(text));
+        mtc::core::CompilerOptions options;
+        options.compilerActive = true;
+        const auto result = mtc::core::Compiler().compile(*panel.session->program(0, 10), options);
+        QVERIFY(result.status == mtc::core::CompileStatus::Compiled);
+        QVERIFY2(result.objectText.find("N0003:0001 ;LINE Z-10 X10") != std::string::npos,
+                 result.objectText.c_str());
+        expectNumberedObject(result.objectText);
+    }
+
+    void ncBlocksAreNumberedAfterTheirCycle() {
+        PanelFixture panel(options());
+        editAt(panel, 10, 18);  // on the cycle
+        panel.press(Qt::Key_F4);
+        panel.press(Qt::Key_F8);
+        chooseByKeys(panel, "Save as NC blocks (expanded)");
+        const QString text = QString::fromStdString(panel.session->program(0, 10)->source);
+        QVERIFY2(text.contains("N0002 ; GNE CONT (3, FINAL) ;shaft\nN0003 ; GNE START Z0 X10\n"),
+                 qPrintable(text));
+        QVERIFY2(text.contains("N0007 ; GNE CYCLE_10 (3, 1, 0.2) expanded\n"
+                               "N0007:0001 G90 G18 G40 G15\nN0007:0002 T1 ;GNE TOOL"),
+                 qPrintable(text));
+        QVERIFY2(!text.contains(QRegularExpression("\\n[GTSX]")), qPrintable(text));
+        mtc::core::CompilerOptions options;
+        options.compilerActive = true;
+        const auto result = mtc::core::Compiler().compile(*panel.session->program(0, 10), options);
+        QVERIFY(result.status == mtc::core::CompileStatus::Compiled);
+        expectNumberedObject(result.objectText);
+        runProgram(panel, 10, result.objectText, 12);
+    }
+
+    void controlWInTheEditorOpensTheGne() {
+        // seed 001 ch. 3: <Control W> calls the GNE from the full screen editor
+        PanelFixture panel(options());
+        editAt(panel, 9, 14);
+        panel.press(Qt::Key_W, Qt::ControlModifier);
+        QCOMPARE(panel.window->currentScreenName(), QString("gne"));
+        QCOMPARE(gneScreen(panel)->model().firstLine(), 12);
+        QVERIFY(!gneScreen(panel)->model().isNew());
     }
 
     void unsavedEditorChangesReachTheGne() {
