@@ -159,12 +159,20 @@ void BlockExecutor::explicitGroups(const BlockInput& in, ModalState& next) const
             next.g[static_cast<size_t>(group)] = in.g[static_cast<size_t>(group)];
 }
 
+/// Longest dwell (G4 F, seconds): about 28 hours. A larger value would keep
+/// the simulated station waiting without end (issue 15 §1).
+constexpr double kMaxDwellSeconds = 99999.999;
+
 bool BlockExecutor::scalars(const BlockContext& c, const BlockInput& in, BlockPlan& plan) const {
     ModalState& next = plan.next;
     const double unit = next.g[kGroupUnits] == 70 ? kInch : 1.0;
     if (in.dwell) {
         if (!in.hasFeed)
             return c.error("DWELL_TIME_MISSING", "G4 needs the dwell time in F (seconds)",
+                           in.dwellColumn);
+        if (!(in.feed >= 0.0 && in.feed <= kMaxDwellSeconds))  // I-017a, NaN too
+            return c.error("DWELL_TIME_RANGE",
+                           "G4 dwell time must lie between 0 and 99999.999 seconds",
                            in.dwellColumn);
         plan.dwellSeconds = in.feed;
         next.time += in.feed;

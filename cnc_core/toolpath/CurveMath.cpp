@@ -11,12 +11,18 @@ double sagitta(double radius, double angle) {
 
 int arcChords(double radius, double sweep, double tolerance) {
     const double tol = tolerance > 0.0 ? tolerance : 0.001;
-    const double quarter = std::ceil(std::fabs(sweep) / (kPi / 2.0) - 1e-12);
-    if (radius <= tol) return std::max(1, static_cast<int>(quarter));
-    // Largest angle whose sagitta is the tolerance: 2 acos(1 - tol / r).
+    // A non-finite sweep (a NaN from a degenerate arc) is drawn as one turn.
+    const double angle = std::isfinite(sweep) ? std::fabs(sweep) : 2.0 * kPi;
+    // Every count is capped as a double before it becomes an int: memory and
+    // time never grow with a programmed radius or turn count.
+    const double quarter = std::min(std::ceil(angle / (kPi / 2.0) - 1e-12), kMaxArcChords);
+    if (!(radius > tol)) return std::max(1, static_cast<int>(quarter));
+    // Largest angle whose sagitta is the tolerance: 2 acos(1 - tol / r); it
+    // vanishes for a huge radius.
     const double step = 2.0 * std::acos(1.0 - tol / radius);
-    const double chords = std::ceil(std::fabs(sweep) / step - 1e-12);
-    return std::max({1, static_cast<int>(chords), static_cast<int>(quarter)});
+    const double chords = std::ceil(angle / step - 1e-12);
+    const double count = chords < kMaxArcChords ? chords : kMaxArcChords;  // NaN too
+    return std::max({1, static_cast<int>(count), static_cast<int>(quarter)});
 }
 
 double arcSweep(double s1, double s2, double e1, double e2, double c1, double c2, bool clockwise,

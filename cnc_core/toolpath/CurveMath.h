@@ -14,9 +14,15 @@ inline constexpr double kPi = 3.14159265358979323846;
 /// `angle` radians of it (the sagitta r (1 - cos(angle / 2))).
 double sagitta(double radius, double angle);
 
+/// Most chords of one arc (or one wrapped G32 line): beyond it the drawing
+/// is coarser than the tolerance (a radius of kilometres, thousands of turns)
+/// instead of taking memory and time that grow with the programmed number.
+inline constexpr double kMaxArcChords = 65536.0;
+
 /// Chords an arc of `radius` sweeping `sweep` radians is drawn with so that
 /// no chord is farther than `tolerance` from the arc: at least 1, at least one
-/// per quarter turn. A tolerance <= 0 is treated as 0.001 mm.
+/// per quarter turn, at most kMaxArcChords. A tolerance <= 0 is treated as
+/// 0.001 mm.
 int arcChords(double radius, double sweep, double tolerance);
 
 /// Angle in radians (> 0) swept from start (s1, s2) to end (e1, e2) around
