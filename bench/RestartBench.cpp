@@ -34,8 +34,9 @@ void computingProcess(benchmark::State& state, bool mixed) {
     const Fixture& f = fixture(mixed);
     const ProcessConfig& config = *f.cell.process(0);
     NullSink sps;
-    InterpreterServices services{std::make_shared<InMemoryMachineData>(f.cell),
-                                 std::make_shared<EventTable>(), nullptr};
+    InterpreterServices services;
+    services.machineData = std::make_shared<InMemoryMachineData>(f.cell);
+    services.events = std::make_shared<EventTable>();
     Interpreter live(config, f.store, sps, services);
     ComputingProcess computing(config, f.store, sps, services);
     RestartSelection selection;

@@ -13,6 +13,15 @@
 
 namespace mtc::hmi {
 
+namespace {
+/// The configuration's tool lists and zero offsets (its problems are the
+/// interpreters' configuration diagnostics).
+mtc::core::SetupData setupDataOf(const mtc::core::MachineConfig& config) {
+    mtc::core::DiagnosticList ignored;
+    return mtc::core::SetupData::fromConfig(config, ignored);
+}
+}  // namespace
+
 /// Everything one process of the cell runs on.
 struct CellSession::Station {
     Station(const mtc::core::ProcessConfig& config, const mtc::core::ProgramStore& store,
@@ -38,11 +47,14 @@ struct CellSession::Station {
 CellSession::CellSession(mtc::core::MachineConfig config, QObject* parent)
     : QObject(parent),
       config_(std::move(config)),
-      machineData_(std::make_shared<mtc::core::MachineDataStore>(config_)) {
+      machineData_(std::make_shared<mtc::core::MachineDataStore>(config_)),
+      setupData_(setupDataOf(config_)) {
     mtc::core::InterpreterServices services;
     services.machineData = machineData_;
     services.axisTransfer = &axisTransfer_;  // GAX / FAX of normal runs
     for (int slot = 0; slot < processCount(); ++slot) {
+        services.tools = setupData_.tools(processConfig(slot).index);
+        services.zeroOffsets = setupData_.offsets(processConfig(slot).index);
         stations_.push_back(
             std::make_unique<Station>(processConfig(slot), store_, services, *machineData_));
         connect(&stations_.back()->clock, &SimulationClock::changed, this,
@@ -170,6 +182,11 @@ QStringList CellSession::openMachineDataFile(const QString& path) {
     machineDataWritable_ = result.mayOverwrite;
     savedRevision_ = machineData_->revision();
     for (const mtc::core::Diagnostic& d : result.diagnostics.items())
+        machineDataMessages_ << QString::fromStdString(d.message);
+    // Tool lists and zero offsets beside it (a refused file changes nothing).
+    mtc::core::DiagnosticList setup;
+    setupData_.load(mtc::core::setupDataFilesBeside(path.toStdString()), setup);
+    for (const mtc::core::Diagnostic& d : setup.items())
         machineDataMessages_ << QString::fromStdString(d.message);
     for (int slot = 0; slot < processCount(); ++slot)
         emit processChanged(slot);

@@ -13,6 +13,7 @@
 #include "cnc_core/machine/MachineConfig.h"
 #include "cnc_core/machine/ProcessControl.h"
 #include "cnc_core/program/ProgramStore.h"
+#include "cnc_core/tooldata/SetupData.h"
 
 namespace mtc::core {
 class AdaptiveFeedControl;
@@ -85,6 +86,8 @@ class CellSession : public QObject {
     mtc::core::AxisTransfer& axisTransfer() { return axisTransfer_; }
     /// The machine data of the cell, shared by every station's interpreter.
     mtc::core::MachineDataStore& machineData() { return *machineData_; }
+    /// Tool lists and zero offsets of every process; the interpreters read them.
+    mtc::core::SetupData& setupData() { return setupData_; }
     /// Keeps the machine data in `path` from now on: loads it (a damaged
     /// file is kept aside, the defaults stay) and returns what the user must
     /// be told (also kept in machineDataMessages()). Empty path: nothing is kept.
@@ -114,6 +117,7 @@ class CellSession : public QObject {
     mtc::core::ProgramStore store_;
     mtc::core::AxisTransfer axisTransfer_;
     std::shared_ptr<mtc::core::MachineDataStore> machineData_;
+    mtc::core::SetupData setupData_;  ///< tool lists and zero offsets (beside the machine data)
     QString machineDataFile_;
     QString programDirectory_;
     bool machineDataWritable_ = true;

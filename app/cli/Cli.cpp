@@ -10,6 +10,7 @@
 #include "cli/MachineDataCommand.h"
 #include "cli/RestartCommand.h"
 #include "cli/RunCommand.h"
+#include "cli/SetupDataCommand.h"
 
 namespace mtc::cli {
 
@@ -40,6 +41,10 @@ int runCli(int argc, char** argv) {
             return runMachineDataCommand(options);
         case Command::Compile:
             return runCompileCommand(options);
+        case Command::Tools:
+            return runToolsCommand(options);
+        case Command::Offsets:
+            return runOffsetsCommand(options);
         case Command::None:
             break;
     }

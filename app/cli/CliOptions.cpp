@@ -21,6 +21,8 @@ Command commandFromName(std::string_view name) {
     if (name == "restart") return Command::Restart;
     if (name == "compile") return Command::Compile;
     if (name == "md") return Command::MachineData;
+    if (name == "tools") return Command::Tools;
+    if (name == "offsets") return Command::Offsets;
     if (name == "help") return Command::Help;
     return Command::None;
 }
@@ -191,11 +193,13 @@ class CommandLineReader {
             out_.error =
                 "options --target, --runs, --from-primary and --adjust belong to 'restart'";
         } else if (o.machineData.given && o.command != Command::MachineData &&
+                   o.command != Command::Tools && o.command != Command::Offsets &&
                    o.command != Command::Help && o.command != Command::Version &&
                    !((o.command == Command::Run || o.command == Command::Restart) &&
                      o.machineData.onlyDataFile())) {
             out_.error =
-                "options --as, --password and --sub belong to 'md' (--data to md, run and restart)";
+                "options --as, --password and --sub belong to 'md' (--data to md, tools, offsets, "
+                "run and restart)";
         } else if (o.command == Command::Restart && o.arguments.size() != 1) {
             out_.error = "'restart' takes exactly one program";
         } else if (o.command == Command::Restart && o.target.empty()) {
@@ -245,6 +249,21 @@ Commands available:
                               elements need --password); --sub N for page 61
                               (1 = M(16), 2 = Q); the value is kept in the
                               data file
+  tools get [T<n>]            the tool list of --process (every edge: radius,
+                              lengths L1..L3 with wear, edge orientation,
+                              corner and setting angle, name)
+  tools set T<n> [E<m>] KEY=VALUE...
+                              create or change edge E (default 1) of tool T;
+                              keys radius radius_wear l1 l2 l3 l1_wear l2_wear
+                              l3_wear orientation corner_angle setting_angle
+                              name; 'tools set T<n> [E<m>] delete' removes it
+  offsets get [G54..G59]      zero offsets of --process (columns = axis
+                              definitions X Y Z U V W A B C)
+  offsets set G5x COLUMN=VALUE...
+                              change columns of one zero offset
+                              (tool lists and zero offsets are kept beside
+                              the machine data file: <data>.tools,
+                              <data>.offsets; docs/TOOL-DATA.md)
   compile FILE|PROG [-o OUT.NCO] [--user-compiler SLOT=COMMAND]...
                               NC compiler (macros, MODF, CF/RD): writes the
                               object file (.NCO), or the error file (.ERR)

@@ -9,7 +9,18 @@
 namespace mtc::cli {
 
 /// The sub-command of mtc200-cli (CLI-CONTRACT.md).
-enum class Command { None, Help, Version, Check, Run, Restart, Compile, MachineData };
+enum class Command {
+    None,
+    Help,
+    Version,
+    Check,
+    Run,
+    Restart,
+    Compile,
+    MachineData,
+    Tools,
+    Offsets
+};
 
 /// Default bound of a run: interpreted blocks before the run stops with a diagnostic.
 inline constexpr std::uint64_t kDefaultMaxBlocks = 10'000'000;

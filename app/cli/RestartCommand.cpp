@@ -12,6 +12,7 @@
 #include "cli/ProgramMemory.h"
 #include "cli/RestartRecorder.h"
 #include "cli/RestartReport.h"
+#include "cli/SetupDataCommand.h"
 #include "cnc_core/interp/Interpreter.h"
 #include "cnc_core/machine/ProcessControl.h"
 #include "cnc_core/machine_data/MachineDataStore.h"
@@ -36,7 +37,8 @@ struct PreparedRestart {
     ProgramRequest request;
     const core::ProcessConfig* process = nullptr;
     core::ProgramStore store;
-    core::DiagnosticList diagnostics;  ///< warnings of the preparation, parse problems
+    core::DiagnosticList diagnostics;          ///< warnings of the preparation, parse problems
+    std::optional<core::SetupData> setupData;  ///< tool list and zero offsets (--data)
 };
 
 bool prepare(const CliOptions& options, PreparedRestart& p, core::DiagnosticList& failure) {
@@ -55,7 +57,19 @@ bool prepare(const CliOptions& options, PreparedRestart& p, core::DiagnosticList
     }
     p.store = storeWith(p.setup.programs.store, p.request);
     p.diagnostics.append(p.request.program->diagnostics);
-    return true;
+    return loadRunSetupData(p.setup.machine, options.machineData.dataFile, p.setupData, failure);
+}
+
+/// The live interpreter's services: the cell's machine data, an event
+/// table, the tool list and zero offsets of the process.
+core::InterpreterServices servicesOf(const PreparedRestart& prepared,
+                                     std::shared_ptr<core::MachineDataStore> machineData) {
+    core::InterpreterServices services;
+    services.machineData = std::move(machineData);
+    services.events = std::make_shared<core::EventTable>();
+    services.tools = prepared.setupData->tools(prepared.request.process);
+    services.zeroOffsets = prepared.setupData->offsets(prepared.request.process);
+    return services;
 }
 
 /// The cell of one process as the operator finds it: interpreter on the
@@ -67,8 +81,7 @@ class RestartDriver {
           prepared_(prepared),
           machineData_(std::make_shared<core::MachineDataStore>(prepared.setup.machine)),
           dataKeeper_(options.machineData.dataFile),
-          live_(*prepared.process, prepared.store, recorder_,
-                {machineData_, std::make_shared<core::EventTable>(), nullptr}),
+          live_(*prepared.process, prepared.store, recorder_, servicesOf(prepared, machineData_)),
           control_(prepared.request.process),
           sps_(control_),
           sequence_(control_, sps_, live_, prepared.store, recorder_) {

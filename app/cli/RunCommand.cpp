@@ -12,6 +12,7 @@
 #include "cli/MachineSetup.h"
 #include "cli/MotionOutput.h"
 #include "cli/ProgramMemory.h"
+#include "cli/SetupDataCommand.h"
 #include "cli/StateOutput.h"
 #include "cnc_core/afc/AdaptiveFeedControl.h"
 #include "cnc_core/afc/AfcMotion.h"
@@ -239,6 +240,12 @@ int runRunCommand(const CliOptions& options) {
     // axis until the next GAX, a move of a released axis is an error.
     core::AxisTransfer axisOwnership;
     services.axisTransfer = &axisOwnership;
+    // Tool list and zero offsets: beside the --data file when one is given.
+    std::optional<core::SetupData> setup;
+    if (!loadRunSetupData(run.setup.machine, options.machineData.dataFile, setup, failure))
+        return reportSetupFailure(failure, options.json);
+    services.tools = setup->tools(run.request.process);
+    services.zeroOffsets = setup->offsets(run.request.process);
     core::Interpreter interpreter(*run.process, run.store, sink, services);
     cell.afc = std::make_shared<core::AdaptiveFeedControl>(
         *run.process, *cell.data, core::torqueModelFromConfig(*run.process), &cell.signals);

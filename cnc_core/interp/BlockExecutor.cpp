@@ -180,7 +180,7 @@ bool BlockExecutor::scalars(const BlockContext& c, const BlockInput& in, BlockPl
         next.feed = in.feed * unit;
     }
     if (in.hasTool) {
-        if (in.tool != 0 && !setup_.config->tool(in.tool))
+        if (in.tool != 0 && !setup_.tools->find(in.tool))
             return c.error("TOOL_UNKNOWN",
                            "T" + std::to_string(in.tool) +
                                " is not in the current tools list of process " +
@@ -201,9 +201,16 @@ void BlockExecutor::checkGneTool(const BlockContext& c, const BlockInput& in) co
     if (comment.rfind("GNE TOOL", 0) != 0 ||
         !gne::parseToolBlock("T" + std::to_string(in.tool) + " ;" + std::string(comment), assumed))
         return;
+    // The edge of the block (E), else the tool's first edge, as the tool list has it.
+    const ToolEdge* edge = setup_.tools->edge(in.tool, in.hasEdge ? in.edge : 0);
+    ToolConfig actual;
+    if (edge) {
+        actual.number = in.tool;
+        actual.radius = edge->totalRadius();
+        actual.edgeOrientation = edge->orientation;
+    }
     std::string message;
-    for (const std::string& problem :
-         gne::checkToolAssumption(assumed, setup_.config->tool(in.tool)))
+    for (const std::string& problem : gne::checkToolAssumption(assumed, edge ? &actual : nullptr))
         message += (message.empty() ? "" : "; ") + problem;
     if (!message.empty()) c.warning("GNE_TOOL_MISMATCH", message, in.toolColumn);
 }

@@ -11,6 +11,7 @@
 #include "cnc_core/machine/MachineConfig.h"
 #include "cnc_core/machine/ProcessAxes.h"
 #include "cnc_core/machine/ZeroOffsetTable.h"
+#include "cnc_core/tooldata/ToolList.h"
 
 namespace mtc::core {
 
@@ -27,6 +28,7 @@ class BlockExecutor {
         const ProcessConfig* config = nullptr;
         const ProcessAxes* axes = nullptr;
         const ZeroOffsetTable* offsets = nullptr;
+        const ToolList* tools = nullptr;  ///< the process's tool list (T must be in it)
         const GGroupValues* defaults = nullptr;
         const std::array<std::int8_t, 1000>* mGroupOf = nullptr;  ///< M number -> group 1..16
         double arcTolerance = 0.002;

@@ -37,13 +37,28 @@ const char* runStatusName(RunStatus status) {
     return "error";
 }
 
+namespace {
+
+/// The shared zero offsets of `services`, else the configuration's. The
+/// configuration's entries are checked either way (a bad column refuses the run).
+std::shared_ptr<const ZeroOffsetTable> offsetsFor(const InterpreterServices& services,
+                                                  const ProcessConfig& config,
+                                                  DiagnosticList& diagnostics) {
+    auto own = std::make_shared<const ZeroOffsetTable>(ZeroOffsetTable::build(config, diagnostics));
+    return services.zeroOffsets ? services.zeroOffsets : own;
+}
+
+}  // namespace
+
 Interpreter::Interpreter(const ProcessConfig& config, const ProgramStore& programs,
                          MachineSink& sink, InterpreterServices services)
     : config_(config),
       programs_(programs),
       sink_(sink),
       axes_(ProcessAxes::build(config, configDiagnostics_)),
-      zeroOffsets_(ZeroOffsetTable::build(config, configDiagnostics_)),
+      zeroOffsets_(offsetsFor(services, config, configDiagnostics_)),
+      tools_(services.tools ? services.tools
+                            : std::make_shared<const ToolList>(ToolList::fromConfig(config))),
       defaults_(defaultGGroups(config)),
       machineData_(ownMachineData(services, config)),
       events_(ownEvents(services)),
@@ -51,7 +66,8 @@ Interpreter::Interpreter(const ProcessConfig& config, const ProgramStore& progra
       axisTransfer_(services.axisTransfer),
       evaluator_(
           {&state_, &input_, machineData_.get(), services.otherProcesses, config.index, nullptr}),
-      executor_({&config_, &axes_, &zeroOffsets_, &defaults_, &mGroupOf_, 0.002}),
+      executor_(
+          {&config_, &axes_, zeroOffsets_.get(), tools_.get(), &defaults_, &mGroupOf_, 0.002}),
       programFlow_(programs, config.index, events_.get()) {
     const int plane = config.defaultPlane();
     if (plane < 17 || plane > 19)

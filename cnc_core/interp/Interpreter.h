@@ -24,6 +24,7 @@
 #include "cnc_core/machine/ProcessAxes.h"
 #include "cnc_core/machine/ZeroOffsetTable.h"
 #include "cnc_core/program/ProgramStore.h"
+#include "cnc_core/tooldata/ToolList.h"
 
 namespace mtc::core {
 
@@ -105,6 +106,11 @@ struct InterpreterServices {
     /// Axis ownership of the cell (GAX / FAX, R-022); nullptr = none: GAX /
     /// FAX only reach the sink and every axis may move (restart computing).
     AxisTransfer* axisTransfer = nullptr;
+    /// The tool list and zero offsets of the process (cnc_core/tooldata
+    /// SetupData, shared with the operator and the CLI): a change is seen by
+    /// the next block. nullptr = the machine configuration's, fixed.
+    std::shared_ptr<const ToolList> tools;
+    std::shared_ptr<const ZeroOffsetTable> zeroOffsets;
 };
 
 /// Executes the NC programs of one process, block by block: decode (words,
@@ -174,6 +180,11 @@ class Interpreter {
     AdaptiveFeedControl* adaptiveFeed() { return afc_.get(); }
     MachineDataProvider& machineData() { return *machineData_; }
     const ProcessAxes& axes() const { return axes_; }
+    /// The tool list the interpreter checks T against (and the tool
+    /// compensation reads radius and lengths from).
+    const ToolList& tools() const { return *tools_; }
+    /// The zero offsets G54..G59 in force.
+    const ZeroOffsetTable& zeroOffsets() const { return *zeroOffsets_; }
     const ProcessConfig& config() const { return config_; }
     /// Name of machine axis `axis` as the JSON and transcripts show it: its
     /// designation 1 in programs ("X", "Z2", "C" for spindle S1 with rotary
@@ -240,7 +251,8 @@ class Interpreter {
     bool holdRequested_ = false;  ///< requestHold() during the current block
     DiagnosticList configDiagnostics_;
     ProcessAxes axes_;
-    ZeroOffsetTable zeroOffsets_;
+    std::shared_ptr<const ZeroOffsetTable> zeroOffsets_;
+    std::shared_ptr<const ToolList> tools_;
     GGroupValues defaults_{};
     std::array<std::int8_t, 1000> mGroupOf_{};
     std::shared_ptr<MachineDataProvider> machineData_;

@@ -253,7 +253,7 @@ void Interpreter::resetBaseSystem() {
     }
     m.g[kGroupPlane] = defaults_[kGroupPlane];
     m.plane = PlaneSelection::base(axes_, defaults_[kGroupPlane]);
-    MotionPlanner(&axes_, &zeroOffsets_).recomputeWork(m);
+    MotionPlanner(&axes_, zeroOffsets_.get()).recomputeWork(m);
     rebuildNames();
 }
 
@@ -264,7 +264,7 @@ void Interpreter::resetModal() {
     m.transformation.deselect();
     m.plane = PlaneSelection::base(axes_, defaults_[kGroupPlane]);
     m.spindleLimit = {};
-    MotionPlanner(&axes_, &zeroOffsets_).recomputeWork(m);
+    MotionPlanner(&axes_, zeroOffsets_.get()).recomputeWork(m);
 }
 
 void Interpreter::programEnd() {
@@ -329,7 +329,7 @@ double Interpreter::programmedPosition(int axis) const {
 
 void Interpreter::takeMachinePositions(const std::array<double, kMaxAxes>& machine) {
     state_.modal.machine = machine;
-    MotionPlanner(&axes_, &zeroOffsets_).recomputeWork(state_.modal);
+    MotionPlanner(&axes_, zeroOffsets_.get()).recomputeWork(state_.modal);
     modalChanged();
 }
 

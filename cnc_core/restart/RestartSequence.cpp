@@ -17,6 +17,10 @@ InterpreterServices servicesOf(Interpreter& live, VariableAccess* otherProcesses
         std::shared_ptr<MachineDataProvider>(std::shared_ptr<void>(), &live.machineData());
     services.events = std::shared_ptr<EventTable>(std::shared_ptr<void>(), &live.events());
     services.otherProcesses = otherProcesses;
+    // The same tool list and zero offsets as the live run.
+    services.tools = std::shared_ptr<const ToolList>(std::shared_ptr<void>(), &live.tools());
+    services.zeroOffsets =
+        std::shared_ptr<const ZeroOffsetTable>(std::shared_ptr<void>(), &live.zeroOffsets());
     return services;
 }
 

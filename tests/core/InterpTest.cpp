@@ -223,11 +223,11 @@ TEST(InterpServices, EventsAreSharedByTheProcessesOfACell) {
     ProgramStore store;
     NullSink sink;
     store.put(0, 1, parse("N1 .WAIT BER .WAIT 1:15\nN2 @1=1 M30\n", 1));
-    Interpreter mill(*cell.process(0), store, sink, {nullptr, events, nullptr});
-    ASSERT_TRUE(mill.select(1));
-    EXPECT_EQ(mill.run(50).status, RunStatus::BudgetExceeded) << "waits for the event";
     InterpreterServices services;
     services.events = events;
+    Interpreter mill(*cell.process(0), store, sink, services);
+    ASSERT_TRUE(mill.select(1));
+    EXPECT_EQ(mill.run(50).status, RunStatus::BudgetExceeded) << "waits for the event";
     Interpreter lathe(*cell.process(1), store, sink, services);
     lathe.events().set(1, 15, true);  // e.g. the lathe's SPS sets it
     EXPECT_EQ(mill.run(50).status, RunStatus::Ended);

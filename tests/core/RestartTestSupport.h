@@ -20,7 +20,12 @@ struct RestartCell {
           events(std::make_shared<core::EventTable>()),
           live(config, store, sps, services()) {}
 
-    core::InterpreterServices services() { return {machineData, events, nullptr}; }
+    core::InterpreterServices services() {
+        core::InterpreterServices s;
+        s.machineData = machineData;
+        s.events = events;
+        return s;
+    }
     /// Parses and stores program `number` (a parse error fails the test).
     core::ProgramPtr add(const std::string& source, int number) {
         core::ProgramPtr p = parse(source, number);
