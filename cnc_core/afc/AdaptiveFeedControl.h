@@ -145,8 +145,10 @@ class AdaptiveFeedControl {
     const ProcessConfig& process_;
     MachineDataStore& store_;
     SignalTable* signals_;
-    AfcParameters parameters_;
+    // Declared before parameters_: its initialiser writes into this list
+    // (members are constructed in declaration order).
     DiagnosticList parameterDiagnostics_;
+    AfcParameters parameters_;
     TorqueModel model_;
     std::map<std::string, double> stallTorques_;  ///< axis -> P-7-3652 value in 0.1 %
     bool active_ = false;

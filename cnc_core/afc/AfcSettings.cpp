@@ -2,45 +2,37 @@
 
 #include <cmath>
 
+#include "cnc_core/afc/AfcParameterRanges.h"
 #include "cnc_core/machine_data/StandardPages.h"
 
 namespace mtc::core {
 namespace {
 
-/// One Bxx parameter: number, range, and where it goes.
-struct ParameterRange {
+/// Where each of Bxx.064..069 goes (ranges: AfcParameterRanges).
+struct ParameterField {
     const char* number;
-    double minimum;
-    double maximum;
-    bool whole;
     double AfcSettings::*field;
 };
 
-constexpr ParameterRange kRanges[] = {
-    {"B064", 0.0, 500.0, false, &AfcSettings::limitingTorque},
-    {"B065", 0.0, 500.0, false, &AfcSettings::minimumTorque},
-    {"B066", 0.0, 500.0, false, &AfcSettings::maximumIdleTorque},
-    {"B067", 0.0, 100.0, false, &AfcSettings::maximumReduction},
-    {"B068", 0.01, 100.0, false, &AfcSettings::amplification},
-    {"B069", 2.0, 60000.0, true, &AfcSettings::measuringPeriodMs},
+constexpr ParameterField kFields[] = {
+    {"B064", &AfcSettings::limitingTorque},    {"B065", &AfcSettings::minimumTorque},
+    {"B066", &AfcSettings::maximumIdleTorque}, {"B067", &AfcSettings::maximumReduction},
+    {"B068", &AfcSettings::amplification},     {"B069", &AfcSettings::measuringPeriodMs},
 };
 
-bool readNumber(const ProcessConfig& p, const char* number, double minimum, double maximum,
-                bool whole, double& out, DiagnosticList& diagnostics) {
+/// Reads parameter `number` of `p` into `out` when it is given and valid; a
+/// bad value is AFC_PARAMETER (the machine configuration reader refuses it
+/// first; this covers configurations built in code).
+bool readParameter(const ProcessConfig& p, const char* number, double& out,
+                   DiagnosticList& diagnostics) {
     auto found = p.parameters.find(number);
     if (found == p.parameters.end()) return false;
-    const double fallback = -1e300;
-    const double value = p.number(number, fallback);
-    if (value == fallback || value < minimum || value > maximum ||
-        (whole && value != std::floor(value))) {
-        diagnostics.error("AFC_PARAMETER", {},
-                          "process " + std::to_string(p.index) + " parameter " + number + " = '" +
-                              found->second + "' is outside " + std::to_string(minimum) + " ... " +
-                              std::to_string(maximum) + "; the default is used");
-        return false;
-    }
-    out = value;
-    return true;
+    if (readAfcParameterValue(number, found->second, out)) return true;
+    diagnostics.error("AFC_PARAMETER", {},
+                      "process " + std::to_string(p.index) + " parameter " + number + " = '" +
+                          found->second + "' is outside " + afcAllowedValues(number) +
+                          "; the default is used");
+    return false;
 }
 
 double element(const MachineDataStore& store, int process, int number, double fallback) {
@@ -53,13 +45,13 @@ double element(const MachineDataStore& store, int process, int number, double fa
 
 AfcParameters readAfcParameters(const ProcessConfig& process, DiagnosticList& diagnostics) {
     AfcParameters result;
-    result.available = process.flag("B062", false);
+    double available = 0;
+    if (readParameter(process, "B062", available, diagnostics)) result.available = available != 0;
     double axis = 0;
-    if (readNumber(process, "B063", 0, 12, true, axis, diagnostics))
+    if (readParameter(process, "B063", axis, diagnostics))
         result.settings.referenceAxis = static_cast<int>(axis);
-    for (const ParameterRange& range : kRanges)
-        readNumber(process, range.number, range.minimum, range.maximum, range.whole,
-                   result.settings.*(range.field), diagnostics);
+    for (const ParameterField& field : kFields)
+        readParameter(process, field.number, result.settings.*(field.field), diagnostics);
     return result;
 }
 

@@ -24,14 +24,25 @@ const MGroupConfig* ProcessConfig::mGroupOf(int mFunction) const {
     return nullptr;
 }
 
+bool parseYesNo(const std::string& text, bool& value) {
+    std::string v = text;
+    std::transform(v.begin(), v.end(), v.begin(), [](unsigned char c) { return std::tolower(c); });
+    if (v == "yes" || v == "1" || v == "true") {
+        value = true;
+        return true;
+    }
+    if (v == "no" || v == "0" || v == "false") {
+        value = false;
+        return true;
+    }
+    return false;
+}
+
 bool ProcessConfig::flag(const std::string& key, bool fallback) const {
     auto it = parameters.find(key);
-    if (it == parameters.end()) return fallback;
-    std::string v = it->second;
-    std::transform(v.begin(), v.end(), v.begin(), [](unsigned char c) { return std::tolower(c); });
-    if (v == "yes" || v == "1" || v == "true") return true;
-    if (v == "no" || v == "0" || v == "false") return false;
-    return fallback;
+    bool value = fallback;
+    if (it != parameters.end()) parseYesNo(it->second, value);
+    return value;
 }
 
 double ProcessConfig::number(const std::string& key, double fallback) const {

@@ -100,6 +100,10 @@ struct ProcessConfig {
     int defaultPlane() const { return static_cast<int>(number("B004", 17)); }
 };
 
+/// Reads a Yes/No process parameter: yes/no, 1/0 or true/false (any case).
+/// False for anything else ("maybe"), `value` untouched.
+bool parseYesNo(const std::string& text, bool& value);
+
 /// The whole cell: the machine configuration the simulator runs on.
 struct MachineConfig {
     std::string name;

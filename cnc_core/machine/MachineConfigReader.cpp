@@ -4,6 +4,7 @@
 #include <functional>
 #include <sstream>
 
+#include "cnc_core/afc/AfcParameterRanges.h"
 #include "cnc_core/toolpath/Stock.h"
 
 namespace mtc::core {
@@ -152,10 +153,22 @@ class Reader {
             else if (k == "stock")
                 readStock(p, v);
             else if (k.size() == 4 && k[0] == 'B')
-                p.parameters[k] = v;
+                processParameter(p, k, v);
             else
                 error("CFG_KEY", "unknown key or bad value '" + k + " = " + v + "' in [process]");
         };
+    }
+
+    /// `Bxxx = value`: kept as text; the values whose range the simulator
+    /// knows (adaptive feed control B062..B069, seed 002 4.2) are checked here
+    /// so that a bad one names its line, key, value and range.
+    void processParameter(ProcessConfig& p, const std::string& key, const std::string& value) {
+        double parsed = 0.0;
+        if (isAfcParameter(key) && !readAfcParameterValue(key, value, parsed))
+            return error("CFG_VALUE", "process " + std::to_string(p.index) + " parameter " + key +
+                                          " = '" + value +
+                                          "' is not allowed: " + afcAllowedValues(key));
+        p.parameters[key] = value;
     }
 
     /// `stock = block ...` / `cylinder ...` / `none` (cnc_core/toolpath/Stock.h).

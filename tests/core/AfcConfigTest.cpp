@@ -1,0 +1,86 @@
+// Adaptive feed control and the machine configuration (seed 002, 4.2): the
+// process parameters B062..B069 are refused by the configuration reader with
+// line, key, value and range; an AdaptiveFeedControl built on a configuration
+// made in code with bad values reports them instead of crashing.
+#include <gtest/gtest.h>
+
+#include "InterpTestSupport.h"
+#include "cnc_core/afc/AdaptiveFeedControl.h"
+#include "cnc_core/afc/AfcParameterRanges.h"
+#include "cnc_core/machine/MachineConfigReader.h"
+#include "cnc_core/machine_data/MachineDataStore.h"
+
+namespace {
+
+using namespace mtc::core;
+using namespace mtc::test;
+
+/// A one-process configuration whose process section ends with `parameters`
+/// (line 4 is the first parameter line).
+std::string cellWith(const std::string& parameters) {
+    return "[cell]\nname = afc\n[process 0]\n" + parameters +
+           "[process 0 axis X]\n[process 0 spindle S1]\nindex = 1\n";
+}
+
+TEST(AfcConfig, ReaderRefusesOutOfRangeAndNonNumericParameters) {
+    const MachineConfigReadResult result =
+        readMachineConfig(cellWith("B062 = maybe\nB063 = 13\nB064 = 80\nB065 = 600\nB066 = lots\n"
+                                   "B067 = 100.5\nB068 = 0\nB069 = 1.5\n"));
+    ASSERT_EQ(result.diagnostics.items().size(), 7u) << diagnosticsText(result.diagnostics);
+    std::vector<int> lines;
+    for (const Diagnostic& d : result.diagnostics.items()) {
+        EXPECT_EQ(d.code, "CFG_VALUE");
+        lines.push_back(d.where.line);
+    }
+    EXPECT_EQ(lines, (std::vector<int>{4, 5, 7, 8, 9, 10, 11}));
+    const auto message = [&](std::size_t i) { return result.diagnostics.items()[i].message; };
+    EXPECT_NE(message(0).find("B062 = 'maybe'"), std::string::npos) << message(0);
+    EXPECT_NE(message(0).find("yes or no"), std::string::npos);
+    EXPECT_NE(message(1).find("0 ... 12, whole numbers"), std::string::npos) << message(1);
+    EXPECT_NE(message(2).find("B065 = '600'"), std::string::npos) << message(2);
+    EXPECT_NE(message(2).find("0.0 ... 500.0 %"), std::string::npos) << message(2);
+    EXPECT_NE(message(3).find("B066 = 'lots'"), std::string::npos);
+    EXPECT_NE(message(5).find("0.01 ... 100.0 1/s"), std::string::npos) << message(5);
+    EXPECT_NE(message(6).find("2 ... 60000, whole numbers ms"), std::string::npos) << message(6);
+}
+
+TEST(AfcConfig, ReaderAcceptsTheRangeLimits) {
+    const MachineConfigReadResult result =
+        readMachineConfig(cellWith("B062 = Yes\nB063 = 0\nB064 = 500\nB065 = 0\nB066 = 0.0\n"
+                                   "B067 = 100\nB068 = 0.01\nB069 = 60000\n"));
+    EXPECT_TRUE(result.ok()) << diagnosticsText(result.diagnostics);
+}
+
+TEST(AfcConfig, BadParametersOfAConfigurationMadeInCodeAreReportedNotACrash) {
+    // Regression: the diagnostics list was written before it was constructed
+    // (member initialisation order), a SIGSEGV for any bad B063..B069.
+    const MachineConfig cell = demoCell();
+    ProcessConfig process = *cell.process(0);
+    process.parameters["B063"] = "S1";
+    process.parameters["B065"] = "600";
+    process.parameters["B069"] = "1.5";
+    MachineDataStore data(cell);
+    const AdaptiveFeedControl afc(process, data);
+    EXPECT_EQ(errorCodes(afc.parameterDiagnostics()), std::vector<std::string>(3, "AFC_PARAMETER"));
+    EXPECT_EQ(afc.effectiveSettings().minimumTorque, 10.0) << "the default is used";
+    EXPECT_EQ(afc.effectiveSettings().measuringPeriodMs, 200.0);
+}
+
+TEST(AfcConfig, B062OnlyYesOrNo) {
+    bool value = false;
+    EXPECT_TRUE(parseYesNo("YES", value));
+    EXPECT_TRUE(value);
+    EXPECT_TRUE(parseYesNo("0", value));
+    EXPECT_FALSE(value);
+    EXPECT_FALSE(parseYesNo("maybe", value));
+    double parsed = -1;
+    EXPECT_FALSE(readAfcParameterValue("B062", "maybe", parsed));
+    EXPECT_EQ(parsed, -1.0);
+    EXPECT_TRUE(readAfcParameterValue("B062", "no", parsed));
+    EXPECT_EQ(parsed, 0.0);
+    EXPECT_FALSE(readAfcParameterValue("B064", "nan", parsed));
+    EXPECT_FALSE(readAfcParameterValue("B064", "1e999", parsed));
+    EXPECT_TRUE(readAfcParameterValue("B004", "anything", parsed)) << "not an AFC parameter";
+}
+
+}  // namespace
