@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <string_view>
 
 #include "cnc_core/machine_data/StandardPages.h"
 
@@ -43,6 +44,8 @@ const char* afcStatusCode(AfcStatus status) {
             return "AFC_BAD_PERIOD";
         case AfcStatus::FeedStopped:
             return "AFC_FEED_STOPPED";
+        case AfcStatus::MoveTooLong:
+            return "AFC_MOVE_TOO_LONG";
     }
     return "AFC_ERROR";
 }
@@ -67,6 +70,7 @@ void AdaptiveFeedControl::setStatus(int element, double value) {
 }
 
 void AdaptiveFeedControl::setSignal(const char* name, int value) {
+    (std::string_view(name) == "THMIS" ? thrustMissing_ : excessiveThrust_) = value != 0;
     if (!signals_) return;
     char signal[32];
     std::snprintf(signal, sizeof signal, "P%02dS%s", process_.index, name);
@@ -228,7 +232,8 @@ double AdaptiveFeedControl::takeExtraSeconds() {
 }
 
 AfcStatus AdaptiveFeedControl::measureIdleTorque(double feed, double speedFraction,
-                                                 double constantSeconds, bool speedConstant) {
+                                                 double constantSeconds, bool speedConstant,
+                                                 double engagement) {
     if (!parameters_.available)
         return refuse(AfcStatus::NotAvailable,
                       "ITM: adaptive feed control is not available (Bxx.062 = no)");
@@ -248,8 +253,8 @@ AfcStatus AdaptiveFeedControl::measureIdleTorque(double feed, double speedFracti
     const int samples = std::max(1, static_cast<int>(std::lround(period / kSampleSeconds)));
     double sum = 0.0;
     for (int i = 0; i < samples; ++i)
-        sum += model_.actualTorque(feed, speedFraction, 0.0);
-    const double idle = sum / samples - element(14);
+        sum += model_.actualTorque(feed, speedFraction, engagement, time_ + i * kSampleSeconds);
+    const double idle = sum / samples - stallCompensation();
     setStatus(5, idle);
     if (s.maximumIdleTorque != 0.0 && idle > s.maximumIdleTorque)
         return refuse(AfcStatus::Error509,
@@ -267,11 +272,23 @@ AfcStatus AdaptiveFeedControl::recordStallTorque(const std::string& axis, double
         std::max(1, static_cast<int>(std::lround(periodMs / 1000.0 / kSampleSeconds)));
     double sum = 0.0;
     for (int i = 0; i < samples; ++i)
-        sum += model_.actualTorque(feedWhileRecording, feedWhileRecording > 0 ? 0.5 : 0.0, 0.0);
-    const double stall = sum / samples;
-    stallTorques_[axis] = std::round(stall * 10.0);
-    if (axis == afcAxisName(effectiveSettings().referenceAxis)) setStatus(14, std::fabs(stall));
+        sum += model_.actualTorque(feedWhileRecording, feedWhileRecording > 0 ? 0.5 : 0.0, 0.0,
+                                   time_ + i * kSampleSeconds);
+    const double tenths = std::round(sum / samples * 10.0);  // P-7-3652 unit: 0.1 %
+    stallTorques_[axis] = tenths;
+    if (axis == afcAxisName(effectiveSettings().referenceAxis))
+        setStatus(14, std::fabs(tenths) / 10.0);
     return AfcStatus::Ok;
+}
+
+double AdaptiveFeedControl::stallCompensation() const {
+    const double shown = element(14);
+    auto found = stallTorques_.find(afcAxisName(effectiveSettings().referenceAxis));
+    if (found == stallTorques_.end()) return shown;
+    const double recorded = found->second / 10.0;
+    // 014 shows |P-7-3652| (seed 002 5.2); the torque formulas of Fig. 4-2,
+    // 5-5 and 5-7 subtract the measured stall torque itself, sign included.
+    return std::fabs(std::fabs(recorded) - shown) < 0.05 ? recorded : shown;
 }
 
 double AdaptiveFeedControl::measuredStallTorque(const std::string& axis) const {
@@ -294,12 +311,21 @@ double AdaptiveFeedControl::advance(double dt, double programmedFeed, double spe
     const AfcSettings s = effectiveSettings();
     const double factor = 1.0 - reduction_ / 100.0;
     const double feed = programmedFeed * factor;
-    const double actual = model_.actualTorque(feed, speedFraction * factor, engagement);
-    const double machining = actual - element(5) - element(14);
-    lastActual_ = actual;
-    lastMachining_ = machining;
+    const double actual = model_.actualTorque(feed, speedFraction * factor, engagement, time_);
+    const double machining = actual - element(5) - stallCompensation();
     reduction_ =
         std::clamp(reduction_ + s.amplification * (machining - s.limitingTorque) * dt, 0.0, 100.0);
+    afterControl(dt, actual, machining, s);
+    const double effective = programmedFeed * (1.0 - reduction_ / 100.0);
+    if (trend_.size() < kTrendLimit)
+        trend_.push_back({time_, actual, machining, reduction_, effective});
+    return error510_ ? 0.0 : effective;
+}
+
+void AdaptiveFeedControl::afterControl(double dt, double actual, double machining,
+                                       const AfcSettings& s) {
+    lastActual_ = actual;
+    lastMachining_ = machining;
     peakMachining_ = std::max(peakMachining_, machining);
     peakReduction_ = std::max(peakReduction_, reduction_);
     if (machining > s.minimumTorque) minimumExceeded_ = true;
@@ -308,22 +334,20 @@ double AdaptiveFeedControl::advance(double dt, double programmedFeed, double spe
     setSignal("EXCTH", reduction_ > s.maximumReduction ? 1 : 0);
     zeroFeedSeconds_ = reduction_ >= 100.0 ? zeroFeedSeconds_ + dt : 0.0;
     if (zeroFeedSeconds_ >= kZeroFeedLimitSeconds && s.maximumReduction < 100.0) raise510();
-    const double effective = programmedFeed * (1.0 - reduction_ / 100.0);
-    if (trend_.size() < kTrendLimit)
-        trend_.push_back({time_, actual, machining, reduction_, effective});
-    return error510_ ? 0.0 : effective;
 }
 
 }  // namespace mtc::core
 
 namespace mtc::core {
 
-void AdaptiveFeedControl::observe(double feed, double speedFraction, double engagement) {
-    lastActual_ = model_.actualTorque(feed, speedFraction, engagement);
-    lastMachining_ = lastActual_ - element(5) - element(14);
+void AdaptiveFeedControl::observe(double feed, double speedFraction, double engagement,
+                                  double offset) {
+    lastActual_ = model_.actualTorque(feed, speedFraction, engagement, time_ + offset);
+    lastMachining_ = lastActual_ - element(5) - stallCompensation();
 }
 
-AfcTrendSample AdaptiveFeedControl::trendSample(double time, double effectiveFeed) const {
+AfcTrendSample AdaptiveFeedControl::trendSample(double time, double effectiveFeed,
+                                                bool measuringIdle) const {
     const AfcSettings s = effectiveSettings();
     AfcTrendSample sample;
     sample.time = time;
@@ -337,7 +361,11 @@ AfcTrendSample AdaptiveFeedControl::trendSample(double time, double effectiveFee
     sample.peakReduction = peakReduction_;
     sample.maximumReduction = s.maximumReduction;
     sample.effectiveFeed = effectiveFeed;
+    sample.stallTorque = element(14);
     sample.active = active_;
+    sample.measuringIdle = measuringIdle;
+    sample.excessiveThrust = excessiveThrust_;
+    sample.thrustMissing = thrustMissing_;
     return sample;
 }
 

@@ -23,6 +23,7 @@ enum class AfcStatus {
     Error510,         ///< 100 % feed reduction for 20 ms
     BadPeriod,        ///< P-7-3651 period outside 0..60000 ms
     FeedStopped,      ///< 100 % reduction allowed (013 = 100 %) and the axes stand for too long
+    MoveTooLong,      ///< a move under G26 lasts longer than the simulation allows
 };
 
 /// "AFC_ERROR_510", "AFC_INCOMPATIBLE", ... ("" for Ok).
@@ -81,16 +82,24 @@ class AdaptiveFeedControl {
     /// control ("thread cutting (G33)", ...), nullptr otherwise.
     static const char* incompatibleFunction(int gCode);
 
+    /// The machine clock (s): the moment the next controller cycle, ITM
+    /// sample or stall torque sample belongs to. The simulated machine sets it
+    /// at the start of every move; advance() and holdSteady() move it on.
+    void setClock(double seconds) { time_ = seconds; }
+    double clock() const { return time_; }
+
     /// ITM: idling torque of the reference axis over the measuring period
-    /// (004 / Bxx.069) at `feed` after the acceleration phase; the block has
+    /// (004 / Bxx.069) from clock() on at `feed`; the block has
     /// `constantSeconds` at constant speed. 005 = mean(M_act - M_stall).
     /// Error 508 when the constant-speed part is shorter than the period or
     /// `speedConstant` is false; error 509 when 005 > 006 (006 != 0).
+    /// `engagement` of the tool while measuring (0: in air, as ITM should be).
     AfcStatus measureIdleTorque(double feed, double speedFraction, double constantSeconds,
-                                bool speedConstant = true);
+                                bool speedConstant = true, double engagement = 0.0);
     /// AXD(axis:P-7-3651)=period: stall torque of `axis` over `periodMs`
     /// (correct only when the axis stands still: `feedWhileRecording` 0).
-    /// For the reference axis 014 = |result|.
+    /// For the reference axis 014 = |result| (seed 002 5.2); the machining
+    /// and idling torques are compensated with the signed result (Fig. 5-7).
     AfcStatus recordStallTorque(const std::string& axis, double periodMs,
                                 double feedWhileRecording = 0.0);
     /// AXD(axis:P-7-3652): the last recorded stall torque in 0.1 % (0 if none).
@@ -102,9 +111,34 @@ class AdaptiveFeedControl {
     /// the control is off, 0 while error 510 is pending).
     double advance(double dt, double programmedFeed, double speedFraction, double engagement);
 
+    /// True when the controller would not change the feed reduction any
+    /// more at `programmedFeed` (the noise aside): 007 is at 010, or the
+    /// reduction stands at 0 % below the limit or at 100 % above it.
+    bool settled(double programmedFeed, double speedFraction, double engagement) const;
+    /// The slope of the machining torque over the feed reduction at the
+    /// present reduction (% torque per % reduction, >= 0; for step sizes).
+    double torqueSlope(double programmedFeed, double speedFraction, double engagement) const;
+    /// `seconds` of control in one step, for long moves (AfcMotion): the
+    /// reduction follows the noise-free torque with a linearised implicit
+    /// Euler step (stable for any step length; a settled controller keeps
+    /// its reduction), the clock, the zero-feed time of error 510, the
+    /// signals and peaks move on; `samples` (>= 1) noisy samples spread over
+    /// the span stand for the cycles and go to `recorder` (may be null).
+    /// Returns the feed the axes get at the end of the span.
+    double advanceSpan(double seconds, int samples, double programmedFeed, double speedFraction,
+                       double engagement, AfcTrendRecorder* recorder);
+    /// The feed reduction in force now (0 while G26 is off).
+    double effectiveReduction() const { return active_ ? reduction_ : 0.0; }
+
     /// An error of the machining (508, 509, 510, feed stopped) for the
     /// interpreter to report with the block that caused it.
     void raiseRuntimeError(AfcStatus status, std::string message);
+    /// The move of the block that raised the runtime error stopped after
+    /// `fraction` (0..1) of its path (AFC-012: the axes stand there).
+    void setStopFraction(double fraction) { stopFraction_ = fraction; }
+    /// Share of the path of the erroneous block's move that was travelled
+    /// (1 when it was not stopped); read with the runtime error.
+    double stopFraction() const { return stopFraction_; }
     /// True while a runtime error waits to be reported.
     bool runtimeErrorPending() const { return runtimeError_ != AfcStatus::Ok; }
     /// Hands the waiting runtime error over (status Ok when none); clears it.
@@ -117,11 +151,17 @@ class AdaptiveFeedControl {
     /// Extra seconds since the last call (the interpreter adds them to its clock).
     double takeExtraSeconds();
 
-    /// One torque sample of the reference axis while G26 is off (the trend
-    /// shows the machining before G26 and the ITM moves too): 011 stays.
-    void observe(double feed, double speedFraction, double engagement);
-    /// The state of the last advance()/observe() as a trend point at `time`.
-    AfcTrendSample trendSample(double time, double effectiveFeed) const;
+    /// One torque sample of the reference axis at clock() + `offset` while
+    /// G26 is off (the trend shows the machining before G26 and the ITM
+    /// moves too): 011 stays.
+    void observe(double feed, double speedFraction, double engagement, double offset = 0.0);
+    /// The state of the last advance()/observe() as a trend point at `time`;
+    /// `measuringIdle`: the sample lies in the measuring period of ITM.
+    AfcTrendSample trendSample(double time, double effectiveFeed, bool measuringIdle = false) const;
+    /// The stall torque the machining and idling torques are corrected by:
+    /// the signed P-7-3652 result of the reference axis while 014 still
+    /// shows its absolute value, else 014 as written (operator, MTD).
+    double stallCompensation() const;
 
     bool active() const { return active_; }
     /// G26, ITM or P-7-3651 was executed since construction.
@@ -141,6 +181,12 @@ class AdaptiveFeedControl {
     void setStatus(int element, double value);
     double element(int number) const;
     void raise510();
+    /// The noise-free machining torque (007) at reduction `reduction`.
+    double expectedMachining(double reduction, double programmedFeed, double speedFraction,
+                             double engagement) const;
+    /// 007, 011, peaks, THMIS memory, EXCTH and the zero-feed time after a
+    /// controller step of `dt` seconds that ended with `machining`.
+    void afterControl(double dt, double actual, double machining, const AfcSettings& settings);
 
     const ProcessConfig& process_;
     MachineDataStore& store_;
@@ -154,13 +200,16 @@ class AdaptiveFeedControl {
     bool active_ = false;
     bool error510_ = false;
     bool minimumExceeded_ = false;
+    bool excessiveThrust_ = false;  ///< PxxS.EXCTH as last set
+    bool thrustMissing_ = false;    ///< PxxS.THMIS as last set
     double reduction_ = 0.0;
     double peakMachining_ = 0.0;
     double peakReduction_ = 0.0;
     double zeroFeedSeconds_ = 0.0;
+    double stopFraction_ = 1.0;
     double lastActual_ = 0.0;     ///< S-0-0084 of the last cycle
     double lastMachining_ = 0.0;  ///< 007 of the last cycle
-    double time_ = 0.0;
+    double time_ = 0.0;           ///< machine clock, s (setClock)
     std::string message_;
     std::vector<AfcSample> trend_;
     AfcStatus runtimeError_ = AfcStatus::Ok;

@@ -2,72 +2,189 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 namespace mtc::core {
 namespace {
 
 constexpr double kSampleEverySeconds = 0.010;  // trend resolution
-constexpr int kMaxSamplesPerPlainMove = 2000;  // moves without G26: bounded cost
+constexpr int kMaxSamplesPerSpan = 2000;       // a long span or plain move: bounded samples
+/// 2 ms cycles while the controller reacts (20 s); after that spans share
+/// what is left of kAfcMaxStepsPerMove.
+constexpr std::size_t kFineCycles = kAfcMaxStepsPerMove / 2;
+
+/// The measuring period of ITM in the move, seconds after its start.
+struct ItmWindow {
+    bool measured = false;
+    double from = 0.0;
+    double to = 0.0;
+};
+
+/// Where the tool is in material at `share` of the path, `elapsed` seconds
+/// into the move (docs/decisions/machine-data.md AFC-017).
+double engagementAt(const AfcMoveInput& move, const ItmWindow& itm, double share, double elapsed,
+                    bool controlled) {
+    if (!move.feedMove) return 0.0;
+    if (share < move.cutFrom || share >= move.cutTo) return 0.0;
+    if (!itm.measured || move.materialKnown) return move.engagement;
+    // No stock tells where the material is: an ITM block moves in air (what
+    // ITM is for); with G26 in the same block the cut starts after the
+    // measurement (seed 002 ch. 3: "right before machining").
+    return controlled && elapsed >= itm.to ? move.engagement : 0.0;
+}
+
+int samplesFor(double seconds) {
+    return std::clamp(static_cast<int>(seconds / kSampleEverySeconds), 1, kMaxSamplesPerSpan);
+}
 
 /// ITM of the move: 508 / 509 become runtime errors. Returns false when the
 /// move must stop after the measurement (509).
-bool measureIdle(AdaptiveFeedControl& afc, const AfcMoveInput& move, AfcMoveResult& result) {
+bool measureIdle(AdaptiveFeedControl& afc, const AfcMoveInput& move, ItmWindow& window,
+                 AfcMoveResult& result) {
     afc.requestIdleMeasurement(false);
     const double feed = move.plannedSeconds > 0 ? move.length / move.plannedSeconds * 60.0 : 0.0;
     const double constant = std::max(0.0, move.plannedSeconds - 2.0 * move.accelerationSeconds);
-    const AfcStatus status = afc.measureIdleTorque(feed, move.speedFraction, constant, true);
+    const double period = afc.effectiveSettings().measuringPeriodMs / 1000.0;
+    window = {true, move.accelerationSeconds, move.accelerationSeconds + period};
+    const double share = move.plannedSeconds > 0
+                             ? std::min(1.0, (window.from + window.to) / 2 / move.plannedSeconds)
+                             : 0.0;
+    afc.setClock(move.startTime + window.from);
+    const AfcStatus status =
+        afc.measureIdleTorque(feed, move.speedFraction, constant, true,
+                              engagementAt(move, window, share, window.from, afc.active()));
     if (status == AfcStatus::Ok) return true;
     afc.raiseRuntimeError(status, afc.message());
-    if (status != AfcStatus::Error509) return true;  // 508: the block is known short at its end
-    const double measured =
-        move.accelerationSeconds + afc.effectiveSettings().measuringPeriodMs / 1000.0;
-    result.fraction = move.plannedSeconds > 0 ? std::min(1.0, measured / move.plannedSeconds) : 1.0;
+    if (status != AfcStatus::Error509) {  // 508: the block is known short at its end
+        window.measured = false;          // nothing was measured
+        return true;
+    }
+    result.fraction =
+        move.plannedSeconds > 0 ? std::min(1.0, window.to / move.plannedSeconds) : 1.0;
     result.seconds = result.fraction * move.plannedSeconds;
     return false;
 }
 
 /// A move without G26: the torque is only observed for the trend.
-void observePlainMove(AdaptiveFeedControl& afc, const AfcMoveInput& move,
+void observePlainMove(AdaptiveFeedControl& afc, const AfcMoveInput& move, const ItmWindow& itm,
                       AfcTrendRecorder* recorder) {
     if (!recorder || move.plannedSeconds <= 0) return;
-    const int samples = std::clamp(static_cast<int>(move.plannedSeconds / kSampleEverySeconds), 1,
-                                   kMaxSamplesPerPlainMove);
+    const int samples = samplesFor(move.plannedSeconds);
     const double step = move.plannedSeconds / samples;
-    const double engagement = move.feedMove ? move.engagement : 0.0;
     const double feed = move.length / move.plannedSeconds * 60.0;
+    afc.setClock(move.startTime);
     for (int i = 1; i <= samples; ++i) {
-        afc.observe(feed, move.speedFraction, engagement);
-        recorder->add(afc.trendSample(move.startTime + i * step, feed));
+        const double elapsed = i * step;
+        const double share = elapsed / move.plannedSeconds;
+        afc.observe(feed, move.speedFraction, engagementAt(move, itm, share, elapsed, false),
+                    elapsed);
+        const bool measuring = itm.measured && elapsed >= itm.from && elapsed <= itm.to;
+        recorder->add(afc.trendSample(move.startTime + elapsed, feed, measuring));
     }
 }
 
-/// G26 on a feed move: the I controller cycle by cycle.
-void controlledMove(AdaptiveFeedControl& afc, const AfcMoveInput& move, AfcTrendRecorder* recorder,
-                    AfcMoveResult& result) {
-    double travelled = 0.0, seconds = 0.0, standing = 0.0, sinceSample = 0.0;
-    while (travelled < move.length) {
-        const double feed =
-            afc.advance(kAfcCycleSeconds, move.feed, move.speedFraction, move.engagement);
-        seconds += kAfcCycleSeconds;
-        travelled += feed / 60.0 * kAfcCycleSeconds;
-        sinceSample += kAfcCycleSeconds;
-        if (recorder && sinceSample >= kSampleEverySeconds - 1e-9) {
-            recorder->add(afc.trendSample(move.startTime + seconds, feed));
-            sinceSample = 0.0;
-        }
+/// Seconds from `elapsed` / `travelled` until the engagement may change or
+/// the path ends, at `feed` mm/min.
+double secondsToBoundary(const AfcMoveInput& move, const ItmWindow& itm, double travelled,
+                         double elapsed, double feed) {
+    const double speed = feed / 60.0;
+    double until = (move.length - travelled) / speed;
+    for (double share : {move.cutFrom, move.cutTo}) {
+        const double distance = share * move.length - travelled;
+        if (distance > 1e-9) until = std::min(until, distance / speed);
+    }
+    if (itm.measured && elapsed < itm.to) until = std::min(until, itm.to - elapsed);
+    return std::max(until, 0.0);
+}
+
+/// The state of one controlled move.
+struct Progress {
+    double travelled = 0.0;  ///< mm
+    double elapsed = 0.0;    ///< s
+    double standing = 0.0;   ///< s at feed 0
+    double sinceSample = 0.0;
+    std::size_t steps = 0;
+};
+
+/// One 2 ms controller cycle.
+void fineCycle(AdaptiveFeedControl& afc, const AfcMoveInput& move, const ItmWindow& itm,
+               double engagement, AfcTrendRecorder* recorder, Progress& p) {
+    const double feed = afc.advance(kAfcCycleSeconds, move.feed, move.speedFraction, engagement);
+    p.elapsed += kAfcCycleSeconds;
+    p.travelled += feed / 60.0 * kAfcCycleSeconds;
+    p.sinceSample += kAfcCycleSeconds;
+    p.standing = feed <= 0.0 ? p.standing + kAfcCycleSeconds : 0.0;
+    ++p.steps;
+    if (recorder && p.sinceSample >= kSampleEverySeconds - 1e-9) {
+        const bool measuring = itm.measured && p.elapsed >= itm.from && p.elapsed <= itm.to;
+        recorder->add(afc.trendSample(move.startTime + p.elapsed, feed, measuring));
+        p.sinceSample = 0.0;
+    }
+}
+
+/// A span of time in one step (AdaptiveFeedControl::advanceSpan): to the
+/// next boundary when the controller is settled (or the step budget is
+/// spent), else a share of the remaining time that keeps the steps bounded.
+void span(AdaptiveFeedControl& afc, const AfcMoveInput& move, const ItmWindow& itm,
+          double engagement, bool settled, AfcTrendRecorder* recorder, Progress& p) {
+    const double reduction = afc.effectiveReduction();
+    const double feed = afc.errorPending() ? 0.0 : move.feed * (1.0 - reduction / 100.0);
+    double seconds = 0.0;
+    if (feed <= 0.0) {
+        seconds = std::max(kAfcCycleSeconds, kAfcStandstillLimitSeconds - p.standing);
+    } else {
+        seconds = secondsToBoundary(move, itm, p.travelled, p.elapsed, feed);
+        const std::size_t left = kAfcMaxStepsPerMove > p.steps ? kAfcMaxStepsPerMove - p.steps : 1;
+        if (!settled && left > 1) seconds = std::max(kAfcCycleSeconds, seconds / left);
+    }
+    seconds = std::min(seconds, kAfcMaxMoveSeconds - p.elapsed);
+    const double end = afc.advanceSpan(seconds, samplesFor(seconds), move.feed, move.speedFraction,
+                                       engagement, recorder);
+    const double meanFeed = (feed + end) / 2.0;
+    p.travelled = std::min(move.length, p.travelled + meanFeed / 60.0 * seconds);
+    p.elapsed += seconds;
+    p.standing = end <= 0.0 ? p.standing + seconds : 0.0;
+    ++p.steps;
+}
+
+/// G26 on a feed move: the I controller until the path is travelled.
+void controlledMove(AdaptiveFeedControl& afc, const AfcMoveInput& move, const ItmWindow& itm,
+                    AfcTrendRecorder* recorder, AfcMoveResult& result) {
+    Progress p;
+    afc.setClock(move.startTime);
+    while (p.travelled < move.length - 1e-9) {
+        const double engagement =
+            engagementAt(move, itm, p.travelled / move.length, p.elapsed, true);
+        const bool settled = afc.settled(move.feed, move.speedFraction, engagement);
+        const bool standing = afc.effectiveReduction() >= 100.0;  // 510 needs its 20 ms
+        if ((!settled || standing) && p.steps < kFineCycles)
+            fineCycle(afc, move, itm, engagement, recorder, p);
+        else
+            span(afc, move, itm, engagement, settled || p.steps + 1 >= kAfcMaxStepsPerMove,
+                 recorder, p);
         if (afc.errorPending()) break;  // error 510: the axes stop
-        standing = feed <= 0.0 ? standing + kAfcCycleSeconds : 0.0;
-        if (standing >= kAfcStandstillLimitSeconds) {
+        if (p.standing >= kAfcStandstillLimitSeconds) {
             afc.raiseRuntimeError(AfcStatus::FeedStopped,
                                   "the feed stood at 0 (100 % reduction allowed by 013) for " +
                                       std::to_string(static_cast<int>(kAfcStandstillLimitSeconds)) +
                                       " s; the simulation stops the program");
             break;
         }
+        if (p.elapsed >= kAfcMaxMoveSeconds - 1e-9) {
+            afc.raiseRuntimeError(
+                AfcStatus::MoveTooLong,
+                "the move under G26 would last longer than " +
+                    std::to_string(static_cast<int>(kAfcMaxMoveSeconds)) +
+                    " s of simulated time; the simulation stops it (program a shorter path or a "
+                    "higher feed)");
+            break;
+        }
     }
     result.adapted = true;
-    result.seconds = seconds;
-    result.fraction = move.length > 0 ? std::min(1.0, travelled / move.length) : 1.0;
+    result.seconds = p.elapsed;
+    result.steps = p.steps;
+    const bool arrived = p.travelled >= move.length - 1e-9;  // the loop's own tolerance
+    result.fraction = arrived || move.length <= 0 ? 1.0 : p.travelled / move.length;
 }
 
 double parameter(const ProcessConfig& process, const char* key, double fallback) {
@@ -81,14 +198,17 @@ AfcMoveResult simulateAfcMove(AdaptiveFeedControl& afc, const AfcMoveInput& move
                               AfcTrendRecorder* recorder) {
     AfcMoveResult result;
     result.seconds = move.plannedSeconds;
+    ItmWindow itm;
     bool goOn = true;
-    if (afc.idleMeasurementRequested()) goOn = measureIdle(afc, move, result);
+    if (afc.idleMeasurementRequested()) goOn = measureIdle(afc, move, itm, result);
     if (goOn && afc.active() && move.feedMove && move.length > 0 && move.feed > 0 &&
         !afc.errorPending())
-        controlledMove(afc, move, recorder, result);
+        controlledMove(afc, move, itm, recorder, result);
     else if (goOn)
-        observePlainMove(afc, move, recorder);
+        observePlainMove(afc, move, itm, recorder);
     if (result.seconds > 0) result.meanFeed = move.length * result.fraction / result.seconds * 60.0;
+    if (result.fraction < 1.0) afc.setStopFraction(result.fraction);
+    afc.setClock(move.startTime + result.seconds);
     afc.addExtraSeconds(result.seconds - move.plannedSeconds);
     return result;
 }

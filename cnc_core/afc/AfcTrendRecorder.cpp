@@ -58,7 +58,7 @@ std::string AfcTrendRecorder::csv() const {
     std::string text =
         "time_s,torque_actual_pct,machining_torque_pct,idle_torque_pct,limiting_torque_pct,"
         "minimum_torque_pct,maximum_idle_torque_pct,feed_reduction_pct,peak_reduction_pct,"
-        "maximum_reduction_pct,effective_feed_mm_min,g26\n";
+        "maximum_reduction_pct,effective_feed_mm_min,g26,stall_torque_pct,itm,excth,thmis\n";
     for (std::size_t i = 0; i < count_; ++i) {
         const AfcTrendSample& s = at(i);
         appendFixed(text, s.time, 4);
@@ -68,7 +68,11 @@ std::string AfcTrendRecorder::csv() const {
             text += ',';
             appendFixed(text, value, 3);
         }
-        text += s.active ? ",1\n" : ",0\n";
+        text += s.active ? ",1," : ",0,";
+        appendFixed(text, s.stallTorque, 3);
+        for (bool flag : {s.measuringIdle, s.excessiveThrust, s.thrustMissing})
+            text += flag ? ",1" : ",0";
+        text += '\n';
     }
     return text;
 }

@@ -22,7 +22,11 @@ struct AfcTrendSample {
     double peakReduction = 0.0;      ///< highest 011 since G26, %
     double maximumReduction = 0.0;   ///< 013 / Bxx.067, %
     double effectiveFeed = 0.0;      ///< mm/min the axes get
+    double stallTorque = 0.0;        ///< 014
     bool active = false;             ///< G26 in force
+    bool measuringIdle = false;      ///< inside the measuring period of ITM
+    bool excessiveThrust = false;    ///< PxxS.EXCTH
+    bool thrustMissing = false;      ///< PxxS.THMIS
 };
 
 /// Bounded ring buffer of trend samples, filled by the simulated machine

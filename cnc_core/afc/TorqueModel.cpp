@@ -5,19 +5,18 @@
 
 namespace mtc::core {
 
-TorqueModel::TorqueModel(TorqueModelParameters parameters) : p_(parameters), state_(0) {
-    reseed(p_.seed);
-}
+TorqueModel::TorqueModel(TorqueModelParameters parameters) : p_(parameters) {}
 
-void TorqueModel::reseed(std::uint64_t seed) {
-    state_ = seed ? seed : 0x9E3779B97F4A7C15ull;  // xorshift must not start at 0
-}
-
-double TorqueModel::noise() {
-    state_ ^= state_ << 13;
-    state_ ^= state_ >> 7;
-    state_ ^= state_ << 17;
-    const double unit = static_cast<double>(state_ >> 11) / 9007199254740992.0;  // [0, 1)
+double TorqueModel::noise(double seconds) const {
+    // splitmix64 of (seed, millisecond): stateless, so the value depends on
+    // the moment only, not on how many samples were taken before.
+    const double ms = seconds > 0.0 ? std::min(seconds, 1e15) * 1000.0 : 0.0;  // NaN: 0
+    const auto tick = static_cast<std::uint64_t>(std::llround(ms));
+    std::uint64_t z = p_.seed + 0x9E3779B97F4A7C15ull * (tick + 1);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    z ^= z >> 31;
+    const double unit = static_cast<double>(z >> 11) / 9007199254740992.0;  // [0, 1)
     return (2.0 * unit - 1.0) * p_.noiseAmplitude;
 }
 
@@ -32,8 +31,9 @@ double TorqueModel::expectedTorque(double feed, double speedFraction, double eng
            p_.constantLoad;
 }
 
-double TorqueModel::actualTorque(double feed, double speedFraction, double engagement) {
-    return expectedTorque(feed, speedFraction, engagement) + noise();
+double TorqueModel::actualTorque(double feed, double speedFraction, double engagement,
+                                 double seconds) const {
+    return expectedTorque(feed, speedFraction, engagement) + noise(seconds);
 }
 
 }  // namespace mtc::core

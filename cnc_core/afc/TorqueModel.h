@@ -26,27 +26,28 @@ struct TorqueModelParameters {
 ///   M_cut = cuttingTorque * engagement * (feed / referenceFeed)^feedExponent
 ///   M_load = constantLoad (while the axis is held, whatever the feed)
 /// Engagement 0 = cutting air, 1 = the full cut the coefficients describe.
-/// The noise comes from a xorshift generator: the same seed gives the same run.
+/// The noise is a function of the seed and the machine time (one value per
+/// millisecond, a counter-based generator): whoever asks at the same moment
+/// of the same run gets the same value, so the CLI and the panel see the same
+/// noise however often they sample (trend, controller, ITM).
 class TorqueModel {
   public:
     explicit TorqueModel(TorqueModelParameters parameters = {});
 
     const TorqueModelParameters& parameters() const { return p_; }
-    /// One sample of the actual torque. `feed` mm/min (effective),
-    /// `speedFraction` 0..1 of the axis' maximum speed, `engagement` >= 0.
-    double actualTorque(double feed, double speedFraction, double engagement);
+    /// The actual torque at machine time `seconds`. `feed` mm/min
+    /// (effective), `speedFraction` 0..1 of the axis' maximum speed,
+    /// `engagement` >= 0.
+    double actualTorque(double feed, double speedFraction, double engagement, double seconds) const;
     /// The torque without noise (for tests and the trend's expectations).
     double expectedTorque(double feed, double speedFraction, double engagement) const;
+    /// The noise at machine time `seconds` (uniform in ± noiseAmplitude).
+    double noise(double seconds) const;
     /// Changes the feed-independent load (a jam appears or goes away).
     void setConstantLoad(double percent) { p_.constantLoad = percent; }
-    /// Starts the noise sequence again.
-    void reseed(std::uint64_t seed);
 
   private:
-    double noise();
-
     TorqueModelParameters p_;
-    std::uint64_t state_;
 };
 
 }  // namespace mtc::core

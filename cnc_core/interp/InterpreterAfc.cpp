@@ -5,6 +5,7 @@
 
 #include "cnc_core/afc/AdaptiveFeedControl.h"
 #include "cnc_core/interp/Interpreter.h"
+#include "cnc_core/interp/MotionPath.h"
 
 namespace mtc::core {
 namespace {
@@ -92,8 +93,14 @@ bool Interpreter::adaptiveFeedAfterMotion(const Program& program, DiagnosticList
         modalChanged();
     }
     std::string message;
+    const double reached = afc_->stopFraction();
+    afc_->setStopFraction(1.0);
     const AfcStatus status = afc_->takeRuntimeError(message);
     if (status == AfcStatus::Ok) return true;
+    // AFC-012: the axes stand where the machine stopped them, on the path of
+    // the block's move; the state (and the final position) says so too.
+    if (reached < 1.0 && options_.output.motion)
+        takeMachinePositions(motionPointAt(motion_, reached));
     const SourceLocation where = sinkLocation(program, state_.block);
     diagnostics.error(afcStatusCode(status), where, message);
     return false;

@@ -3,42 +3,15 @@
 #include <algorithm>
 #include <cmath>
 
+#include "cnc_core/afc/AfcMaterial.h"
 #include "cnc_core/afc/AfcMotion.h"
+#include "cnc_core/interp/MotionPath.h"
 
 namespace mtc::core {
 
 namespace {
 
 constexpr std::size_t kAuxKept = 200;
-constexpr double kPi = 3.14159265358979323846;
-
-/// Sweep angle (radians, > 0) of an arc from start to end around the centre.
-double sweep(const Motion& m) {
-    const int a = m.planeAxis1, b = m.planeAxis2;
-    const double a0 = std::atan2(m.start[b] - m.center2, m.start[a] - m.center1);
-    const double a1 = std::atan2(m.end[b] - m.center2, m.end[a] - m.center1);
-    double delta = m.type == MotionType::ArcCCW ? a1 - a0 : a0 - a1;
-    while (delta <= 1e-12)
-        delta += 2 * kPi;  // equal angles: a full circle
-    return delta;
-}
-
-double pathLength(const Motion& m) {
-    double other = 0.0;
-    for (int i = 0; i < m.axisCount; ++i) {
-        if (m.type != MotionType::Linear && m.type != MotionType::Rapid &&
-            (i == m.planeAxis1 || i == m.planeAxis2))
-            continue;
-        const double d = m.end[i] - m.start[i];
-        other += d * d;
-    }
-    if (m.type == MotionType::Linear || m.type == MotionType::Rapid) return std::sqrt(other);
-    if (m.planeAxis1 < 0 || m.planeAxis2 < 0) return std::sqrt(other);
-    const double radius =
-        std::hypot(m.start[m.planeAxis1] - m.center1, m.start[m.planeAxis2] - m.center2);
-    const double arc = radius * sweep(m);
-    return std::sqrt(arc * arc + other);
-}
 
 }  // namespace
 
@@ -55,19 +28,26 @@ double motionSeconds(const Motion& motion, const ProcessConfig& config) {
         return slowest;
     }
     if (motion.feed <= 0) return 0.0;
-    return pathLength(motion) / motion.feed * 60.0;
+    return motionPathLength(motion) / motion.feed * 60.0;
 }
 
-SimulatedMachine::SimulatedMachine(const ProcessConfig& config) : config_(config) {}
+SimulatedMachine::SimulatedMachine(const ProcessConfig& config)
+    : config_(config), material_(std::make_unique<AfcMaterial>(config)) {}
+
+SimulatedMachine::~SimulatedMachine() = default;
 
 void SimulatedMachine::motion(const Motion& m) {
     const double planned = motionSeconds(m, config_);
     ++motions_;
     lastAdapted_ = false;
+    lastFraction_ = 1.0;
     lastFeed_ =
-        m.type == MotionType::Rapid && planned > 0 ? pathLength(m) / planned * 60.0 : m.feed;
-    const bool adaptive = afc_ && afc_->available() && planned > 0 &&
-                          (m.type != MotionType::Rapid || afc_->idleMeasurementRequested());
+        m.type == MotionType::Rapid && planned > 0 ? motionPathLength(m) / planned * 60.0 : m.feed;
+    // G26 controls, ITM measures, the trend observes the feed moves; with
+    // none of these the move is a plain one (same result, no cost).
+    const bool observed = afc_ && (afc_->active() || afc_->idleMeasurementRequested() ||
+                                   (recorder_ && m.type != MotionType::Rapid));
+    const bool adaptive = observed && afc_->available() && planned > 0;
     if (adaptive) {
         seconds_ += adaptiveMove(m, planned);
         return;
@@ -75,6 +55,7 @@ void SimulatedMachine::motion(const Motion& m) {
     seconds_ += planned;
     for (int i = 0; i < m.axisCount && i < kMaxAxes; ++i)
         position_[i] = m.end[i];
+    if (afc_) afc_->setClock(seconds_);
 }
 
 void SimulatedMachine::attachAdaptiveFeed(AdaptiveFeedControl* afc, AfcTrendRecorder* recorder) {
@@ -94,7 +75,7 @@ double SimulatedMachine::referenceSpeedFraction(const Motion& m) const {
                        : 0.0;
         if (significance < 10 && axis.name == name) {
             const double travel = std::abs(m.end[i] - m.start[i]);
-            const double length = pathLength(m);
+            const double length = motionPathLength(m);
             const double feed = length > 0 ? lastFeed_ * travel / length : 0.0;
             return axis.maxVelocity > 0 ? feed / axis.maxVelocity : 0.0;
         }
@@ -115,19 +96,26 @@ double SimulatedMachine::accelerationSeconds(const Motion& m, double feed) const
 
 double SimulatedMachine::adaptiveMove(const Motion& m, double planned) {
     AfcMoveInput move;
-    move.length = pathLength(m);
+    move.length = motionPathLength(m);
     move.feed = m.type == MotionType::Rapid ? lastFeed_ : m.feed;
     move.plannedSeconds = planned;
     move.accelerationSeconds = accelerationSeconds(m, lastFeed_);
     move.speedFraction = referenceSpeedFraction(m);
     move.engagement = cuttingEngagement(config_);
+    move.materialKnown = material_->known();
+    const MaterialShare share = material_->along(m);
+    move.cutFrom = share.from;
+    move.cutTo = share.to;
     move.feedMove = m.type != MotionType::Rapid;
     move.startTime = seconds_;
     const AfcMoveResult result = simulateAfcMove(*afc_, move, recorder_);
+    // AFC-012: after 509 / 510 the axes stand where they stopped, on the path.
+    const std::array<double, kMaxAxes> reached = motionPointAt(m, result.fraction);
     for (int i = 0; i < m.axisCount && i < kMaxAxes; ++i)
-        position_[i] = m.start[i] + (m.end[i] - m.start[i]) * result.fraction;
+        position_[i] = reached[i];
     lastFeed_ = result.meanFeed;
     lastAdapted_ = result.adapted;
+    lastFraction_ = result.fraction;
     return result.seconds;
 }
 
@@ -140,6 +128,7 @@ void SimulatedMachine::auxiliary(const AuxOutput& output) {
 
 void SimulatedMachine::dwell(const SourceLocation&, double seconds) {
     if (seconds > 0) seconds_ += seconds;
+    if (afc_) afc_->setClock(seconds_);
 }
 
 void SimulatedMachine::command(const SourceLocation&, const std::string&, const std::string&) {}
@@ -153,6 +142,7 @@ void SimulatedMachine::reset() {
     seconds_ = 0.0;
     motions_ = 0;
     aux_.clear();
+    if (afc_) afc_->setClock(0.0);
 }
 
 }  // namespace mtc::core

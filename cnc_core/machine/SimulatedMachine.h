@@ -1,6 +1,8 @@
 #pragma once
 
+#include <array>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "cnc_core/interp/MachineSink.h"
@@ -9,6 +11,7 @@
 namespace mtc::core {
 
 class AdaptiveFeedControl;
+class AfcMaterial;
 class AfcTrendRecorder;
 
 /// Simulated duration of one move in seconds: feed moves take their path
@@ -25,6 +28,9 @@ double motionSeconds(const Motion& motion, const ProcessConfig& config);
 class SimulatedMachine : public MachineSink {
   public:
     explicit SimulatedMachine(const ProcessConfig& config);
+    ~SimulatedMachine() override;
+    SimulatedMachine(const SimulatedMachine&) = delete;
+    SimulatedMachine& operator=(const SimulatedMachine&) = delete;
 
     void motion(const Motion& motion) override;
     void auxiliary(const AuxOutput& output) override;
@@ -51,6 +57,9 @@ class SimulatedMachine : public MachineSink {
     double lastMoveFeed() const { return lastFeed_; }
     /// The last move was slowed down by G26.
     bool lastMoveAdapted() const { return lastAdapted_; }
+    /// Share of the last move's path the axes travelled (< 1: an error of
+    /// adaptive feed control stopped them; position() says where).
+    double lastMoveFraction() const { return lastFraction_; }
 
   private:
     /// The move under adaptive feed control; returns its duration and
@@ -62,9 +71,11 @@ class SimulatedMachine : public MachineSink {
     const ProcessConfig& config_;
     AdaptiveFeedControl* afc_ = nullptr;
     AfcTrendRecorder* recorder_ = nullptr;
-    std::array<double, 4> spindleSpeed_{};  ///< last S per spindle 1..3 (rpm)
+    std::unique_ptr<AfcMaterial> material_;  ///< where the raw part is (engagement)
+    std::array<double, 4> spindleSpeed_{};   ///< last S per spindle 1..3 (rpm)
     double lastFeed_ = 0.0;
     bool lastAdapted_ = false;
+    double lastFraction_ = 1.0;
     std::array<double, kMaxAxes> position_{};
     double seconds_ = 0.0;
     std::uint64_t motions_ = 0;

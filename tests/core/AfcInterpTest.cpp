@@ -5,6 +5,7 @@
 // deactivation at program end and control reset, the trend recorder.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <memory>
 
 #include "InterpTestSupport.h"
@@ -21,12 +22,20 @@ namespace {
 using namespace mtc::core;
 using namespace mtc::test;
 
+/// Process `index` of the demo cell; without its raw part (stock) unless
+/// `withStock`: then every feed move cuts (AFC-017).
+ProcessConfig demoProcess(int index, bool withStock) {
+    ProcessConfig process = *demoCell().process(index);
+    if (!withStock) process.stock.clear();
+    return process;
+}
+
 /// The demo mill on a simulated machine with adaptive feed control wired as
 /// in the panel (CellSession) and the CLI.
 struct AfcCell {
     explicit AfcCell(std::map<std::string, double> torqueModel = {}, int processIndex = 0,
-                     std::map<std::string, std::string> parameters = {})
-        : process(*demoCell().process(processIndex)),
+                     std::map<std::string, std::string> parameters = {}, bool withStock = false)
+        : process(demoProcess(processIndex, withStock)),
           data(std::make_shared<MachineDataStore>(demoCell())),
           machine(process),
           recorder(5000) {
@@ -340,6 +349,108 @@ TEST(AfcConfig, TorqueModelSection) {
         "[process 0]\n[process 0 axis X]\n[process 0 torque-model]\nwear = 3\ncutting = x\n");
     EXPECT_EQ(errorCodes(bad.diagnostics),
               (std::vector<std::string>{"CFG_TORQUE_MODEL", "CFG_TORQUE_MODEL"}));
+}
+
+TEST(AfcInterp, AfterError509TheStateStandsWhereTheAxesStopped) {
+    // AFC-012 (regression): the final position was the programmed end point.
+    AfcCell cell;
+    const RunResult result = cell.run(
+        "N0010 S1=4000 M3\n"
+        "N0020 MTD(30,0,2)=10 MTD(30,0,6)=2.0\n"
+        "N0030 G1 X100 F1000 ITM\n"
+        "N0040 M30\n");
+    ASSERT_EQ(errorCodes(result.diagnostics), std::vector<std::string>{"AFC_ERROR_509"});
+    const double stopped = cell.machine.position(0);
+    EXPECT_GT(stopped, 1.0);   // acceleration and 200 ms measuring at F1000 ...
+    EXPECT_LT(stopped, 10.0);  // ... about 3.4 mm
+    EXPECT_DOUBLE_EQ(cell.interpreter->state().modal.machine[0], stopped);
+    EXPECT_DOUBLE_EQ(cell.interpreter->programmedPosition(0), stopped);
+}
+
+TEST(AfcInterp, AfterError510OnAnArcTheAxesStandOnTheArc) {
+    AfcCell cell({{"load", 200.0}});
+    const RunResult result = cell.run(
+        "N0010 S1=4000 M3\n"
+        "N0020 G1 X0 Y0 F1000\n"
+        "N0030 G2 G26 X100 Y0 I50 J0\n"
+        "N0040 M30\n");
+    ASSERT_EQ(errorCodes(result.diagnostics), std::vector<std::string>{"AFC_ERROR_510"});
+    const auto& machine = cell.interpreter->state().modal.machine;
+    EXPECT_DOUBLE_EQ(machine[0], cell.machine.position(0));
+    EXPECT_DOUBLE_EQ(machine[1], cell.machine.position(1));
+    EXPECT_GT(machine[1], 1.0) << "on the arc above its chord";
+    EXPECT_NEAR(std::hypot(machine[0] - 50.0, machine[1]), 50.0, 1e-9);
+}
+
+TEST(AfcInterp, AMoveLongerThanAnHourUnderG26StopsWithADiagnostic) {
+    // Regression: 400 mm at F1 (24000 s) cost a CPU second per 2 million cycles.
+    AfcCell cell;
+    const RunResult result = cell.run("N0010 S1=4000 M3\nN0020 G1 G26 X400 F1\nN0030 M30\n");
+    ASSERT_EQ(errorCodes(result.diagnostics), std::vector<std::string>{"AFC_MOVE_TOO_LONG"});
+    EXPECT_EQ(result.diagnostics.items().back().where.block, "N0020");
+    EXPECT_NEAR(cell.machine.position(0), 60.0, 1e-6);  // 3600 s at 1 mm/min
+    EXPECT_NEAR(cell.interpreter->programmedPosition(0), 60.0, 1e-6);
+    EXPECT_NEAR(cell.machine.seconds(), kAfcMaxMoveSeconds, 1.0);
+}
+
+TEST(AfcInterp, ANegativeStallTorqueIsCompensatedWithItsSign) {
+    // An inclined axis pulling with -5 %: 014 shows 5 %, but the idling and
+    // machining torques subtract -5 % (seed 002 Fig. 5-5 / 5-7), so the run
+    // is the same as on an axis without stall torque.
+    const char* const program =
+        "N0010 S1=4000 M3\n"
+        "N0020 AXD(S1:P-7-3651)=300\n"
+        "N0030 G0 X400 ITM\n"
+        "N0040 G1 G26 X0 F1500\n"
+        "N0050 M30\n";
+    AfcCell inclined({{"stall", -5.0}, {"noise", 0.0}});
+    AfcCell level({{"noise", 0.0}});
+    inclined.load(program);
+    level.load(program);
+    inclined.runThrough(40);
+    level.runThrough(40);
+    EXPECT_DOUBLE_EQ(inclined.md(14), 5.0);
+    EXPECT_NEAR(inclined.md(5), 8.0, 1e-9);  // friction only (with |014|: 0)
+    EXPECT_NEAR(inclined.md(5), level.md(5), 1e-9);
+    EXPECT_NEAR(inclined.md(7), level.md(7), 1e-9);
+    EXPECT_NEAR(inclined.machine.lastMoveFeed(), level.machine.lastMoveFeed(), 1e-6);
+}
+
+TEST(AfcInterp, MovesInTheAirAreIdleAndTheTrendAgreesWithElement005) {
+    // With the raw part of the demo mill (G54 plate X0..X100, Y0..Y60, Z-12..0).
+    AfcCell cell({}, 0, {}, true);
+    cell.load(
+        "N0001 G0 G17 G54 G90 X-30 Y30 Z50\n"
+        "N0002 S4000 M3\n"
+        "N0003 Z2\n"
+        "N0004 G1 X-10 F1000 ITM\n"
+        "N0005 Z-4 F300\n"
+        "N0006 G26 X25 F800\n"
+        "N0007 X100 F2000\n"
+        "N0008 G25\n"
+        "N0009 M30\n");
+    cell.runThrough(3);
+    const double itmStart = cell.machine.seconds();
+    cell.runThrough(4);
+    const double itmEnd = cell.machine.seconds();
+    cell.runThrough(6);
+    const double slotEnd = cell.machine.seconds();
+    const double idle = cell.md(5);
+    EXPECT_NEAR(idle, 8.0, 0.5);
+    int measuring = 0, inAir = 0, cutting = 0;
+    for (const AfcTrendSample& s : cell.recorder.samples()) {
+        if (s.time > itmStart && s.time <= itmEnd) {
+            EXPECT_NEAR(s.torqueActual, idle, 2.1) << "ITM block at " << s.time;
+            measuring += s.measuringIdle ? 1 : 0;
+        }
+        if (s.time > itmEnd && s.time <= slotEnd && s.active) {
+            inAir += s.machiningTorque < 2.1 ? 1 : 0;
+            cutting += s.machiningTorque > 10.0 ? 1 : 0;
+        }
+    }
+    EXPECT_GE(measuring, 15);  // 200 ms measuring period, a sample every 10 ms
+    EXPECT_GT(inAir, 10);      // X-10 .. X0: in the air before the plate
+    EXPECT_GT(cutting, 10);    // X0 .. X25: in the plate
 }
 
 }  // namespace
