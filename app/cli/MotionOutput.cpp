@@ -40,16 +40,27 @@ const std::string& MotionOutput::axisName(int index) const {
 }
 
 bool MotionOutput::adaptedMotion(const core::Motion& motion) {
-    if (!machine_ || !afc_ || !(afc_->active() || afc_->idleMeasurementRequested())) return false;
-    machine_->motion(motion);
-    return true;
+    if (!machine_) return false;
+    const bool adapted = afc_ && (afc_->active() || afc_->idleMeasurementRequested());
+    machine_->motion(motion);  // every move: the machine clock is the panel's
+    return adapted;
 }
 
 void MotionOutput::motion(const core::Motion& motion) {
     ++motions_;
     adapted_ = adaptedMotion(motion);
-    if (mode_ == MotionMode::Json && json_ != nullptr) writeJson(motion);
-    if (mode_ == MotionMode::Text && text_ != nullptr) writeText(motion);
+    stopped_ = adapted_ && machine_->lastMoveFraction() < 1.0;
+    if (mode_ == MotionMode::None) return;
+    const core::Motion* written = &motion;
+    core::Motion reached;
+    if (stopped_) {  // AFC-012: the record shows where the axes stopped
+        reached = motion;
+        for (int i = 0; i < motion.axisCount && i < core::kMaxAxes; ++i)
+            reached.end[static_cast<std::size_t>(i)] = machine_->position(i);
+        written = &reached;
+    }
+    if (mode_ == MotionMode::Json && json_ != nullptr) writeJson(*written);
+    if (mode_ == MotionMode::Text && text_ != nullptr) writeText(*written);
 }
 
 void MotionOutput::auxiliary(const core::AuxOutput& output) {
@@ -57,9 +68,10 @@ void MotionOutput::auxiliary(const core::AuxOutput& output) {
     if (machine_) machine_->auxiliary(output);
 }
 
-void MotionOutput::dwell(const core::SourceLocation&, double seconds) {
+void MotionOutput::dwell(const core::SourceLocation& where, double seconds) {
     ++dwells_;
     dwellSeconds_ += seconds;
+    if (machine_) machine_->dwell(where, seconds);
 }
 
 void MotionOutput::command(const core::SourceLocation&, const std::string&, const std::string&) {
@@ -105,6 +117,10 @@ void MotionOutput::writeJson(const core::Motion& m) {
         json.key("afc_feed");
         json.value(machine_->lastMoveFeed());
     }
+    if (stopped_) {
+        json.key("afc_stopped");
+        json.value(true);
+    }
     json.endObject();
 }
 
@@ -136,6 +152,7 @@ void MotionOutput::writeText(const core::Motion& m) {
         line_ += " AFC F=";
         JsonWriter::appendNumber(line_, std::round(machine_->lastMoveFeed() * 10.0) / 10.0);
     }
+    if (stopped_) line_ += " stopped";
     line_ += '\n';
     std::fwrite(line_.data(), 1, line_.size(), text_);
 }

@@ -32,9 +32,12 @@ class MotionOutput : public core::MachineSink {
     /// Set before the first motion arrives.
     void setAxisNames(std::vector<std::string> names) { names_ = std::move(names); }
 
-    /// Moves under adaptive feed control (G26, or with ITM) also go through
-    /// `machine`, which slows them down; their lines show the feed the axes
-    /// really got ("AFC F=..." / "afc_feed"). Spindle speeds always go there.
+    /// Every move and dwell also goes through `machine` (its clock is the
+    /// panel's); moves under adaptive feed control (G26, or with ITM) are
+    /// slowed down there, their lines show the feed the axes really got
+    /// ("AFC F=..." / "afc_feed") and, when an error stopped them, the point
+    /// where they stopped (" stopped" / "afc_stopped"). Spindle speeds always
+    /// go there.
     void attachAdaptiveFeed(core::SimulatedMachine* machine, const core::AdaptiveFeedControl* afc) {
         machine_ = machine;
         afc_ = afc;
@@ -70,6 +73,7 @@ class MotionOutput : public core::MachineSink {
     core::SimulatedMachine* machine_ = nullptr;
     const core::AdaptiveFeedControl* afc_ = nullptr;
     bool adapted_ = false;  ///< the current motion went through adaptive feed control
+    bool stopped_ = false;  ///< ... and an error stopped it short of its end
     JsonWriter* json_;
     std::FILE* text_;
     std::vector<std::string> names_;  ///< per machine axis; "" = leave out

@@ -261,9 +261,11 @@ int runRunCommand(const CliOptions& options) {
         return reportSetupFailure(failure, options.json);
     }
     sink.setAxisNames(reportedAxisNames(interpreter));
-    // --no-motion: the interpreter does not even build the moves (about 10 %
-    // of a run of plain moves), as in the restart computing process.
-    interpreter.options().output.motion = !options.noMotion;
+    // --no-motion changes the output only. Without adaptive feed control the
+    // machine has no effect on the run, so the interpreter need not even
+    // build the moves (about 10 % of a run of plain moves); with it, the
+    // moves must reach the machine (G26 slows them, ITM measures, 508..510).
+    interpreter.options().output.motion = !options.noMotion || cell.afc->available();
     if (options.json) json.beginObject();
     if (mode == MotionMode::Json) {
         json.key("motion");
