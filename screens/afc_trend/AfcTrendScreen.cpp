@@ -33,14 +33,22 @@ QString statusText(const mtc::core::AfcTrendRecorder& recorder) {
     const mtc::core::AfcTrendSample& s = recorder.at(recorder.size() - 1);
     return QString(
                "t = %1 s   %2   actual %3 %   machining %4 %   reduction %5 % (peak %6 %)   "
-               "feed %7 mm/min   samples %8")
+               "feed %7 mm/min   idling 005 %8 % (max. 006 %9 %)   stall 014 %10 %   "
+               "EXCTH %11   THMIS %12   samples %13")
         .arg(s.time, 0, 'f', 2)
-        .arg(s.active ? "G26 on" : "G26 off")
+        .arg(s.measuringIdle ? "ITM"
+             : s.active      ? "G26 on"
+                             : "G26 off")
         .arg(s.torqueActual, 0, 'f', 1)
         .arg(s.machiningTorque, 0, 'f', 1)
         .arg(s.feedReduction, 0, 'f', 1)
         .arg(s.peakReduction, 0, 'f', 1)
         .arg(s.effectiveFeed, 0, 'f', 0)
+        .arg(s.idleTorque, 0, 'f', 1)
+        .arg(s.maximumIdleTorque, 0, 'f', 1)
+        .arg(s.stallTorque, 0, 'f', 1)
+        .arg(s.excessiveThrust ? 1 : 0)
+        .arg(s.thrustMissing ? 1 : 0)
         .arg(recorder.size());
 }
 

@@ -4,7 +4,10 @@
 #include <QDir>
 #include <QFile>
 #include <QImage>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QLabel>
+#include <QProcess>
 #include <QTemporaryDir>
 
 #include "PanelFixture.h"
@@ -17,6 +20,17 @@
 
 class AfcTrendScreenTest : public QObject {
     Q_OBJECT
+    /// Selects the slot milling demo (program 2 of the mill) and runs it to
+    /// its end at high speed with the Start key (Shift+F5).
+    static void runSlotDemo(PanelFixture& panel) {
+        panel.session->clock(0).setSpeed(1e6);
+        QVERIFY(panel.session->selectProgram(0, 2));
+        panel.press(Qt::Key_F5, Qt::ShiftModifier);
+        QTRY_VERIFY_WITH_TIMEOUT(!panel.session->control(0).programActive(), 20000);
+        QVERIFY(panel.session->afcTrend(0).size() > 0);  // it ran
+        QCOMPARE(QString::fromStdString(panel.session->control(0).alarm()), QString());
+    }
+
   private slots:
     void initTestCase() { useTestSettings(); }
 
@@ -44,7 +58,7 @@ class AfcTrendScreenTest : public QObject {
         double peak = 0;
         for (const auto& s : panel.session->afcTrend(0).samples())
             peak = std::max(peak, s.feedReduction);
-        QVERIFY(peak > 50.0);  // the F2800 section is reduced by about 70 %
+        QVERIFY(peak > 50.0);  // the F3200 section is reduced by about 70 %
 
         QCOMPARE(screen->windowSeconds(), 10.0);
         panel.press(Qt::Key_F1);
@@ -66,6 +80,81 @@ class AfcTrendScreenTest : public QObject {
         QVERIFY(lines.first().startsWith("time_s,torque_actual_pct"));
         QCOMPARE(lines.size() - 2, static_cast<int>(panel.session->afcTrend(0).size()));
         QCOMPARE(QDir(dir.path()).entryList(QDir::Files).size(), 2);  // no temporary files left
+    }
+
+    /// Seed 002 Fig. 6-1 on the screen: maximum idling torque 006, stall
+    /// torque 014, the signals EXCTH / THMIS and the measuring period of ITM.
+    void trendShowsLimitsSignalsAndTheItmPhase() {
+        PanelFixture panel;
+        QVERIFY(panel.window->showScreen("afc-trend"));
+        auto* screen =
+            qobject_cast<mtc::screens::AfcTrendScreen*>(panel.window->screen(0, "afc-trend"));
+        auto* plot = screen->findChild<mtc::screens::AfcTrendPlot*>("afcTrendPlot");
+        auto* status = screen->findChild<QLabel*>("afcTrendStatus");
+        runSlotDemo(panel);
+        panel.press(Qt::Key_F1);  // window 60 s
+        panel.press(Qt::Key_F1);  // every sample
+        QCOMPARE(screen->windowSeconds(), 0.0);
+        QTRY_COMPARE(plot->samples().size(), panel.session->afcTrend(0).size());
+
+        const auto phases = plot->itmPhases();
+        QCOMPARE(phases.size(), std::size_t{1});  // N0004 ... ITM
+        const double measured = phases[0].second - phases[0].first;
+        QVERIFY2(measured > 0.15 && measured < 0.25, qPrintable(QString::number(measured)));
+        const QImage image = plot->grab().toImage();
+        const int x = static_cast<int>(plot->xOf((phases[0].first + phases[0].second) / 2));
+        const QColor band = image.pixelColor(x, 44);  // just under the top of the torque panel
+        const QColor itm = mtc::screens::AfcTrendPlot::itmColor();
+        QVERIFY2(std::abs(band.red() - itm.red()) + std::abs(band.green() - itm.green()) +
+                         std::abs(band.blue() - itm.blue()) <
+                     30,
+                 qPrintable(band.name()));
+
+        bool excessive = false, measuring = false;
+        for (const auto& s : plot->samples()) {
+            excessive = excessive || s.excessiveThrust;
+            measuring = measuring || s.measuringIdle;
+            QCOMPARE(s.maximumIdleTorque, 30.0);  // Bxx.066 default
+        }
+        QVERIFY(excessive);  // the F3200 section passes 013 = 70 %
+        QVERIFY(measuring);
+        for (const char* name :
+             {"max. idling 006", "stall 014", "PxxS.EXCTH", "PxxS.THMIS", "ITM measuring period"})
+            QVERIFY2(mtc::screens::AfcTrendPlot::legend().contains(name), name);
+        QVERIFY(status->text().contains("max. 006 30.0 %"));
+        QVERIFY(status->text().contains("EXCTH"));
+        QVERIFY(status->text().contains("THMIS"));
+    }
+
+    /// The CLI and the panel give the same adaptive feed control for the same
+    /// program: one noise of the torque model, a function of the machine
+    /// clock and the configured seed (regression: the noise differed).
+    void panelAndCliProduceTheSameTorqueNoise() {
+        const QString cli = qEnvironmentVariable("MTC_CLI");
+        if (cli.isEmpty()) QSKIP("MTC_CLI is not set (ctest sets it)");
+        PanelFixture panel;
+        runSlotDemo(panel);
+        QProcess process;
+        process.start(cli, {"--json", "run", "2"});
+        QVERIFY(process.waitForFinished(60000));
+        QCOMPARE(process.exitCode(), 0);
+        const QJsonObject afc =
+            QJsonDocument::fromJson(process.readAllStandardOutput()).object()["afc"].toObject();
+        const std::pair<int, const char*> elements[] = {{5, "005_idle_torque"},
+                                                        {7, "007_machining_torque"},
+                                                        {8, "008_peak_machining_torque"},
+                                                        {11, "011_feed_reduction"},
+                                                        {12, "012_peak_feed_reduction"}};
+        for (const auto& [element, key] : elements) {
+            double value = -1;
+            panel.session->machineData().read({30, 0, 0, element}, value);
+            QVERIFY2(afc.contains(key), key);
+            QVERIFY2(std::abs(afc[key].toDouble() - value) < 1e-9,
+                     qPrintable(QString("%1: CLI %2, panel %3")
+                                    .arg(key)
+                                    .arg(afc[key].toDouble(), 0, 'g', 17)
+                                    .arg(value, 0, 'g', 17)));
+        }
     }
 
     void exportIntoAMissingDirectoryIsReported() {
