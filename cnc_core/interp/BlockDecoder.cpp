@@ -167,6 +167,7 @@ bool BlockDecoder::spindleWord(const Word& w) const {
     const auto bit = static_cast<std::uint8_t>(1u << slot);
     if (t_.input.spindleMask & bit) return twice(w, "spindle speed");
     if (v < 0) return error(w, "VALUE_RANGE", "a spindle speed cannot be negative");
+    if (t_.input.spindleMask == 0) t_.input.spindleColumn = w.column;
     t_.input.spindleMask |= bit;
     t_.input.spindle[static_cast<size_t>(slot)] = v;
     return true;

@@ -109,6 +109,11 @@ bool BlockExecutor::planeChange(const BlockContext& c, const BlockInput& in,
         next.g[kGroupPlane] = static_cast<std::int16_t>(plane);
         return true;
     }
+    if (in.spindleMask != 0)  // `G20 S2=0 Y0 Z0`: an S word is a spindle here, not a speed
+        return c.error("G20_SPINDLE",
+                       "spindles cannot span a plane, and a G20 block holds no other axis or "
+                       "spindle words (seed 003, 3.2); program a spindle speed in its own block",
+                       in.spindleColumn);
     std::vector<FreePlaneAxis> programmed;
     for (int i = 0; i < in.axisCount; ++i) {
         const int a = in.axisOrder[static_cast<size_t>(i)];

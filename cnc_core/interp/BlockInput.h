@@ -76,6 +76,7 @@ struct BlockInput {
 
     std::uint8_t spindleMask = 0;  ///< bit j: S for spindle j (1..3) programmed
     std::array<double, kSpindleSlots> spindle{};
+    std::uint16_t spindleColumn = 0;  ///< column of the first S word
 
     std::array<AuxWord, kMaxAux> m{};
     int mCount = 0;

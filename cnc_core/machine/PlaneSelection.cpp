@@ -89,7 +89,10 @@ std::vector<PlaneProblem> PlaneSelection::selectFree(const ProcessAxes& axes,
     checkCount(programmed, problems);
     checkEachAxis(axes, programmed, problems);
     if (!problems.empty()) return problems;
-    PlaneSelection next = base(axes, 17);
+    // From the allocation in force (seed 003, 5.1: only power-up, reset,
+    // program end, jog reset and G17/G18/G19 restore the base system), so a
+    // two-axis G20 keeps the current perpendicular axis (3.2).
+    PlaneSelection next = *this;
     for (size_t i = 0; i < programmed.size(); ++i) {
         const int axis = programmed[i].axis;
         const AxisDefinition target = kTarget[i];
@@ -103,6 +106,16 @@ std::vector<PlaneProblem> PlaneSelection::selectFree(const ProcessAxes& axes,
             next.definitionOfAxis_[static_cast<size_t>(holder)] = AxisDefinition::None;
             if (previous != AxisDefinition::None) next.assign(holder, previous);
         }
+    }
+    const int perpendicular = next.axisOf(AxisDefinition::Z);
+    if (programmed.size() == 2 && perpendicular >= 0 && axes.axis(perpendicular).rotary) {
+        problems.push_back({"G20_PERPENDICULAR_ROTARY",
+                            "the axis left perpendicular to the plane, " +
+                                nameOf(axes, perpendicular) +
+                                ", is a rotary axis; name a linear perpendicular axis as the "
+                                "third G20 axis",
+                            programmed[1].column});
+        return problems;
     }
     next.plane_ = 20;
     *this = next;

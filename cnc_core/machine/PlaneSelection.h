@@ -42,9 +42,11 @@ class PlaneSelection {
 
     /// G20 with 2 or 3 axes (1st plane axis, 2nd plane axis, perpendicular).
     /// Checks every boundary condition; on any problem nothing changes.
-    /// Allocation: start from the base allocation; the n-th axis receives
-    /// definition X, Y, Z (n = 1, 2, 3); the axis that held that definition
-    /// receives the programmed axis's previous definition (a swap).
+    /// Allocation: start from the allocation in force; the n-th axis
+    /// receives definition X, Y, Z (n = 1, 2, 3); the axis that held that
+    /// definition receives the programmed axis's previous definition (a
+    /// swap). With two axes the axis holding Z keeps it unless a swap moves
+    /// it (it must be linear). docs/decisions/interpreter.md I-010, I-010a.
     std::vector<PlaneProblem> selectFree(const ProcessAxes& axes,
                                          const std::vector<FreePlaneAxis>& programmed);
 

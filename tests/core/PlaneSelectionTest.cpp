@@ -230,4 +230,49 @@ TEST(PlaneSelection, ProgramEndAndControlResetRestoreTheBaseSystem) {
     EXPECT_TRUE(lathe.interpreter->state().modal.plane.isBase(lathe.interpreter->axes()));
 }
 
+TEST(PlaneSelection, TwoAxisG20KeepsTheCurrentPerpendicularAxis) {
+    // Seed 003, 3.2: "the NC automatically retains the current axis if the
+    // axis that is perpendicular to the working plane has not been
+    // specified". Regression: the allocation was rebuilt from the base
+    // system, so X1 (base definition X) became perpendicular again.
+    Machine m(kTurningCentre);
+    PlaneSelection plane = PlaneSelection::base(m.axes, 18);
+    ASSERT_TRUE(m.g20(plane, {"Y", "Z", "X2"}).empty());
+    EXPECT_EQ(row(m.axes, plane), "Y Z X2 U - X1 - B C | Y Z | X2");
+    ASSERT_TRUE(m.g20(plane, {"Z", "Y"}).empty());
+    EXPECT_EQ(row(m.axes, plane), "Z Y X2 U - X1 - B C | Z Y | X2");
+    // From the power-up state the same two axes keep Z where it is (Tab. 3-5
+    // style, I-010).
+    PlaneSelection fresh = PlaneSelection::base(m.axes, 18);
+    ASSERT_TRUE(m.g20(fresh, {"Z", "Y"}).empty());
+    EXPECT_EQ(row(m.axes, fresh), "Z Y X1 U - X2 - B C | Z Y | X1");
+}
+
+TEST(PlaneSelectionBoundary, TwoAxisG20MustNotLeaveARotaryAxisPerpendicular) {
+    Machine m(kTurningCentre);
+    PlaneSelection plane = PlaneSelection::base(m.axes, 18);
+    ASSERT_TRUE(m.g20(plane, {"Z", "C", "X2"}).empty());
+    const PlaneSelection before = plane;
+    // X2 takes X from Z, Z takes Y from C: C would be left with Z.
+    EXPECT_EQ(codes(m.g20(plane, {"X2", "Z"})),
+              std::vector<std::string>{"G20_PERPENDICULAR_ROTARY"});
+    EXPECT_EQ(row(m.axes, plane), row(m.axes, before)) << "rejected G20 changes nothing";
+}
+
+TEST(PlaneSelectionBoundary, SpindleWordsInAG20BlockAreRefused) {
+    // `G20 S2=0 Y0 Z0` names a spindle (seed 003, 3.2: spindles are
+    // excepted), it is no G20 with a spindle speed. Regression: accepted.
+    Machine m(kTurningCentre);
+    for (const char* block : {"N0001 G20 S2=0 Y0 Z0\n", "N0001 G20 S1=0 X2=0 Y0\n",
+                              "N0001 G20 S0 X2=0 Y0 Z0\n", "N0001 G20 X2=0 Y0 Z0 S500\n"}) {
+        Station station(m.cell, 0);
+        const RunResult r = station.run(block);
+        EXPECT_EQ(errorCodes(r.diagnostics), std::vector<std::string>{"G20_SPINDLE"}) << block;
+        const ModalState& modal = station.interpreter->state().modal;
+        EXPECT_EQ(modal.g[kGroupPlane], 18) << block;
+        EXPECT_EQ(modal.spindleSpeed[1], 0.0) << block;
+        EXPECT_EQ(modal.spindleSpeed[2], 0.0) << block;
+    }
+}
+
 }  // namespace
