@@ -3,6 +3,7 @@
 #include <string>
 
 #include "cnc_core/interp/ModalGroups.h"
+#include "cnc_core/machine/AxisNameTable.h"
 
 namespace mtc::cli {
 
@@ -80,12 +81,19 @@ void writeVariables(JsonWriter& json, const core::Variables& variables) {
     json.endObject();
 }
 
+/// Name of the programmed position of axis `i` in the state's view:
+/// designation 2 while G31/G32 of that state transforms it (I-013a).
+std::string positionName(const StateView& view, std::size_t i) {
+    return core::programmedAxisName(view.axes, view.state.modal.transformation,
+                                    static_cast<int>(i));
+}
+
 void writePosition(JsonWriter& json, const StateView& view) {
     json.key("position");
     json.beginObject();
     for (std::size_t i = 0; i < view.axisNames.size() && i < view.positions.size(); ++i) {
         if (view.axisNames[i].empty()) continue;
-        json.key(view.axisNames[i]);
+        json.key(positionName(view, i));
         json.value(view.positions[i]);
     }
     json.endObject();
@@ -177,7 +185,7 @@ void printStateText(std::FILE* stream, const StateView& view, const char* label)
     line += "\n       position";
     for (std::size_t i = 0; i < view.axisNames.size() && i < view.positions.size(); ++i) {
         if (view.axisNames[i].empty()) continue;
-        line += " " + view.axisNames[i] + "=";
+        line += " " + positionName(view, i) + "=";
         JsonWriter::appendNumber(line, view.positions[i]);
     }
     std::fprintf(stream, "%s\n", line.c_str());

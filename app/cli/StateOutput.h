@@ -29,8 +29,10 @@ struct StateView {
     const std::vector<double>& positions;       ///< programmed position per machine axis
 };
 
-/// Axis names for motion and position as the interpreter names the axes
-/// (Interpreter::axisName); spindles without rotary axis capability are "".
+/// Axis names of the machine axes (Interpreter::axisName, designation 1) for
+/// motion records and as the list of reported axes; spindles without rotary
+/// axis capability are "". Positions in a State are named by the state's own
+/// transformation (designation 2 under G31/G32, core::programmedAxisName).
 std::vector<std::string> reportedAxisNames(const core::Interpreter& interpreter);
 
 /// The programmed position of every machine axis (Interpreter::programmedPosition).

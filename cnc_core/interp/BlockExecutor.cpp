@@ -143,7 +143,10 @@ bool BlockExecutor::transformationOn(const BlockContext& c, const BlockInput& in
     // ADJUST / REPOS (a re-entry point is set) may write G32 without RI, as
     // seed 000, 7.2 does: the RI of the last G32 of the computing process.
     const bool reuseRadius = restoring && !in.hasRadius && next.lastEffectiveRadius > 0.0;
-    const double radius = reuseRadius ? next.lastEffectiveRadius : in.radius;
+    // RI is a length: in inch under G70 like the positions (seed 003, 4.2 "[mm]
+    // or [inch]"); the transformation works in mm.
+    const double unit = next.g[kGroupUnits] == 70 ? kInch : 1.0;
+    const double radius = reuseRadius ? next.lastEffectiveRadius : in.radius * unit;
     std::vector<PlaneProblem> problems =
         wanted == 32 ? next.transformation.selectCylinder(*setup_.axes, next.plane,
                                                           in.hasRadius || reuseRadius, radius)

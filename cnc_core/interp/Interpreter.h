@@ -190,6 +190,9 @@ class Interpreter {
     /// designation 1 in programs ("X", "Z2", "C" for spindle S1 with rotary
     /// axis capability), or the configuration name of a plain spindle ("S2").
     std::string axisName(int axis) const { return axes_.axis(axis).displayName(); }
+    /// Name the program addresses `axis` by now: its designation 2 (Cxx.075)
+    /// while G31/G32 transforms it, else axisName() (seed 003, 4.5 and 5.2).
+    std::string programmedAxisName(int axis) const;
     /// Workpiece coordinate of `axis` as the program sees it now (the
     /// inverse of the conversions of MotionPlanner: mm, degrees, diameter).
     double programmedPosition(int axis) const;

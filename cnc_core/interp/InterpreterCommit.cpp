@@ -327,6 +327,10 @@ double Interpreter::programmedPosition(int axis) const {
     return v;
 }
 
+std::string Interpreter::programmedAxisName(int axis) const {
+    return core::programmedAxisName(axes_, state_.modal.transformation, axis);
+}
+
 void Interpreter::takeMachinePositions(const std::array<double, kMaxAxes>& machine) {
     state_.modal.machine = machine;
     MotionPlanner(&axes_, zeroOffsets_.get()).recomputeWork(state_.modal);

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "cnc_core/machine/AxisNameTable.h"
 #include "cnc_core/motion/SegmentGeometry.h"
 
 namespace mtc::core {
@@ -135,6 +136,7 @@ bool MotionPlanner::plan(const BlockContext& context, const BlockInput& input,
         length = std::sqrt(length);
     }
     const bool perRevolution = next.g[kGroupFeedType] == 95;
+    if (perRevolution && !feedPerRevolutionAxes(context, input, next, moved)) return false;
     const double speed = next.spindleSpeed[static_cast<size_t>(next.referenceSpindle)];
     plan.feedRate = perRevolution ? next.feed * speed : next.feed;
     if (next.feed <= 0.0)
@@ -167,6 +169,29 @@ double MotionPlanner::secondsPerPlaneUnit(const ModalState& next, int axis) cons
     // G31: both plane coordinates move with the linear plane axis's limit.
     const int linear = axes_->axis(t.planeAxis(0)).rotary ? t.planeAxis(1) : t.planeAxis(0);
     return axes_->axis(linear).rapidSecondsPerUnit;
+}
+
+bool MotionPlanner::feedPerRevolutionAxes(const BlockContext& context, const BlockInput& input,
+                                          const ModalState& next, std::uint32_t moved) const {
+    // Seed 003, 3.6: feed per revolution is a function of the linear main
+    // axes; every axis can perform it except a rotary axis with definition
+    // X, Y or Z (free plane selection, lateral cylinder, facing).
+    for (int a = 0; moved >> a; ++a) {
+        if (!((moved >> a) & 1u) || !axes_->axis(a).rotary) continue;
+        const AxisDefinition d = next.plane.definitionOf(a);
+        if (d != AxisDefinition::X && d != AxisDefinition::Y && d != AxisDefinition::Z) continue;
+        const std::string machineName = axes_->axis(a).displayName();
+        const std::string programName = programmedAxisName(*axes_, next.transformation, a);
+        const std::string name =
+            programName == machineName ? machineName : machineName + " (" + programName + ")";
+        return context.error("G95_ROTARY_AXIS",
+                             "G95 feed per revolution: the rotary axis " + name +
+                                 " has definition " + definitionLetter(d) +
+                                 " and cannot move with feed per revolution (seed 003, 3.6); "
+                                 "use G94",
+                             input.axisColumn[static_cast<size_t>(a)]);
+    }
+    return true;
 }
 
 std::uint32_t MotionPlanner::movedAxes(const BlockInput& input, const ModalState& next) const {

@@ -49,6 +49,9 @@ class MotionPlanner {
     bool travelLimit(const BlockContext& context, const BlockInput& input, const AxisModel& m,
                      int axis, double position) const;
     double rapidTime(const ModalState& current, const ModalState& next, std::uint32_t moved) const;
+    /// G95: false (G95_ROTARY_AXIS) when a moved rotary axis has definition X, Y or Z.
+    bool feedPerRevolutionAxes(const BlockContext& context, const BlockInput& input,
+                               const ModalState& next, std::uint32_t moved) const;
     /// Arc centre, sweep and length; `axisSeconds` = the time the slowest
     /// axis needs for its share of the arc at its max_velocity.
     bool arc(const BlockContext& context, const BlockInput& input, const ModalState& current,

@@ -2,6 +2,7 @@
 
 #include <array>
 #include <cstdint>
+#include <string>
 
 #include "cnc_core/machine/AxisName.h"
 #include "cnc_core/machine/ProcessAxes.h"
@@ -40,5 +41,12 @@ class AxisNameTable {
     void put(AxisName name, int axis, AxisNameStatus status);
     std::array<AxisLookup, 26 * 4> entries_{};
 };
+
+/// The name programs address machine axis `axis` by under `transformation`:
+/// its designation 2 while G31/G32 transforms it and it has one, else its
+/// designation 1 (AxisModel::displayName). Positions on the transformed
+/// plane carry this name (docs/decisions/interpreter.md I-013a).
+std::string programmedAxisName(const ProcessAxes& axes, const Transformation& transformation,
+                               int axis);
 
 }  // namespace mtc::core

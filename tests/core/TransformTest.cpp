@@ -165,6 +165,46 @@ TEST(TransformCylinder, ProgramEndAndJmpDeselect) {
     EXPECT_EQ(l.modal().transformation.kind(), 30);
 }
 
+TEST(TransformCylinder, RiIsInInchUnderG70) {
+    // Regression: RI was taken in mm under G70, so the angle came out 25.4
+    // times too large. RI 1 inch = 25.4 mm; 1 inch on the shell = 1 radian.
+    Lathe l;
+    const RunResult r =
+        l.station.run("N1 G0 X80 Z50 C0\nN2 G70 G20 Z0 C0 X0\nN3 G32 RI 1\nN4 G0 Y1 1\nN5 M0\n");
+    ASSERT_EQ(r.status, RunStatus::Stopped) << diagnosticsText(r.diagnostics);
+    EXPECT_NEAR(l.machine(C), 180.0 / kPi, 1e-9);
+    EXPECT_DOUBLE_EQ(l.modal().transformation.effectiveRadius(), 25.4);
+    EXPECT_NEAR(l.station.interpreter->programmedPosition(C), 1.0, 1e-12);  // inch again
+    // The same RI written again under G70 is no change of RI.
+    EXPECT_EQ(l.station.run("N1 G32 RI 1\nN2 M0\n", 2).status, RunStatus::Stopped);
+}
+
+TEST(TransformCylinder, ProgramsNameTheTransformedAxesByDesignationTwo) {
+    Lathe l;
+    l.station.run("N1 G0 X80 Z50 C0\nN2 G20 Z0 C0 X0\nN3 G32 RI 30\nN4 G0 Y1 25\nN5 M0\n");
+    const Interpreter& interpreter = *l.station.interpreter;
+    EXPECT_EQ(interpreter.programmedAxisName(C), "Y1");
+    EXPECT_EQ(interpreter.programmedAxisName(Z), "Z1");
+    EXPECT_EQ(interpreter.programmedAxisName(X), "X") << "the infeed axis keeps its name";
+    EXPECT_EQ(interpreter.axisName(C), "C") << "designation 1 of the machine axis";
+    l.station.run("N1 G30\nN2 M0\n", 2);
+    EXPECT_EQ(interpreter.programmedAxisName(C), "C");
+}
+
+TEST(TransformCylinder, FeedPerRevolutionIsRefusedForARotaryAxisWithDefinitionXYZ) {
+    // Seed 003, 3.6: every axis can move with G95 except a rotary axis with
+    // definition X, Y or Z. Regression: accepted.
+    Lathe l;
+    RunResult r = l.station.run(
+        "N1 G0 X80 Z50 C0\nN2 S1000 M3\nN3 G20 Z0 C0 X0\nN4 G32 RI 30\nN5 G95 G1 Y1 5 "
+        "F0.1\n");
+    EXPECT_EQ(errorCodes(r.diagnostics), std::vector<std::string>{"G95_ROTARY_AXIS"});
+    EXPECT_NEAR(l.machine(C), 0.0, 1e-12) << "nothing moved";
+    Lathe linear;  // the linear axes of the same plane may
+    r = linear.station.run("N1 G0 X80 Z50 C0\nN2 S1000 M3\nN3 G95 G1 Z40 F0.1\nN4 M0\n");
+    EXPECT_EQ(r.status, RunStatus::Stopped) << diagnosticsText(r.diagnostics);
+}
+
 TEST(TransformFacing, PolarCoordinates) {
     DiagnosticList d;
     const MachineConfig cell = cellFromText(lathe(0, 0));
