@@ -1,5 +1,6 @@
 #include "cnc_core/language/CompilerWords.h"
 
+#include <algorithm>
 #include <string>
 
 namespace mtc::core {
@@ -11,15 +12,17 @@ bool findCompilerWord(const Program& program, Diagnostic& found) {
         for (std::uint32_t w = block.firstWord; w < block.firstWord + block.wordCount; ++w) {
             const Word word = program.words[w];
             if (!(word.flags & kWordNeedsCompiler)) continue;
-            const std::string text(program.text(word.text));
-            found = Diagnostic{Severity::Error,
-                               "NEEDS_COMPILER",
-                               {program.number, program.blockId(b), static_cast<int>(block.line),
-                                static_cast<int>(word.column)},
-                               "'" + text + "' is an NC compiler function; the program is refused",
-                               {"The NC compiler is off (NC options: Compiler active = No), so "
-                                "the control refuses the program when it is selected, as a "
-                                "download would; switch the compiler on or remove the function."}};
+            // the keyword itself (a macro use holds the rest of its block)
+            std::string text(program.text(word.text));
+            text = text.substr(0, std::min<std::size_t>(text.find(' '), 24));
+            // one line: the panel shows it as the station's alarm
+            found =
+                Diagnostic{Severity::Error,
+                           "NEEDS_COMPILER",
+                           {program.number, program.blockId(b), static_cast<int>(block.line),
+                            static_cast<int>(word.column)},
+                           "'" + text + "' needs the NC compiler, which is off: program refused",
+                           {}};
             return true;
         }
     }

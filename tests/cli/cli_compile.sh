@@ -83,6 +83,11 @@ expect_rc 1 "check still refuses an unknown word" check --programs "$TEST_TMP/gm
 text_check "unknown word named" "NOSUCHMAC"
 expect_rc 1 "run of a source with a global macro asks for the compiler" run --programs "$TEST_TMP/gm" 7 --no-motion
 text_check "global macro use is a compiler function at run time" "NEEDS_COMPILER"
+text_check "the message names the macro, not the rest of its block" "'SLOTFEED' needs the NC compiler"
+if printf '%s\n%s' "$OUT" "$ERR" | grep -q "SLOTFEED Y20"; then fail "block text left out of the message"
+else pass "block text left out of the message"; fi
+cli --json run --programs "$TEST_TMP/gm" 7 --no-motion
+json_check "one line, no detail lines (it is the panel's alarm)" '[(x["details"], x["message"].split(chr(39))[1]) for x in d["diagnostics"] if x["code"] == "NEEDS_COMPILER"] == [([], "SLOTFEED")]'
 
 # one rule (C-015): check fails where compile fails, GNE and look-ahead included
 printf 'N0001 WINDOW_01 (-40, 2, 30)\nN0002 CYCLE_10 (7, 1, 0.2)\nN0003 M30\n' >"$TEST_TMP/gne_bad.nc"

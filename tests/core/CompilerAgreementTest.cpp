@@ -152,6 +152,9 @@ TEST(CompilerAgreement, WithTheCompilerOffAKeywordIsRefusedAtItsBlock) {
     EXPECT_EQ(found.where.block, "N0003");
     EXPECT_EQ(found.where.line, 3);
     EXPECT_EQ(found.where.column, 11);
+    // one line naming the word, not its block: it becomes the panel's alarm
+    EXPECT_EQ(found.message, "'RD2' needs the NC compiler, which is off: program refused");
+    EXPECT_TRUE(found.details.empty());
     const Program plain = parseProgram("N0001 G1 X0 Y0 F100\nN0002 X10\n", {4, "P4", {}});
     EXPECT_FALSE(findCompilerWord(plain, found));
 }
