@@ -4,8 +4,9 @@
 #include <QFile>
 #include <QFileInfo>
 #include <QTextStream>
+#include <optional>
 
-#include "cnc_core/machine/MachineConfigReader.h"
+#include "cnc_core/machine/MachineConfigFile.h"
 #include "cnc_core/machine_data/MachineDataLocation.h"
 #include "cnc_core/program/DatFileName.h"
 #include "cnc_core/program/ProgramLoader.h"
@@ -59,25 +60,42 @@ void openMachineData(const PanelOptions& options, CellSession& session) {
         QTextStream(stderr) << "mtc200-panel: " << message << "\n";
 }
 
+/// The machine configuration of the options (--machine FILE or the built-in
+/// cell), read by the core's reader like every CLI command reads it; the
+/// errors (at most kShownErrors of them) in `error`.
+std::optional<mtc::core::MachineConfig> loadConfiguration(const PanelOptions& options,
+                                                          QString& error) {
+    constexpr int kShownErrors = 20;
+    mtc::core::MachineConfigReadResult result;
+    if (options.machineFile.isEmpty()) {
+        mtc::core::MachineConfigReadOptions builtIn;
+        builtIn.fileName = "built-in demo cell";
+        builtIn.requireEndMarker = true;
+        result = mtc::core::readMachineConfig(
+            mtc::resources::find(mtc::resources::kDemoCellName), builtIn);
+    } else {
+        result = mtc::core::readMachineConfigFile(options.machineFile.toStdString());
+    }
+    if (result.ok()) return std::move(result.config);
+    QStringList lines;
+    for (const auto& d : result.diagnostics.items()) {
+        if (d.severity != mtc::core::Severity::Error) continue;
+        if (lines.size() == kShownErrors) {
+            lines << "...";
+            break;
+        }
+        lines << QString::fromStdString(formatDiagnostic(d));
+    }
+    error = "the machine configuration is refused:\n" + lines.join("\n");
+    return std::nullopt;
+}
+
 }  // namespace
 
 std::unique_ptr<CellSession> createSession(const PanelOptions& options, QString& error) {
-    std::string configText(mtc::resources::find(mtc::resources::kDemoCellName));
-    if (!options.machineFile.isEmpty()) {
-        QString fileText;
-        if (!readFile(options.machineFile, fileText, error)) return nullptr;
-        configText = fileText.toStdString();
-    }
-    auto result = mtc::core::readMachineConfig(configText);
-    if (!result.ok()) {
-        const auto& first = result.diagnostics.items().front();
-        error = QString("machine configuration %1 line %2: %3")
-                    .arg(options.machineFile.isEmpty() ? "(built-in)" : options.machineFile)
-                    .arg(first.where.line)
-                    .arg(QString::fromStdString(first.message));
-        return nullptr;
-    }
-    auto session = std::make_unique<CellSession>(std::move(result.config));
+    std::optional<mtc::core::MachineConfig> config = loadConfiguration(options, error);
+    if (!config) return nullptr;
+    auto session = std::make_unique<CellSession>(std::move(*config));
     mtc::core::ProgramLoader loader(session->mutableStore());
     if (options.programsDir.isEmpty()) {
         loader.loadTexts(mtc::resources::demoPrograms());

@@ -1,35 +1,35 @@
 #include "cli/MachineSetup.h"
 
-#include "cli/ProgramMemory.h"
-#include "cnc_core/machine/MachineConfigReader.h"
+#include "cnc_core/machine/MachineConfigFile.h"
 #include "resources/EmbeddedResources.h"
 
 namespace mtc::cli {
 
 std::optional<core::MachineConfig> loadMachine(const std::string& machineFile,
                                                core::DiagnosticList& diagnostics) {
-    std::string text;
+    core::MachineConfigReadResult result;
     std::string origin = machineFile;
     if (machineFile.empty()) {
         bool found = false;
-        text = std::string(resources::find(resources::kDemoCellName, &found));
+        const std::string_view text = resources::find(resources::kDemoCellName, &found);
         origin = "built-in demo cell";
         if (!found) {
             diagnostics.error("CLI_MACHINE_MISSING", {}, "the built-in demo cell is missing");
             return std::nullopt;
         }
+        core::MachineConfigReadOptions options;
+        options.fileName = origin;
+        options.requireEndMarker = true;
+        result = core::readMachineConfig(text, options);
     } else {
-        std::string error;
-        if (!readTextFile(machineFile, text, error)) {
-            diagnostics.error("CLI_FILE_UNREADABLE", {}, error);
-            return std::nullopt;
-        }
+        result = core::readMachineConfigFile(machineFile);
     }
-    core::MachineConfigReadResult result = core::readMachineConfig(text);
     if (!result.ok()) {
-        diagnostics.error("CLI_MACHINE_INVALID", {},
-                          "machine configuration " + origin + " has errors");
-        diagnostics.append(result.diagnostics);
+        const bool unreadable = result.diagnostics.items().front().code == "CFG_FILE";
+        diagnostics.error(unreadable ? "CLI_FILE_UNREADABLE" : "CLI_MACHINE_INVALID", {},
+                          unreadable ? result.diagnostics.items().front().message
+                                     : "machine configuration " + origin + " has errors");
+        if (!unreadable) diagnostics.append(result.diagnostics);
         return std::nullopt;
     }
     diagnostics.append(result.diagnostics);  // warnings only

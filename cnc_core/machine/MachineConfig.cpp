@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cstdlib>
 
+#include "cnc_core/machine/ConfigText.h"
+
 namespace mtc::core {
 
 const AxisConfig* ProcessConfig::axis(const std::string& axisName) const {
@@ -48,10 +50,8 @@ bool ProcessConfig::flag(const std::string& key, bool fallback) const {
 double ProcessConfig::number(const std::string& key, double fallback) const {
     auto it = parameters.find(key);
     if (it == parameters.end()) return fallback;
-    char* end = nullptr;
-    double value = std::strtod(it->second.c_str(), &end);
-    if (end == it->second.c_str() || *end != '\0') return fallback;
-    return value;
+    double value = 0.0;  // locale independent: the panel runs under the desktop's locale
+    return readDecimal(it->second, value) == NumberProblem::None ? value : fallback;
 }
 
 const ProcessConfig* MachineConfig::process(int index) const {

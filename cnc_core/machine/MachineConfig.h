@@ -25,6 +25,7 @@ struct AxisConfig {
     int spindleIndex = 0;        ///< 1..3 for S1..S3
     std::string rotaryAxisName;  ///< name in rotary axis mode, e.g. "C"
     double maxSpeed = 0.0;       ///< rpm
+    int line = 0;  ///< line of its section header in the configuration file (0 = not from a file)
 };
 
 /// An M function group: the last output value is kept in M(number).
@@ -48,6 +49,7 @@ struct ToolConfig {
 struct ZeroOffset {
     std::string code;  ///< "G54"
     std::map<std::string, double> values;
+    int line = 0;  ///< line in the configuration file (0 = not from a file)
 };
 
 /// One element of a user machine data page (e.g. page 180 of the demo lathe).
@@ -74,6 +76,7 @@ struct UserDataPage {
 /// One process (station) of the cell.
 struct ProcessConfig {
     int index = 0;
+    int line = 0;  ///< line of its [process N] header (0 = not from a file)
     std::string name;
     std::vector<AxisConfig> axes;       ///< in machine order
     std::vector<MGroupConfig> mGroups;  ///< groups 1..15 that exist

@@ -1,397 +1,231 @@
 #include "cnc_core/machine/MachineConfigReader.h"
 
-#include <cstdlib>
-#include <functional>
-#include <sstream>
+#include <memory>
+#include <unordered_map>
 
-#include "cnc_core/afc/AfcParameterRanges.h"
-#include "cnc_core/toolpath/Stock.h"
+#include "cnc_core/machine/ConfigReport.h"
+#include "cnc_core/machine/ConfigSections.h"
+#include "cnc_core/machine/ConfigText.h"
+#include "cnc_core/machine/ConfigWords.h"
+#include "cnc_core/interp/MachineSink.h"  // kMaxAxes
+#include "cnc_core/machine/ProcessAxes.h"
 
 namespace mtc::core {
 namespace {
 
-std::string trim(std::string_view s) {
-    size_t b = 0, e = s.size();
-    while (b < e && (s[b] == ' ' || s[b] == '\t' || s[b] == '\r'))
-        ++b;
-    while (e > b && (s[e - 1] == ' ' || s[e - 1] == '\t' || s[e - 1] == '\r'))
-        --e;
-    return std::string(s.substr(b, e - b));
-}
+constexpr std::string_view kEndMarker = "[end]";
 
-std::vector<std::string> splitWords(const std::string& s, char separator = ' ') {
-    std::vector<std::string> words;
-    std::string current;
-    for (char c : s) {
-        if (c == separator || (separator == ' ' && c == '\t')) {
-            if (!trim(current).empty()) words.push_back(trim(current));
-            current.clear();
-        } else {
-            current += c;
-        }
-    }
-    if (!trim(current).empty()) words.push_back(trim(current));
-    return words;
-}
-
-bool parseDouble(const std::string& s, double& out) {
-    if (s.empty()) return false;
-    char* end = nullptr;
-    out = std::strtod(s.c_str(), &end);
-    return end != s.c_str() && *end == '\0';
-}
-
-bool parseInt(const std::string& s, int& out) {
-    double d = 0;
-    if (!parseDouble(s, d) || d != static_cast<int>(d)) return false;
-    out = static_cast<int>(d);
-    return true;
-}
-
-/// Reads one configuration text section by section.
+/// Reads one configuration text line by line, one section reader at a time.
 class Reader {
   public:
-    explicit Reader(MachineConfigReadResult& result) : r_(result) {}
+    Reader(MachineConfigReadResult& result, const MachineConfigReadOptions& options)
+        : result_(result), options_(options), report_(options.fileName, result.diagnostics) {}
 
     void run(std::string_view text) {
         int lineNo = 0;
-        size_t pos = 0;
-        while (pos <= text.size()) {
-            size_t nl = text.find('\n', pos);
+        std::size_t pos = 0;
+        while (pos < text.size() && !report_.full()) {
+            std::size_t nl = text.find('\n', pos);
             if (nl == std::string_view::npos) nl = text.size();
-            ++lineNo;
-            line_ = lineNo;
+            report_.setLine(++lineNo);
             handleLine(text.substr(pos, nl - pos));
             pos = nl + 1;
         }
-        if (r_.config.processes.empty())
-            error("CFG_NO_PROCESS", "the configuration defines no process");
+        closeSection();
+        report_.setSection("");
+        checkProcesses();
+        if (options_.requireEndMarker && endLine_ == 0)
+            report_.errorAt(lineNo, "CFG_TRUNCATED",
+                            "the file does not end with the line " + std::string(kEndMarker) +
+                                ": it may be cut off (an interrupted copy or save); see "
+                                "docs/MACHINE-CONFIG.md");
+        if (result_.config.processes.empty())
+            report_.errorAt(0, "CFG_NO_PROCESS", "the configuration defines no process");
     }
 
   private:
-    void error(const std::string& code, const std::string& message) {
-        r_.diagnostics.error(code, {0, "", line_, 0}, message);
-    }
-
     void handleLine(std::string_view raw) {
-        std::string text = trim(raw.substr(0, raw.find('#')));
+        const std::string_view text = trimConfigText(raw.substr(0, raw.find('#')));
         if (text.empty()) return;
-        if (text.front() == '[') {
-            if (text.back() != ']') return error("CFG_SYNTAX", "section header without ']'");
-            openSection(splitWords(text.substr(1, text.size() - 2)));
-            return;
-        }
-        size_t eq = text.find('=');
-        if (eq == std::string::npos) return error("CFG_SYNTAX", "expected 'key = value'");
-        std::string key = trim(std::string_view(text).substr(0, eq));
-        std::string value = trim(std::string_view(text).substr(eq + 1));
-        if (!handler_) return error("CFG_SYNTAX", "key '" + key + "' outside any section");
-        handler_(key, value);
+        if (endLine_ != 0)
+            return report_.errorAt(report_.line(), "CFG_SYNTAX",
+                                   "text after " + std::string(kEndMarker) + " (line " +
+                                       std::to_string(endLine_) + "): " + quotedValue(text),
+                                   false);
+        const std::size_t eq = text.find('=');
+        const std::string_view key = trimConfigText(text.substr(0, eq));
+        // Values are checked for control characters and bytes that are not
+        // UTF-8 by their rules (so the refusal names key and range); what
+        // has no rule is checked here. Messages quote with escapes (CF-005).
+        if (!isPrintableText(text.front() == '[' || eq == std::string_view::npos ? text : key))
+            return report_.error("CFG_SYNTAX",
+                                 "the line contains control characters or bytes that are not "
+                                 "UTF-8: " +
+                                     quotedValue(text, 40));
+        if (text.front() == '[') return openSection(text);
+        if (eq == std::string_view::npos)
+            return report_.error("CFG_SYNTAX", "expected 'key = value', got " + quotedValue(text));
+        if (!section_)
+            return report_.error("CFG_SYNTAX", "key " + quotedValue(key) + " outside any section");
+        section_->line(key, trimConfigText(text.substr(eq + 1)));
     }
 
-    ProcessConfig* processFor(const std::string& index) {
-        int n = 0;
-        if (!parseInt(index, n) || n < 0 || n > 6) {
-            error("CFG_PROCESS", "process number must be 0..6, got '" + index + "'");
+    void closeSection() {
+        if (section_) section_->finish();
+        section_.reset();
+    }
+
+    void openSection(std::string_view text) {
+        closeSection();
+        report_.setSection("");
+        if (text.back() != ']') {
+            section_ = makeSkippedSection(report_);
+            return report_.error("CFG_SYNTAX", "section header without ']': " + quotedValue(text));
+        }
+        const std::vector<std::string_view> words =
+            splitConfigWords(text.substr(1, text.size() - 2));
+        std::string header = "[";
+        for (std::string_view w : words)
+            header += (header.size() > 1 ? " " : "") + std::string(w);
+        header += "]";
+        if (header == kEndMarker) return void(endLine_ = report_.line());
+        const auto [first, inserted] = headers_.emplace(header, report_.line());
+        if (!inserted) {
+            section_ = makeSkippedSection(report_);
+            return report_.error("CFG_DUPLICATE", header + " is given twice (first in line " +
+                                                      std::to_string(first->second) + ")");
+        }
+        report_.setSection(header);
+        section_ = makeSection(words);
+        if (!section_) section_ = makeSkippedSection(report_);
+    }
+
+    /// The reader of the section `words` names, or nullptr after a report.
+    std::unique_ptr<ConfigSectionReader> makeSection(const std::vector<std::string_view>& words) {
+        if (words.size() == 1 && words[0] == "cell") return makeCellReader(report_, result_.config);
+        if (words.size() < 2 || words[0] != "process") return unknownSection();
+        const int number = sectionNumber(ConfigSection::Process, words[1]);
+        if (number < 0) return nullptr;
+        if (words.size() == 2) return openProcess(number);
+        ProcessConfig* p = process(number);
+        if (!p) {
+            report_.error("CFG_PROCESS", "process " + std::to_string(number) +
+                                             " used before its [process " +
+                                             std::to_string(number) + "] section");
             return nullptr;
         }
-        for (auto& p : r_.config.processes)
-            if (p.index == n) return &p;
-        error("CFG_PROCESS",
-              "process " + index + " used before its [process " + index + "] section");
+        const std::string_view kind = words[2];
+        if (words.size() == 4 && (kind == "axis" || kind == "spindle"))
+            return openAxis(*p, words[3], kind == "spindle");
+        if (words.size() == 4 && kind == "mgroup") return openMGroup(*p, words[3]);
+        if (words.size() == 4 && kind == "page") return openPage(*p, words[3]);
+        if (words.size() == 3 && kind == "tools") return makeToolsReader(report_, *p);
+        if (words.size() == 3 && kind == "zero-offsets") return makeZeroOffsetsReader(report_, *p);
+        if (words.size() == 3 && kind == "torque-model") return makeTorqueModelReader(report_, *p);
+        return unknownSection();
+    }
+
+    std::unique_ptr<ConfigSectionReader> unknownSection() {
+        std::string known;
+        for (ConfigSection s : {ConfigSection::Cell, ConfigSection::Process, ConfigSection::Axis,
+                                ConfigSection::Spindle, ConfigSection::MGroup,
+                                ConfigSection::Tools, ConfigSection::ZeroOffsets,
+                                ConfigSection::TorqueModel, ConfigSection::Page})
+            known += (known.empty() ? "" : " ") + std::string(configSectionName(s));
+        report_.error("CFG_SECTION", "unknown section; known: " + known);
         return nullptr;
     }
 
-    void openSection(const std::vector<std::string>& words) {
-        handler_ = nullptr;
-        if (words.size() == 1 && words[0] == "cell") {
-            handler_ = [this](const std::string& k, const std::string& v) { cellKey(k, v); };
-            return;
-        }
-        if (words.size() >= 2 && words[0] == "process") {
-            if (words.size() == 2) return openProcess(words[1]);
-            ProcessConfig* p = processFor(words[1]);
-            if (!p) return;
-            if (words.size() == 4 && (words[2] == "axis" || words[2] == "spindle"))
-                return openAxis(*p, words[3], words[2] == "spindle");
-            if (words.size() == 4 && words[2] == "mgroup") return openMGroup(*p, words[3]);
-            if (words.size() == 3 && words[2] == "tools") return openTools(*p);
-            if (words.size() == 3 && words[2] == "zero-offsets") return openZeroOffsets(*p);
-            if (words.size() == 3 && words[2] == "torque-model") return openTorqueModel(*p);
-            if (words.size() == 4 && words[2] == "page") return openPage(*p, words[3]);
-        }
-        error("CFG_SECTION", "unknown section");
-    }
-
-    void cellKey(const std::string& key, const std::string& value) {
-        if (key == "name")
-            r_.config.name = value;
-        else if (key == "md_password" && !value.empty() && value.find(' ') == std::string::npos)
-            r_.config.machineDataPassword = value;
-        else if (key == "md_password")
-            error("CFG_VALUE", "md_password must be one word");
-        else
-            error("CFG_KEY", "unknown key '" + key + "' in [cell]");
-    }
-
-    void openProcess(const std::string& index) {
-        int n = 0;
-        if (!parseInt(index, n) || n < 0 || n > 6)
-            return error("CFG_PROCESS", "process number must be 0..6, got '" + index + "'");
-        for (const auto& p : r_.config.processes)
-            if (p.index == n) return error("CFG_PROCESS", "process " + index + " defined twice");
-        r_.config.processes.push_back({});
-        r_.config.processes.back().index = n;
-        const size_t slot = r_.config.processes.size() - 1;
-        handler_ = [this, slot](const std::string& k, const std::string& v) {
-            ProcessConfig& p = r_.config.processes[slot];
-            if (k == "name")
-                p.name = v;
-            else if (k == "tool_places" && parseInt(v, p.toolPlaces)) {
-            } else if (k == "tool_storage" && (v == "magazine" || v == "turret"))
-                p.toolStorage = v;
-            else if (k == "stock")
-                readStock(p, v);
-            else if (k.size() == 4 && k[0] == 'B')
-                processParameter(p, k, v);
-            else
-                error("CFG_KEY", "unknown key or bad value '" + k + " = " + v + "' in [process]");
-        };
-    }
-
-    /// `Bxxx = value`: kept as text; the values whose range the simulator
-    /// knows (adaptive feed control B062..B069, seed 002 4.2) are checked here
-    /// so that a bad one names its line, key, value and range.
-    void processParameter(ProcessConfig& p, const std::string& key, const std::string& value) {
-        double parsed = 0.0;
-        if (isAfcParameter(key) && !readAfcParameterValue(key, value, parsed))
-            return error("CFG_VALUE", "process " + std::to_string(p.index) + " parameter " + key +
-                                          " = '" + value +
-                                          "' is not allowed: " + afcAllowedValues(key));
-        p.parameters[key] = value;
-    }
-
-    /// `stock = block ...` / `cylinder ...` / `none` (cnc_core/toolpath/Stock.h).
-    void readStock(ProcessConfig& p, const std::string& value) {
-        Stock stock;
+    /// The number of a section header word ("0" of [process 0]) checked
+    /// against the "(number)" rule of `kind`; -1 after a report.
+    int sectionNumber(ConfigSection kind, std::string_view word) {
+        const ConfigRule* rule = findConfigRule(kind, "(number)");
+        ConfigValue value;
         std::string problem;
-        if (!parseStock(value, stock, problem)) return error("CFG_STOCK", problem);
-        p.stock = value;
+        if (checkConfigValue(*rule, word, value, problem)) return static_cast<int>(value.number);
+        report_.error(kind == ConfigSection::Process ? "CFG_PROCESS"
+                      : kind == ConfigSection::Page  ? "CFG_PAGE"
+                                                     : "CFG_MGROUP",
+                      "number " + quotedValue(word) + " " + problem +
+                          "; allowed: " + configRangeText(*rule));
+        return -1;
     }
 
-    void openAxis(ProcessConfig& p, const std::string& name, bool spindle) {
-        if (p.axis(name)) return error("CFG_AXIS", "axis " + name + " defined twice");
-        p.axes.push_back({});
-        p.axes.back().name = name;
-        p.axes.back().kind = spindle ? AxisKind::Spindle : AxisKind::Linear;
-        if (spindle) p.axes.back().definitions = {name};
-        const int process = p.index;
-        const size_t slot = p.axes.size() - 1;
-        handler_ = [this, process, slot](const std::string& k, const std::string& v) {
-            axisKey(r_.config.processes[indexOf(process)].axes[slot], k, v);
-        };
+    ProcessConfig* process(int number) {
+        for (auto& p : result_.config.processes)
+            if (p.index == number) return &p;
+        return nullptr;
     }
 
-    size_t indexOf(int process) const {
-        for (size_t i = 0; i < r_.config.processes.size(); ++i)
-            if (r_.config.processes[i].index == process) return i;
-        return 0;
+    std::unique_ptr<ConfigSectionReader> openProcess(int number) {
+        result_.config.processes.push_back({});
+        result_.config.processes.back().index = number;
+        result_.config.processes.back().line = report_.line();
+        return makeProcessReader(report_, result_.config.processes.back());
     }
 
-    void axisKey(AxisConfig& a, const std::string& k, const std::string& v) {
-        bool ok = true;
-        if (k == "kind") {
-            if (v == "linear")
-                a.kind = AxisKind::Linear;
-            else if (v == "rotary")
-                a.kind = AxisKind::Rotary;
-            else
-                ok = false;
-        } else if (k == "definition") {
-            a.definitions = splitWords(v, ',');
-            ok = !a.definitions.empty() && a.definitions.size() <= 4;
-        } else if (k == "designation2")
-            a.designation2 = v;
-        else if (k == "polar_direction")
-            ok = parseInt(v, a.polarDirection) && (a.polarDirection == 0 || a.polarDirection == 1);
-        else if (k == "min")
-            ok = parseDouble(v, a.minPosition);
-        else if (k == "max")
-            ok = parseDouble(v, a.maxPosition);
-        else if (k == "max_velocity")
-            ok = parseDouble(v, a.maxVelocity) && a.maxVelocity > 0;
-        else if (k == "max_acceleration")
-            ok = parseDouble(v, a.maxAcceleration) && a.maxAcceleration > 0;
-        else if (k == "index")
-            ok = parseInt(v, a.spindleIndex) && a.spindleIndex >= 1 && a.spindleIndex <= 3;
-        else if (k == "rotary_axis")
-            a.rotaryAxisName = v;
-        else if (k == "max_speed")
-            ok = parseDouble(v, a.maxSpeed) && a.maxSpeed >= 0;
-        else
-            return error("CFG_KEY", "unknown axis key '" + k + "'");
-        if (!ok) error("CFG_VALUE", "bad value '" + v + "' for axis key '" + k + "'");
-    }
-
-    void openMGroup(ProcessConfig& p, const std::string& number) {
-        int n = 0;
-        if (!parseInt(number, n) || n < 1 || n > 15)
-            return error("CFG_MGROUP", "M group number must be 1..15, got '" + number + "'");
-        p.mGroups.push_back({});
-        p.mGroups.back().number = n;
-        const int process = p.index;
-        const size_t slot = p.mGroups.size() - 1;
-        handler_ = [this, process, slot](const std::string& k, const std::string& v) {
-            MGroupConfig& g = r_.config.processes[indexOf(process)].mGroups[slot];
-            if (k == "name") return void(g.name = v);
-            if (k == "reset") {
-                if (!parseInt(v, g.resetValue)) error("CFG_VALUE", "bad reset value '" + v + "'");
-                return;
-            }
-            if (k != "functions") return error("CFG_KEY", "unknown M group key '" + k + "'");
-            for (const auto& w : splitWords(v)) {
-                int m = 0;
-                if (!parseInt(w, m) || m < 0 || m > 999)
-                    error("CFG_VALUE", "bad M function '" + w + "'");
-                else
-                    g.functions.push_back(m);
-            }
-        };
-    }
-
-    /// `[process N torque-model]`: numeric constants of the simulated
-    /// reference axis of adaptive feed control (TorqueModelParameters).
-    void openTorqueModel(ProcessConfig& p) {
-        const int process = p.index;
-        handler_ = [this, process](const std::string& k, const std::string& v) {
-            static const char* const kKeys[] = {
-                "stall",    "friction_rest", "friction_max", "cutting", "reference_feed",
-                "exponent", "load",          "noise",        "seed",    "engagement"};
-            bool known = false;
-            for (const char* key : kKeys)
-                known = known || k == key;
-            double value = 0;
-            if (!known) return error("CFG_TORQUE_MODEL", "unknown torque model key '" + k + "'");
-            if (!parseDouble(v, value) || value < -1000 || value > 1e9)
-                return error("CFG_TORQUE_MODEL", "torque model '" + k + "' needs a number");
-            r_.config.processes[indexOf(process)].torqueModel[k] = value;
-        };
-    }
-
-    void openTools(ProcessConfig& p) {
-        const int process = p.index;
-        handler_ = [this, process](const std::string& k, const std::string& v) {
-            ProcessConfig& proc = r_.config.processes[indexOf(process)];
-            ToolConfig tool;
-            if (k.size() < 2 || k[0] != 'T' || !parseInt(k.substr(1), tool.number) ||
-                tool.number <= 0)
-                return error("CFG_TOOL", "tool key must be T<number>, got '" + k + "'");
-            auto words = splitWords(v);
-            for (size_t i = 0; i + 1 < words.size(); i += 2) {
-                bool ok = true;
-                if (words[i] == "radius")
-                    ok = parseDouble(words[i + 1], tool.radius);
-                else if (words[i] == "length")
-                    ok = parseDouble(words[i + 1], tool.length);
-                else if (words[i] == "edge")
-                    ok = parseInt(words[i + 1], tool.edgeOrientation);
-                else if (words[i] == "name")
-                    tool.name = words[i + 1];
-                else
-                    ok = false;
-                if (!ok) error("CFG_TOOL", "bad tool data '" + words[i] + " " + words[i + 1] + "'");
-            }
-            if (words.size() % 2 != 0) error("CFG_TOOL", "tool data must be pairs of 'key value'");
-            if (proc.tool(tool.number)) return error("CFG_TOOL", "tool " + k + " defined twice");
-            proc.tools.push_back(tool);
-        };
-    }
-
-    void openZeroOffsets(ProcessConfig& p) {
-        const int process = p.index;
-        handler_ = [this, process](const std::string& k, const std::string& v) {
-            ZeroOffset offset;
-            offset.code = k;
-            for (const auto& w : splitWords(v)) {
-                size_t split = w.find_first_of("+-0123456789.", 1);
-                double value = 0;
-                if (split == std::string::npos || !parseDouble(w.substr(split), value)) {
-                    error("CFG_VALUE", "bad zero offset word '" + w + "'");
-                    continue;
-                }
-                offset.values[w.substr(0, split)] = value;
-            }
-            r_.config.processes[indexOf(process)].zeroOffsets.push_back(offset);
-        };
-    }
-
-    void openPage(ProcessConfig& p, const std::string& number) {
-        UserDataPage page;
-        if (!parseInt(number, page.number) || page.number < 100 || page.number > 999)
-            return error("CFG_PAGE", "user page number must be 100..999, got '" + number + "'");
-        p.userPages.push_back(page);
-        const int process = p.index;
-        const size_t slot = p.userPages.size() - 1;
-        handler_ = [this, process, slot](const std::string& k, const std::string& v) {
-            UserDataPage& pg = r_.config.processes[indexOf(process)].userPages[slot];
-            if (k == "title") return void(pg.title = v);
-            UserDataElement e;
-            auto fields = splitWords(v, '|');
-            if (k.rfind("element ", 0) != 0 || !parseInt(trim(k.substr(8)), e.number) ||
-                fields.size() < 5 || fields.size() > 7)
-                return error("CFG_PAGE",
-                             "expected 'element N = designation | type | min | max | default "
-                             "[| unit [| protection]]'");
-            e.designation = fields[0];
-            e.type = fields[1];
-            if (!knownDataType(e.type))
-                return error("CFG_PAGE", "unknown data type '" + e.type +
-                                             "' (BOOL SINT UINT AMPL PERC INT REAL)");
-            if (!parseDouble(fields[2], e.minimum) || !parseDouble(fields[3], e.maximum) ||
-                !parseDouble(fields[4], e.defaultValue) || e.minimum > e.maximum ||
-                e.defaultValue < e.minimum || e.defaultValue > e.maximum)
-                return error("CFG_PAGE", "bad range or default in element " + trim(k.substr(8)));
-            if (fields.size() > 5 && fields[5] != "-") e.unit = fields[5];
-            if (fields.size() > 6 && !readProtection(fields[6], e))
-                return error("CFG_PAGE", "protection must list nc, sps, gui, password; got '" +
-                                             fields[6] + "'");
-            pg.elements.push_back(e);
-        };
-    }
-
-    static bool knownDataType(const std::string& type) {
-        for (const char* name : {"BOOL", "SINT", "UINT", "AMPL", "PERC", "INT", "REAL"})
-            if (type == name) return true;
-        return false;
-    }
-
-    /// "nc sps gui password" (any subset, blank-separated) into the flags.
-    static bool readProtection(const std::string& text, UserDataElement& e) {
-        for (const std::string& word : splitWords(text)) {
-            if (word == "nc")
-                e.protectedNc = true;
-            else if (word == "sps")
-                e.protectedSps = true;
-            else if (word == "gui")
-                e.protectedGui = true;
-            else if (word == "password")
-                e.password = true;
-            else
-                return false;
+    std::unique_ptr<ConfigSectionReader> openAxis(ProcessConfig& p, std::string_view name,
+                                                  bool spindle) {
+        if (p.axes.size() >= static_cast<std::size_t>(kMaxAxes)) {
+            report_.error("CFG_AXIS_COUNT", "more than " + std::to_string(kMaxAxes) +
+                                                " axes and spindles in process " +
+                                                std::to_string(p.index));
+            return nullptr;
         }
-        return true;
+        for (const AxisConfig& other : p.axes)
+            if (other.name == name) {  // [process N axis X] and [process N spindle X]
+                report_.error("CFG_AXIS", "axis " + std::string(name) + " is defined twice");
+                return nullptr;
+            }
+        AxisConfig axis;
+        axis.name = std::string(name);
+        axis.kind = spindle ? AxisKind::Spindle : AxisKind::Linear;
+        axis.line = report_.line();
+        if (spindle) axis.definitions = {axis.name};
+        p.axes.push_back(std::move(axis));
+        return makeAxisReader(report_, p.axes.back());
     }
 
-    MachineConfigReadResult& r_;
-    int line_ = 0;
-    std::function<void(const std::string&, const std::string&)> handler_;
+    std::unique_ptr<ConfigSectionReader> openMGroup(ProcessConfig& p, std::string_view word) {
+        const int number = sectionNumber(ConfigSection::MGroup, word);
+        if (number < 0) return nullptr;
+        p.mGroups.push_back({});
+        p.mGroups.back().number = number;
+        return makeMGroupReader(report_, p, p.mGroups.size() - 1);
+    }
+
+    std::unique_ptr<ConfigSectionReader> openPage(ProcessConfig& p, std::string_view word) {
+        const int number = sectionNumber(ConfigSection::Page, word);
+        if (number < 0) return nullptr;
+        p.userPages.push_back({});
+        p.userPages.back().number = number;
+        return makePageReader(report_, p.userPages.back());
+    }
+
+    /// The checks over all axes of a process (names, definitions, duplicates,
+    /// count): ProcessAxes::build, the rule the interpreter applies too.
+    void checkProcesses() {
+        for (const ProcessConfig& p : result_.config.processes) {
+            DiagnosticList axes;
+            ProcessAxes::build(p, axes);
+            report_.adopt(axes);
+        }
+    }
+
+    MachineConfigReadResult& result_;
+    const MachineConfigReadOptions& options_;
+    ConfigReport report_;
+    std::unique_ptr<ConfigSectionReader> section_;
+    std::unordered_map<std::string, int> headers_;  ///< section header -> line
+    int endLine_ = 0;                               ///< line of [end] (0 = not seen)
 };
 
 }  // namespace
 
-MachineConfigReadResult readMachineConfig(std::string_view text) {
+MachineConfigReadResult readMachineConfig(std::string_view text,
+                                          const MachineConfigReadOptions& options) {
     MachineConfigReadResult result;
-    Reader(result).run(text);
+    Reader(result, options).run(text);
     return result;
 }
 

@@ -1,17 +1,21 @@
 #include "cnc_core/machine/ProcessAxes.h"
 
 #include "cnc_core/interp/MachineSink.h"
+#include "cnc_core/machine/ConfigText.h"
 
 namespace mtc::core {
 namespace {
 
-void configError(DiagnosticList& diagnostics, const std::string& code, const std::string& message) {
-    diagnostics.error(code, {}, message);
+/// A configuration problem at `line` of the configuration file (0 = unknown).
+void configError(DiagnosticList& diagnostics, int line, const std::string& code,
+                 const std::string& message) {
+    diagnostics.error(code, {0, "", line, 0}, message);
 }
 
 AxisModel modelOf(const AxisConfig& config, DiagnosticList& diagnostics) {
     AxisModel model;
     model.configName = config.name;
+    model.configLine = config.line;
     model.spindle = config.kind == AxisKind::Spindle;
     model.spindleIndex = model.spindle ? config.spindleIndex : 0;
     model.rotary =
@@ -27,15 +31,15 @@ AxisModel modelOf(const AxisConfig& config, DiagnosticList& diagnostics) {
         model.name = AxisName::parse(programName);
         if (!model.name.valid() || definitionFromLetter(model.name.letter) == AxisDefinition::None)
             configError(
-                diagnostics, "CFG_AXIS_NAME",
-                "axis " + config.name + ": '" + programName + "' is not an axis designation");
+                diagnostics, config.line, "CFG_AXIS_NAME",
+                "axis " + config.name + ": " + quotedValue(programName) + " is not an axis designation");
     }
     if (!config.designation2.empty()) {
         model.designation2 = AxisName::parse(config.designation2);
         if (!model.designation2.valid())
             configError(
-                diagnostics, "CFG_AXIS_NAME",
-                "axis " + config.name + ": bad designation 2 '" + config.designation2 + "'");
+                diagnostics, config.line, "CFG_AXIS_NAME",
+                "axis " + config.name + ": bad designation 2 " + quotedValue(config.designation2));
     }
     if (model.spindle && !model.rotary) return model;  // a plain spindle has no feed definition
     for (const auto& text : config.definitions) {
@@ -43,14 +47,14 @@ AxisModel modelOf(const AxisConfig& config, DiagnosticList& diagnostics) {
             text.size() == 1 ? definitionFromLetter(text[0]) : AxisDefinition::None;
         if (d == AxisDefinition::None) {
             configError(
-                diagnostics, "CFG_AXIS_DEFINITION",
-                "axis " + config.name + ": '" + text + "' is not an axis definition (X..C)");
+                diagnostics, config.line, "CFG_AXIS_DEFINITION",
+                "axis " + config.name + ": " + quotedValue(text) + " is not an axis definition (X..C)");
             continue;
         }
         if (model.definitionCount < 4) model.definitions[model.definitionCount++] = d;
     }
     if (model.definitionCount == 0)
-        configError(diagnostics, "CFG_AXIS_DEFINITION",
+        configError(diagnostics, config.line, "CFG_AXIS_DEFINITION",
                     "axis " + config.name + " has no axis definition");
     return model;
 }
@@ -62,7 +66,7 @@ void checkUnique(const std::vector<AxisModel>& axes, DiagnosticList& diagnostics
             if (!n.valid()) continue;
             for (const auto& [other, owner] : names)
                 if (other == n)
-                    configError(diagnostics, "CFG_AXIS_DUPLICATE",
+                    configError(diagnostics, a.configLine, "CFG_AXIS_DUPLICATE",
                                 "designation " + n.toString() + " is used by " + owner + " and " +
                                     a.configName);
             names.emplace_back(n, a.configName);
@@ -72,7 +76,7 @@ void checkUnique(const std::vector<AxisModel>& axes, DiagnosticList& diagnostics
         for (size_t j = i + 1; j < axes.size(); ++j)
             if (axes[i].baseDefinition() != AxisDefinition::None &&
                 axes[i].baseDefinition() == axes[j].baseDefinition())
-                configError(diagnostics, "CFG_AXIS_DUPLICATE",
+                configError(diagnostics, axes[j].configLine, "CFG_AXIS_DUPLICATE",
                             "axes " + axes[i].configName + " and " + axes[j].configName +
                                 " have the same base definition " +
                                 definitionLetter(axes[i].baseDefinition()));
@@ -90,7 +94,7 @@ ProcessAxes ProcessAxes::build(const ProcessConfig& config, DiagnosticList& diag
     ProcessAxes result;
     for (const auto& axisConfig : config.axes) {
         if (result.count() == kMaxAxes) {
-            configError(diagnostics, "CFG_AXIS_COUNT",
+            configError(diagnostics, axisConfig.line, "CFG_AXIS_COUNT",
                         "more than " + std::to_string(kMaxAxes) + " axes in process " +
                             std::to_string(config.index) + "; the rest is ignored");
             break;

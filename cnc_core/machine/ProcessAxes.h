@@ -13,6 +13,7 @@ namespace mtc::core {
 /// One axis of a process as the interpreter sees it (built from AxisConfig).
 struct AxisModel {
     std::string configName;  ///< name in the configuration: "X", "Z2", "S1"
+    int configLine = 0;      ///< line of its section in the configuration file (0 = unknown)
     AxisName name;           ///< designation 1 in programs ("C" for spindle S1/C); invalid = none
     AxisName designation2;   ///< Cxx.075, used while G31/G32 is active; invalid = none
     bool rotary = false;     ///< rotary axis, or spindle with rotary axis capability

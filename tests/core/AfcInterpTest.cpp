@@ -339,14 +339,16 @@ TEST(AfcTrend, RingBufferKeepsTheNewestAndWritesCsv) {
 
 TEST(AfcConfig, TorqueModelSection) {
     MachineConfigReadResult good = readMachineConfig(
-        "[process 0]\n[process 0 axis X]\n[process 0 torque-model]\ncutting = 80\nload = 5\n");
+        "[process 0]\n[process 0 axis X]\ndefinition = X\n[process 0 torque-model]\ncutting = "
+        "80\nload = 5\n");
     ASSERT_FALSE(good.diagnostics.hasErrors()) << diagnosticsText(good.diagnostics);
     const TorqueModelParameters p = torqueModelFromConfig(good.config.processes[0]);
     EXPECT_EQ(p.cuttingTorque, 80.0);
     EXPECT_EQ(p.constantLoad, 5.0);
     EXPECT_EQ(p.referenceFeed, 1000.0);
     MachineConfigReadResult bad = readMachineConfig(
-        "[process 0]\n[process 0 axis X]\n[process 0 torque-model]\nwear = 3\ncutting = x\n");
+        "[process 0]\n[process 0 axis X]\ndefinition = X\n[process 0 torque-model]\nwear = "
+        "3\ncutting = x\n");
     EXPECT_EQ(errorCodes(bad.diagnostics),
               (std::vector<std::string>{"CFG_TORQUE_MODEL", "CFG_TORQUE_MODEL"}));
 }

@@ -8,6 +8,7 @@
 #include <map>
 
 #include "InterpTestSupport.h"
+#include "cnc_core/machine/MachineConfigReader.h"
 #include "cnc_core/machine/InMemoryMachineData.h"
 
 namespace {
@@ -284,8 +285,7 @@ TEST(InterpServices, SharedMachineDataBetweenInterpreters) {
 }
 
 TEST(InterpConfig, BadConfigurationIsReportedAndNothingRuns) {
-    const MachineConfig cell = cellFromText(R"(
-[cell]
+    const MachineConfigReadResult read = readMachineConfig(R"([cell]
 name = bad
 [process 0]
 name = bad
@@ -297,9 +297,22 @@ definition = X
 [process 0 zero-offsets]
 G54 = R5
 )");
+    // The reader refuses the file with the lines (issue 22 §2) ...
+    EXPECT_EQ(errorCodes(read.diagnostics),
+              (std::vector<std::string>{"CFG_ZERO_OFFSET", "CFG_AXIS_NAME", "CFG_AXIS_DUPLICATE"}));
+    std::vector<int> lines;
+    for (const Diagnostic& d : read.diagnostics.items())
+        lines.push_back(d.where.line);
+    EXPECT_EQ(lines, (std::vector<int>{11, 8, 8}));
+    // ... and the interpreter still refuses such a cell built in code.
+    ProcessConfig process = *read.config.process(0);
+    ZeroOffset bad;
+    bad.code = "G54";
+    bad.values["R"] = 5;
+    process.zeroOffsets.push_back(bad);
     ProgramStore store;
     NullSink sink;
-    Interpreter interp(*cell.process(0), store, sink);
+    Interpreter interp(process, store, sink);
     EXPECT_EQ(errorCodes(interp.configurationDiagnostics()),
               (std::vector<std::string>{"CFG_AXIS_NAME", "CFG_AXIS_DUPLICATE", "CFG_ZERO_OFFSET"}));
     store.put(0, 1, parse("N1 M30\n", 1));

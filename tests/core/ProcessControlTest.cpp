@@ -95,8 +95,8 @@ TEST(ProcessControl, SignalLogKeepsOrderAndSkipsNonChanges) {
 
 TEST(SimulatedMachine, MotionTimes) {
     auto config = readMachineConfig(
-        "[process 0]\nname = T\n[process 0 axis X]\nmax_velocity = 6000\n"
-        "[process 0 axis Y]\nmax_velocity = 3000\n");
+        "[process 0]\nname = T\n[process 0 axis X]\ndefinition = X\nmax_velocity = 6000\n"
+        "[process 0 axis Y]\ndefinition = Y\nmax_velocity = 3000\n");
     ASSERT_TRUE(config.ok());
     const ProcessConfig& process = config.config.processes[0];
     Motion m;
