@@ -1,8 +1,10 @@
 #include <QApplication>
+#include <QBuffer>
 #include <QTextStream>
 #include <QTimer>
 #include <algorithm>
 
+#include "cnc_core/program/AtomicWrite.h"
 #include "hmi/CellSession.h"
 #include "hmi/PanelStartup.h"
 #include "hmi/PanelWindow.h"
@@ -61,8 +63,15 @@ int main(int argc, char** argv) {
     if (!options.screenshot.isEmpty()) {
         int status = 0;
         QTimer::singleShot(0, &window, [&] {
-            if (!window.grab().save(options.screenshot, "PNG")) {
-                QTextStream(stderr) << "mtc200-panel: cannot write " << options.screenshot << "\n";
+            QByteArray png;
+            QBuffer buffer(&png);
+            buffer.open(QIODevice::WriteOnly);
+            std::string reason;
+            if (!window.grab().save(&buffer, "PNG") ||
+                !mtc::core::writeFileAtomically(options.screenshot.toStdString(), png.toStdString(),
+                                                reason)) {
+                QTextStream(stderr) << "mtc200-panel: cannot write " << options.screenshot << ": "
+                                    << QString::fromStdString(reason) << "\n";
                 status = 2;
             }
             app.exit(status);

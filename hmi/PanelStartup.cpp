@@ -100,8 +100,12 @@ std::unique_ptr<CellSession> createSession(const PanelOptions& options, QString&
     if (options.programsDir.isEmpty()) {
         loader.loadTexts(mtc::resources::demoPrograms());
     } else {
-        if (!QDir(options.programsDir).exists()) {
-            error = "program directory does not exist: " + options.programsDir;
+        const QFileInfo directory(options.programsDir);
+        if (!directory.isDir()) {
+            error = QString("--programs %1: %2")
+                        .arg(options.programsDir,
+                             directory.exists() ? "is a file, not a program directory"
+                                                : "does not exist");
             return nullptr;
         }
         loader.loadDirectory(options.programsDir.toStdString());

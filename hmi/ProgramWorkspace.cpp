@@ -240,6 +240,10 @@ CompileStatus ProgramWorkspace::statusFromFiles(int number) const {
     const QString dat = filePath(number, "DAT");
     if (dat.isEmpty()) return CompileStatus::NotCompiled;
     const QDateTime source = QFileInfo(dat).lastModified();
+    // CF-013: an object file is never beside the errors of another compile,
+    // so a current .NCO means compiled.
+    const QFileInfo object(filePath(number, "NCO"));
+    if (object.exists() && object.lastModified() >= source) return CompileStatus::Compiled;
     const QFileInfo error(filePath(number, "ERR"));
     if (error.exists() && error.lastModified() >= source) {
         // C-014: only errors make status E (an .ERR with notices only, as
@@ -249,8 +253,6 @@ CompileStatus ProgramWorkspace::statusFromFiles(int number) const {
             mtc::core::errorFileHasErrors(file.readAll().toStdString()))
             return CompileStatus::Error;
     }
-    const QFileInfo object(filePath(number, "NCO"));
-    if (object.exists() && object.lastModified() >= source) return CompileStatus::Compiled;
     return CompileStatus::NotCompiled;
 }
 

@@ -95,8 +95,11 @@ bool loadProgramMemory(const std::string& directory, ProgramMemory& memory,
         memory.origin = "program directory '" + directory + "'";
         std::error_code ec;
         if (!std::filesystem::is_directory(directory, ec)) {
+            const bool exists = std::filesystem::exists(directory, ec);
             diagnostics.error("CLI_FILE_UNREADABLE", {},
-                              "program directory '" + directory + "' is not a readable directory");
+                              "--programs '" + directory + "' " +
+                                  (exists ? "is a file, not a program directory"
+                                          : "does not exist"));
             return false;
         }
         loader.loadDirectory(directory);

@@ -138,29 +138,46 @@ bool writeCompileFiles(const std::string& sourcePath, const std::string& objectP
                        const CompileResult& result, std::string& errorPath, std::string& error) {
     const std::string object = objectPath.empty() ? withExtension(sourcePath, ".NCO") : objectPath;
     errorPath = withExtension(object, ".ERR");
+    const std::string* outputs[] = {&object, &errorPath};
+    for (const std::string* output : outputs)
+        if (sameFile(*output, sourcePath)) {
+            error = *output + " is the source program itself; it is not overwritten (name "
+                              "another output file)";
+            return false;
+        }
+    if (object == errorPath || sameFile(object, errorPath)) {
+        error = object + " would be both the object file and the error file";
+        return false;
+    }
+    if (!checkReplaceable(object, error) || !checkReplaceable(errorPath, error)) return false;
+    // CF-013: the file that would not belong to the new result goes first
+    // (the old .ERR before a new object file, the old object file before new
+    // errors), then the new file. A kill at any moment leaves the old pair,
+    // one old file alone or the new file: never an object file beside the
+    // errors of another compile.
+    if (result.status == CompileStatus::Compiled) {
+        std::string body = result.objectText;
+        if (!result.identification.empty() &&
+            body.compare(0, result.identification.size() + 1, result.identification + "\n") == 0)
+            body = stamped(result.identification, body.substr(result.identification.size() + 1),
+                           baseName(object));
+        if (!removeFile(errorPath, error) || !writeFileAtomically(object, body, error))
+            return false;
+    } else if (!removeFile(object, error)) {  // errors: no object file (seed 001 ch. 11)
+        return false;
+    }
     // C-004 / C-014: the error file exists only when there are errors (seed
     // 001 ch. 9); warnings go with the compile result, not into a file.
-    if (result.hasErrors()) {
-        const std::string body =
-            formatErrorFile("", result.errors).substr(1);  // without the empty first line
-        const std::string text = result.identification.empty()
-                                     ? "\n" + body
-                                     : stamped(result.identification, body, baseName(errorPath));
-        if (!writeFileAtomically(errorPath, text, error)) return false;
-    } else {
-        std::remove(errorPath.c_str());  // a compile without errors leaves no .ERR
+    if (!result.hasErrors()) {
         errorPath.clear();
-    }
-    if (result.status != CompileStatus::Compiled) {
-        std::remove(object.c_str());  // errors: no object file (seed 001 ch. 11)
         return true;
     }
-    std::string body = result.objectText;
-    if (!result.identification.empty() &&
-        body.compare(0, result.identification.size() + 1, result.identification + "\n") == 0)
-        body = stamped(result.identification, body.substr(result.identification.size() + 1),
-                       baseName(object));
-    return writeFileAtomically(object, body, error);
+    const std::string body =
+        formatErrorFile("", result.errors).substr(1);  // without the empty first line
+    const std::string text = result.identification.empty()
+                                 ? "\n" + body
+                                 : stamped(result.identification, body, baseName(errorPath));
+    return writeFileAtomically(errorPath, text, error);
 }
 
 }  // namespace mtc::core

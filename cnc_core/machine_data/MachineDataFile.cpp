@@ -33,34 +33,20 @@ bool fileExists(const std::string& path) {
     return ::stat(path.c_str(), &info) == 0;
 }
 
-/// Seconds a temporary file of a save must be old before load() removes it
-/// (a younger one may belong to a save running in another program).
-constexpr long kStaleTemporarySeconds = 60;
-
 /// Removes "<path>.tmpXXXXXX" files (writeFileAtomically's temporaries) that
 /// a save killed before its rename left behind; one warning per file.
 void removeStaleTemporaries(const std::string& path, DiagnosticList& diagnostics) {
-    namespace fs = std::filesystem;
-    std::error_code error;
-    const fs::path target(path);
-    const fs::path directory = target.has_parent_path() ? target.parent_path() : fs::path(".");
-    const std::string prefix = target.filename().string() + ".tmp";
-    const std::time_t now = std::time(nullptr);
-    for (fs::directory_iterator it(directory, error), end; !error && it != end;
-         it.increment(error)) {
-        const std::string name = it->path().filename().string();
-        struct stat info {};
-        if (name.size() != prefix.size() + 6 || name.compare(0, prefix.size(), prefix) != 0 ||
-            ::lstat(it->path().c_str(), &info) != 0 || !S_ISREG(info.st_mode) ||
-            now - info.st_mtime < kStaleTemporarySeconds)
-            continue;
-        std::error_code removed;
-        if (fs::remove(it->path(), removed))
-            diagnostics.warning("MD_STALE_TEMPORARY", {},
-                                "removed " + it->path().string() +
-                                    ", the unfinished temporary file of an interrupted save (" +
-                                    path + " itself was not affected)");
-    }
+    const std::size_t slash = path.find_last_of('/');
+    const std::string directory = slash == std::string::npos ? "."
+                                  : slash == 0               ? "/"
+                                                             : path.substr(0, slash);
+    const std::string name = slash == std::string::npos ? path : path.substr(slash + 1);
+    for (const std::string& removed : core::removeStaleTemporaries(
+             directory, [&](std::string_view base) { return base == name; }))
+        diagnostics.warning("MD_STALE_TEMPORARY", {},
+                            "removed " + removed +
+                                ", the unfinished temporary file of an interrupted save (" + path +
+                                " itself was not affected)");
 }
 
 /// "<path>.damaged-20240501-101500" (with "-2", "-3", ... when taken).

@@ -6,6 +6,7 @@
 #include <memory>
 #include <optional>
 
+#include "cnc_core/program/AtomicWrite.h"
 #include "cnc_core/program/DatFile.h"
 #include "cnc_core/program/DatFileName.h"
 #include "cnc_core/program/FileText.h"
@@ -22,6 +23,15 @@ bool hasDatExtension(const std::string& name) {
     return ext == ".DAT";
 }
 
+bool endsWithNoCase(std::string_view name, std::string_view end) {
+    if (name.size() < end.size()) return false;
+    for (std::size_t i = 0; i < end.size(); ++i)
+        if (std::toupper(static_cast<unsigned char>(name[name.size() - end.size() + i])) !=
+            std::toupper(static_cast<unsigned char>(end[i])))
+            return false;
+    return true;
+}
+
 std::string baseName(const std::string& path) {
     std::size_t slash = path.find_last_of("/\\");
     return slash == std::string::npos ? path : path.substr(slash + 1);
@@ -29,14 +39,31 @@ std::string baseName(const std::string& path) {
 
 }  // namespace
 
+bool isProgramDirectoryFile(std::string_view name) {
+    for (std::string_view end : {".DAT", ".NCO", ".ERR"})
+        if (endsWithNoCase(name, end)) return true;
+    return name == "NC_OPTIONS.CFG" || name == "GLOBAL_MACROS.MAC" ||
+           (name.rfind("user_compiler_", 0) == 0);
+}
+
 std::size_t ProgramLoader::loadDirectory(const std::string& directory) {
     namespace fs = std::filesystem;
     std::error_code error;
     std::vector<std::string> files;
+    for (const std::string& removed : removeStaleTemporaries(directory, isProgramDirectoryFile))
+        diagnostics_.warning("FILE_STALE_TEMPORARY", SourceLocation{},
+                             "removed " + removed +
+                                 ", the unfinished temporary file of an interrupted save");
     for (fs::directory_iterator it(directory, error), end; !error && it != end;
          it.increment(error)) {
-        if (it->is_regular_file(error) && hasDatExtension(it->path().filename().string()))
-            files.push_back(it->path().string());
+        if (!hasDatExtension(it->path().filename().string())) continue;
+        const std::string path = it->path().string();
+        const std::string why = whyNotARegularFile(path);
+        if (why.empty())
+            files.push_back(path);
+        else  // a folder, FIFO or device named *.DAT, or a dangling link
+            diagnostics_.error("FILE_UNREADABLE", SourceLocation{},
+                               path + " " + why + ", not a program file; skipped");
     }
     if (error) {
         diagnostics_.error("FILE_UNREADABLE", SourceLocation{},

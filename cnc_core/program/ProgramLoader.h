@@ -2,6 +2,7 @@
 
 #include <cstddef>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -9,6 +10,11 @@
 #include "cnc_core/program/ProgramStore.h"
 
 namespace mtc::core {
+
+/// True for the names of files the product writes in a program directory
+/// (`*.DAT`, `*.NCO`, `*.ERR`, NC_OPTIONS.CFG, GLOBAL_MACROS.MAC, the user
+/// compilers' exchange files): their stale temporaries are removed on load.
+bool isProgramDirectoryFile(std::string_view name);
 
 /// Fills a ProgramStore from program files named NuxxYzzz.DAT: a program
 /// goes to (process y, number zzz); a cycle (%MAC header) goes to the cycle
@@ -22,7 +28,10 @@ class ProgramLoader {
     explicit ProgramLoader(ProgramStore& store) : store_(store) {}
 
     /// Loads every *.DAT file of `directory` (other files are ignored; a
-    /// .DAT file with another name gets FILE_BAD_NAME and is skipped).
+    /// .DAT file with another name gets FILE_BAD_NAME and is skipped; a
+    /// folder, FIFO or device named *.DAT gets FILE_UNREADABLE). First
+    /// removes the temporary files of saves killed before their rename
+    /// (FILE_STALE_TEMPORARY, older than a minute; docs/decisions/config-files.md).
     /// Returns how many programs were stored; a missing or unreadable
     /// directory gives FILE_UNREADABLE and 0.
     std::size_t loadDirectory(const std::string& directory);

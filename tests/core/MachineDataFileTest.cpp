@@ -15,6 +15,7 @@
 #include <sstream>
 
 #include "InterpTestSupport.h"
+#include "KillDuringWork.h"
 #include "cnc_core/machine_data/MachineDataFile.h"
 
 namespace {
@@ -199,12 +200,13 @@ TEST(MachineDataFile, SaveIntoMissingDirectoryFailsAndSaysWhy) {
 }
 
 /// The child: saves the store with alternating values until it is killed.
-[[noreturn]] void saveForever(const std::string& path) {
+[[noreturn]] void saveForever(const std::string& path, int steps) {
     MachineDataStore store(demoCell());
     std::string error;
     for (int round = 1;; ++round) {
         fill(store, round % 2 ? 10 : 20);
         if (!MachineDataFile(path).save(store, error)) ::_exit(3);
+        stepDone(steps);
     }
 }
 
@@ -224,14 +226,9 @@ TEST(MachineDataFile, KilledDuringSaveLeavesTheOldOrTheNewFile) {
     }
     int complete = 0;
     for (int attempt = 0; attempt < 25; ++attempt) {
-        const pid_t child = ::fork();
-        ASSERT_GE(child, 0);
-        if (child == 0) saveForever(path);
-        ::usleep(static_cast<useconds_t>(delayMicroseconds(random)));
-        ASSERT_EQ(::kill(child, SIGKILL), 0);
-        int status = 0;
-        ASSERT_EQ(::waitpid(child, &status, 0), child);
-        ASSERT_TRUE(WIFSIGNALED(status)) << "the child stopped by itself: save failed";
+        ASSERT_TRUE(killDuringWork([&](int steps) { saveForever(path, steps); },
+                                   delayMicroseconds(random)))
+            << "the saving child never finished a save";
         ASSERT_TRUE(fs::exists(path)) << "a killed save removed the old file";
         MachineDataStore store(demoCell());
         const MachineDataLoadResult result = MachineDataFile(path).load(store);
