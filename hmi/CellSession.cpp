@@ -6,7 +6,7 @@
 #include "cnc_core/interp/Interpreter.h"
 #include "cnc_core/language/Parser.h"
 #include "cnc_core/machine/SimulatedMachine.h"
-#include "cnc_core/machine_data/MachineDataFile.h"
+#include "cnc_core/machine_data/SharedMachineDataFile.h"
 #include "cnc_core/machine_data/MachineDataStore.h"
 #include "hmi/NcOptionsHolder.h"
 #include "hmi/SimulationClock.h"
@@ -68,9 +68,12 @@ CellSession::CellSession(mtc::core::MachineConfig config, QObject* parent)
     });
     // Every change of a station may come with MTD writes or page 30 status.
     connect(this, &CellSession::processChanged, this, [this] {
-        if (machineDataUnsaved() && machineDataWritable_ && !saveTimer_.isActive())
+        if (machineDataUnsaved() && sharedData_ && sharedData_->mayOverwrite() &&
+            !saveTimer_.isActive())
             saveTimer_.start();
     });
+    refreshTimer_.setInterval(kRefreshMs);
+    connect(&refreshTimer_, &QTimer::timeout, this, [this] { refreshMachineData(); });
     ncOptions_ = std::make_unique<NcOptionsHolder>(this);
 }
 
@@ -174,12 +177,12 @@ bool CellSession::selectProgram(int slot, int number) {
 
 QStringList CellSession::openMachineDataFile(const QString& path) {
     machineDataFile_ = path;
-    machineDataWritable_ = true;
     machineDataMessages_.clear();
+    sharedData_.reset();
+    refreshTimer_.stop();
     if (path.isEmpty()) return machineDataMessages_;
-    const mtc::core::MachineDataLoadResult result =
-        mtc::core::MachineDataFile(path.toStdString()).load(*machineData_);
-    machineDataWritable_ = result.mayOverwrite;
+    sharedData_ = std::make_unique<mtc::core::SharedMachineDataFile>(path.toStdString());
+    const mtc::core::MachineDataLoadResult result = sharedData_->open(*machineData_);
     savedRevision_ = machineData_->revision();
     for (const mtc::core::Diagnostic& d : result.diagnostics.items())
         machineDataMessages_ << QString::fromStdString(d.message);
@@ -188,25 +191,52 @@ QStringList CellSession::openMachineDataFile(const QString& path) {
     setupData_.load(mtc::core::setupDataFilesBeside(path.toStdString()), setup);
     for (const mtc::core::Diagnostic& d : setup.items())
         machineDataMessages_ << QString::fromStdString(d.message);
+    refreshTimer_.start();
     for (int slot = 0; slot < processCount(); ++slot)
         emit processChanged(slot);
     return machineDataMessages_;
 }
 
+/// Tells the user what a save or a refresh took over from another program.
+static QString takeOverMessage(const QString& file, std::size_t count) {
+    return QString("%1 value(s) changed by another program in %2 were taken over")
+        .arg(count)
+        .arg(file);
+}
+
 bool CellSession::saveMachineData(QString& error) {
-    if (machineDataFile_.isEmpty()) return true;
-    if (!machineDataWritable_) {
-        error = "the damaged machine data file could not be kept aside; not overwritten";
+    if (!sharedData_) return true;
+    const std::uint64_t before = machineData_->revision();
+    const mtc::core::MachineDataSync sync = sharedData_->save(*machineData_);
+    for (const mtc::core::Diagnostic& d : sync.diagnostics.items())
+        machineDataMessages_ << QString::fromStdString(d.message);
+    if (!sync.ok) {
+        error = QString::fromStdString(sync.error);
         return false;
     }
-    std::string reason;
-    const std::uint64_t revision = machineData_->revision();
-    if (mtc::core::MachineDataFile(machineDataFile_.toStdString()).save(*machineData_, reason)) {
-        savedRevision_ = revision;
-        return true;
+    // The saved revision: what the store holds now (the take-over included),
+    // unless the NC changed something since the save began (then: unsaved).
+    savedRevision_ = sync.takenOver > 0 ? machineData_->revision() : before;
+    if (sync.takenOver > 0) {
+        machineDataMessages_ << takeOverMessage(machineDataFile_, sync.takenOver);
+        emit machineDataNotice(machineDataMessages_.back());
+        for (int slot = 0; slot < processCount(); ++slot)
+            emit processChanged(slot);
     }
-    error = QString::fromStdString(reason);
-    return false;
+    return true;
+}
+
+int CellSession::refreshMachineData() {
+    if (!sharedData_) return 0;
+    const bool unsaved = machineDataUnsaved();
+    const mtc::core::MachineDataSync sync = sharedData_->refresh(*machineData_);
+    if (!sync.ok || sync.takenOver == 0) return 0;
+    if (!unsaved) savedRevision_ = machineData_->revision();  // the store is the file again
+    machineDataMessages_ << takeOverMessage(machineDataFile_, sync.takenOver);
+    emit machineDataNotice(machineDataMessages_.back());
+    for (int slot = 0; slot < processCount(); ++slot)
+        emit processChanged(slot);
+    return static_cast<int>(sync.takenOver);
 }
 
 }  // namespace mtc::hmi

@@ -20,6 +20,7 @@ class AdaptiveFeedControl;
 class AfcTrendRecorder;
 class Interpreter;
 class MachineDataStore;
+class SharedMachineDataFile;
 class SimulatedMachine;
 }  // namespace mtc::core
 
@@ -93,8 +94,16 @@ class CellSession : public QObject {
     /// be told (also kept in machineDataMessages()). Empty path: nothing is kept.
     QStringList openMachineDataFile(const QString& path);
     /// Writes the machine data to its file (no-op without one). False with
-    /// `error` when it cannot (then the file on disk is the old one).
+    /// `error` when it cannot (then the file on disk is the old one). Values
+    /// another program (`mtc200-cli md set`, a second panel) wrote to the
+    /// file meanwhile are taken over first, never overwritten with this
+    /// panel's older copy (CF-021); machineDataMessages() says so.
     bool saveMachineData(QString& error);
+    /// Looks whether another program changed the data file and takes its
+    /// values over (the panel checks every kRefreshMs). Returns how many.
+    int refreshMachineData();
+    /// Interval of the check for changes by other programs.
+    static constexpr int kRefreshMs = 1000;
     /// True while values changed since the last save or load (MTD writes of
     /// NC programs, page 30 status): they are saved within kNcSaveDelayMs and
     /// when the session ends.
@@ -105,11 +114,15 @@ class CellSession : public QObject {
     static constexpr int kNcSaveDelayMs = 1000;
     /// The file the machine data is kept in ("" = none).
     QString machineDataFile() const { return machineDataFile_; }
-    /// Messages of the last openMachineDataFile() (damaged file, ignored values).
+    /// Messages of the last openMachineDataFile() (damaged file, ignored
+    /// values) and of the last take-over of another program's changes.
     const QStringList& machineDataMessages() const { return machineDataMessages_; }
 
   signals:
     void processChanged(int slot);
+    /// Values of the machine data file another program changed were taken
+    /// over (`message` says how many and from which file).
+    void machineDataNotice(const QString& message);
 
   private:
     struct Station;
@@ -119,8 +132,9 @@ class CellSession : public QObject {
     std::shared_ptr<mtc::core::MachineDataStore> machineData_;
     mtc::core::SetupData setupData_;  ///< tool lists and zero offsets (beside the machine data)
     QString machineDataFile_;
+    std::unique_ptr<mtc::core::SharedMachineDataFile> sharedData_;
+    QTimer refreshTimer_;  ///< looks for changes of the data file by other programs
     QString programDirectory_;
-    bool machineDataWritable_ = true;
     QStringList machineDataMessages_;
     QTimer saveTimer_;                 ///< debounces saves of NC-written values
     std::uint64_t savedRevision_ = 0;  ///< store revision the file holds

@@ -8,7 +8,7 @@
 #include "cli/CliOutput.h"
 #include "cli/MachineDataOutput.h"
 #include "cli/MachineSetup.h"
-#include "cnc_core/machine_data/MachineDataFile.h"
+#include "cnc_core/machine_data/SharedMachineDataFile.h"
 #include "cnc_core/machine_data/MachineDataLocation.h"
 
 namespace mtc::cli {
@@ -43,7 +43,7 @@ core::MachineDataWriter writerFrom(const std::string& name) {
 struct Session {
     core::MachineConfig config;
     std::optional<core::MachineDataStore> store;
-    std::optional<core::MachineDataFile> file;
+    std::optional<core::SharedMachineDataFile> file;
     bool mayOverwrite = true;
     bool defaultLocation = false;  ///< the file is the default one: its directory may be made
     MachineDataReport report;
@@ -68,7 +68,12 @@ bool open(const CliOptions& options, Session& s, int& exitCode) {
                                        : data;
     if (s.report.dataFile.empty()) return true;
     s.file.emplace(s.report.dataFile);
-    core::MachineDataLoadResult loaded = s.file->load(*s.store);
+    // `md set` is a read-modify-write: the file stays locked until it is saved
+    // (its lock file lives beside it, so the default directory is made first).
+    const bool set = options.arguments.size() > 0 && options.arguments[0] == "set";
+    std::string ignored;  // a directory that cannot be made is reported by the save
+    if (set && s.defaultLocation) core::makeParentDirectories(s.report.dataFile, ignored);
+    core::MachineDataLoadResult loaded = s.file->open(*s.store, set);
     s.mayOverwrite = loaded.mayOverwrite;
     s.report.diagnostics.append(loaded.diagnostics);
     return true;
@@ -136,8 +141,11 @@ bool save(Session& s) {
     std::string error;
     if (!s.mayOverwrite)
         error = "the data file could not be kept aside, so it is not overwritten";
-    else if (!s.defaultLocation || core::makeParentDirectories(s.report.dataFile, error))
-        s.file->save(*s.store, error);
+    else if (!s.defaultLocation || core::makeParentDirectories(s.report.dataFile, error)) {
+        core::MachineDataSync sync = s.file->save(*s.store);
+        s.report.diagnostics.append(sync.diagnostics);
+        error = sync.error;
+    }
     if (error.empty()) return true;
     s.report.diagnostics.error("MD_FILE_SAVE", {}, "the value was NOT saved: " + error);
     return false;

@@ -132,7 +132,7 @@ class RestartDriver {
 
     /// Keeps what the restart changed in the `--data` file (page 60 at the
     /// target, MTD writes of ADJUST / REPOS).
-    void saveData(core::DiagnosticList& diagnostics) const {
+    void saveData(core::DiagnosticList& diagnostics) {
         dataKeeper_.save(*machineData_, diagnostics);
     }
 

@@ -112,7 +112,7 @@ struct RunCell {
     /// Loads the data file; its warnings go to `diagnostics`.
     void load(core::DiagnosticList& diagnostics) { keeper.load(*data, diagnostics); }
     /// Saves what the program changed (MTD writes, page 30 status).
-    void save(core::DiagnosticList& diagnostics) const { keeper.save(*data, diagnostics); }
+    void save(core::DiagnosticList& diagnostics) { keeper.save(*data, diagnostics); }
 
     std::shared_ptr<core::MachineDataStore> data;
     MachineDataKeeper keeper;

@@ -50,10 +50,10 @@ class MachineDataFile {
     static bool parse(const std::string& text, std::string& cell,
                       std::vector<MachineDataStore::Entry>& entries, std::string& reason);
 
-  private:
     /// Renames the file aside; fills `result` (mayOverwrite false on failure).
     void keepAside(MachineDataLoadResult& result) const;
 
+  private:
     std::string path_;
 };
 

@@ -61,6 +61,13 @@ MachineDataScreen::MachineDataScreen(const mtc::hmi::ScreenContext& context) : S
     connect(context.session, &mtc::hmi::CellSession::processChanged, this, [this](int slot) {
         if (slot == this->context().process) model_->refresh();
     });
+    // Another program changed the data file: the values shown are its now.
+    connect(context.session, &mtc::hmi::CellSession::machineDataNotice, this,
+            [this](const QString& notice) {
+                notice_ = notice;
+                model_->refresh();
+                say(notice);
+            });
 }
 
 int MachineDataScreen::processNumber() const {
@@ -258,9 +265,11 @@ void MachineDataScreen::writeValue(double value) {
         return;
     }
     QString error;
+    notice_.clear();
     const bool saved = context().session->saveMachineData(error);
     say(elementName() + " = " + model_->currentValueText() +
-        (saved ? QString() : "\nNOT saved: " + error));
+        (saved ? QString() : "\nNOT saved: " + error) +
+        (notice_.isEmpty() ? QString() : "\n" + notice_));
 }
 
 void MachineDataScreen::say(const QString& message) {

@@ -65,6 +65,7 @@ class MachineDataScreen : public mtc::hmi::Screen {
     QTableView* table_;
     mtc::hmi::PromptedInput* inputLine_;
     QLabel* message_;
+    QString notice_;  ///< the last take-over of another program's values (CF-021)
     Input input_ = Input::None;
     double pendingValue_ = 0.0;
     QString password_;  ///< accepted password while the screen is shown

@@ -10,6 +10,7 @@
 
 #include "PanelFixture.h"
 #include "cnc_core/machine_data/MachineDataStore.h"
+#include "cnc_core/machine_data/SharedMachineDataFile.h"
 
 namespace {
 
@@ -212,6 +213,44 @@ class MachineDataScreenTest : public QObject {
         QVERIFY(panel.message().contains("damaged"));
         QCOMPARE(panel.value(60, 0, 0, 1), 0.0);
         QCOMPARE(QDir(dir.path()).entryList({"cell.mdt.damaged-*"}).size(), 1);
+    }
+
+    // CF-021: another program (here: the core's file access, as `md set` does)
+    // changes the data file under the panel; the panel takes the value over
+    // and says so, and its own next save does not write the old value back.
+    void anotherProgramsChangeIsTakenOver() {
+        QTemporaryDir dir;
+        mtc::hmi::PanelOptions options;
+        options.dataFile = dir.filePath("cell.mdt");
+        MachineDataPanel panel(options);
+        QVERIFY(panel.open());
+        panel.press(Qt::Key_Right);  // page 60
+        panel.press(Qt::Key_Return);
+        panel.editor()->clear();
+        panel.enter("1");  // element 1, saved
+        QCOMPARE(panel.value(60, 0, 0, 1), 1.0);
+        {
+            mtc::core::MachineDataStore other(panel.session->config());
+            mtc::core::SharedMachineDataFile file(options.dataFile.toStdString());
+            file.open(other, true);
+            other.update({60, 0, 0, 5}, 4711);
+            QVERIFY(file.save(other).ok);
+        }
+        QTRY_COMPARE(panel.value(60, 0, 0, 5), 4711.0);  // within the 1 s check
+        QTRY_VERIFY2(panel.message().contains("taken over"), qPrintable(panel.message()));
+        QTRY_COMPARE(panel.cell(4, 2), QString("4711"));
+        panel.down(1);  // element 2: the panel saves again
+        panel.press(Qt::Key_Return);
+        panel.editor()->clear();
+        panel.enter("1");
+        mtc::core::MachineDataStore check(panel.session->config());
+        mtc::core::SharedMachineDataFile file(options.dataFile.toStdString());
+        file.open(check);
+        double value = 0;
+        check.read({60, 0, 0, 5}, value);
+        QCOMPARE(value, 4711.0);
+        check.read({60, 0, 0, 2}, value);
+        QCOMPARE(value, 1.0);
     }
 };
 
