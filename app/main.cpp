@@ -6,6 +6,7 @@
 
 #include "cnc_core/program/AtomicWrite.h"
 #include "hmi/CellSession.h"
+#include "hmi/NcOptionsHolder.h"
 #include "hmi/PanelStartup.h"
 #include "hmi/PanelWindow.h"
 #include "hmi/ScreenRegistry.h"
@@ -53,6 +54,9 @@ int main(int argc, char** argv) {
     mtc::screens::registerAllScreens(registry);
     mtc::hmi::PanelWindow window(session.get(), &registry);
     if (options.screenshot.isEmpty()) window.restoreSettings();
+    // An automatic run has nobody to ask: a user compiler that came with the
+    // program folder is not run (D-010), the error window says so.
+    if (!options.screenshot.isEmpty() || options.run) session->ncOptions().setUserCompilerAsker({});
     if (!mtc::hmi::applyStartOptions(options, *session, window, error)) return fail(error);
     if (options.run) {
         const QString alarm = runToEnd(*session, options.process);

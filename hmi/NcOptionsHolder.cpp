@@ -8,6 +8,7 @@
 #include "cnc_core/compiler/GlobalMacroFile.h"
 #include "cnc_core/machine/ProcessControl.h"
 #include "hmi/CellSession.h"
+#include "hmi/UserCompilerTrust.h"
 
 namespace mtc::hmi {
 
@@ -75,10 +76,41 @@ bool NcOptionsHolder::setUserCompiler(int slot, const QString& command, QString&
                     .arg(QString::fromStdString(problem));
         return false;
     }
-    if (text == mtc::core::userCompilerCommand(options_.userCompilers, slot)) return true;
+    if (text == mtc::core::userCompilerCommand(options_.userCompilers, slot)) {
+        UserCompilerTrust::approve(directory_, slot, QString::fromStdString(text));
+        return true;
+    }
     mtc::core::NcOptions changed = options_;
     mtc::core::setUserCompilerCommand(changed.userCompilers, slot, text);
-    return commitSettings(changed, error);
+    if (!commitSettings(changed, error)) return false;
+    UserCompilerTrust::approve(directory_, slot, QString::fromStdString(text));
+    return true;
+}
+
+bool NcOptionsHolder::userCompilerApproved(int slot) const {
+    return UserCompilerTrust::approved(
+        directory_, slot,
+        QString::fromStdString(mtc::core::userCompilerCommand(options_.userCompilers, slot)));
+}
+
+bool NcOptionsHolder::mayRunUserCompilers(QString& refusal) {
+    for (int slot = 1; slot <= mtc::core::kUserCompilerSlotCount; ++slot) {
+        if (userCompilerApproved(slot)) continue;
+        const QString command =
+            QString::fromStdString(mtc::core::userCompilerCommand(options_.userCompilers, slot));
+        if (asker_ && asker_(slot, command, directory_)) {
+            UserCompilerTrust::approve(directory_, slot, command);
+            continue;
+        }
+        refusal = QString("User compiler %1 not run: its command '%2' came with the program "
+                          "folder (%3) and was not approved")
+                      .arg(slot)
+                      .arg(command, mtc::core::kNcOptionsFileName);
+        emit optionsChanged();
+        return false;
+    }
+    emit optionsChanged();
+    return true;
 }
 
 bool NcOptionsHolder::commitSettings(const mtc::core::NcOptions& changed, QString& error) {

@@ -3,6 +3,7 @@
 #include <QList>
 #include <QObject>
 #include <QString>
+#include <functional>
 #include <vector>
 
 #include "cnc_core/compiler/NcOptions.h"
@@ -37,9 +38,26 @@ class NcOptionsHolder : public QObject {
     /// Reads the options of `directory` ("" = presets, kept in memory).
     void load(const QString& directory);
 
+    /// True when user compiler `slot`'s command may run without asking: it
+    /// was typed at this desk or approved before, or the folder is trusted
+    /// (UserCompilerTrust, docs/DECISIONS.md D-010). An empty slot is true.
+    bool userCompilerApproved(int slot) const;
+    /// Asks the operator whether a command that came with the program folder
+    /// may run: (slot, command, folder) -> yes. Without one, such commands
+    /// are refused (automatic runs, screenshots).
+    using UserCompilerAsker =
+        std::function<bool(int slot, const QString& command, const QString& folder)>;
+    void setUserCompilerAsker(UserCompilerAsker asker) { asker_ = std::move(asker); }
+    /// Before the chain runs: every command that is not approved is shown to
+    /// the operator (the asker); an approval is remembered, a refusal
+    /// stops here. False with `refusal` (nothing may run) when the operator
+    /// said no or nobody could be asked.
+    bool mayRunUserCompilers(QString& refusal);
+
     /// Sets "Compiler active" (clears all objects, seed 001 ch. 11).
     bool setCompilerActive(bool active, QString& error);
-    /// Sets the command of user compiler `slot` 1..4 ("" empties it).
+    /// Sets the command of user compiler `slot` 1..4 ("" empties it); typed
+    /// at this desk, it is approved for the folder.
     bool setUserCompiler(int slot, const QString& command, QString& error);
     /// Adds the operator's `DEFINE name AS instructions` entry.
     bool addGlobalMacro(const QString& entry, QString& error);
@@ -70,6 +88,7 @@ class NcOptionsHolder : public QObject {
     QString directory_;
     mtc::core::NcOptions options_;
     std::vector<mtc::core::NcOptionsProblem> problems_;
+    UserCompilerAsker asker_;
 };
 
 }  // namespace mtc::hmi

@@ -2,6 +2,7 @@
 
 #include <QCloseEvent>
 #include <QHBoxLayout>
+#include <QMessageBox>
 #include <QSettings>
 #include <QShortcut>
 #include <QStackedWidget>
@@ -10,6 +11,7 @@
 #include "hmi/CellSession.h"
 #include "hmi/KeyMap.h"
 #include "hmi/MachineKeyBar.h"
+#include "hmi/NcOptionsHolder.h"
 #include "hmi/PanelStyle.h"
 #include "hmi/Screen.h"
 #include "hmi/ScreenRegistry.h"
@@ -55,7 +57,27 @@ PanelWindow::PanelWindow(CellSession* session, const ScreenRegistry* registry, Q
     connect(session_, &CellSession::processChanged, this, [this](int slot) {
         if (slot == station_) refresh();
     });
+    session_->ncOptions().setUserCompilerAsker(
+        [this](int slot, const QString& command, const QString& folder) {
+            return askToRunUserCompiler(slot, command, folder);
+        });
     showStation(0);
+}
+
+bool PanelWindow::askToRunUserCompiler(int slot, const QString& command, const QString& folder) {
+    // D-010: the operator sees the whole command before anything of a
+    // program folder runs with their rights; No is the default and Escape.
+    QMessageBox box(QMessageBox::Warning, "User compiler from the program folder",
+                    QString("User compiler %1 of the program folder\n%2\nwants to run this "
+                            "command (from its %3):\n\n%4\n\nIt did not come from this desk. "
+                            "Run it now and from now on for this folder?")
+                        .arg(slot)
+                        .arg(folder, "NC_OPTIONS.CFG", command),
+                    QMessageBox::Yes | QMessageBox::No, this);
+    box.setObjectName("userCompilerQuestion");
+    box.setDefaultButton(QMessageBox::No);
+    box.setEscapeButton(QMessageBox::No);
+    return box.exec() == QMessageBox::Yes;
 }
 
 void PanelWindow::buildStations() {

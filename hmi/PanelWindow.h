@@ -49,6 +49,9 @@ class PanelWindow : public QMainWindow {
     void installShortcuts();
     void refresh();
     void onMachineKey(mtc::core::ControlKey key);
+    /// The question before a user compiler that came with the program folder
+    /// runs (docs/DECISIONS.md D-010): true when the operator says Yes.
+    bool askToRunUserCompiler(int slot, const QString& command, const QString& folder);
 
     CellSession* session_;
     const ScreenRegistry* registry_;

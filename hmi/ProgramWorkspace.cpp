@@ -8,6 +8,7 @@
 #include <QTemporaryDir>
 
 #include "cnc_core/compiler/CompilerFiles.h"
+#include "cnc_core/compiler/CompilerText.h"
 #include "cnc_core/compiler/GlobalMacroFile.h"
 #include "cnc_core/compiler/UserCompilers.h"
 #include "cnc_core/compiler/lookahead/LookAheadPass.h"
@@ -174,6 +175,21 @@ mtc::core::CompileResult ProgramWorkspace::runCompilers(
     const mtc::core::Program& program, const mtc::core::CompilerOptions& options) const {
     const mtc::core::UserCompilerSlots& chain = options_->userCompilers();
     if (chain.empty()) return compiler_.compile(program, options);
+    // D-010: a command that came with the program folder runs only when the
+    // operator has seen and approved it.
+    QString refusal;
+    if (!options_->mayRunUserCompilers(refusal)) {
+        mtc::core::CompileResult refused;
+        refused.status = CompileStatus::Error;
+        mtc::core::CompilerError error;
+        error.code = "USER_COMPILER_NOT_APPROVED";
+        error.program = options.programNumber;
+        error.generalNumber = 1;
+        error.details = {refusal.toStdString()};
+        error.message = "User compiler not approved: not run.";
+        refused.errors.push_back(std::move(error));
+        return refused;
+    }
     // C-011: the user compilers exchange files in the program directory (a
     // temporary one for the built-in programs).
     QString directory = session_->programDirectory();

@@ -5,6 +5,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "cnc_core/compiler/CommandLine.h"
 #include "cnc_core/compiler/GlobalMacroFile.h"
 #include "cnc_core/compiler/SettingsText.h"
 #include "cnc_core/program/AtomicWrite.h"
@@ -83,6 +84,9 @@ std::string checkUserCompilerCommand(std::string_view command) {
             return "the command contains a control character or a line break";
     if (trimmedSettingText(command).size() != command.size())
         return "the command starts or ends with a blank";
+    std::vector<std::string> words;
+    std::string problem;
+    if (!command.empty() && !splitCommandLine(command, words, problem)) return problem;
     return {};
 }
 

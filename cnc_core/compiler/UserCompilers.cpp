@@ -1,12 +1,11 @@
 #include "cnc_core/compiler/UserCompilers.h"
 
-#include <sys/wait.h>
-
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
 
+#include "cnc_core/compiler/CommandLine.h"
 #include "cnc_core/compiler/CompilerFiles.h"
 #include "cnc_core/compiler/CompilerText.h"
 #include "cnc_core/program/AtomicWrite.h"
@@ -14,14 +13,6 @@
 namespace mtc::core {
 
 namespace {
-
-/// `text` quoted for the POSIX shell.
-std::string shellQuoted(const std::string& text) {
-    std::string out = "'";
-    for (char c : text)
-        out += c == '\'' ? std::string("'\\''") : std::string(1, c);
-    return out + "'";
-}
 
 bool readWhole(const std::string& path, std::string& text) {
     std::ifstream in(path, std::ios::binary);
@@ -56,10 +47,17 @@ bool runUserCompiler(int slot, const std::string& command, std::string& text,
             generalError(slot, static_cast<int>(errors.size()) + 1, "cannot write its input file"));
         return false;
     }
-    const std::string line = command + " " + shellQuoted(input) + " " + shellQuoted(output) + " " +
-                             shellQuoted(messages);
-    const int status = std::system(line.c_str());
-    const bool ok = status != -1 && WIFEXITED(status) && WEXITSTATUS(status) == 0;
+    // D-010: no shell in between; the files are three more arguments.
+    std::vector<std::string> arguments;
+    if (!splitCommandLine(command, arguments, problem)) {
+        errors.push_back(generalError(slot, static_cast<int>(errors.size()) + 1,
+                                      "not run: " + problem));
+        std::remove(input.c_str());
+        return false;
+    }
+    arguments.insert(arguments.end(), {input, output, messages});
+    const CommandOutcome outcome = runCommand(arguments, kUserCompilerTimeoutSeconds);
+    const bool ok = outcome.problem.empty() && outcome.exitStatus == 0;
     std::string errorText, identification;
     if (readWhole(messages, errorText))
         for (CompilerError e : parseErrorFile(errorText, identification)) {
@@ -73,10 +71,11 @@ bool runUserCompiler(int slot, const std::string& command, std::string& text,
     std::remove(output.c_str());
     std::remove(messages.c_str());
     if (!ok && errors.empty())
-        errors.push_back(
-            generalError(slot, 1,
-                         "failed (exit status " +
-                             std::to_string(WIFEXITED(status) ? WEXITSTATUS(status) : -1) + ")"));
+        errors.push_back(generalError(
+            slot, 1,
+            outcome.problem.empty()
+                ? "failed (exit status " + std::to_string(outcome.exitStatus) + ")"
+                : outcome.problem));
     return ok;
 }
 

@@ -55,9 +55,13 @@ QString NcOptionsModel::text(const Row& row) const {
         case RowKind::UserCompiler: {
             const std::string& command =
                 mtc::core::userCompilerCommand(holder_->userCompilers(), row.index);
-            return QString("  User compiler %1:        %2")
+            // D-010: a command that came with the folder is marked until approved.
+            return QString("  User compiler %1:        %2%3")
                 .arg(row.index)
-                .arg(command.empty() ? QString("\u2014") : QString::fromStdString(command));
+                .arg(command.empty() ? QString("\u2014") : QString::fromStdString(command))
+                .arg(holder_->userCompilerApproved(row.index)
+                         ? QString()
+                         : QString("   [from the folder: asks before it runs]"));
         }
         case RowKind::Indramat:
             return QString("  INDRAMAT compiler:      %1")

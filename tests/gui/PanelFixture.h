@@ -4,7 +4,9 @@
 #include <QDir>
 #include <QFile>
 #include <QListView>
+#include <QSettings>
 #include <QStandardPaths>
+#include <QTemporaryDir>
 #include <QTest>
 #include <memory>
 
@@ -39,11 +41,17 @@ struct PanelFixture {
     }
 };
 
-/// Settings go to a throw-away location for every test binary.
+/// Settings go to a throw-away location of their own for every test process:
+/// test mode alone puts them in one file under ~/.qttest that every test
+/// binary of every worktree shares, so a parallel run's QSettings().clear()
+/// could wipe this run's user compiler approvals (D-010) mid-test.
 inline void useTestSettings() {
     QStandardPaths::setTestModeEnabled(true);
     QApplication::setOrganizationName("MTC200SimTest");
     QApplication::setApplicationName("mtc200-panel-test");
+    static QTemporaryDir settingsDirectory;
+    QSettings::setPath(QSettings::NativeFormat, QSettings::UserScope, settingsDirectory.path());
+    QSettings::setPath(QSettings::IniFormat, QSettings::UserScope, settingsDirectory.path());
 }
 
 /// The directory at `path` with its files removed (each test case starts
