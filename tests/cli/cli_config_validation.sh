@@ -34,7 +34,7 @@ for bad in "max_velocity = 1e-320" "max_velocity = 0x10" "max_velocity = 5,5" "m
   expect_rc 2 "$bad" --machine velocity.cfg check 1
   text_check "$bad: line and range" "line $vline: velocity.cfg: .*max_velocity.*allowed: 1 … 10000000 mm/min"
 done
-for bad in "B015 = 5,5" "B033 = abc" "B036 =" "B058 = nan" "B062 = 1" "B099 = yes"; do
+for bad in "B015 = 5,5" "B033 = abc" "B036 =" "B058 = nan" "B062 = maybe" "B099 = yes"; do
   bline=$(grep -n '^B015 = radius' "$demo" | head -1 | cut -d: -f1)
   sed "${bline}s/.*/$bad/" "$demo" >parameter.cfg
   expect_rc 2 "$bad" --machine parameter.cfg md get 30
