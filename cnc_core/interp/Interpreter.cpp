@@ -141,6 +141,13 @@ void Interpreter::restoreState(const InterpreterState& state) {
     rebuildNames();
 }
 
+bool Interpreter::writeVariable(int index, double value) {
+    if (index < 0 || index >= kVariableCount) return false;
+    state_.variables.values[static_cast<std::size_t>(index)] = value;
+    state_.variables.written.set(static_cast<std::size_t>(index));
+    return true;
+}
+
 RunResult Interpreter::step() {
     RunResult result;
     if (configDiagnostics_.hasErrors() || !state_.program) return run(0);

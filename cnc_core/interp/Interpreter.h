@@ -152,6 +152,9 @@ class Interpreter {
     const InterpreterState& state() const { return state_; }
     /// Replaces the whole state (e.g. a snapshot taken with state()).
     void restoreState(const InterpreterState& state);
+    /// Writes variable @`index` from outside the program (another process's
+    /// @p:n, the cell's VariableAccess). False (nothing written) out of range.
+    bool writeVariable(int index, double value);
     /// Program levels from the main program to the current block.
     std::vector<StackLevel> callStack() const;
 

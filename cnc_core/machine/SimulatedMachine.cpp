@@ -12,6 +12,24 @@ namespace mtc::core {
 namespace {
 
 constexpr std::size_t kAuxKept = 200;
+constexpr double kPi = 3.14159265358979323846;
+
+/// Under G32 the feed is a path feed on the developed cylinder surface: the
+/// rotary axis of the transformed plane counts in millimetres there (angle x
+/// RI, signed by the polar direction as the interpreter develops it).
+Motion onDevelopedSurface(const Motion& m, const ProcessConfig& config) {
+    Motion developed = m;
+    for (int axis : {m.transformAxis1, m.transformAxis2}) {
+        if (axis < 0 || axis >= static_cast<int>(config.axes.size())) continue;
+        const AxisConfig& a = config.axes[static_cast<std::size_t>(axis)];
+        if (a.kind == AxisKind::Linear) continue;
+        const double factor =
+            (a.polarDirection == 1 ? -1.0 : 1.0) * kPi / 180.0 * m.effectiveRadius;
+        developed.start[static_cast<std::size_t>(axis)] *= factor;
+        developed.end[static_cast<std::size_t>(axis)] *= factor;
+    }
+    return developed;
+}
 
 }  // namespace
 
@@ -28,6 +46,8 @@ double motionSeconds(const Motion& motion, const ProcessConfig& config) {
         return slowest;
     }
     if (motion.feed <= 0) return 0.0;
+    if (motion.transformation == 32 && motion.effectiveRadius > 0)
+        return motionPathLength(onDevelopedSurface(motion, config)) / motion.feed * 60.0;
     return motionPathLength(motion) / motion.feed * 60.0;
 }
 
@@ -37,6 +57,7 @@ SimulatedMachine::SimulatedMachine(const ProcessConfig& config)
 SimulatedMachine::~SimulatedMachine() = default;
 
 void SimulatedMachine::motion(const Motion& m) {
+    lastReportsAfc_ = afc_ && (afc_->active() || afc_->idleMeasurementRequested());
     const double planned = motionSeconds(m, config_);
     ++motions_;
     lastAdapted_ = false;
@@ -48,14 +69,49 @@ void SimulatedMachine::motion(const Motion& m) {
     const bool observed = afc_ && (afc_->active() || afc_->idleMeasurementRequested() ||
                                    (recorder_ && m.type != MotionType::Rapid));
     const bool adaptive = observed && afc_->available() && planned > 0;
+    current_ = m.where;
+    remainingIsRapid_ = m.type == MotionType::Rapid;
+    remainingIsDwell_ = false;
     if (adaptive) {
-        seconds_ += adaptiveMove(m, planned);
+        remaining_ += adaptiveMove(m, planned);
         return;
     }
-    seconds_ += planned;
+    remaining_ += planned;
     for (int i = 0; i < m.axisCount && i < kMaxAxes; ++i)
         position_[i] = m.end[i];
-    if (afc_) afc_->setClock(seconds_);
+    if (afc_) afc_->setClock(seconds_ + remaining_);  // the end of the queued work
+}
+
+double SimulatedMachine::advance(double seconds) {
+    if (seconds <= 0.0) return 0.0;
+    const double percent = remainingIsDwell_   ? 100.0
+                           : remainingIsRapid_ ? rapidOverride_
+                                               : feedOverride_;
+    if (idle() || held_ || percent <= 0.0) return seconds;  // standing: no busy time
+    const double rate = percent / 100.0;
+    const double needed = remaining_ / rate;
+    if (needed <= seconds) {  // the queued output is done within this call
+        remaining_ = 0.0;
+        seconds_ += needed;
+        return needed;
+    }
+    remaining_ -= seconds * rate;
+    seconds_ += seconds;
+    return seconds;
+}
+
+void SimulatedMachine::stop() {
+    remaining_ = 0.0;
+    held_ = false;
+}
+
+double SimulatedMachine::distanceToGo(int) const {
+    return 0.0;  // the interim machine's axes are at the end point of the move
+}
+
+double SimulatedMachine::actualFeed() const {
+    if (idle() || held_ || remainingIsDwell_) return 0.0;
+    return lastFeed_ * (remainingIsRapid_ ? rapidOverride_ : feedOverride_) / 100.0;
 }
 
 void SimulatedMachine::attachAdaptiveFeed(AdaptiveFeedControl* afc, AfcTrendRecorder* recorder) {
@@ -107,7 +163,7 @@ double SimulatedMachine::adaptiveMove(const Motion& m, double planned) {
     move.cutFrom = share.from;
     move.cutTo = share.to;
     move.feedMove = m.type != MotionType::Rapid;
-    move.startTime = seconds_;
+    move.startTime = seconds_ + remaining_;  // after what is queued
     const AfcMoveResult result = simulateAfcMove(*afc_, move, recorder_);
     // AFC-012: after 509 / 510 the axes stand where they stopped, on the path.
     const std::array<double, kMaxAxes> reached = motionPointAt(m, result.fraction);
@@ -126,9 +182,13 @@ void SimulatedMachine::auxiliary(const AuxOutput& output) {
     aux_.push_back(output);
 }
 
-void SimulatedMachine::dwell(const SourceLocation&, double seconds) {
-    if (seconds > 0) seconds_ += seconds;
-    if (afc_) afc_->setClock(seconds_);
+void SimulatedMachine::dwell(const SourceLocation& where, double seconds) {
+    current_ = where;
+    if (seconds <= 0) return;
+    remaining_ += seconds;
+    remainingIsDwell_ = true;
+    remainingIsRapid_ = false;
+    if (afc_) afc_->setClock(seconds_ + remaining_);
 }
 
 void SimulatedMachine::command(const SourceLocation&, const std::string&, const std::string&) {}
@@ -140,9 +200,12 @@ double SimulatedMachine::position(int index) const {
 void SimulatedMachine::reset() {
     if (recorder_) recorder_->clear();  // a new run starts a new trend at time 0
     seconds_ = 0.0;
+    remaining_ = 0.0;
+    held_ = false;
     motions_ = 0;
     aux_.clear();
     if (afc_) afc_->setClock(0.0);
+    current_ = {};
 }
 
 }  // namespace mtc::core

@@ -16,6 +16,7 @@ namespace {
 
 using namespace mtc::core;
 using namespace mtc::test;
+using mtc::test::Station;  // the interpreter fixture, not core::Station
 
 const std::vector<MacroDefinition> kMacros = {{"FAST", "G1 F4000"}, {"COOLANT", "M8"}};
 

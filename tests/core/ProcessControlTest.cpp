@@ -125,7 +125,16 @@ TEST(SimulatedMachine, MotionTimes) {
     machine.motion(m);
     machine.dwell({}, 2.5);
     machine.dwell({}, -1);  // ignored
-    EXPECT_NEAR(machine.seconds(), std::hypot(10, 10) / 10 + 2.5, 1e-9);
+    EXPECT_FALSE(machine.wantsMore()) << "the queued work takes time";
+    EXPECT_EQ(machine.seconds(), 0.0);
+    const double busy = std::hypot(10, 10) / 10 + 2.5;
+    EXPECT_NEAR(machine.advance(1.0), 1.0, 1e-12);
+    machine.hold();
+    EXPECT_EQ(machine.advance(5.0), 5.0) << "held: the time passes, nothing is worked off";
+    machine.resume();
+    EXPECT_NEAR(machine.advance(100.0), busy - 1.0, 1e-9) << "returns when the queue is empty";
+    EXPECT_TRUE(machine.idle());
+    EXPECT_NEAR(machine.seconds(), busy, 1e-9) << "busy time only";
     EXPECT_EQ(machine.position(1), 10);
     machine.reset();
     EXPECT_EQ(machine.seconds(), 0);

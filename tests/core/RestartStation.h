@@ -1,12 +1,14 @@
 #pragma once
 
-// A station for restart-sequence tests: one process of the demo cell with its
-// control keys, simulated SPS and RestartSequence, plus a main program and a
+// A station for restart-sequence tests: one station of the core's cell (its
+// control keys, simulated SPS and RestartSequence), plus a main program and a
 // program 99 with ADJUST / REPOS used by several test files.
 #include <string>
 #include <vector>
 
 #include "RestartTestSupport.h"
+#include "cnc_core/cell/Cell.h"
+#include "cnc_core/machine_data/MachineDataStore.h"
 #include "cnc_core/restart/RestartSequence.h"
 
 namespace mtc::test {
@@ -35,13 +37,66 @@ inline const char* kLibrary =
     "N0006 G77 X0 Y0 F2000\n"
     "N0007 G77 Z0 F1000 RTS\n";
 
-/// A station with control keys, SPS and restart sequence over RestartCell.
+/// The core's cell with the restart programs of one process, under the
+/// names the restart tests use: its store, the station's interpreter (`live`),
+/// the machine data, and a recording of everything the station sends to its
+/// machine (`sps`: moves, aux functions; Station::setOutputListener).
+struct StationCell {
+    explicit StationCell(int process)
+        : cell(demoCell()),
+          station(cell.station(cell.slotOfProcess(process))),
+          config(station.config()),
+          store(cell.store()),
+          machineData(cell.sharedMachineData()),
+          live(station.interpreter()) {
+        station.setOutputListener(&sps);
+    }
+    ~StationCell() { station.setOutputListener(nullptr); }
+
+    /// Parses and stores program `number` (a parse error fails the test).
+    core::ProgramPtr add(const std::string& source, int number) {
+        core::ProgramPtr p = parse(source, number);
+        EXPECT_FALSE(p->diagnostics.hasErrors()) << diagnosticsText(p->diagnostics);
+        store.put(config.index, number, p);
+        return p;
+    }
+    /// Block index of block N`number` of program `program`.
+    std::uint32_t block(int program, int number) const {
+        const core::ProgramPtr p = store.find(config.index, program);
+        for (std::uint32_t b = 0; p && b < p->blocks.size(); ++b)
+            if (p->blocks[b].number == number) return b;
+        ADD_FAILURE() << "no N" << number << " in program " << program;
+        return 0;
+    }
+    core::BlockRef ref(int program, int number) const { return {program, block(program, number)}; }
+    /// A selection in main program `main` with target N`target` of `program`.
+    core::RestartSelection selection(int main, int program, int target,
+                                     std::uint32_t runs = 1) const {
+        core::RestartSelection s;
+        s.process = config.index;
+        s.mainProgram = main;
+        s.target = ref(program, target);
+        s.runs = runs;
+        return s;
+    }
+
+    core::Cell cell;
+    core::Station& station;
+    const core::ProcessConfig& config;
+    core::ProgramStore& store;
+    std::shared_ptr<core::MachineDataStore> machineData;
+    core::Interpreter& live;
+    core::RecordingSink sps;
+};
+
+/// One station of the core's cell with its control keys, SPS and restart
+/// sequence (the same wiring as the panel and the CLI: core::Station).
 struct RestartStation {
     explicit RestartStation(int process)
         : cell(process),
-          control(process),
-          sps(control),
-          sequence(control, sps, cell.live, cell.store, cell.sps) {}
+          control(cell.station.control()),
+          sps(cell.station.sps()),
+          sequence(cell.station.restartSequence()) {}
 
     int signal(const std::string& name) const {
         return control.signalTable().get(control.signalPrefix() + name);
@@ -95,10 +150,10 @@ struct RestartStation {
         EXPECT_FALSE(sequence.active());
     }
 
-    RestartCell cell;
-    core::ProcessControl control;
-    core::SimulatedSps sps;
-    core::RestartSequence sequence;
+    StationCell cell;
+    core::ProcessControl& control;
+    core::SimulatedSps& sps;
+    core::RestartSequence& sequence;
 };
 
 }  // namespace mtc::test

@@ -1,0 +1,375 @@
+#include "cnc_core/cell/Station.h"
+
+#include <algorithm>
+
+#include "cnc_core/afc/AdaptiveFeedControl.h"
+#include "cnc_core/afc/AfcMotion.h"
+#include "cnc_core/machine_data/MachineDataStore.h"
+#include "cnc_core/mdi/MdiEntry.h"
+
+namespace mtc::core {
+
+namespace {
+
+std::string firstProblem(const DiagnosticList& diagnostics, const char* fallback) {
+    for (const Diagnostic& d : diagnostics.items())
+        if (d.severity == Severity::Error) return formatDiagnostic(d);
+    return fallback;
+}
+
+}  // namespace
+
+Station::Station(const ProcessConfig& config, const ProgramStore& programs,
+                 const InterpreterServices& services, MachineDataStore& machineData)
+    : config_(config),
+      control_(config.index),
+      afc_(std::make_shared<AdaptiveFeedControl>(config, machineData, torqueModelFromConfig(config),
+                                                 &control_.signalTable())),
+      machine_(config),
+      output_(machine_),
+      interpreter_(config, programs, output_, services),
+      sps_(control_),
+      restart_(control_, sps_, interpreter_, programs, output_, services.otherProcesses) {
+    restart_.setAxisTransfer(services.axisTransfer);
+    control_.setRunner(this);
+    machine_.attachAdaptiveFeed(afc_.get(), &trend_);
+    interpreter_.setAdaptiveFeed(afc_);
+}
+
+Station::~Station() {
+    control_.setRunner(nullptr);
+}
+
+void Station::Output::motion(const Motion& m) {
+    machine.motion(m);
+    if (listener) listener->motion(m);
+}
+
+void Station::Output::auxiliary(const AuxOutput& a) {
+    machine.auxiliary(a);
+    if (listener) listener->auxiliary(a);
+}
+
+void Station::Output::dwell(const SourceLocation& where, double seconds) {
+    machine.dwell(where, seconds);
+    if (listener) listener->dwell(where, seconds);
+}
+
+void Station::Output::command(const SourceLocation& where, const std::string& keyword,
+                              const std::string& arguments) {
+    machine.command(where, keyword, arguments);
+    if (listener) listener->command(where, keyword, arguments);
+}
+
+bool Station::press(ControlKey key) {
+    const bool ok = control_.press(key);
+    // Feed hold and Control reset act on the machine whoever runs it
+    // (program, MDI, the restart's ADJUST / REPOS).
+    if (ok && key == ControlKey::Stop && control_.programActive()) machine_.hold();
+    if (ok && key == ControlKey::Start && machine_.held()) machine_.resume();
+    if (key == ControlKey::ControlReset) machine_.stop();
+    ++revision_;
+    return ok;
+}
+
+bool Station::selectProgram(int number) {
+    const bool ok = control_.selectProgram(number);
+    // The runtime program (compiled when the source has compiler keywords)
+    // is what the station and its NC program restart work on (C-013).
+    if (ok && number > 0) {
+        const std::string alarm = prepare(number);
+        if (!alarm.empty()) control_.setAlarm(alarm);
+    }
+    ++revision_;
+    return ok;
+}
+
+std::string Station::start(int number) {
+    // Compile on demand / refuse a program with compiler errors: nothing
+    // of the run below has been touched yet when the preparer refuses.
+    if (std::string alarm = prepare(number); !alarm.empty()) return alarm;
+    DiagnosticList diagnostics;
+    if (!interpreter_.select(number, 0, &diagnostics))
+        return firstProblem(diagnostics, "the program cannot be selected");
+    machine_.reset();
+    beginRun(Run::Program);
+    return {};
+}
+
+std::string Station::startMdi() {
+    if (!mdiSource_) return "Start refused: this station has no MDI input";
+    ProgramPtr program;
+    if (std::string alarm = mdiSource_(program); !alarm.empty()) return alarm;
+    DiagnosticList diagnostics;
+    if (!mdi_.begin(interpreter_, program, &diagnostics))
+        return firstProblem(diagnostics, "the MDI entry cannot be selected");
+    mdiDiagnostics_.clear();
+    beginRun(Run::Mdi);
+    return {};
+}
+
+void Station::beginRun(Run run) {
+    run_ = run;
+    feeding_ = true;
+    pending_ = Pending::None;
+    stoppedBy_ = Pending::None;
+    runBlocks_ = 0;
+    runDiagnostics_.clear();
+    runStatus_ = RunStatus::Running;
+    lastProgram_.reset();
+    showCurrentBlock();
+}
+
+std::string Station::resume() {
+    feeding_ = run_ != Run::None && pending_ == Pending::None;
+    if (feeding_) stoppedBy_ = Pending::None;
+    return {};
+}
+
+void Station::hold() {
+    feeding_ = false;
+}
+
+void Station::reset() {
+    interpreter_.controlReset();
+    const bool mdi = run_ == Run::Mdi;
+    if (mdi) mdi_.abandon();  // the automatic program comes back
+    run_ = Run::None;
+    feeding_ = false;
+    pending_ = Pending::None;
+    stoppedBy_ = Pending::None;
+    waitingAxis_.clear();
+    machine_.stop();
+    machine_.reset();
+    lastProgram_.reset();
+    control_.setCurrentBlock({});
+    ++revision_;
+    if (mdi && mdiEnded_) mdiEnded_(false);
+}
+
+void Station::continueAfterRestart() {
+    if (!runOnAfterRestart_) return;
+    run_ = Run::Program;
+    feeding_ = true;
+    pending_ = Pending::None;
+    ++revision_;
+}
+
+double Station::advance(double seconds, std::uint64_t maxBlocks) {
+    std::uint64_t blocks = 0;
+    double left = seconds > 0.0 ? seconds : 0.0;
+    const double busyBefore = machine_.seconds();
+    for (;;) {
+        const std::uint64_t before = blocks;
+        advanceRestart(blocks, maxBlocks);
+        feed(blocks, maxBlocks);
+        settle();
+        // Out of blocks while the machine still wants more: the station
+        // lags behind the clock rather than letting time pass without work.
+        if ((running() || computing()) && machine_.wantsMore() && blocks >= maxBlocks) break;
+        if (left <= 0.0) break;
+        const double used = machine_.advance(left);
+        left -= used;
+        if (used <= 0.0 && blocks == before) break;  // nothing can go on
+    }
+    if (blocks > 0 || machine_.seconds() != busyBefore) ++revision_;
+    showCurrentBlock();
+    return seconds > 0.0 ? seconds - left : 0.0;
+}
+
+bool Station::acceptRestart(const RestartSelection& selection, DiagnosticList& diagnostics,
+                            std::uint64_t budget) {
+    const InterpreterState snapshot = interpreter_.state();
+    if (!restart_.accept(selection, diagnostics, budget)) return false;
+    restartBefore_ = snapshot;
+    restartStarted_ = true;
+    restartComputingMs_ = 0.0;
+    computingSince_ = std::chrono::steady_clock::now();
+    followRestartPhase();
+    ++revision_;
+    return true;
+}
+
+void Station::abortRestart() {
+    if (!restart_.active()) return;
+    restart_.requestAbort();
+    std::uint64_t blocks = 0;
+    advanceRestart(blocks, 0);
+    machine_.stop();
+}
+
+bool Station::jogRestart(int axis, double distance) {
+    if (axis < 0 || axis >= kMaxAxes) return false;
+    const bool ok = restart_.jog(axis, machine_.position(axis) + distance);
+    if (ok) ++revision_;
+    return ok;
+}
+
+bool Station::computing() const {
+    const RestartPhase phase = restart_.phase();
+    return (phase == RestartPhase::Active || phase == RestartPhase::Computing) &&
+           !restart_.held() && restart_.waitingFor().empty();
+}
+
+void Station::advanceRestart(std::uint64_t& blocks, std::uint64_t maxBlocks) {
+    if (!restart_.active()) return followRestartPhase();
+    const RestartPhase phase = restart_.phase();
+    if (phase == RestartPhase::Active || phase == RestartPhase::Computing) {
+        const std::uint64_t before = restart_.computing().blocksSoFar();
+        restart_.advance(maxBlocks > blocks ? maxBlocks - blocks : 0);
+        blocks += restart_.computing().blocksSoFar() - before;
+    } else if (phase == RestartPhase::Adjusting || phase == RestartPhase::Repositioning) {
+        // ADJUST and REPOS move the axes: one block whenever the machine wants more.
+        do {
+            const std::uint64_t before = restart_.sequenceBlocks();
+            restart_.advance(1);
+            blocks += std::max<std::uint64_t>(1, restart_.sequenceBlocks() - before);
+        } while (machine_.wantsMore() && blocks < maxBlocks && !restart_.held() &&
+                 (restart_.phase() == RestartPhase::Adjusting ||
+                  restart_.phase() == RestartPhase::Repositioning));
+    } else {
+        restart_.advance(0);  // an SPS scan while the sequence waits for the operator
+    }
+    followRestartPhase();
+}
+
+void Station::followRestartPhase() {
+    const RestartPhase phase = restart_.phase();
+    if (phase == restartPhase_) return;
+    const auto computingPhase = [](RestartPhase p) {
+        return p == RestartPhase::Active || p == RestartPhase::Computing;
+    };
+    if (computingPhase(restartPhase_) && !computingPhase(phase))
+        restartComputingMs_ = std::chrono::duration<double, std::milli>(
+                                  std::chrono::steady_clock::now() - computingSince_)
+                                  .count();
+    restartPhase_ = phase;
+    ++revision_;
+    // State re-established: machining continues at the target block in
+    // simulated time, as after Start (seed 000, 2.9 step 9).
+    if (phase == RestartPhase::Reestablished) continueAfterRestart();
+}
+
+void Station::feed(std::uint64_t& blocks, std::uint64_t maxBlocks) {
+    while (running() && pending_ == Pending::None && machine_.wantsMore() && blocks < maxBlocks) {
+        const InterpreterState& state = interpreter_.state();
+        if (state.program.get() != lastProgram_.get()) lastProgram_ = state.program;
+        lastBlock_ = state.block;
+        const RunResult result = budget_ > 0 && runBlocks_ >= budget_ ? budgetExceeded()
+                                 : run_ == Run::Mdi                   ? mdi_.step()
+                                                                      : interpreter_.step();
+        blocks += result.blocksInterpreted;
+        runBlocks_ += result.blocksInterpreted;
+        if (!result.diagnostics.empty()) runDiagnostics_.append(result.diagnostics);
+        if (!waitingAxis_.empty() && result.blocksInterpreted > 0) {
+            waitingAxis_.clear();  // the GAX was granted
+            control_.setAlarm({});
+        }
+        if (!handle(result)) return;
+    }
+}
+
+RunResult Station::budgetExceeded() const {
+    RunResult result;
+    result.status = RunStatus::BudgetExceeded;
+    const std::vector<StackLevel> levels = interpreter_.callStack();
+    const StackLevel at = levels.empty() ? StackLevel{} : levels.back();
+    result.diagnostics.error("BLOCK_BUDGET", {at.program, at.block, at.line, 0},
+                             "the run was stopped after " + std::to_string(budget_) +
+                                 " interpreted blocks (block budget); is the program an "
+                                 "endless loop?");
+    return result;
+}
+
+bool Station::handle(const RunResult& result) {
+    switch (result.status) {
+        case RunStatus::Running:
+            if (!control_.singleBlock()) return true;
+            pending_ = Pending::SingleBlock;  // hold after the block until Start
+            return false;
+        case RunStatus::Stopped:
+            if (waitForAxis()) return false;
+            pending_ = Pending::ProgrammedStop;
+            return false;
+        case RunStatus::Ended:
+        case RunStatus::TargetReached:
+        case RunStatus::BudgetExceeded:
+        case RunStatus::Error:
+            pending_ = Pending::End;
+            ending_ = result;
+            return false;
+    }
+    return false;
+}
+
+void Station::settle() {
+    if (pending_ == Pending::None || !machine_.idle()) return;
+    const Pending pending = pending_;
+    pending_ = Pending::None;
+    ++revision_;
+    switch (pending) {
+        case Pending::SingleBlock:
+            feeding_ = false;
+            stoppedBy_ = pending;
+            control_.programStopped("Single block: press Start for the next block");
+            return;
+        case Pending::ProgrammedStop:
+            feeding_ = false;
+            stoppedBy_ = pending;
+            control_.programStopped("Programmed stop: press Start to continue");
+            return;
+        case Pending::End:
+            finish(ending_);
+            return;
+        case Pending::None:
+            return;
+    }
+}
+
+bool Station::waitForAxis() {
+    const std::string axis = interpreter_.waitingForAxis();
+    if (axis.empty()) return false;
+    // The next advance() looks again; the machine stands meanwhile (its busy
+    // time does not grow), the other processes go on.
+    if (axis != waitingAxis_) {
+        waitingAxis_ = axis;
+        control_.setAlarm("Waiting for axis " + axis + " (GAX: another process holds it)");
+        ++revision_;
+    }
+    return true;
+}
+
+void Station::finish(const RunResult& result) {
+    const bool mdi = run_ == Run::Mdi;
+    run_ = Run::None;
+    feeding_ = false;
+    runStatus_ = result.status;
+    showCurrentBlock();
+    std::string alarm;
+    if (mdi) {
+        mdiDiagnostics_ = result.diagnostics;
+        for (const Diagnostic& d : mdiDiagnostics_.items())
+            if (d.severity == Severity::Error) {
+                alarm = formatMdiDiagnostic(d);
+                break;
+            }
+        if (alarm.empty() && result.status != RunStatus::Ended)
+            alarm = "MDI: the entry stopped with an error";
+    } else if (result.status == RunStatus::Error || result.status == RunStatus::BudgetExceeded) {
+        alarm = firstProblem(result.diagnostics, "the program stopped with an error");
+    }
+    control_.programFinished(alarm);
+    if (mdi && mdiEnded_) mdiEnded_(alarm.empty());
+}
+
+void Station::showCurrentBlock() {
+    // The block the machine executes; while it stands, the one interpreted last.
+    if (!machine_.idle() && !machine_.currentLocation().block.empty()) {
+        if (control_.currentBlock() != machine_.currentLocation().block)
+            control_.setCurrentBlock(machine_.currentLocation().block);
+        return;
+    }
+    control_.setCurrentBlock(lastProgram_ ? lastProgram_->blockId(lastBlock_) : std::string());
+}
+
+}  // namespace mtc::core

@@ -1,0 +1,226 @@
+#pragma once
+
+#include <chrono>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <string>
+
+#include "cnc_core/afc/AfcTrendRecorder.h"
+#include "cnc_core/interp/Interpreter.h"
+#include "cnc_core/machine/MachineConfig.h"
+#include "cnc_core/machine/ProcessControl.h"
+#include "cnc_core/machine/SimulatedMachine.h"
+#include "cnc_core/mdi/MdiRun.h"
+#include "cnc_core/restart/RestartSequence.h"
+#include "cnc_core/restart/SimulatedSps.h"
+
+namespace mtc::core {
+
+class AdaptiveFeedControl;
+class MachineDataStore;
+
+/// Most blocks one advance() call interprets: keeps a panel tick well under
+/// a frame; a station whose program computes without moving lags behind the
+/// clock instead (its simulated time only goes on while the machine works).
+inline constexpr std::uint64_t kBlocksPerAdvance = 20'000;
+
+/// One process (channel) of the cell, everything it runs on: process control
+/// (mode, M keys, alarm, interface signals), the interpreter on the simulated
+/// machine, adaptive feed control and its trend, the simulated SPS and the
+/// NC program restart sequence (which takes the M keys while it is active).
+/// The panel, the CLI and the tests drive it the same way: machine keys
+/// through press(), time through advance(). Not copyable; everything it is
+/// given must outlive it.
+///
+/// Time (docs/decisions/station.md): the interpreter fills the machine's
+/// queue while the machine wants more; the machine works it off in simulated
+/// time; M00, single block, errors and the program end take effect when the
+/// machine has finished what was queued before them. The block the station
+/// shows is the block the machine executes.
+class Station : private ProgramRunner {
+  public:
+    Station(const ProcessConfig& config, const ProgramStore& programs,
+            const InterpreterServices& services, MachineDataStore& machineData);
+    ~Station() override;
+    Station(const Station&) = delete;
+    Station& operator=(const Station&) = delete;
+
+    const ProcessConfig& config() const { return config_; }
+    int process() const { return config_.index; }
+    ProcessControl& control() { return control_; }
+    const ProcessControl& control() const { return control_; }
+    Interpreter& interpreter() { return interpreter_; }
+    const Interpreter& interpreter() const { return interpreter_; }
+    SimulatedMachine& machine() { return machine_; }
+    const SimulatedMachine& machine() const { return machine_; }
+    /// Adaptive feed control (page 30, signals, errors 508-510).
+    AdaptiveFeedControl& adaptiveFeed() { return *afc_; }
+    /// The adaptive feed trend the machine records.
+    const AfcTrendRecorder& afcTrend() const { return trend_; }
+
+    /// A machine control key (M key), as the operator presses it. Returns
+    /// false (the alarm says why) when it is not allowed now.
+    bool press(ControlKey key);
+    /// Selects program `number` (refused while a program is active). The
+    /// runtime program is prepared at once (compile on demand, C-013); a
+    /// refusal of the preparer becomes the alarm.
+    bool selectProgram(int number);
+
+    /// Moves the station on by `seconds` of simulated time: blocks are
+    /// interpreted while the machine wants more (at most `maxBlocks`), the
+    /// machine works in time. Returns the simulated time that passed; less
+    /// than `seconds` when the block bound was reached first (the station
+    /// lags; the next call goes on from there).
+    double advance(double seconds, std::uint64_t maxBlocks = kBlocksPerAdvance);
+    /// A program or MDI entry runs (active, not held, not stopped).
+    bool running() const { return run_ != Run::None && feeding_; }
+    /// Something needs time: a run, or the machine working off its queue.
+    bool busy() const { return run_ != Run::None || !machine_.idle(); }
+    /// Grows with every change the screens show (blocks, positions, keys).
+    std::uint64_t revision() const { return revision_; }
+    /// The axis this process waits for (GAX, R-022), "" when none.
+    const std::string& waitingAxis() const { return waitingAxis_; }
+    /// Blocks interpreted since the last Start.
+    std::uint64_t runBlocks() const { return runBlocks_; }
+    /// Bound of interpreted blocks per run: past it the run ends with
+    /// BLOCK_BUDGET (0 = none, the panel's machine may loop for ever; the
+    /// CLI's --max-blocks).
+    void setBlockBudget(std::uint64_t blocks) { budget_ = blocks; }
+    /// Warnings and errors of the current (or last) run since Start.
+    const DiagnosticList& runDiagnostics() const { return runDiagnostics_; }
+    /// How the last run ended; Running while one runs or none ran yet.
+    RunStatus runStatus() const { return runStatus_; }
+    /// Held at M00 / M01 (or M01 with optional stop): Start continues.
+    bool atProgrammedStop() const { return stoppedBy_ == Pending::ProgrammedStop; }
+    /// Sees everything the interpreter (and the restart's jogging) sends to
+    /// the machine, as it is sent (the CLI's motion list, recording tests).
+    /// Not owned; nullptr = none.
+    void setOutputListener(MachineSink* listener) { output_.listener = listener; }
+
+    /// Makes the runtime program of a number ready before it runs or returns
+    /// an alarm that refuses Start ("" = ready).
+    using ProgramPreparer = std::function<std::string(int number)>;
+    /// Installs (empty function: removes) the preparer Start calls first.
+    void setPreparer(ProgramPreparer preparer) { preparer_ = std::move(preparer); }
+    /// Runs the preparer for `number` ("" when none is installed).
+    std::string prepare(int number) const { return preparer_ ? preparer_(number) : std::string(); }
+
+    /// Gives the program of the MDI entry for Start in MDI mode, or an alarm.
+    using MdiSource = std::function<std::string(ProgramPtr& program)>;
+    void setMdiSource(MdiSource source) { mdiSource_ = std::move(source); }
+    /// Told when an MDI entry ends (`completed` false after an error or reset).
+    using MdiEnded = std::function<void(bool completed)>;
+    void setMdiEnded(MdiEnded ended) { mdiEnded_ = std::move(ended); }
+    /// True while an MDI entry runs (or is held).
+    bool mdiRunning() const { return run_ == Run::Mdi; }
+    /// Diagnostics of the last MDI run (lines = lines of the MDI input).
+    const DiagnosticList& lastMdiDiagnostics() const { return mdiDiagnostics_; }
+
+    // ---- NC program restart (seed 000): the sequence takes the M keys while
+    // it is active; advance() runs its computing process in block slices and
+    // ADJUST / REPOS through the machine in time.
+    /// Hands the operator's selection to the sequence (PxxSBPACT; the SPS
+    /// starts the computing process). False with the reasons in
+    /// `diagnostics` when the NC refuses it; then nothing changed.
+    bool acceptRestart(const RestartSelection& selection, DiagnosticList& diagnostics,
+                       std::uint64_t budget = kDefaultBlockBudget);
+    /// Abort: the next advance() ends the restart as Control reset would.
+    void abortRestart();
+    /// Manual mode between the subroutines: jogs machine axis `axis` by
+    /// `distance` (seed 000, 2.9). False when the sequence refuses it.
+    bool jogRestart(int axis, double distance);
+    const RestartSequence& restart() const { return restart_; }
+    /// The sequence itself, for tests that step it without the station's time.
+    RestartSequence& restartSequence() { return restart_; }
+    SimulatedSps& sps() { return sps_; }
+    /// A restart was accepted since the station came up.
+    bool restartStarted() const { return restartStarted_; }
+    /// The interpreter state when the restart was accepted ("machine now").
+    const InterpreterState& restartBefore() const { return restartBefore_; }
+    /// Wall-clock milliseconds the last computing process took (0 while it runs).
+    double restartComputingMs() const { return restartComputingMs_; }
+    /// False: a re-established state does not run on (the CLI reports the
+    /// state at the re-entry); true (default): machining continues.
+    void setRunOnAfterRestart(bool runOn) { runOnAfterRestart_ = runOn; }
+    /// The computing process runs and is not waiting (held, GAX / FAX): it
+    /// only needs processor time, the panel may give it back-to-back slices.
+    bool computing() const;
+
+  private:
+    /// The interpreter's sink: the machine, and the listener when there is one.
+    struct Output : MachineSink {
+        explicit Output(SimulatedMachine& machine) : machine(machine) {}
+        void motion(const Motion& m) override;
+        void auxiliary(const AuxOutput& a) override;
+        void dwell(const SourceLocation& where, double seconds) override;
+        void command(const SourceLocation& where, const std::string& keyword,
+                     const std::string& arguments) override;
+        SimulatedMachine& machine;
+        MachineSink* listener = nullptr;
+    };
+    enum class Run { None, Program, Mdi };
+    /// What happens once the machine has worked off its queue.
+    enum class Pending { None, SingleBlock, ProgrammedStop, End };
+
+    // ProgramRunner: what ProcessControl calls for Start, Stop, Reset.
+    std::string start(int number) override;
+    std::string startMdi() override;
+    std::string resume() override;
+    void hold() override;
+    void reset() override;
+
+    void beginRun(Run run);
+    /// The restart's share of advance(): blocks of the computing process,
+    /// ADJUST / REPOS while the machine wants more, one SPS scan.
+    void advanceRestart(std::uint64_t& blocks, std::uint64_t maxBlocks);
+    void followRestartPhase();
+    void continueAfterRestart();
+    void feed(std::uint64_t& blocks, std::uint64_t maxBlocks);
+    /// Handles one step's result; false when feeding stops.
+    bool handle(const RunResult& result);
+    /// The block bound is used up: the run ends with BLOCK_BUDGET.
+    RunResult budgetExceeded() const;
+    void settle();
+    bool waitForAxis();
+    void finish(const RunResult& result);
+    void showCurrentBlock();
+
+    const ProcessConfig& config_;
+    ProcessControl control_;
+    std::shared_ptr<AdaptiveFeedControl> afc_;
+    AfcTrendRecorder trend_;
+    SimulatedMachine machine_;
+    Output output_;
+    Interpreter interpreter_;
+    SimulatedSps sps_;
+    RestartSequence restart_;
+    RestartPhase restartPhase_ = RestartPhase::Idle;  ///< phase at the last look
+    bool restartStarted_ = false;
+    InterpreterState restartBefore_;
+    double restartComputingMs_ = 0.0;
+    std::chrono::steady_clock::time_point computingSince_;
+    ProgramPreparer preparer_;
+    MdiSource mdiSource_;
+    MdiEnded mdiEnded_;
+    MdiRun mdi_;
+    DiagnosticList mdiDiagnostics_;
+
+    Run run_ = Run::None;
+    bool feeding_ = false;  ///< the interpreter may give the machine the next block
+    Pending pending_ = Pending::None;
+    Pending stoppedBy_ = Pending::None;  ///< why the run is held (SingleBlock, ProgrammedStop)
+    RunResult ending_;
+    DiagnosticList runDiagnostics_;
+    RunStatus runStatus_ = RunStatus::Running;
+    std::uint64_t budget_ = 0;
+    bool runOnAfterRestart_ =
+        true;  ///< the step that ended the run (taken when the machine is idle)
+    std::uint64_t runBlocks_ = 0;
+    std::uint64_t revision_ = 0;
+    std::string waitingAxis_;
+    ProgramPtr lastProgram_;  ///< program and block interpreted last
+    std::uint32_t lastBlock_ = 0;
+};
+
+}  // namespace mtc::core
