@@ -10,7 +10,6 @@
 #include "hmi/PanelStartup.h"
 #include "hmi/PanelWindow.h"
 #include "hmi/ScreenRegistry.h"
-#include "hmi/SimulationClock.h"
 #include "screens/ScreenCatalog.h"
 
 namespace {
@@ -23,13 +22,15 @@ int fail(const QString& message) {
 /// end at (nearly) unlimited simulation speed. Returns "" or the alarm.
 QString runToEnd(mtc::hmi::CellSession& session, int process) {
     const int slot = std::max(0, session.slotOfProcess(std::max(0, process)));
-    session.clock(slot).setSpeed(1e9);
+    mtc::core::Station& station = session.station(slot);
     if (!session.pressKey(slot, mtc::core::ControlKey::Start))
-        return QString::fromStdString(session.control(slot).alarm());
-    for (int tick = 0; tick < 1000000 && session.control(slot).programActive(); ++tick)
-        session.clock(slot).tick();
-    session.clock(slot).setSpeed(1.0);
-    return QString::fromStdString(session.control(slot).alarm());
+        return QString::fromStdString(station.control().alarm());
+    // As fast as possible, as the CLI runs; bounded like the CLI's --max-blocks.
+    while (station.control().programActive() && !station.control().programHeld() &&
+           station.runBlocks() < mtc::core::kDefaultBlockBudget)
+        station.advance(3600.0);
+    session.advance(0.0);  // the screens learn what changed
+    return QString::fromStdString(station.control().alarm());
 }
 }  // namespace
 
@@ -50,6 +51,7 @@ int main(int argc, char** argv) {
     auto session = mtc::hmi::createSession(options, error);
     if (!session) return fail(error);
 
+    session->setSpeed(options.speed);
     mtc::hmi::ScreenRegistry registry;
     mtc::screens::registerAllScreens(registry);
     mtc::hmi::PanelWindow window(session.get(), &registry);

@@ -1,65 +1,31 @@
 #include "hmi/CellSession.h"
 
-#include "cnc_core/afc/AdaptiveFeedControl.h"
-#include "cnc_core/afc/AfcMotion.h"
-#include "cnc_core/afc/AfcTrendRecorder.h"
-#include "cnc_core/interp/Interpreter.h"
-#include "cnc_core/language/Parser.h"
-#include "cnc_core/machine/SimulatedMachine.h"
+#include <algorithm>
+#include <cmath>
+
 #include "cnc_core/machine_data/SharedMachineDataFile.h"
 #include "cnc_core/machine_data/MachineDataStore.h"
 #include "hmi/NcOptionsHolder.h"
-#include "hmi/SimulationClock.h"
 
 namespace mtc::hmi {
 
 namespace {
-/// The configuration's tool lists and zero offsets (its problems are the
-/// interpreters' configuration diagnostics).
-mtc::core::SetupData setupDataOf(const mtc::core::MachineConfig& config) {
-    mtc::core::DiagnosticList ignored;
-    return mtc::core::SetupData::fromConfig(config, ignored);
-}
+/// Longest real time one tick makes up for (a stalled event loop does not
+/// make the machine jump).
+constexpr double kMaxTickSeconds = 0.25;
+/// As fast as possible: simulated time one advance() may cover, and the
+/// wall time a tick may use before the panel handles events again.
+constexpr double kMaxSpeedStep = 3600.0;
+constexpr qint64 kTickBudgetNs = 8'000'000;
 }  // namespace
 
-/// Everything one process of the cell runs on.
-struct CellSession::Station {
-    Station(const mtc::core::ProcessConfig& config, const mtc::core::ProgramStore& store,
-            const mtc::core::InterpreterServices& services, mtc::core::MachineDataStore& data)
-        : control(config.index),
-          afc(std::make_shared<mtc::core::AdaptiveFeedControl>(
-              config, data, mtc::core::torqueModelFromConfig(config), &control.signalTable())),
-          machine(config),
-          interpreter(config, store, machine, services),
-          clock(interpreter, machine, control) {
-        control.setRunner(&clock);
-        machine.attachAdaptiveFeed(afc.get(), &trend);
-        interpreter.setAdaptiveFeed(afc);
-    }
-    mtc::core::ProcessControl control;
-    std::shared_ptr<mtc::core::AdaptiveFeedControl> afc;
-    mtc::core::AfcTrendRecorder trend;
-    mtc::core::SimulatedMachine machine;
-    mtc::core::Interpreter interpreter;
-    SimulationClock clock;
-};
-
 CellSession::CellSession(mtc::core::MachineConfig config, QObject* parent)
-    : QObject(parent),
-      config_(std::move(config)),
-      machineData_(std::make_shared<mtc::core::MachineDataStore>(config_)),
-      setupData_(setupDataOf(config_)) {
-    mtc::core::InterpreterServices services;
-    services.machineData = machineData_;
-    services.axisTransfer = &axisTransfer_;  // GAX / FAX of normal runs
-    for (int slot = 0; slot < processCount(); ++slot) {
-        services.tools = setupData_.tools(processConfig(slot).index);
-        services.zeroOffsets = setupData_.offsets(processConfig(slot).index);
-        stations_.push_back(
-            std::make_unique<Station>(processConfig(slot), store_, services, *machineData_));
-        connect(&stations_.back()->clock, &SimulationClock::changed, this,
-                [this, slot] { emit processChanged(slot); });
-    }
+    : QObject(parent), cell_(std::move(config)) {
+    announced_.assign(static_cast<std::size_t>(cell_.stationCount()), 0);
+    timer_.setInterval(kTickMs);
+    connect(&timer_, &QTimer::timeout, this, &CellSession::tick);
+    realTime_.start();
+    timer_.start();
     saveTimer_.setSingleShot(true);
     saveTimer_.setInterval(kNcSaveDelayMs);
     connect(&saveTimer_, &QTimer::timeout, this, [this] {
@@ -90,89 +56,102 @@ CellSession::~CellSession() {
 }
 
 bool CellSession::machineDataUnsaved() const {
-    return !machineDataFile_.isEmpty() && machineData_->revision() != savedRevision_;
+    return !machineDataFile_.isEmpty() && cell_.sharedMachineData()->revision() != savedRevision_;
 }
 
 const mtc::core::ProcessConfig& CellSession::processConfig(int slot) const {
-    return config_.processes.at(static_cast<size_t>(slot));
-}
-
-mtc::core::ProcessControl& CellSession::control(int slot) {
-    return stations_.at(static_cast<size_t>(slot))->control;
-}
-
-const mtc::core::ProcessControl& CellSession::control(int slot) const {
-    return stations_.at(static_cast<size_t>(slot))->control;
-}
-
-mtc::core::Interpreter& CellSession::interpreter(int slot) {
-    return stations_.at(static_cast<size_t>(slot))->interpreter;
-}
-
-mtc::core::SimulatedMachine& CellSession::machine(int slot) {
-    return stations_.at(static_cast<size_t>(slot))->machine;
-}
-
-SimulationClock& CellSession::clock(int slot) {
-    return stations_.at(static_cast<size_t>(slot))->clock;
-}
-
-mtc::core::AdaptiveFeedControl& CellSession::adaptiveFeed(int slot) {
-    return *stations_.at(static_cast<size_t>(slot))->afc;
-}
-
-const mtc::core::AfcTrendRecorder& CellSession::afcTrend(int slot) const {
-    return stations_.at(static_cast<size_t>(slot))->trend;
-}
-
-int CellSession::slotOfProcess(int process) const {
-    for (int slot = 0; slot < processCount(); ++slot)
-        if (processConfig(slot).index == process) return slot;
-    return -1;
+    return station(slot).config();
 }
 
 void CellSession::addProgram(int slot, int number, const std::string& name, std::string text) {
-    mtc::core::ParseOptions options;
-    options.programNumber = number;
-    options.name = name;
-    putProgram(
-        slot, number,
-        std::make_shared<mtc::core::Program>(mtc::core::parseProgram(std::move(text), options)));
-}
-
-void CellSession::putProgram(int slot, int number, mtc::core::ProgramPtr program) {
-    store_.put(processConfig(slot).index, number, std::move(program));
+    cell_.addProgram(slot, number, name, std::move(text));
     emit processChanged(slot);
 }
 
-std::vector<mtc::core::ProgramPtr> CellSession::programs(int slot) const {
-    std::vector<mtc::core::ProgramPtr> list;
-    const int process = processConfig(slot).index;
-    for (const auto& [key, program] : store_.programs())
-        if (key.first == process) list.push_back(program);
-    return list;
-}
-
-mtc::core::ProgramPtr CellSession::program(int slot, int number) const {
-    return store_.findSource(processConfig(slot).index, number);
+void CellSession::putProgram(int slot, int number, mtc::core::ProgramPtr program) {
+    cell_.putProgram(slot, number, std::move(program));
+    emit processChanged(slot);
 }
 
 bool CellSession::pressKey(int slot, mtc::core::ControlKey key) {
-    bool ok = control(slot).press(key);
+    const bool ok = station(slot).press(key);
+    announceChanges();
     emit processChanged(slot);
     return ok;
 }
 
 bool CellSession::selectProgram(int slot, int number) {
-    bool ok = control(slot).selectProgram(number);
-    // The runtime program (compiled when the source has compiler keywords)
-    // is what the station and its NC program restart work on (C-013).
-    if (ok && number > 0) {
-        const std::string alarm = clock(slot).prepare(number);
-        if (!alarm.empty()) control(slot).setAlarm(alarm);
-    }
+    const bool ok = station(slot).selectProgram(number);
+    announceChanges();
     emit processChanged(slot);
     return ok;
+}
+
+void CellSession::setSpeed(double factor) {
+    speed_ = std::isfinite(factor) && factor > 0 ? factor : kMaxSpeed;
+    emit speedChanged();
+}
+
+void CellSession::cycleSpeed() {
+    if (speed_ == 1.0)
+        setSpeed(10.0);
+    else if (speed_ == 10.0)
+        setSpeed(kMaxSpeed);
+    else
+        setSpeed(1.0);
+}
+
+QString CellSession::speedText() const {
+    if (speed_ == kMaxSpeed) return "max";
+    return QString("\u00d7%1").arg(speed_);
+}
+
+void CellSession::setTimerEnabled(bool enabled) {
+    if (enabled && !timer_.isActive()) {
+        realTime_.restart();
+        timer_.start();
+    }
+    if (!enabled) timer_.stop();
+}
+
+void CellSession::advance(double seconds) {
+    cell_.advance(seconds);
+    announceChanges();
+}
+
+void CellSession::tick() {
+    QElapsedTimer budget;
+    budget.start();
+    const double real = std::min(realTime_.restart() / 1000.0, kMaxTickSeconds);
+    if (speed_ != kMaxSpeed) {
+        cell_.advance(real * speed_);
+    } else {
+        do
+            cell_.advance(kMaxSpeedStep);
+        while (anyStation(&mtc::core::Station::running) && budget.nsecsElapsed() < kTickBudgetNs);
+    }
+    // A restart computing process only needs processor time: back-to-back
+    // slices within the tick's budget, and the next tick at once.
+    while (anyStation(&mtc::core::Station::computing) && budget.nsecsElapsed() < kTickBudgetNs)
+        for (int slot = 0; slot < cell_.stationCount(); ++slot)
+            if (cell_.station(slot).computing()) cell_.station(slot).advance(0.0);
+    timer_.setInterval(anyStation(&mtc::core::Station::computing) ? 0 : kTickMs);
+    announceChanges();
+}
+
+bool CellSession::anyStation(bool (mtc::core::Station::*state)() const) const {
+    for (int slot = 0; slot < cell_.stationCount(); ++slot)
+        if ((cell_.station(slot).*state)()) return true;
+    return false;
+}
+
+void CellSession::announceChanges() {
+    for (int slot = 0; slot < cell_.stationCount(); ++slot) {
+        const std::uint64_t revision = cell_.station(slot).revision();
+        if (revision == announced_[static_cast<std::size_t>(slot)]) continue;
+        announced_[static_cast<std::size_t>(slot)] = revision;
+        emit processChanged(slot);
+    }
 }
 
 QStringList CellSession::openMachineDataFile(const QString& path) {
@@ -182,13 +161,13 @@ QStringList CellSession::openMachineDataFile(const QString& path) {
     refreshTimer_.stop();
     if (path.isEmpty()) return machineDataMessages_;
     sharedData_ = std::make_unique<mtc::core::SharedMachineDataFile>(path.toStdString());
-    const mtc::core::MachineDataLoadResult result = sharedData_->open(*machineData_);
-    savedRevision_ = machineData_->revision();
+    const mtc::core::MachineDataLoadResult result = sharedData_->open(machineData());
+    savedRevision_ = machineData().revision();
     for (const mtc::core::Diagnostic& d : result.diagnostics.items())
         machineDataMessages_ << QString::fromStdString(d.message);
     // Tool lists and zero offsets beside it (a refused file changes nothing).
     mtc::core::DiagnosticList setup;
-    setupData_.load(mtc::core::setupDataFilesBeside(path.toStdString()), setup);
+    setupData().load(mtc::core::setupDataFilesBeside(path.toStdString()), setup);
     for (const mtc::core::Diagnostic& d : setup.items())
         machineDataMessages_ << QString::fromStdString(d.message);
     refreshTimer_.start();
@@ -206,8 +185,8 @@ static QString takeOverMessage(const QString& file, std::size_t count) {
 
 bool CellSession::saveMachineData(QString& error) {
     if (!sharedData_) return true;
-    const std::uint64_t before = machineData_->revision();
-    const mtc::core::MachineDataSync sync = sharedData_->save(*machineData_);
+    const std::uint64_t before = machineData().revision();
+    const mtc::core::MachineDataSync sync = sharedData_->save(machineData());
     for (const mtc::core::Diagnostic& d : sync.diagnostics.items())
         machineDataMessages_ << QString::fromStdString(d.message);
     if (!sync.ok) {
@@ -216,7 +195,7 @@ bool CellSession::saveMachineData(QString& error) {
     }
     // The saved revision: what the store holds now (the take-over included),
     // unless the NC changed something since the save began (then: unsaved).
-    savedRevision_ = sync.takenOver > 0 ? machineData_->revision() : before;
+    savedRevision_ = sync.takenOver > 0 ? machineData().revision() : before;
     if (sync.takenOver > 0) {
         machineDataMessages_ << takeOverMessage(machineDataFile_, sync.takenOver);
         emit machineDataNotice(machineDataMessages_.back());
@@ -229,9 +208,9 @@ bool CellSession::saveMachineData(QString& error) {
 int CellSession::refreshMachineData() {
     if (!sharedData_) return 0;
     const bool unsaved = machineDataUnsaved();
-    const mtc::core::MachineDataSync sync = sharedData_->refresh(*machineData_);
+    const mtc::core::MachineDataSync sync = sharedData_->refresh(machineData());
     if (!sync.ok || sync.takenOver == 0) return 0;
-    if (!unsaved) savedRevision_ = machineData_->revision();  // the store is the file again
+    if (!unsaved) savedRevision_ = machineData().revision();  // the store is the file again
     machineDataMessages_ << takeOverMessage(machineDataFile_, sync.takenOver);
     emit machineDataNotice(machineDataMessages_.back());
     for (int slot = 0; slot < processCount(); ++slot)

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <QElapsedTimer>
 #include <QObject>
 #include <QString>
 #include <QStringList>
@@ -8,12 +9,7 @@
 #include <memory>
 #include <vector>
 
-#include "cnc_core/language/Program.h"
-#include "cnc_core/machine/AxisTransfer.h"
-#include "cnc_core/machine/MachineConfig.h"
-#include "cnc_core/machine/ProcessControl.h"
-#include "cnc_core/program/ProgramStore.h"
-#include "cnc_core/tooldata/SetupData.h"
+#include "cnc_core/cell/Cell.h"
 
 namespace mtc::core {
 class AdaptiveFeedControl;
@@ -26,46 +22,55 @@ class SimulatedMachine;
 
 namespace mtc::hmi {
 
-class SimulationClock;
 class NcOptionsHolder;
 
-/// The simulated cell behind the panel: machine configuration, program
-/// memory (parsed programs), and per process its ProcessControl, its
-/// interpreter on a simulated machine and the simulation clock that steps
-/// it. Screens read it and send machine keys to it; it tells everybody when
-/// a process changed.
+/// The panel's side of the simulated cell: a thin QObject around the core's
+/// Cell (configuration, program memory, machine data and one Station per
+/// process, cnc_core/cell). One timer moves every station on in simulated
+/// time (real time x the speed factor, or as fast as the computer allows);
+/// after each tick it tells the screens which stations changed. It also
+/// keeps the panel's files: the machine data file and the program directory.
 class CellSession : public QObject {
     Q_OBJECT
   public:
     explicit CellSession(mtc::core::MachineConfig config, QObject* parent = nullptr);
     ~CellSession() override;
 
-    const mtc::core::MachineConfig& config() const { return config_; }
-    int processCount() const { return static_cast<int>(config_.processes.size()); }
+    /// The core cell the panel shows and drives.
+    mtc::core::Cell& cell() { return cell_; }
+    const mtc::core::Cell& cell() const { return cell_; }
+    /// Station by slot (0..processCount-1).
+    mtc::core::Station& station(int slot) { return cell_.station(slot); }
+    const mtc::core::Station& station(int slot) const { return cell_.station(slot); }
+
+    const mtc::core::MachineConfig& config() const { return cell_.config(); }
+    int processCount() const { return cell_.stationCount(); }
     /// Process config by station slot (0..processCount-1).
     const mtc::core::ProcessConfig& processConfig(int slot) const;
-    mtc::core::ProcessControl& control(int slot);
-    const mtc::core::ProcessControl& control(int slot) const;
-    mtc::core::Interpreter& interpreter(int slot);
-    mtc::core::SimulatedMachine& machine(int slot);
-    SimulationClock& clock(int slot);
+    mtc::core::ProcessControl& control(int slot) { return station(slot).control(); }
+    const mtc::core::ProcessControl& control(int slot) const { return station(slot).control(); }
+    mtc::core::Interpreter& interpreter(int slot) { return station(slot).interpreter(); }
+    mtc::core::SimulatedMachine& machine(int slot) { return station(slot).machine(); }
     /// Adaptive feed control of a station (page 30, signals, errors 508-510).
-    mtc::core::AdaptiveFeedControl& adaptiveFeed(int slot);
+    mtc::core::AdaptiveFeedControl& adaptiveFeed(int slot) { return station(slot).adaptiveFeed(); }
     /// The adaptive feed trend the station's simulated machine records.
-    const mtc::core::AfcTrendRecorder& afcTrend(int slot) const;
-    const mtc::core::ProgramStore& store() const { return store_; }
+    const mtc::core::AfcTrendRecorder& afcTrend(int slot) const { return station(slot).afcTrend(); }
+    const mtc::core::ProgramStore& store() const { return cell_.store(); }
 
-    /// Parses `text` and stores it as program `number` of the station.
+    /// Parses `text` (knowing the global macro names) and stores it as
+    /// program `number` of the station.
     void addProgram(int slot, int number, const std::string& name, std::string text);
     /// Stores an already parsed program (used by the loaders).
     void putProgram(int slot, int number, mtc::core::ProgramPtr program);
     /// Programs of a station ordered by number.
-    std::vector<mtc::core::ProgramPtr> programs(int slot) const;
-    mtc::core::ProgramPtr program(int slot, int number) const;
+    std::vector<mtc::core::ProgramPtr> programs(int slot) const { return cell_.programs(slot); }
+    mtc::core::ProgramPtr program(int slot, int number) const {
+        return cell_.program(slot, number);
+    }
     /// Station slot of process number `process`, or -1.
-    int slotOfProcess(int process) const;
+    int slotOfProcess(int process) const { return cell_.slotOfProcess(process); }
     /// The program store, for loaders filling it before the panel starts.
-    mtc::core::ProgramStore& mutableStore() { return store_; }
+    mtc::core::ProgramStore& mutableStore() { return cell_.store(); }
     /// Directory the station programs were loaded from ("" = built-in demo
     /// programs: the editor and the compiler write no files for them).
     const QString& programDirectory() const { return programDirectory_; }
@@ -82,13 +87,31 @@ class CellSession : public QObject {
     /// Announce that something of the station changed (screens refresh).
     void notifyChanged(int slot) { emit processChanged(slot); }
 
+    // ---- simulated time
+    /// Simulated seconds per real second; 0 (kMaxSpeed) = as fast as possible.
+    void setSpeed(double factor);
+    double speed() const { return speed_; }
+    static constexpr double kMaxSpeed = 0.0;
+    /// The speed key: x1 -> x10 -> as fast as possible -> x1.
+    void cycleSpeed();
+    /// "x1", "x10", "max" (the header shows it).
+    QString speedText() const;
+    /// The timer that moves the stations (on by default; tests that step the
+    /// time themselves switch it off and call advance()).
+    void setTimerEnabled(bool enabled);
+    /// Moves every station on by `seconds` of simulated time now and
+    /// announces the stations that changed (what the timer does each tick).
+    void advance(double seconds);
+    /// Interval of the timer, ms (50 Hz).
+    static constexpr int kTickMs = 20;
+
     /// The GAX / FAX handshake between the stations' processes (NC program
     /// restart's computing processes wait on it, seed 000, 5.4).
-    mtc::core::AxisTransfer& axisTransfer() { return axisTransfer_; }
+    mtc::core::AxisTransfer& axisTransfer() { return cell_.axisTransfer(); }
     /// The machine data of the cell, shared by every station's interpreter.
-    mtc::core::MachineDataStore& machineData() { return *machineData_; }
+    mtc::core::MachineDataStore& machineData() { return cell_.machineData(); }
     /// Tool lists and zero offsets of every process; the interpreters read them.
-    mtc::core::SetupData& setupData() { return setupData_; }
+    mtc::core::SetupData& setupData() { return cell_.setupData(); }
     /// Keeps the machine data in `path` from now on: loads it (a damaged
     /// file is kept aside, the defaults stay) and returns what the user must
     /// be told (also kept in machineDataMessages()). Empty path: nothing is kept.
@@ -123,14 +146,21 @@ class CellSession : public QObject {
     /// Values of the machine data file another program changed were taken
     /// over (`message` says how many and from which file).
     void machineDataNotice(const QString& message);
+    /// The speed factor changed.
+    void speedChanged();
 
   private:
-    struct Station;
-    mtc::core::MachineConfig config_;
-    mtc::core::ProgramStore store_;
-    mtc::core::AxisTransfer axisTransfer_;
-    std::shared_ptr<mtc::core::MachineDataStore> machineData_;
-    mtc::core::SetupData setupData_;  ///< tool lists and zero offsets (beside the machine data)
+    void tick();
+    /// True when `state` holds for one of the stations.
+    bool anyStation(bool (mtc::core::Station::*state)() const) const;
+    /// Announces every station whose revision changed since the last look.
+    void announceChanges();
+
+    mtc::core::Cell cell_;
+    QTimer timer_;
+    QElapsedTimer realTime_;
+    double speed_ = 1.0;
+    std::vector<std::uint64_t> announced_;  ///< station revisions last announced
     QString machineDataFile_;
     std::unique_ptr<mtc::core::SharedMachineDataFile> sharedData_;
     QTimer refreshTimer_;  ///< looks for changes of the data file by other programs
@@ -139,7 +169,6 @@ class CellSession : public QObject {
     QTimer saveTimer_;                 ///< debounces saves of NC-written values
     std::uint64_t savedRevision_ = 0;  ///< store revision the file holds
     QString autoSaveError_;
-    std::vector<std::unique_ptr<Station>> stations_;
     std::unique_ptr<NcOptionsHolder> ncOptions_;
 };
 

@@ -34,6 +34,10 @@ QKeySequence machineKeyShortcut(ControlKey key) {
     return {};
 }
 
+QKeySequence speedKeyShortcut() {
+    return QKeySequence(Qt::SHIFT | Qt::Key_F10);
+}
+
 QVector<KeyAssignment> globalKeyAssignments() {
     QVector<KeyAssignment> list = {
         {"F1 … F8", "Soft keys of the current screen (labels in the bar at the bottom)"},
@@ -45,6 +49,9 @@ QVector<KeyAssignment> globalKeyAssignments() {
     for (ControlKey key : machineKeys())
         list.push_back({machineKeyShortcut(key).toString(QKeySequence::NativeText),
                         QString("Machine control key '%1'").arg(mtc::core::keyName(key))});
+    list.push_back({speedKeyShortcut().toString(QKeySequence::NativeText),
+                    "Simulation speed: \u00d71 \u2192 \u00d710 \u2192 as fast as possible "
+                    "(shown in the header)"});
     return list;
 }
 

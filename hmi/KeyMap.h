@@ -17,6 +17,9 @@ struct KeyAssignment {
 /// Keyboard shortcut of each machine control key (M key).
 QKeySequence machineKeyShortcut(mtc::core::ControlKey key);
 
+/// The key that changes the simulation speed (x1, x10, as fast as possible).
+QKeySequence speedKeyShortcut();
+
 /// All machine control keys in bar order.
 QVector<mtc::core::ControlKey> machineKeys();
 

@@ -21,6 +21,19 @@ MachineKeyBar::MachineKeyBar(QWidget* parent) : QWidget(parent) {
         layout->addWidget(button);
     }
     layout->addStretch();
+    speed_ = new QPushButton(this);
+    speed_->setObjectName("speedKey");
+    speed_->setToolTip(speedKeyShortcut().toString(QKeySequence::NativeText) +
+                       ": simulation speed");
+    speed_->setFocusPolicy(Qt::NoFocus);
+    speed_->setMinimumSize(110, 32);
+    connect(speed_, &QPushButton::clicked, this, &MachineKeyBar::speedPressed);
+    layout->addWidget(speed_);
+    setSpeedText("\u00d71");
+}
+
+void MachineKeyBar::setSpeedText(const QString& text) {
+    speed_->setText("Speed " + text);
 }
 
 }  // namespace mtc::hmi

@@ -2,20 +2,29 @@
 
 #include <QWidget>
 
+class QPushButton;
+
 #include "cnc_core/machine/ProcessControl.h"
 
 namespace mtc::hmi {
 
 /// The machine control keys (M keys) at the right edge of the panel.
 /// Buttons are named "mkey-<n>" in bar order (see machineKeys()); every
-/// press is reported through keyPressed, never handled here.
+/// press is reported through keyPressed, never handled here. Below them the
+/// simulation's Speed key ("speedKey", speedPressed).
 class MachineKeyBar : public QWidget {
     Q_OBJECT
   public:
     explicit MachineKeyBar(QWidget* parent = nullptr);
+    /// Shows the speed factor on the Speed key ("x10").
+    void setSpeedText(const QString& text);
 
   signals:
     void keyPressed(mtc::core::ControlKey key);
+    void speedPressed();
+
+  private:
+    QPushButton* speed_;
 };
 
 }  // namespace mtc::hmi

@@ -47,6 +47,7 @@ void NcOptionsHolder::load(const QString& directory) {
         options_ = std::move(contents.options);
         problems_ = std::move(contents.problems);
     }
+    session_->cell().setNcOptions(options_);
     emit optionsChanged();
 }
 
@@ -126,6 +127,7 @@ bool NcOptionsHolder::commitSettings(const mtc::core::NcOptions& changed, QStrin
     }
     options_.compilerActive = changed.compilerActive;
     options_.userCompilers = changed.userCompilers;
+    session_->cell().setNcOptions(options_);
     // Seed 001 ch. 11: changing the compiler settings clears all objects.
     invalidatePrograms([](const mtc::core::Program&) { return true; });
     emit optionsChanged();
@@ -187,6 +189,7 @@ bool NcOptionsHolder::commitMacros(std::vector<MacroDefinition> macros, QString&
     }
     const std::vector<MacroDefinition> before = std::move(options_.globalMacros);
     options_.globalMacros = std::move(macros);
+    session_->cell().setNcOptions(options_);  // programs naming a changed macro parse again
     // Seed 001 ch. 9/11: a modified global macro clears the error and object
     // files of every program whose compile can depend on the macros.
     const bool chain = !options_.userCompilers.empty();

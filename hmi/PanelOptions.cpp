@@ -20,6 +20,10 @@ bool parsePanelOptions(const QStringList& arguments, PanelOptions& options, QStr
         {"run",
          "Run the selected program of the station to its end in simulated time before the "
          "window appears (e.g. a trend for --screenshot)."},
+        {"speed",
+         "Simulation speed: 1 (real time, default), 10 (ten times) or max (as fast as "
+         "possible); the Speed key changes it.",
+         "1|10|max"},
         {"data",
          "Machine data file (default: $XDG_STATE_HOME/mtc200/machine-data/<cell>.mdt; "
          "'-' keeps nothing).",
@@ -49,6 +53,17 @@ bool parsePanelOptions(const QStringList& arguments, PanelOptions& options, QStr
     if (parser.isSet("data") && options.dataFile.isEmpty()) {
         error = "--data needs a file (or '-' for none)";
         return false;
+    }
+    if (parser.isSet("speed")) {
+        const QString speed = parser.value("speed").trimmed().toLower();
+        if (speed == "max") {
+            options.speed = 0.0;
+        } else if (speed == "1" || speed == "10") {
+            options.speed = speed.toDouble();
+        } else {
+            error = "--speed needs 1, 10 or max, got '" + parser.value("speed") + "'";
+            return false;
+        }
     }
     if (parser.isSet("process")) {
         bool ok = false;

@@ -14,6 +14,8 @@ struct PanelOptions {
     QString screen;       ///< --screen NAME
     QString screenshot;   ///< --screenshot FILE
     bool run = false;     ///< --run: run the selected program to its end first
+    /// --speed 1|10|max: simulated seconds per real second (0 = as fast as possible).
+    double speed = 1.0;
     /// --data FILE: machine data file ("-" = keep nothing). When
     /// `dataDefault` is true (set by parsePanelOptions without --data), the
     /// default location of docs/CLI.md is used; a default-constructed

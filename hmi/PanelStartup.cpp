@@ -108,8 +108,11 @@ std::unique_ptr<CellSession> createSession(const PanelOptions& options, QString&
                                                 : "does not exist");
             return nullptr;
         }
-        loader.loadDirectory(options.programsDir.toStdString());
+        // First the NC options: the programs are parsed knowing the global
+        // macro names, as the CLI parses them.
         session->setProgramDirectory(options.programsDir);
+        loader.setMacroNames(session->cell().macroNames());
+        loader.loadDirectory(options.programsDir.toStdString());
     }
     reportLoaderProblems(loader.diagnostics());
     openMachineData(options, *session);

@@ -54,6 +54,12 @@ PanelWindow::PanelWindow(CellSession* session, const ScreenRegistry* registry, Q
     buildStations();
     installShortcuts();
     connect(machineKeys_, &MachineKeyBar::keyPressed, this, &PanelWindow::onMachineKey);
+    connect(machineKeys_, &MachineKeyBar::speedPressed, session_, &CellSession::cycleSpeed);
+    connect(session_, &CellSession::speedChanged, this, [this] {
+        machineKeys_->setSpeedText(session_->speedText());
+        refresh();
+    });
+    machineKeys_->setSpeedText(session_->speedText());
     connect(session_, &CellSession::processChanged, this, [this](int slot) {
         if (slot == station_) refresh();
     });
@@ -123,6 +129,7 @@ void PanelWindow::installShortcuts() {
     add(QKeySequence(Qt::CTRL | Qt::Key_PageDown), [this] { showStation(station_ + 1); });
     for (mtc::core::ControlKey key : machineKeys())
         add(machineKeyShortcut(key), [this, key] { onMachineKey(key); });
+    add(speedKeyShortcut(), [this] { session_->cycleSpeed(); });
 }
 
 bool PanelWindow::showScreen(const QString& name) {

@@ -17,7 +17,6 @@
 #include "cnc_core/program/AtomicWrite.h"
 #include "hmi/CellSession.h"
 #include "hmi/NcOptionsHolder.h"
-#include "hmi/SimulationClock.h"
 
 namespace mtc::hmi {
 
@@ -55,11 +54,11 @@ ProgramWorkspace::ProgramWorkspace(CellSession* session, int slot, QObject* pare
     connect(session_, &CellSession::processChanged, this, [this](int changed) {
         if (changed == slot_) watchRuntime();
     });
-    session_->clock(slot_).setPreparer([this](int number) { return prepareRuntime(number); });
+    session_->station(slot_).setPreparer([this](int number) { return prepareRuntime(number); });
 }
 
 ProgramWorkspace::~ProgramWorkspace() {
-    session_->clock(slot_).setPreparer({});
+    session_->station(slot_).setPreparer({});
 }
 
 std::string ProgramWorkspace::prepareRuntime(int number) {

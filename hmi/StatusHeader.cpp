@@ -23,6 +23,7 @@ StatusHeader::StatusHeader(QWidget* parent) : QWidget(parent) {
     mode_ = makeLabel(this, "headerMode");
     program_ = makeLabel(this, "headerProgram");
     screen_ = makeLabel(this, "headerScreen");
+    speed_ = makeLabel(this, "headerSpeed");
     alarm_ = makeLabel(this, "headerAlarm");
     alarm_->setWordWrap(true);
     auto* grid = new QGridLayout(this);
@@ -30,8 +31,9 @@ StatusHeader::StatusHeader(QWidget* parent) : QWidget(parent) {
     grid->addWidget(station_, 0, 0);
     grid->addWidget(mode_, 0, 1);
     grid->addWidget(program_, 0, 2);
-    grid->addWidget(screen_, 0, 3, Qt::AlignRight);
-    grid->addWidget(alarm_, 1, 0, 1, 4);
+    grid->addWidget(speed_, 0, 3);
+    grid->addWidget(screen_, 0, 4, Qt::AlignRight);
+    grid->addWidget(alarm_, 1, 0, 1, 5);
     QFont bold = station_->font();
     bold.setBold(true);
     station_->setFont(bold);
@@ -52,6 +54,7 @@ void StatusHeader::show(const CellSession& session, int slot, const QString& tit
     if (control.programActive()) program += "  (active)";
     program_->setText(program);
     screen_->setText(title);
+    speed_->setText("Speed " + session.speedText());
     const QString alarm = QString::fromStdString(control.alarm());
     alarm_->setText(alarm.isEmpty() ? QString("No alarm") : QString("Alarm: %1").arg(alarm));
     alarm_->setStyleSheet(alarm.isEmpty() ? "" : "color: #b00000; font-weight: bold;");

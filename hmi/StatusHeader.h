@@ -22,6 +22,7 @@ class StatusHeader : public QWidget {
     QLabel* mode_;
     QLabel* program_;
     QLabel* screen_;
+    QLabel* speed_;
     QLabel* alarm_;
 };
 

@@ -6,18 +6,31 @@
 
 namespace mtc::core {
 
+namespace {
+/// The configuration's tool lists and zero offsets (its problems are the
+/// interpreters' configuration diagnostics).
+SetupData setupDataOf(const MachineConfig& config) {
+    DiagnosticList ignored;
+    return SetupData::fromConfig(config, ignored);
+}
+}  // namespace
+
 Cell::Cell(MachineConfig config)
     : config_(std::move(config)),
       machineData_(std::make_shared<MachineDataStore>(config_)),
       events_(std::make_shared<EventTable>()),
+      setupData_(setupDataOf(config_)),
       variables_(*this) {
     InterpreterServices services;
     services.machineData = machineData_;
     services.events = events_;               // one event table for every process
     services.otherProcesses = &variables_;   // @p:n reaches the other stations
     services.axisTransfer = &axisTransfer_;  // GAX / FAX of normal runs
-    for (const ProcessConfig& process : config_.processes)
+    for (const ProcessConfig& process : config_.processes) {
+        services.tools = setupData_.tools(process.index);
+        services.zeroOffsets = setupData_.offsets(process.index);
         stations_.push_back(std::make_unique<Station>(process, store_, services, *machineData_));
+    }
 }
 
 Cell::~Cell() = default;

@@ -14,6 +14,7 @@
 #include "cnc_core/machine/EventTable.h"
 #include "cnc_core/machine/MachineConfig.h"
 #include "cnc_core/program/ProgramStore.h"
+#include "cnc_core/tooldata/SetupData.h"
 
 namespace mtc::core {
 
@@ -47,6 +48,11 @@ class Cell {
     AxisTransfer& axisTransfer() { return axisTransfer_; }
     /// @p:n of every process (the interpreters' variables).
     VariableAccess& variables() { return variables_; }
+    /// Tool lists and zero offsets of every process (first the
+    /// configuration's); the interpreters read them, a load() is seen by the
+    /// next block.
+    SetupData& setupData() { return setupData_; }
+    const SetupData& setupData() const { return setupData_; }
 
     /// The NC options (compiler active, user compilers, global macros).
     const NcOptions& ncOptions() const { return ncOptions_; }
@@ -89,6 +95,7 @@ class Cell {
     ProgramStore store_;
     std::shared_ptr<MachineDataStore> machineData_;
     std::shared_ptr<EventTable> events_;
+    SetupData setupData_;
     AxisTransfer axisTransfer_;
     Variables variables_;
     NcOptions ncOptions_;

@@ -4,7 +4,6 @@
 #include "cnc_core/mdi/MdiEntry.h"
 #include "hmi/CellSession.h"
 #include "hmi/ProgramWorkspace.h"
-#include "hmi/SimulationClock.h"
 
 namespace mtc::screens {
 
@@ -39,16 +38,17 @@ QString format(double value) {
 MdiModel::MdiModel(mtc::hmi::CellSession* session, int slot,
                    std::shared_ptr<mtc::hmi::ProgramWorkspace> workspace, QObject* parent)
     : QObject(parent), session_(session), slot_(slot), workspace_(std::move(workspace)) {
-    auto& clock = session_->clock(slot_);
-    clock.setMdiSource([this](mtc::core::ProgramPtr& program) { return provide(program); });
-    connect(&clock, &mtc::hmi::SimulationClock::mdiEnded, this, &MdiModel::ended);
+    auto& station = session_->station(slot_);
+    station.setMdiSource([this](mtc::core::ProgramPtr& program) { return provide(program); });
+    station.setMdiEnded([this](bool completed) { ended(completed); });
     connect(session_, &mtc::hmi::CellSession::processChanged, this, [this](int changed) {
         if (changed == slot_) emit this->changed();
     });
 }
 
 MdiModel::~MdiModel() {
-    session_->clock(slot_).setMdiSource({});
+    session_->station(slot_).setMdiSource({});
+    session_->station(slot_).setMdiEnded({});
 }
 
 void MdiModel::setInput(const QString& text) {
@@ -94,7 +94,7 @@ std::string MdiModel::provide(mtc::core::ProgramPtr& program) {
 }
 
 void MdiModel::ended(bool completed) {
-    const auto& diagnostics = session_->clock(slot_).lastMdiDiagnostics();
+    const auto& diagnostics = session_->station(slot_).lastMdiDiagnostics();
     QString outcome = completed ? "done" : "reset";
     if (diagnostics.hasErrors()) {
         report(diagnostics, running_);
@@ -136,7 +136,7 @@ void MdiModel::setMessage(const QString& text, bool error) {
 QString MdiModel::modeSummary() const {
     const auto& control = session_->control(slot_);
     const std::string refusal = mtc::core::mdiRefusal(control);
-    if (session_->clock(slot_).mdiRunning())
+    if (session_->station(slot_).mdiRunning())
         return control.programHeld() ? "MDI entry held: Start continues" : "MDI entry running";
     if (refusal.empty()) return "MDI mode: Start runs the input";
     if (control.mode() != mtc::core::OperatingMode::Mdi) {

@@ -4,7 +4,6 @@
 
 #include "cnc_core/interp/Interpreter.h"
 #include "hmi/CellSession.h"
-#include "hmi/SimulationClock.h"
 #include "screens/restart/ProgramListingModel.h"
 #include "screens/restart/RestartRun.h"
 
@@ -93,7 +92,7 @@ void RestartController::enter() {
     // The restart searches the program the station runs: the compiled one
     // when the source has compiler keywords (seed 001 ch. 10/11, C-013).
     if (!session_->control(slot_).programActive() && number > 0) {
-        const std::string refused = session_->clock(slot_).prepare(number);
+        const std::string refused = session_->station(slot_).prepare(number);
         if (!refused.empty()) {
             listing_->setProgram(nullptr);
             setMessage(RestartMessage::Level::Error, QString::fromStdString(refused));

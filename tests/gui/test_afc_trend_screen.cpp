@@ -14,7 +14,6 @@
 #include "cnc_core/afc/AfcTrendRecorder.h"
 #include "cnc_core/machine_data/MachineDataFile.h"
 #include "cnc_core/machine_data/MachineDataStore.h"
-#include "hmi/SimulationClock.h"
 #include "screens/afc_trend/AfcTrendPlot.h"
 #include "screens/afc_trend/AfcTrendScreen.h"
 
@@ -23,7 +22,7 @@ class AfcTrendScreenTest : public QObject {
     /// Selects the slot milling demo (program 2 of the mill) and runs it to
     /// its end at high speed with the Start key (Shift+F5).
     static void runSlotDemo(PanelFixture& panel) {
-        panel.session->clock(0).setSpeed(1e6);
+        panel.session->setSpeed(mtc::hmi::CellSession::kMaxSpeed);
         QVERIFY(panel.session->selectProgram(0, 2));
         panel.press(Qt::Key_F5, Qt::ShiftModifier);
         QTRY_VERIFY_WITH_TIMEOUT(!panel.session->control(0).programActive(), 20000);
@@ -48,7 +47,7 @@ class AfcTrendScreenTest : public QObject {
         QVERIFY(status->text().startsWith("No trend yet"));
 
         // The slot milling demo (program 2 of the mill) at high speed.
-        panel.session->clock(0).setSpeed(1e6);
+        panel.session->setSpeed(1e6);
         QVERIFY(panel.session->selectProgram(0, 2));
         QVERIFY(panel.session->pressKey(0, mtc::core::ControlKey::Start));
         QTRY_VERIFY_WITH_TIMEOUT(!panel.session->control(0).programActive(), 20000);
@@ -180,7 +179,7 @@ class AfcTrendScreenTest : public QObject {
         {
             PanelFixture panel(options);
             config = panel.session->config();
-            panel.session->clock(0).setSpeed(1e6);
+            panel.session->setSpeed(1e6);
             QVERIFY(panel.session->selectProgram(0, 2));
             QVERIFY(panel.session->pressKey(0, mtc::core::ControlKey::Start));
             QTRY_VERIFY_WITH_TIMEOUT(!panel.session->control(0).programActive(), 20000);

@@ -9,7 +9,6 @@
 #include "PanelFixture.h"
 #include "cnc_core/interp/Interpreter.h"
 #include "cnc_core/machine/SimulatedMachine.h"
-#include "hmi/SimulationClock.h"
 
 class AxisOwnershipTest : public QObject {
     Q_OBJECT
@@ -30,7 +29,7 @@ class AxisOwnershipTest : public QObject {
     static void startLatheWantingX(PanelFixture& panel) {
         panel.session->addProgram(1, 50, "want-x.nc", "N0001 GAX(X)\nN0002 G0 X20\nN0003 M30\n");
         QVERIFY(panel.session->selectProgram(1, 50));
-        panel.session->clock(1).setSpeed(1000);
+        panel.session->setSpeed(100);                        // the mill's 200 s take 2 s
         panel.press(Qt::Key_PageDown, Qt::ControlModifier);  // to the lathe
         panel.press(Qt::Key_F5, Qt::ShiftModifier);          // Start on the lathe
     }
@@ -43,7 +42,7 @@ class AxisOwnershipTest : public QObject {
         startMillHoldingX(panel);
         startLatheWantingX(panel);
         auto& lathe = panel.session->control(1);
-        QTRY_COMPARE(QString::fromStdString(panel.session->clock(1).waitingAxis()), QString("X"));
+        QTRY_COMPARE(QString::fromStdString(panel.session->station(1).waitingAxis()), QString("X"));
         QVERIFY(lathe.programActive());
         QVERIFY(!lathe.programHeld());
         QCOMPARE(lathe.signalTable().get("P01SHOLD"), 0);
@@ -56,7 +55,7 @@ class AxisOwnershipTest : public QObject {
         QTRY_VERIFY(panel.session->machine(0).seconds() > millBefore + 1.5);
         QCOMPARE(panel.session->machine(1).seconds(), latheBefore);
         // The mill finishes its move at once and frees X: the lathe goes on.
-        panel.session->clock(0).setSpeed(100000);
+        panel.session->setSpeed(100000);
         QTRY_VERIFY(!panel.session->control(0).programActive());
         QTRY_VERIFY(!lathe.programActive());
         QVERIFY2(lathe.alarm().empty(), lathe.alarm().c_str());
@@ -68,12 +67,12 @@ class AxisOwnershipTest : public QObject {
         PanelFixture panel;
         startMillHoldingX(panel);
         startLatheWantingX(panel);
-        QTRY_COMPARE(QString::fromStdString(panel.session->clock(1).waitingAxis()), QString("X"));
+        QTRY_COMPARE(QString::fromStdString(panel.session->station(1).waitingAxis()), QString("X"));
         QCOMPARE(panel.session->axisTransfer().open().size(), std::size_t{1});
         panel.press(Qt::Key_F7, Qt::ShiftModifier);  // Control reset on the lathe
         QVERIFY(!panel.session->control(1).programActive());
         QVERIFY(panel.session->axisTransfer().open().empty());
-        QCOMPARE(QString::fromStdString(panel.session->clock(1).waitingAxis()), QString());
+        QCOMPARE(QString::fromStdString(panel.session->station(1).waitingAxis()), QString());
         QVERIFY2(panel.session->control(0).programActive(), "the mill is not affected");
     }
 };

@@ -18,7 +18,6 @@
 
 #include "PanelFixture.h"
 #include "cnc_core/machine/SimulatedMachine.h"
-#include "hmi/SimulationClock.h"
 #include "screens/programs/ProgramDirectoryModel.h"
 
 namespace {
@@ -129,7 +128,7 @@ class CompiledRunTest : public QObject {
         QVERIFY2(directoryRow(panel, 5).contains("[C]"), qPrintable(directoryRow(panel, 5)));
         QVERIFY(QFile::exists(QDir(dir_.path()).filePath("N1010005.NCO")));
 
-        panel.session->clock(0).setSpeed(1000);
+        panel.session->setSpeed(1000);
         panel.press(Qt::Key_F8, Qt::ShiftModifier);  // single block on
         auto* block = panel.window->findChild<QLabel*>("headerProgram");
         const auto& machine = panel.session->machine(0);
@@ -213,7 +212,7 @@ class CompiledRunTest : public QObject {
         pickProgram(panel, 9);
         panel.press(Qt::Key_Return);
         QCOMPARE(panel.session->control(0).selectedProgram(), 9);
-        panel.session->clock(0).setSpeed(1000);
+        panel.session->setSpeed(1000);
         panel.press(Qt::Key_F5, Qt::ShiftModifier);  // Start is not refused
         QTRY_VERIFY(!panel.session->control(0).programActive());
         QVERIFY2(panel.session->control(0).alarm().empty(),
@@ -235,7 +234,7 @@ class CompiledRunTest : public QObject {
         auto* alarm = panel.window->findChild<QLabel*>("headerAlarm");
         QTRY_VERIFY2(alarm->text().contains("NEEDS_COMPILER") && alarm->text().contains("N0002"),
                      qPrintable(alarm->text()));
-        panel.session->clock(0).setSpeed(1000);
+        panel.session->setSpeed(1000);
         panel.press(Qt::Key_F5, Qt::ShiftModifier);  // Start: refused at once
         QVERIFY(!panel.session->control(0).programActive());
         QCOMPARE(panel.session->machine(0).position(0), 0.0);  // N0001 did not move
@@ -253,7 +252,7 @@ class CompiledRunTest : public QObject {
         PanelFixture panel(options());
         selectCompiled(panel, 7);
         QVERIFY(directoryRow(panel, 7).contains("[C]"));
-        panel.session->clock(0).setSpeed(1000);
+        panel.session->setSpeed(1000);
         panel.press(Qt::Key_F5, Qt::ShiftModifier);  // Start
         QTRY_VERIFY(!panel.session->control(0).programActive());
         panel.window->showScreen("errors");

@@ -14,7 +14,6 @@
 #include "PanelFixture.h"
 #include "hmi/ErrorLog.h"
 #include "hmi/ProgramWorkspace.h"
-#include "hmi/SimulationClock.h"
 #include "screens/editor/EditorScreen.h"
 #include "screens/editor/NcCodeEdit.h"
 #include "screens/editor/NcHighlighter.h"
@@ -217,7 +216,7 @@ class EditorScreenTest : public QObject {
         PanelFixture panel(options());
         panel.session->addProgram(0, 51, "bad.nc", "N0001 G1 X10 F100\nN0002 T999\nN0003 M30\n");
         QVERIFY(panel.session->selectProgram(0, 51));
-        panel.session->clock(0).setSpeed(1000);
+        panel.session->setSpeed(1000);
         panel.press(Qt::Key_F5, Qt::ShiftModifier);  // Start
         QTRY_VERIFY(!panel.session->control(0).programActive());
         panel.window->showScreen("errors");

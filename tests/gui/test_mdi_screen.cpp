@@ -11,7 +11,6 @@
 
 #include "PanelFixture.h"
 #include "cnc_core/machine/SimulatedMachine.h"
-#include "hmi/SimulationClock.h"
 
 using mtc::core::OperatingMode;
 
@@ -69,7 +68,7 @@ class MdiScreenTest : public QObject {
 
     void typedBlocksMoveTheAxisAndTheStateContinues() {
         PanelFixture panel(options());
-        panel.session->clock(0).setSpeed(1000);
+        panel.session->setSpeed(1000);
         QPlainTextEdit* input = openMdi(panel);
         mdiMode(panel);
         QVERIFY2(label(panel, "mdiMode").contains("Start runs the input"),
@@ -104,7 +103,7 @@ class MdiScreenTest : public QObject {
 
     void aGlobalMacroIsExpanded() {
         PanelFixture panel(options());
-        panel.session->clock(0).setSpeed(1000);
+        panel.session->setSpeed(1000);
         openMdi(panel);
         mdiMode(panel);
         type(panel, "G90 FAST X20");
@@ -119,7 +118,7 @@ class MdiScreenTest : public QObject {
 
     void aDefineOrACompilerKeywordIsRefusedAndTheInputStays() {
         PanelFixture panel(options());
-        panel.session->clock(0).setSpeed(1000);
+        panel.session->setSpeed(1000);
         QPlainTextEdit* input = openMdi(panel);
         mdiMode(panel);
         type(panel, "G1 X5 F100\nDEFINE SLOW AS F10");
@@ -150,7 +149,7 @@ class MdiScreenTest : public QObject {
 
     void aRuntimeErrorLandsInTheErrorWindowWithOriginMdi() {
         PanelFixture panel(options());
-        panel.session->clock(0).setSpeed(1000);
+        panel.session->setSpeed(1000);
         QPlainTextEdit* input = openMdi(panel);
         mdiMode(panel);
         type(panel, "G1 X5 F500\nG1 X8 A10");
@@ -186,7 +185,7 @@ class MdiScreenTest : public QObject {
 
     void startInAutomaticModeRunsTheProgramNotTheEntry() {
         PanelFixture panel(options());
-        panel.session->clock(0).setSpeed(1000);
+        panel.session->setSpeed(1000);
         openMdi(panel);
         type(panel, "G1 X33 F1000");
         QVERIFY2(label(panel, "mdiMode").contains("Start does not run this input"),
@@ -211,7 +210,7 @@ class MdiScreenTest : public QObject {
 
     void controlResetAbandonsAHeldEntryAndKeepsTheInput() {
         PanelFixture panel(options());
-        panel.session->clock(0).setSpeed(1000);
+        panel.session->setSpeed(1000);
         QPlainTextEdit* input = openMdi(panel);
         mdiMode(panel);
         type(panel, "G1 X3 F600\nM0\nX9");
@@ -235,7 +234,7 @@ class MdiScreenTest : public QObject {
 
     void singleBlockHoldsAfterEachBlockOfTheEntry() {
         PanelFixture panel(options());
-        panel.session->clock(0).setSpeed(1000);
+        panel.session->setSpeed(1000);
         openMdi(panel);
         mdiMode(panel);
         type(panel, "G1 X2 F600\nX4");

@@ -8,7 +8,6 @@
 
 #include "PanelFixture.h"
 #include "cnc_core/machine/SimulatedMachine.h"
-#include "hmi/SimulationClock.h"
 #include "hmi/SoftKeyBar.h"
 
 using mtc::core::ControlKey;
@@ -133,7 +132,7 @@ class PanelShellTest : public QObject {
                  qPrintable(error));
         auto& mill = panel.session->control(0);
         QVERIFY(mill.selectedProgram() != 0);
-        panel.session->clock(0).setSpeed(1000);
+        panel.session->setSpeed(1000);
         panel.press(Qt::Key_F5, Qt::ShiftModifier);  // Start
         QVERIFY(mill.programActive());
         QCOMPARE(mill.signalTable().get("P00SACTIV"), 1);
@@ -157,11 +156,11 @@ class PanelShellTest : public QObject {
         QVERIFY(panel.session->selectProgram(0, 50));
         panel.press(Qt::Key_F5, Qt::ShiftModifier);
         QVERIFY(mill.programActive());
-        QVERIFY(panel.session->clock(0).running());
+        QVERIFY(panel.session->station(0).running());
         panel.press(Qt::Key_F6, Qt::ShiftModifier);  // Stop: feed hold
         QVERIFY(mill.programActive());
         QVERIFY(mill.programHeld());
-        QVERIFY(!panel.session->clock(0).running());
+        QVERIFY(!panel.session->station(0).running());
         panel.press(Qt::Key_F3, Qt::ShiftModifier);  // Manual refused while active
         QCOMPARE(mill.mode(), mtc::core::OperatingMode::Automatic);
         QVERIFY(!mill.alarm().empty());
@@ -169,7 +168,7 @@ class PanelShellTest : public QObject {
         QVERIFY(!mill.programActive());
         QVERIFY(!mill.programHeld());
         QVERIFY(mill.alarm().empty());
-        QVERIFY(!panel.session->clock(0).running());
+        QVERIFY(!panel.session->station(0).running());
     }
 
     void aProgramErrorEndsTheRunWithAnAlarm() {
@@ -177,7 +176,7 @@ class PanelShellTest : public QObject {
         auto& mill = panel.session->control(0);
         panel.session->addProgram(0, 51, "bad.nc", "N0001 G1 X10 F100\nN0002 T999\nN0003 M30\n");
         QVERIFY(panel.session->selectProgram(0, 51));
-        panel.session->clock(0).setSpeed(1000);
+        panel.session->setSpeed(1000);
         panel.press(Qt::Key_F5, Qt::ShiftModifier);
         QTRY_VERIFY(!mill.programActive());
         QVERIFY(!mill.alarm().empty());
