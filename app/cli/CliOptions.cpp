@@ -105,6 +105,8 @@ class CommandLineReader {
             if (optionValue(name, inlineValue, hasInline, value)) processValue(value);
         } else if (name == "--max-blocks") {
             if (optionValue(name, inlineValue, hasInline, value)) maxBlocksValue(value);
+        } else if (name == "--sample-ms") {
+            if (optionValue(name, inlineValue, hasInline, value)) sampleMsValue(value);
         } else if (name == "--user-compiler") {
             if (optionValue(name, inlineValue, hasInline, value)) o.userCompilers.push_back(value);
             if (out_.error.empty() &&
@@ -171,15 +173,26 @@ class CommandLineReader {
         out_.options.maxBlocks = number;
     }
 
+    void sampleMsValue(const std::string& value) {
+        std::uint64_t number = 0;
+        if (!parseUnsigned(value, number) || number == 0 || number > kMaxSampleMs) {
+            out_.error = "bad value '" + value +
+                         "' for --sample-ms (milliseconds of simulated time, 1.." +
+                         std::to_string(kMaxSampleMs) + ")";
+            return;
+        }
+        out_.options.sampleMs = static_cast<std::uint32_t>(number);
+    }
+
     void validateCombination() {
         CliOptions& o = out_.options;
         if (versionRequested_) o.command = Command::Version;
         if (helpRequested_) o.command = Command::Help;
         if (o.command == Command::None) {
             out_.error = "no command given";
-        } else if (o.noMotion && o.command != Command::Run && o.command != Command::Help &&
-                   o.command != Command::Version) {
-            out_.error = "option --no-motion belongs to 'run'";
+        } else if ((o.noMotion || o.sampleMs > 0) && o.command != Command::Run &&
+                   o.command != Command::Help && o.command != Command::Version) {
+            out_.error = "options --no-motion and --sample-ms belong to 'run'";
         } else if ((o.command == Command::Check || o.command == Command::Run) &&
                    o.arguments.empty()) {
             out_.error = "'" + o.commandName + "' needs a program (number or file)";
@@ -229,9 +242,14 @@ Headless MTC200 simulator (contract: docs/CLI-CONTRACT.md).
 
 Commands available:
   check FILE|PROG...          parse and check programs; diagnostics only
-  run   FILE|PROG [--no-motion]
-                              execute one program in simulated time;
-                              --no-motion leaves the motion list out
+  run   FILE|PROG [--no-motion] [--sample-ms N]
+                              execute one program in simulated time, as
+                              fast as possible (the panel's station, same
+                              time, positions and signals); --no-motion
+                              leaves the motion list out (and the machine
+                              does not move); --sample-ms N also samples
+                              time, block, position and feed every N ms of
+                              simulated time (1..3600000)
   restart FILE|PROG --target PATH [--runs K] [--from-primary] [--adjust]
                               NC program restart: the computing process up to
                               the target block (PATH: N<number> or L<line>

@@ -24,6 +24,8 @@ enum class Command {
 
 /// Default bound of a run: interpreted blocks before the run stops with a diagnostic.
 inline constexpr std::uint64_t kDefaultMaxBlocks = 10'000'000;
+/// Longest sampling interval of run --sample-ms (one hour).
+inline constexpr std::uint32_t kMaxSampleMs = 3'600'000;
 
 /// Everything the command line said, validated for syntax (not yet for
 /// existence of files or processes).
@@ -38,7 +40,9 @@ struct CliOptions {
     bool json = false;
     std::uint64_t maxBlocks = kDefaultMaxBlocks;
     bool noMotion = false;
-    std::string outputPath;                  ///< compile: -o OUT.NCO
+    std::uint32_t sampleMs =
+        0;                   ///< run --sample-ms N: sample every N ms of simulated time (0 = no)
+    std::string outputPath;  ///< compile: -o OUT.NCO
     std::vector<std::string> userCompilers;  ///< compile: --user-compiler SLOT=COMMAND
     // restart (CLI-CONTRACT.md):
     std::string target;              ///< --target PATH

@@ -39,11 +39,8 @@ const std::string& MotionOutput::axisName(int index) const {
     return names_[static_cast<std::size_t>(index)];
 }
 
-bool MotionOutput::adaptedMotion(const core::Motion& motion) {
-    if (!machine_) return false;
-    const bool adapted = afc_ && (afc_->active() || afc_->idleMeasurementRequested());
-    machine_->motion(motion);  // every move: the machine clock is the panel's
-    return adapted;
+bool MotionOutput::adaptedMotion(const core::Motion&) {
+    return machine_ && afc_ && machine_->lastMoveReportsAfc();
 }
 
 void MotionOutput::motion(const core::Motion& motion) {
@@ -63,15 +60,13 @@ void MotionOutput::motion(const core::Motion& motion) {
     if (mode_ == MotionMode::Text && text_ != nullptr) writeText(*written);
 }
 
-void MotionOutput::auxiliary(const core::AuxOutput& output) {
+void MotionOutput::auxiliary(const core::AuxOutput&) {
     ++auxiliaries_;
-    if (machine_) machine_->auxiliary(output);
 }
 
-void MotionOutput::dwell(const core::SourceLocation& where, double seconds) {
+void MotionOutput::dwell(const core::SourceLocation&, double seconds) {
     ++dwells_;
     dwellSeconds_ += seconds;
-    if (machine_) machine_->dwell(where, seconds);
 }
 
 void MotionOutput::command(const core::SourceLocation&, const std::string&, const std::string&) {

@@ -32,13 +32,13 @@ class MotionOutput : public core::MachineSink {
     /// Set before the first motion arrives.
     void setAxisNames(std::vector<std::string> names) { names_ = std::move(names); }
 
-    /// Every move and dwell also goes through `machine` (its clock is the
-    /// panel's); moves under adaptive feed control (G26, or with ITM) are
-    /// slowed down there, their lines show the feed the axes really got
+    /// The station's machine, which has just taken each move and dwell (the
+    /// station calls its listener after the machine): moves under adaptive
+    /// feed control (G26, or with ITM) show the feed the axes really got
     /// ("AFC F=..." / "afc_feed") and, when an error stopped them, the point
-    /// where they stopped (" stopped" / "afc_stopped"). Spindle speeds always
-    /// go there.
-    void attachAdaptiveFeed(core::SimulatedMachine* machine, const core::AdaptiveFeedControl* afc) {
+    /// where they stopped (" stopped" / "afc_stopped").
+    void attachAdaptiveFeed(const core::SimulatedMachine* machine,
+                            const core::AdaptiveFeedControl* afc) {
         machine_ = machine;
         afc_ = afc;
     }
@@ -70,7 +70,7 @@ class MotionOutput : public core::MachineSink {
     bool adaptedMotion(const core::Motion& motion);
 
     MotionMode mode_;
-    core::SimulatedMachine* machine_ = nullptr;
+    const core::SimulatedMachine* machine_ = nullptr;
     const core::AdaptiveFeedControl* afc_ = nullptr;
     bool adapted_ = false;  ///< the current motion went through adaptive feed control
     bool stopped_ = false;  ///< ... and an error stopped it short of its end

@@ -138,6 +138,12 @@ bool resolveProgram(const std::string& argument, const ProgramMemory& memory, in
     return true;
 }
 
+int freeProgramNumber(const core::ProgramStore& store, int process) {
+    for (int number = 1; number < 999; ++number)
+        if (!store.findSource(process, number)) return number;
+    return 999;
+}
+
 core::ProgramStore storeWith(const core::ProgramStore& store, const ProgramRequest& request) {
     core::ProgramStore copy = store;
     copy.put(request.process, request.number, request.program);

@@ -52,6 +52,10 @@ bool resolveProgram(const std::string& argument, const ProgramMemory& memory, in
 /// A copy of `store` with the requested program in it (it replaces a
 /// program of the same process and number), as the program memory the
 /// request runs or is checked against.
+/// The lowest program number 1..999 of `process` that `store` does not use
+/// (999 when all are taken: the request replaces it).
+int freeProgramNumber(const core::ProgramStore& store, int process);
+
 core::ProgramStore storeWith(const core::ProgramStore& store, const ProgramRequest& request);
 
 }  // namespace mtc::cli

@@ -13,11 +13,8 @@
 #include "cli/RestartRecorder.h"
 #include "cli/RestartReport.h"
 #include "cli/SetupDataCommand.h"
-#include "cnc_core/interp/Interpreter.h"
-#include "cnc_core/machine/ProcessControl.h"
+#include "cnc_core/cell/Cell.h"
 #include "cnc_core/machine_data/MachineDataStore.h"
-#include "cnc_core/restart/RestartSequence.h"
-#include "cnc_core/restart/SimulatedSps.h"
 #include "cnc_core/restart/TargetPath.h"
 
 namespace mtc::cli {
@@ -26,6 +23,8 @@ namespace {
 
 /// Work per advance() call: the CLI has no screen to keep responsive.
 constexpr std::uint64_t kSlice = std::uint64_t{1} << 40;
+/// Simulated time per advance() call: as far as the work goes.
+constexpr double kStep = 1e9;
 /// Operator actions (Start after a stop, Automatic after manual mode) before
 /// the CLI gives up; every one needs interpreted blocks, so the block bound
 /// ends a runaway first.
@@ -60,72 +59,71 @@ bool prepare(const CliOptions& options, PreparedRestart& p, core::DiagnosticList
     return loadRunSetupData(p.setup.machine, options.machineData.dataFile, p.setupData, failure);
 }
 
-/// The live interpreter's services: the cell's machine data, an event
-/// table, the tool list and zero offsets of the process.
-core::InterpreterServices servicesOf(const PreparedRestart& prepared,
-                                     std::shared_ptr<core::MachineDataStore> machineData) {
-    core::InterpreterServices services;
-    services.machineData = std::move(machineData);
-    services.events = std::make_shared<core::EventTable>();
-    services.tools = prepared.setupData->tools(prepared.request.process);
-    services.zeroOffsets = prepared.setupData->offsets(prepared.request.process);
-    return services;
-}
-
-/// The cell of one process as the operator finds it: interpreter on the
-/// recording machine, machine control keys, SPS, and the restart sequence.
+/// The cell as the operator finds it, in the core's Cell (as the panel
+/// builds it): the station of the process with its machine control keys,
+/// SPS and restart sequence; the recorder sees what the station sends to
+/// its machine. Time runs as fast as possible.
 class RestartDriver {
   public:
     RestartDriver(const CliOptions& options, PreparedRestart& prepared)
         : options_(options),
           prepared_(prepared),
-          machineData_(std::make_shared<core::MachineDataStore>(prepared.setup.machine)),
-          dataKeeper_(options.machineData.dataFile),
-          live_(*prepared.process, prepared.store, recorder_, servicesOf(prepared, machineData_)),
-          control_(prepared.request.process),
-          sps_(control_),
-          sequence_(control_, sps_, live_, prepared.store, recorder_) {
-        recorder_.setSequence(&sequence_);
-        control_.selectProgram(prepared.request.number);
+          cell_(prepared.setup.machine),
+          station_(cell_.station(cell_.slotOfProcess(prepared.request.process))),
+          dataKeeper_(options.machineData.dataFile) {
+        core::NcOptions nc;
+        nc.globalMacros = prepared.setup.globalMacros;  // before the store: nothing to parse again
+        cell_.setNcOptions(std::move(nc));
+        cell_.store() = prepared.store;
+        if (prepared.setupData) cell_.setupData().adopt(*prepared.setupData);  // --data
+        recorder_.setSequence(&station_.restart());
+        station_.setOutputListener(&recorder_);
+        station_.setRunOnAfterRestart(false);  // the report shows the state at the re-entry
+        // One process restarts alone here: no other process answers a GAX / FAX
+        // of its computing process (in the panel both stations take part).
+        station_.restartSequence().setAxisTransfer(nullptr);
+        station_.selectProgram(prepared.request.number);
     }
+    ~RestartDriver() { station_.setOutputListener(nullptr); }
 
-    const core::Interpreter& live() const { return live_; }
+    const core::Interpreter& live() const { return station_.interpreter(); }
 
     /// Resolves the path, runs the restart; fills `report`. Returns false on
     /// a usage problem (malformed PATH: exit 2, diagnostics in `report`).
     bool run(RestartReport& report) {
         report.process = prepared_.process;
-        report.interpreter = &live_;
-        report.sequence = &sequence_;
+        report.interpreter = &station_.interpreter();
+        report.sequence = &station_.restart();
         report.recorder = &recorder_;
-        report.signals = &control_.signalTable();
+        report.signals = &station_.control().signalTable();
         report.adjust = options_.adjust;
         report.diagnostics = prepared_.diagnostics;
-        dataKeeper_.load(*machineData_, report.diagnostics);
+        dataKeeper_.load(cell_.machineData(), report.diagnostics);
         if (prepared_.request.program->diagnostics.hasErrors()) return true;
         core::TargetPathResult path =
-            core::resolveTargetPath(options_.target, prepared_.store, prepared_.request.process,
-                                    prepared_.request.number, &live_.state());
+            core::resolveTargetPath(options_.target, cell_.store(), prepared_.request.process,
+                                    prepared_.request.number, &station_.interpreter().state());
         report.diagnostics.append(path.diagnostics);
         if (path.syntaxError) return false;
         if (!path.ok) return true;
         path.selection.runs = options_.runs;
         path.selection.fromLastPrimary = options_.fromPrimary;
-        control_.press(core::ControlKey::ProgramRestart);  // the restart screen
+        station_.press(core::ControlKey::ProgramRestart);  // the restart screen
         core::DiagnosticList accepted;
-        report.accepted = sequence_.accept(path.selection, accepted, options_.maxBlocks);
+        report.accepted = station_.acceptRestart(path.selection, accepted, options_.maxBlocks);
         if (!report.accepted) {
             report.diagnostics.append(accepted);
             return true;
         }
         computingProcess();
-        report.computed = takeSnapshot(sequence_.computing().interpreter(), *machineData_,
-                                       prepared_.request.process);
-        if (options_.adjust && sequence_.phase() == core::RestartPhase::TargetReached) {
+        report.computed = takeSnapshot(station_.restart().computing().interpreter(),
+                                       cell_.machineData(), prepared_.request.process);
+        if (options_.adjust && station_.restart().phase() == core::RestartPhase::TargetReached) {
             adjustAndRepos();
-            report.final = takeSnapshot(live_, *machineData_, prepared_.request.process);
+            report.final = takeSnapshot(station_.interpreter(), cell_.machineData(),
+                                        prepared_.request.process);
         }
-        report.diagnostics.append(sequence_.diagnostics());
+        report.diagnostics.append(station_.restart().diagnostics());
         report.diagnostics.append(operatorNotes_);
         return true;
     }
@@ -133,15 +131,17 @@ class RestartDriver {
     /// Keeps what the restart changed in the `--data` file (page 60 at the
     /// target, MTD writes of ADJUST / REPOS).
     void saveData(core::DiagnosticList& diagnostics) {
-        dataKeeper_.save(*machineData_, diagnostics);
+        dataKeeper_.save(cell_.machineData(), diagnostics);
     }
 
   private:
+    const core::RestartSequence& sequence() const { return station_.restart(); }
+
     bool continueAfterStop() {
         const std::vector<core::StackLevel> levels =
-            sequence_.phase() == core::RestartPhase::Computing
-                ? sequence_.computing().interpreter().callStack()
-                : live_.callStack();
+            sequence().phase() == core::RestartPhase::Computing
+                ? sequence().computing().interpreter().callStack()
+                : station_.interpreter().callStack();
         const core::StackLevel at = levels.empty() ? core::StackLevel{} : levels.back();
         operatorNotes_.warning("RESTART_PROGRAM_STOP", {at.program, at.block, at.line, 0},
                                "programmed stop: continued as with the Start key");
@@ -150,19 +150,27 @@ class RestartDriver {
 
     bool press(core::ControlKey key) {
         if (++actions_ > kMaxOperatorActions) return false;
-        if (control_.press(key)) return true;
-        if (!sequence_.active()) return false;  // the sequence failed: its diagnostic says why
-        operatorNotes_.error("RESTART_KEY_REFUSED", {},
-                             std::string(core::keyName(key)) + " refused: " + control_.alarm());
+        if (station_.press(key)) return true;
+        if (!sequence().active()) return false;  // the sequence failed: its diagnostic says why
+        operatorNotes_.error(
+            "RESTART_KEY_REFUSED", {},
+            std::string(core::keyName(key)) + " refused: " + station_.control().alarm());
         return false;
+    }
+
+    /// Time for the station: the computing process in slices, ADJUST and
+    /// REPOS through the machine. Returns the phase afterwards.
+    core::RestartPhase advance() {
+        station_.advance(kStep, kSlice);
+        return sequence().phase();
     }
 
     void computingProcess() {
         while (true) {
-            const core::RestartPhase phase = sequence_.advance(kSlice);
+            const core::RestartPhase phase = advance();
             if (phase != core::RestartPhase::Computing && phase != core::RestartPhase::Active)
                 return;
-            if (sequence_.held() && !continueAfterStop()) return;
+            if (sequence().held() && !continueAfterStop()) return;
         }
     }
 
@@ -170,10 +178,10 @@ class RestartDriver {
     /// manual mode, Start again (REPOS), until the re-entry.
     void adjustAndRepos() {
         if (!press(core::ControlKey::Start)) return;
-        while (sequence_.active()) {
-            const core::RestartPhase phase = sequence_.advance(kSlice);
+        while (sequence().active()) {
+            const core::RestartPhase phase = advance();
             bool ok = true;
-            if (sequence_.held())
+            if (sequence().held())
                 ok = continueAfterStop();
             else if (phase == core::RestartPhase::ManualMode)
                 ok = press(core::ControlKey::Automatic);
@@ -181,17 +189,16 @@ class RestartDriver {
                 ok = press(core::ControlKey::Start);
             if (!ok) return;
         }
+        while (station_.busy() && !station_.running())
+            station_.advance(kStep);  // last REPOS move
     }
 
     const CliOptions& options_;
     PreparedRestart& prepared_;
+    core::Cell cell_;
+    core::Station& station_;
     RestartRecorder recorder_;
-    std::shared_ptr<core::MachineDataStore> machineData_;  ///< the cell's pages, as in the panel
-    MachineDataKeeper dataKeeper_;                         ///< --data FILE
-    core::Interpreter live_;
-    core::ProcessControl control_;
-    core::SimulatedSps sps_;
-    core::RestartSequence sequence_;
+    MachineDataKeeper dataKeeper_;  ///< --data FILE
     core::DiagnosticList operatorNotes_;
     int actions_ = 0;
 };

@@ -12,19 +12,20 @@
 #include "cli/MachineSetup.h"
 #include "cli/MotionOutput.h"
 #include "cli/ProgramMemory.h"
+#include "cli/RunSamples.h"
 #include "cli/SetupDataCommand.h"
 #include "cli/StateOutput.h"
 #include "cnc_core/afc/AdaptiveFeedControl.h"
-#include "cnc_core/afc/AfcMotion.h"
-#include "cnc_core/interp/Interpreter.h"
+#include "cnc_core/cell/Cell.h"
 #include "cnc_core/language/CompilerWords.h"
-#include "cnc_core/machine/SimulatedMachine.h"
-#include "cnc_core/machine_data/MachineDataFile.h"
 #include "cnc_core/machine_data/MachineDataStore.h"
 
 namespace mtc::cli {
 
 namespace {
+
+/// Blocks per advance() call: the CLI has no screen to keep responsive.
+constexpr std::uint64_t kCliBlocksPerAdvance = std::uint64_t{1} << 20;
 
 /// Everything a run needs once the files are read.
 struct PreparedRun {
@@ -60,15 +61,48 @@ bool prepareRun(const CliOptions& options, PreparedRun& run, core::DiagnosticLis
         return false;
     }
     run.program = run.request.program;
+    // The station starts a program by its number: a loose file (number 0)
+    // gets a free one; its blocks keep reporting program 0.
+    if (run.request.number == 0)
+        run.request.number = freeProgramNumber(run.setup.programs.store, run.request.process);
     run.store = storeWith(run.setup.programs.store, run.request);
     run.diagnostics.append(run.program->diagnostics);
     return true;
 }
 
-/// Runs the program to its end. M00 / M01 stops are continued as the
-/// operator would with the Start key (noted as a warning); the block bound
-/// covers the whole run.
-RunOutcome execute(core::Interpreter& interpreter, const PreparedRun& run, std::uint64_t budget,
+/// The cell of the run: the machine and program memory of the command line
+/// in the core's Cell (as the panel builds it), `--data` loaded into its
+/// machine data.
+struct RunCell {
+    RunCell(PreparedRun& run, const std::string& dataFile)
+        : cell(run.setup.machine), keeper(dataFile) {
+        core::NcOptions nc;
+        nc.globalMacros = run.setup.globalMacros;  // before the store: nothing to parse again
+        cell.setNcOptions(std::move(nc));
+        cell.store() = std::move(run.store);
+    }
+    core::Station& station(int process) { return cell.station(cell.slotOfProcess(process)); }
+    /// Loads the data file; its warnings go to `diagnostics`.
+    void load(core::DiagnosticList& diagnostics) { keeper.load(cell.machineData(), diagnostics); }
+    /// Saves what the program changed (MTD writes, page 30 status).
+    void save(core::DiagnosticList& diagnostics) { keeper.save(cell.machineData(), diagnostics); }
+
+    core::Cell cell;
+    MachineDataKeeper keeper;
+};
+
+/// Where the station stands now (for the notes the CLI adds).
+core::SourceLocation stationLocation(const core::Station& station) {
+    const std::vector<core::StackLevel> levels = station.interpreter().callStack();
+    const core::StackLevel at = levels.empty() ? core::StackLevel{} : levels.back();
+    return {at.program, at.block, at.line, 0};
+}
+
+/// Runs the program on the station as fast as possible, exactly as the
+/// panel's timer would: Start, then advance() until the station stands. M00
+/// / M01 stops are continued as the operator would with the Start key
+/// (noted as a warning); the station's block bound covers the whole run.
+RunOutcome execute(core::Station& station, const PreparedRun& run, RunSamples& samples,
                    core::DiagnosticList& diagnostics) {
     RunOutcome outcome;
     core::Diagnostic keyword;  // the CLI runs sources: the compiler is off
@@ -77,66 +111,63 @@ RunOutcome execute(core::Interpreter& interpreter, const PreparedRun& run, std::
         outcome.status = core::RunStatus::Error;
         return outcome;
     }
-    if (!interpreter.select(run.program, 0, &diagnostics)) {
+    std::size_t reported = 0;  // run diagnostics already in `diagnostics`
+    const auto report = [&] {
+        const auto& items = station.runDiagnostics().items();
+        for (; reported < items.size(); ++reported)
+            diagnostics.add(items[reported]);
+    };
+    if (!station.selectProgram(run.request.number) || !station.press(core::ControlKey::Start)) {
+        report();
+        if (!diagnostics.hasErrors())
+            diagnostics.error("RUN_START_REFUSED", {run.request.number, "", 0, 0},
+                              station.control().alarm());
         outcome.status = core::RunStatus::Error;
         return outcome;
     }
     outcome.started = true;
-    while (true) {
-        core::RunResult result = interpreter.run(budget - outcome.blocks);
-        outcome.blocks += result.blocksInterpreted;
-        diagnostics.append(result.diagnostics);
-        outcome.status = result.status;
-        if (result.status != core::RunStatus::Stopped) return outcome;
-        const std::vector<core::StackLevel> levels = interpreter.callStack();
-        const core::StackLevel where = levels.empty() ? core::StackLevel{} : levels.back();
-        diagnostics.warning("RUN_PROGRAM_STOP", {where.program, where.block, where.line, 0},
-                            "programmed stop: continued as with the Start key");
-        if (outcome.blocks >= budget) {
-            diagnostics.error("BLOCK_BUDGET", {where.program, where.block, where.line, 0},
-                              "the run exceeded --max-blocks " + std::to_string(budget));
-            outcome.status = core::RunStatus::BudgetExceeded;
-            return outcome;
+    samples.take(station, diagnostics);
+    while (station.busy()) {
+        station.advance(samples.secondsToNextSample(station), kCliBlocksPerAdvance);
+        report();
+        samples.take(station, diagnostics);
+        if (station.atProgrammedStop()) {
+            diagnostics.warning("RUN_PROGRAM_STOP", stationLocation(station),
+                                "programmed stop: continued as with the Start key");
+            station.press(core::ControlKey::Start);
+        } else if (!station.waitingAxis().empty()) {
+            // Alone in the CLI nobody frees the axis: it would wait for ever.
+            diagnostics.error("RUN_AXIS_WAIT", stationLocation(station),
+                              "GAX waits for axis " + station.waitingAxis() +
+                                  ", which no process of this run frees");
+            station.press(core::ControlKey::ControlReset);
         }
     }
+    report();
+    samples.finish(station);
+    outcome.status = station.runStatus();
+    outcome.blocks = station.runBlocks();
+    return outcome;
 }
-
-/// The cell's machine data (`--data FILE` loaded when given) and the
-/// adaptive feed control of the process on a simulated machine.
-struct RunCell {
-    RunCell(const PreparedRun& run, const std::string& dataFile)
-        : data(std::make_shared<core::MachineDataStore>(run.setup.machine)),
-          keeper(dataFile),
-          machine(*run.process) {}
-
-    /// Loads the data file; its warnings go to `diagnostics`.
-    void load(core::DiagnosticList& diagnostics) { keeper.load(*data, diagnostics); }
-    /// Saves what the program changed (MTD writes, page 30 status).
-    void save(core::DiagnosticList& diagnostics) { keeper.save(*data, diagnostics); }
-
-    std::shared_ptr<core::MachineDataStore> data;
-    MachineDataKeeper keeper;
-    core::SimulatedMachine machine;
-    core::SignalTable signals;
-    std::shared_ptr<core::AdaptiveFeedControl> afc;
-};
 
 /// Page 30 status elements and the two signals after a run that used
 /// adaptive feed control (text: one line; JSON: the "afc" object).
-void writeAdaptiveFeed(const RunCell& cell, int process, JsonWriter* json) {
-    if (!cell.afc || !cell.afc->used()) return;
+void writeAdaptiveFeed(core::Station& station, core::Cell& cell, JsonWriter* json) {
+    if (!station.adaptiveFeed().used()) return;
     static constexpr int kElements[] = {1, 5, 7, 8, 11, 12, 14};
     static const char* const kNames[] = {"001_active",           "005_idle_torque",
                                          "007_machining_torque", "008_peak_machining_torque",
                                          "011_feed_reduction",   "012_peak_feed_reduction",
                                          "014_stall_torque"};
+    const int process = station.process();
     char prefix[8];
     std::snprintf(prefix, sizeof prefix, "P%02dS", process);
-    const int thmis = cell.signals.get(std::string(prefix) + "THMIS");
-    const int excth = cell.signals.get(std::string(prefix) + "EXCTH");
+    const core::SignalTable& signals = station.control().signalTable();
+    const int thmis = signals.get(std::string(prefix) + "THMIS");
+    const int excth = signals.get(std::string(prefix) + "EXCTH");
     double values[7] = {};
     for (int i = 0; i < 7; ++i)
-        cell.data->read({30, process, 0, kElements[i]}, values[i]);
+        cell.machineData().read({30, process, 0, kElements[i]}, values[i]);
     if (json) {
         json->key("afc");
         json->beginObject();
@@ -164,58 +195,72 @@ const char* runStatusText(const RunOutcome& outcome) {
     return outcome.started ? core::runStatusName(outcome.status) : "not_started";
 }
 
-void writeJsonTail(JsonWriter& json, const MotionOutput& sink, const RunOutcome& outcome,
-                   const core::DiagnosticList& diagnostics, const StateView& view,
-                   const RunCell& cell) {
-    if (sink.reportsMotion()) {
+/// The figures of a run for its report.
+struct RunReport {
+    const MotionOutput& sink;
+    const RunOutcome& outcome;
+    const core::DiagnosticList& diagnostics;
+    const StateView& view;
+    double simulatedTime;
+};
+
+void writeJsonTail(JsonWriter& json, const RunReport& r, const RunSamples& samples) {
+    if (r.sink.reportsMotion()) {
         json.key("motion_count");
-        json.value(static_cast<long long>(sink.motionCount()));
+        json.value(static_cast<long long>(r.sink.motionCount()));
     }
+    samples.writeJson(json);
     json.key("status");
-    json.value(diagnostics.hasErrors() ? "error" : "ok");
-    writeDiagnosticsJson(json, diagnostics);
+    json.value(r.diagnostics.hasErrors() ? "error" : "ok");
+    writeDiagnosticsJson(json, r.diagnostics);
     json.key("run_status");
-    json.value(runStatusText(outcome));
+    json.value(runStatusText(r.outcome));
     json.key("blocks_interpreted");
-    json.value(static_cast<long long>(outcome.blocks));
+    json.value(static_cast<long long>(r.outcome.blocks));
     json.key("simulated_time");
-    json.value(view.state.modal.time);
+    json.value(r.simulatedTime);
     json.key("final");
-    writeStateJson(json, view);
-    writeAdaptiveFeed(cell, view.process.index, &json);
-    json.endObject();
-    json.finish();
+    writeStateJson(json, r.view);
 }
 
-void writeTextTail(const MotionOutput& sink, const RunOutcome& outcome,
-                   const core::DiagnosticList& diagnostics, const StateView& view,
-                   const RunCell& cell) {
+void writeTextTail(const RunReport& r, const RunSamples& samples) {
     std::fflush(stdout);
-    printDiagnosticsText(stdout, diagnostics);
+    samples.printText(stdout);
+    printDiagnosticsText(stdout, r.diagnostics);
     std::string motions;
-    if (sink.reportsMotion()) motions = ", " + std::to_string(sink.motionCount()) + " motions";
-    std::printf("run: %s after %llu blocks%s, simulated time %.3f s\n", runStatusText(outcome),
-                static_cast<unsigned long long>(outcome.blocks), motions.c_str(),
-                view.state.modal.time);
-    printStateText(stdout, view);
-    writeAdaptiveFeed(cell, view.process.index, nullptr);
-    std::printf("status: %s\n", diagnostics.hasErrors() ? "error" : "ok");
+    if (r.sink.reportsMotion()) motions = ", " + std::to_string(r.sink.motionCount()) + " motions";
+    std::printf("run: %s after %llu blocks%s, simulated time %.3f s\n", runStatusText(r.outcome),
+                static_cast<unsigned long long>(r.outcome.blocks), motions.c_str(),
+                r.simulatedTime);
+    printStateText(stdout, r.view);
 }
 
 /// Writes everything after the motion list: the JSON tail (when `json` is
-/// given) or the text summary, with the final state of `interpreter`.
-void writeReport(core::Interpreter& interpreter, const PreparedRun& run, const MotionOutput& sink,
+/// given) or the text summary, with the final state of the station.
+void writeReport(RunCell& cell, core::Station& station, const MotionOutput& sink,
                  const RunOutcome& outcome, const core::DiagnosticList& diagnostics,
-                 JsonWriter* json, const RunCell& cell) {
-    const Page61Buffers page61 = readPage61(interpreter.machineData(), run.request.process);
+                 const RunSamples& samples, JsonWriter* json) {
+    core::Interpreter& interpreter = station.interpreter();
+    const Page61Buffers page61 = readPage61(interpreter.machineData(), station.process());
     const std::vector<double> positions = programmedPositions(interpreter);
     const std::vector<std::string> names = reportedAxisNames(interpreter);
     const StateView view{
-        interpreter.state(), *run.process, interpreter.axes(), page61, names, positions};
+        interpreter.state(), station.config(), interpreter.axes(), page61, names, positions};
+    // The machine's time; without motion the machine does not move and the
+    // interpreter's own count of the programmed time is all there is.
+    const double time = sink.reportsMotion() || station.machine().seconds() > 0
+                            ? station.machine().seconds()
+                            : interpreter.state().modal.time;
+    const RunReport report{sink, outcome, diagnostics, view, time};
     if (json != nullptr) {
-        writeJsonTail(*json, sink, outcome, diagnostics, view, cell);
+        writeJsonTail(*json, report, samples);
+        writeAdaptiveFeed(station, cell.cell, json);
+        json->endObject();
+        json->finish();
     } else {
-        writeTextTail(sink, outcome, diagnostics, view, cell);
+        writeTextTail(report, samples);
+        writeAdaptiveFeed(station, cell.cell, nullptr);
+        std::printf("status: %s\n", diagnostics.hasErrors() ? "error" : "ok");
     }
 }
 
@@ -234,25 +279,14 @@ int runRunCommand(const CliOptions& options) {
     RunCell cell(run, options.machineData.dataFile);
     core::DiagnosticList diagnostics = run.diagnostics;
     cell.load(diagnostics);
-    core::InterpreterServices services;
-    services.machineData = cell.data;
-    // The process runs alone: a GAX is granted at once, a FAX releases the
-    // axis until the next GAX, a move of a released axis is an error.
-    core::AxisTransfer axisOwnership;
-    services.axisTransfer = &axisOwnership;
     // Tool list and zero offsets: beside the --data file when one is given.
     std::optional<core::SetupData> setup;
     if (!loadRunSetupData(run.setup.machine, options.machineData.dataFile, setup, failure))
         return reportSetupFailure(failure, options.json);
-    services.tools = setup->tools(run.request.process);
-    services.zeroOffsets = setup->offsets(run.request.process);
-    core::Interpreter interpreter(*run.process, run.store, sink, services);
-    cell.afc = std::make_shared<core::AdaptiveFeedControl>(
-        *run.process, *cell.data, core::torqueModelFromConfig(*run.process), &cell.signals);
-    diagnostics.append(cell.afc->parameterDiagnostics());
-    interpreter.setAdaptiveFeed(cell.afc);
-    cell.machine.attachAdaptiveFeed(cell.afc.get(), nullptr);
-    sink.attachAdaptiveFeed(&cell.machine, cell.afc.get());
+    cell.cell.setupData().adopt(*setup);
+    core::Station& station = cell.station(run.request.process);
+    diagnostics.append(station.adaptiveFeed().parameterDiagnostics());
+    core::Interpreter& interpreter = station.interpreter();
     if (interpreter.configurationDiagnostics().hasErrors()) {
         failure.error(
             "CLI_MACHINE_INVALID", {},
@@ -261,11 +295,16 @@ int runRunCommand(const CliOptions& options) {
         return reportSetupFailure(failure, options.json);
     }
     sink.setAxisNames(reportedAxisNames(interpreter));
+    sink.attachAdaptiveFeed(&station.machine(), &station.adaptiveFeed());
+    station.setOutputListener(&sink);
+    station.setBlockBudget(options.maxBlocks);
     // --no-motion changes the output only. Without adaptive feed control the
     // machine has no effect on the run, so the interpreter need not even
     // build the moves (about 10 % of a run of plain moves); with it, the
     // moves must reach the machine (G26 slows them, ITM measures, 508..510).
-    interpreter.options().output.motion = !options.noMotion || cell.afc->available();
+    interpreter.options().output.motion =
+        !options.noMotion || station.adaptiveFeed().available();
+    RunSamples samples(options.sampleMs, reportedAxisNames(interpreter));
     if (options.json) json.beginObject();
     if (mode == MotionMode::Json) {
         json.key("motion");
@@ -273,11 +312,12 @@ int runRunCommand(const CliOptions& options) {
     }
     RunOutcome outcome;
     if (!run.program->diagnostics.hasErrors())
-        outcome = execute(interpreter, run, options.maxBlocks, diagnostics);
+        outcome = execute(station, run, samples, diagnostics);
     if (mode == MotionMode::Json) json.endArray();
+    station.setOutputListener(nullptr);
 
     cell.save(diagnostics);
-    writeReport(interpreter, run, sink, outcome, diagnostics, options.json ? &json : nullptr, cell);
+    writeReport(cell, station, sink, outcome, diagnostics, samples, options.json ? &json : nullptr);
     return exitCodeFor(false, diagnostics);
 }
 

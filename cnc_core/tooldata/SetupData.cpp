@@ -93,6 +93,15 @@ bool SetupData::load(const SetupDataFiles& files, DiagnosticList& diagnostics) {
     return ok;
 }
 
+void SetupData::adopt(const SetupData& other) {
+    for (auto& [process, list] : tools_)
+        if (auto it = other.tools_.find(process); it != other.tools_.end() && it->second)
+            *list = *it->second;
+    for (auto& [process, table] : offsets_)
+        if (auto it = other.offsets_.find(process); it != other.offsets_.end() && it->second)
+            *table = *it->second;
+}
+
 bool SetupData::saveTools(const std::string& file, DiagnosticList& diagnostics) const {
     std::string error;
     if (writeFileAtomically(file, formatToolFile(allTools()), error)) return true;

@@ -35,6 +35,9 @@ class SetupData {
     /// refused (syntax, range, a process the configuration does not have)
     /// changes nothing; false, with every reason in `diagnostics`.
     bool load(const SetupDataFiles& files, DiagnosticList& diagnostics);
+    /// Takes the content of `other` (read for the same configuration) into
+    /// the lists and tables the interpreters already read.
+    void adopt(const SetupData& other);
     /// Write the tool lists / zero offsets atomically; false with a
     /// diagnostic (TOOL_FILE_SAVE / OFFSET_FILE_SAVE) when they cannot.
     bool saveTools(const std::string& file, DiagnosticList& diagnostics) const;

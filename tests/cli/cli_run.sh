@@ -86,4 +86,16 @@ fi
 printf 'N0001 FAX(Y)\nN0002 GAX(Y)\nN0003 G0 Y5\nN0004 FAX(X)\nN0005 G0 X6\nN0006 M30\n' >"$TEST_TMP/fax.nc"
 expect_rc 1 "move after FAX" --json run "$TEST_TMP/fax.nc"
 json_check "AXIS_NOT_HELD at N0005 line 5, Y moved after GAX" 'd["diagnostics"][0]["code"] == "AXIS_NOT_HELD" and d["diagnostics"][0]["block"] == "N0005" and d["diagnostics"][0]["line"] == 5 and d["final"]["position"]["Y"] == 5'
+# run --sample-ms (docs/decisions/station.md ST-007): samples every N ms of
+# simulated time from Start, the block the machine executes, the machine
+# position and the actual feed; a last sample at the end.
+printf 'N0001 G1 G90 X10 F600\nN0002 X20\nN0003 G4 F0.5\nN0004 M30\n' >"$TEST_TMP/samples.nc"
+expect_rc 0 "run --sample-ms 250" --json run "$TEST_TMP/samples.nc" --sample-ms 250
+json_check "samples every 0.25 s up to the end, 2.5 s" '[round(s["t"], 6) for s in d["samples"]] == [0.25 * i for i in range(11)] and abs(d["simulated_time"] - 2.5) < 1e-9'
+json_check "sample fields" 'all(set(s) == {"t", "program", "block", "position", "feed"} for s in d["samples"])'
+json_check "samples follow the blocks" 'd["samples"][2]["block"] == "N0001" and d["samples"][6]["block"] == "N0002" and d["samples"][9]["block"] == "N0003"'
+json_check "feed while moving, none while dwelling" 'd["samples"][3]["feed"] > 0 and d["samples"][9]["feed"] == 0'
+json_check "last sample is the end position" 'd["samples"][-1]["position"]["X"] == 20 == d["final"]["position"]["X"]'
+expect_rc 2 "run --sample-ms 0 is refused" run "$TEST_TMP/samples.nc" --sample-ms 0
+expect_rc 2 "--sample-ms belongs to run" --json check "$TEST_TMP/samples.nc" --sample-ms 10
 finish
