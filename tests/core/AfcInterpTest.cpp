@@ -57,7 +57,15 @@ struct AfcCell {
     }
     RunResult run(const std::string& source) {
         load(source);
-        return interpreter->run();
+        RunResult result = interpreter->run();
+        finishQueuedWork();
+        return result;
+    }
+    /// Simulated time passes only in advance() (as the Station drives it):
+    /// lets the machine do what the interpreter queued.
+    void finishQueuedWork() {
+        while (!machine.idle())
+            if (machine.advance(kAfcMaxMoveSeconds) <= 0.0) break;
     }
     /// Executes blocks up to and including the one with number `n` (N n).
     void runThrough(int n) {
@@ -65,6 +73,7 @@ struct AfcCell {
             const auto& state = interpreter->state();
             const int number = state.program->blocks[state.block].number;
             const RunResult result = interpreter->step();
+            finishQueuedWork();
             ASSERT_EQ(result.status, RunStatus::Running) << diagnosticsText(result.diagnostics);
             if (number == n) return;
         }
