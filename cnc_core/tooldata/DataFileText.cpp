@@ -1,5 +1,7 @@
 #include "cnc_core/tooldata/DataFileText.h"
 
+#include "cnc_core/machine/ConfigWords.h"
+
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -87,28 +89,11 @@ bool DataFileText::integer(int line, const std::string& key, const std::string& 
     return true;
 }
 
-std::string_view trimmedText(std::string_view s) {
-    std::size_t b = 0, e = s.size();
-    while (b < e && (s[b] == ' ' || s[b] == '\t' || s[b] == '\r'))
-        ++b;
-    while (e > b && (s[e - 1] == ' ' || s[e - 1] == '\t' || s[e - 1] == '\r'))
-        --e;
-    return s.substr(b, e - b);
-}
+// The configuration's word rules, so the data files and the machine
+// configuration split and trim text the same way.
+std::string_view trimmedText(std::string_view s) { return trimConfigText(s); }
 
-std::vector<std::string_view> wordsOf(std::string_view text) {
-    std::vector<std::string_view> words;
-    std::size_t i = 0;
-    while (i < text.size()) {
-        while (i < text.size() && (text[i] == ' ' || text[i] == '\t'))
-            ++i;
-        const std::size_t start = i;
-        while (i < text.size() && text[i] != ' ' && text[i] != '\t')
-            ++i;
-        if (i > start) words.push_back(text.substr(start, i - start));
-    }
-    return words;
-}
+std::vector<std::string_view> wordsOf(std::string_view text) { return splitConfigWords(text); }
 
 std::string formatDataNumber(double value) {
     if (value == 0.0) return "0";
