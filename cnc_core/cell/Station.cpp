@@ -128,6 +128,7 @@ std::string Station::resume() {
 
 void Station::hold() {
     feeding_ = false;
+    interpreter_.publishRotaryAxisModes();  // page 60 "upon program stop" (seed 000, 4.1)
 }
 
 void Station::reset() {
@@ -311,6 +312,7 @@ void Station::settle() {
         case Pending::SingleBlock:
             feeding_ = false;
             stoppedBy_ = pending;
+            interpreter_.publishRotaryAxisModes();
             control_.programStopped("Single block: press Start for the next block");
             return;
         case Pending::ProgrammedStop:

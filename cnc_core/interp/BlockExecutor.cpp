@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "cnc_core/contour/ToolCheck.h"
+#include "cnc_core/interp/AuxFunctionGroups.h"
 
 namespace mtc::core {
 namespace {
@@ -21,10 +22,6 @@ bool reportProblems(const BlockContext& c, const std::vector<PlaneProblem>& prob
     for (const auto& p : problems)
         c.error(p.code, p.message, p.column ? p.column : column);
     return problems.empty();
-}
-
-bool isProgramControl(int m) {
-    return m == 0 || m == 1 || m == 2 || m == 30;
 }
 
 std::string formatNumber(double value) {
@@ -271,7 +268,7 @@ bool BlockExecutor::auxiliaries(const BlockContext& c, const BlockInput& in,
                            "two M functions of group " + std::to_string(group) + " in one block",
                            column);
         plan.mGroups[static_cast<size_t>(group)] = m;
-        if (isProgramControl(m)) {
+        if (AuxFunctionGroups::isProgramControl(m)) {
             if (plan.programControl >= 0)
                 return c.error("M_GROUP_CONFLICT", "two program control functions in one block",
                                column);

@@ -133,6 +133,9 @@ bool ExpressionEvaluator::evalRead(const Program& program, const ExprNode& n, in
         case ExprOp::ReadE:
             value = s.modal.edge;
             return true;
+        case ExprOp::ReadQ:  // the last Q function, -1 since program end (seed 000, 3.1)
+            value = s.lastQ;
+            return true;
         case ExprOp::ReadS: {
             const int spindle = n.index == 0 ? s.modal.referenceSpindle : n.index;
             if (spindle < 1 || spindle >= kSpindleSlots)

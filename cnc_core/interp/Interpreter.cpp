@@ -1,5 +1,6 @@
 #include "cnc_core/interp/Interpreter.h"
 
+#include "cnc_core/interp/AuxFunctionGroups.h"
 #include "cnc_core/machine/InMemoryMachineData.h"
 
 namespace mtc::core {
@@ -74,11 +75,7 @@ Interpreter::Interpreter(const ProcessConfig& config, const ProgramStore& progra
         configDiagnostics_.error("CFG_DEFAULT_PLANE", {},
                                  "process " + std::to_string(config.index) +
                                      ": B004 default plane must be 17, 18 or 19");
-    mGroupOf_.fill(16);
-    for (const auto& group : config.mGroups)
-        for (int m : group.functions)
-            if (m >= 0 && m < 1000 && group.number >= 1 && group.number <= 15)
-                mGroupOf_[static_cast<size_t>(m)] = static_cast<std::int8_t>(group.number);
+    mGroupOf_ = AuxFunctionGroups(config).table();
     state_.modal.plane = PlaneSelection::base(axes_, defaults_[kGroupPlane]);
     resetModal();
     state_.mGroups.fill(-1);

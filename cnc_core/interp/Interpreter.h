@@ -71,6 +71,10 @@ struct InterpreterOptions {
     bool skipBlocks = false;          ///< '/' blocks are skipped (the skip switch)
     bool continueAfterError = false;  ///< check mode: a rejected block is skipped, the run goes on
     double arcTolerance = 0.002;      ///< mm, radius difference allowed between start and end
+    /// Without an adaptive feed control (the restart computing process, which
+    /// moves nothing): G25 / G26 only switch ModalState::adaptiveFeed, ITM and
+    /// AXD P-7-3651 measure nothing, instead of AFC_NOT_AVAILABLE (R-029).
+    bool logicalAdaptiveFeed = false;
 };
 
 /// Stop BEFORE block `block` (index into Program::blocks) of program
@@ -203,9 +207,18 @@ class Interpreter {
     /// computing process, which moves nothing): the commanded positions become
     /// these and the programmed coordinates are re-derived. Nothing else changes.
     void takeMachinePositions(const std::array<double, kMaxAxes>& machine);
+    /// The operator jogged an axis by hand. With Bxx.036 = Yes ("manual axis
+    /// jogging causes reset", seed 000, 2.1) that is a Control reset: the
+    /// program-end resets, plane and transformation back to the base system
+    /// (seed 003). Returns true when it reset. Every jog path calls it.
+    bool manualJogPerformed();
     /// Writes the page 60 elements (rotary axis modes, transformation, tool
     /// spindles) of this process into the machine data (restart target reached).
     void publishPage60();
+    /// Writes page 60 elements 1..3 (rotary axis mode of S1..S3): seed 000,
+    /// 4.1 updates them "upon program stop" (M00 / M01 do it themselves; the
+    /// Stop key and single-block holds call it) and at the restart target.
+    void publishRotaryAxisModes();
 
   private:
     enum class Outcome { Continue, Ended, Stopped, Target, Error };

@@ -34,6 +34,9 @@ bool Interpreter::adaptiveFeedInvolved() const {
 
 bool Interpreter::planAdaptiveFeed(const BlockContext& context) {
     const BlockInput& in = input_;
+    if (in.adaptiveFeed != 0) plan_.next.adaptiveFeed = in.adaptiveFeed == 26;
+    if (!afc_ && options_.logicalAdaptiveFeed && config_.flag("B062"))
+        return true;  // the computing process: nothing moves, nothing is measured
     if (!afc_ && (in.adaptiveFeed == 26 || in.idleMeasurement || in.stallRecording))
         return context.error("AFC_NOT_AVAILABLE",
                              "this process has no adaptive feed control (G26, ITM, AXD P-7-3651)",

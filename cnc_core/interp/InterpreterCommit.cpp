@@ -125,8 +125,10 @@ Interpreter::Outcome Interpreter::commit(const Program& program, std::uint32_t i
         const Outcome flow = applyFlow(program, index);
         if (flow != Outcome::Continue) return flow;
     }
-    if (plan_.programControl == 0 || (plan_.programControl == 1 && options_.optionalStop))
+    if (plan_.programControl == 0 || (plan_.programControl == 1 && options_.optionalStop)) {
+        publishRotaryAxisModes();  // page 60 el. 1..3 "upon program stop" (seed 000, 4.1)
         return Outcome::Stopped;
+    }
     return Outcome::Continue;
 }
 
@@ -264,6 +266,7 @@ void Interpreter::resetModal() {
     m.transformation.deselect();
     m.plane = PlaneSelection::base(axes_, defaults_[kGroupPlane]);
     m.spindleLimit = {};
+    m.adaptiveFeed = false;  // program end switches adaptive feed control off (seed 002)
     MotionPlanner(&axes_, zeroOffsets_.get()).recomputeWork(m);
 }
 
@@ -337,13 +340,25 @@ void Interpreter::takeMachinePositions(const std::array<double, kMaxAxes>& machi
     modalChanged();
 }
 
+bool Interpreter::manualJogPerformed() {
+    if (!config_.flag("B036")) return false;
+    controlReset();
+    return true;
+}
+
+void Interpreter::publishRotaryAxisModes() {
+    for (int s = 1; s <= 3; ++s)
+        machineData_->write({60, config_.index, 0, s},
+                            state_.modal.rotaryAxisMode[static_cast<size_t>(s)],
+                            MachineDataWriter::Nc);
+}
+
 void Interpreter::publishPage60() {
     const ModalState& m = state_.modal;
     auto put = [&](int element, double value) {
         machineData_->write({60, config_.index, 0, element}, value, MachineDataWriter::Nc);
     };
-    for (int s = 1; s <= 3; ++s)
-        put(s, m.rotaryAxisMode[static_cast<size_t>(s)]);
+    publishRotaryAxisModes();
     put(4, m.transformation.kind());
     for (int t = 0; t < kToolSpindles; ++t)
         put(5 + t, m.toolSpindle[static_cast<size_t>(t)]);

@@ -43,6 +43,7 @@ struct ModalState {
     int edge = 0;                                             ///< E
     int correction = 0;                                       ///< D
     int referenceSpindle = 1;                                 ///< SPC
+    bool adaptiveFeed = false;         ///< G26 on (G25 off): adaptive feed control switched on
     double time = 0.0;                 ///< simulated seconds (moves and dwells)
     double lastEffectiveRadius = 0.0;  ///< RI of the last G32 (kept after G30)
 };

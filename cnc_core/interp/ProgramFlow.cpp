@@ -142,11 +142,12 @@ bool ProgramFlow::plan(const BlockContext& c, const BlockInput& in, const Interp
             flow.kind = FlowPlan::Kind::Goto;
             return label(c, state, wordIndex, name, w.column, flow);
         }
-        case JumpKind::BRF:
-            return c.error("JUMP_NOT_SUPPORTED",
-                           "BRF is not executed by this simulator (its condition is not "
-                           "described in the seeds)",
-                           w.column);
+        case JumpKind::BRF: {
+            // Its condition rests on a state the simulator does not model, so
+            // it is never met: the label must exist, the flow goes on (I-019).
+            FlowPlan labelOnly;
+            return label(c, state, wordIndex, name, w.column, labelOnly);
+        }
     }
     return c.error("JUMP_NOT_SUPPORTED", "unknown jump", w.column);
 }

@@ -71,15 +71,12 @@ void BlockParser::finish() {
 // ---------------------------------------------------------------- prefix
 
 bool BlockParser::parsePrefix() {
-    // [/] [:] [Nxxxx[:yyyy]] [:] [.LABEL] [:]  with at most one ':'.
-    lexer_.skipBlanks();
-    if (lexer_.peek() == '/') {
-        block_.flags |= kBlockSkip;
-        lexer_.advance();
-        lexer_.skipBlanks();
-    }
+    // [/] [:] [Nxxxx[:yyyy]] [/] [:] [.LABEL] [:]  with at most one '/' and one
+    // ':'; the skip slash stands before the colon (seed 000, 5.1: "N0003 /: ...").
+    takeSkip();
     takePrimary();
     if (lexer_.peek() == 'N' && Lexer::isDigit(lexer_.peek(1)) && !parseBlockNumber()) return false;
+    if (!primarySeen_) takeSkip();
     takePrimary();
     if (lexer_.peek() == '.') {
         if (!parseBlockLabel()) return false;
@@ -87,6 +84,14 @@ bool BlockParser::parsePrefix() {
     }
     if (primarySeen_) block_.flags |= kBlockPrimary;
     return true;
+}
+
+void BlockParser::takeSkip() {
+    lexer_.skipBlanks();
+    if (lexer_.peek() != '/' || (block_.flags & kBlockSkip)) return;
+    block_.flags |= kBlockSkip;
+    lexer_.advance();
+    lexer_.skipBlanks();
 }
 
 void BlockParser::takePrimary() {
@@ -183,7 +188,8 @@ bool BlockParser::parseNextWord() {
                          "':' (primary block) must stand at the start of the block");
         case '/':
             return error("PARSE_MISPLACED_SKIP", start,
-                         "'/' (skip block) must be the first character of the block");
+                         "'/' (skip block) must stand at the start of the block or after the "
+                         "block number, before ':' (seed 000, 5.1)");
         default:
             break;
     }

@@ -39,6 +39,8 @@ class BlockParser {
   private:
     // Block structure (BlockParser.cpp).
     bool parsePrefix();
+    /// A skip slash '/' at the current position (at most one per block).
+    void takeSkip();
     void takePrimary();
     bool parseBlockNumber();
     bool parseBlockLabel();

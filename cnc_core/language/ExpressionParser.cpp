@@ -143,6 +143,8 @@ std::int32_t ExpressionParser::parseRead(std::string_view name, std::uint32_t of
         node.op = ExprOp::ReadT;
     } else if (name == "E") {
         node.op = ExprOp::ReadE;
+    } else if (name == "Q") {
+        node.op = ExprOp::ReadQ;
     } else if (name == "SPC") {
         node.op = ExprOp::ReadSPC;
     } else if (name == "TIME") {

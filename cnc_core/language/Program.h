@@ -43,6 +43,7 @@ enum class ExprOp : std::uint8_t {
     ReadTime,  ///< TIME
     ReadMTD,   ///< MTD(a,b,c,d); empty argument = -1 node index
     ReadAXD,   ///< AXD(axis:P-7-nnnn): axis letter*10+index in `index`, nnnn in `value`
+    ReadQ,     ///< Q: the last Q function (seed 000, 3.1: read like M(16))
 };
 
 struct ExprNode {

@@ -3,6 +3,7 @@
 #include <array>
 #include <cstdint>
 
+#include "cnc_core/interp/AuxFunctionGroups.h"
 #include "cnc_core/interp/Interpreter.h"
 #include "cnc_core/machine/MachineConfig.h"
 #include "cnc_core/restart/FunctionBuffer.h"
@@ -11,10 +12,10 @@ namespace mtc::core {
 
 /// Watches every auxiliary function of the computing process (forwarded to
 /// the SPS or not) and fills the two buffers of page 61 (seed 000, 3.1 / 4.2 /
-/// 5.2): M functions of group 16 (every M that is not in a configured group
-/// 1..15) and Q functions. M19, M119, M219 and M319 are never stored, nor are
-/// the program control functions M00, M01, M02 and M30. The M groups 1..15,
-/// S, T and E are collected by the interpreter itself.
+/// 5.2): M functions of group 16 and Q functions, by the rule of
+/// AuxFunctionGroups (the interpreter's own group rule): M19 forms and the
+/// program control functions are never stored. The M groups 1..15, S, T and
+/// E are collected by the interpreter itself.
 class RestartAuxCollector : public AuxObserver {
   public:
     explicit RestartAuxCollector(const ProcessConfig& config);
@@ -23,6 +24,11 @@ class RestartAuxCollector : public AuxObserver {
     void auxiliary(const AuxOutput& output, bool forwarded) override;
     /// Empties both buffers and the counters (start of a computing process).
     void clear();
+    /// Sets both buffers (a computing process goes on from a checkpoint).
+    void restore(const FunctionBuffer& m16, const FunctionBuffer& q) {
+        m16_ = m16;
+        q_ = q;
+    }
 
     /// The M(16) buffer (page 61, sub 1) and the Q buffer (sub 2).
     const FunctionBuffer& m16() const { return m16_; }
@@ -35,7 +41,7 @@ class RestartAuxCollector : public AuxObserver {
     bool storesInM16(int m) const;
 
   private:
-    std::array<bool, 1000> m16Member_{};
+    AuxFunctionGroups groups_;
     FunctionBuffer m16_;
     FunctionBuffer q_;
     std::uint64_t seen_ = 0;

@@ -63,6 +63,8 @@ inline std::string describeExpr(const Program& p, std::int32_t index) {
             return "T";
         case ExprOp::ReadE:
             return "E";
+        case ExprOp::ReadQ:
+            return "Q";
         case ExprOp::ReadS:
             return n.index ? "S" + std::to_string(n.index) : "S";
         case ExprOp::ReadSPC:
