@@ -42,8 +42,31 @@ const char* computingStatusName(ComputingStatus status) {
             return "aborted";
         case ComputingStatus::Waiting:
             return "waiting";
+        case ComputingStatus::Ended:
+            return "ended";
     }
     return "failed";
+}
+
+bool ComputingProcess::parametersAllowRestart(int program, DiagnosticList& diagnostics) const {
+    // Seed 000, 2.1: both process parameters must be No for NC program restart.
+    bool ok = true;
+    const std::string process = std::to_string(config_.index);
+    if (config_.flag("B033")) {
+        diagnostics.error("RESTART_PARAMETER", {program, "", 0, 0},
+                          "NC program restart needs process parameter B033 'reverse program "
+                          "execution required' = No (process " +
+                              process + " has Yes; seed 000, 2.1)");
+        ok = false;
+    }
+    if (config_.flag("B036")) {
+        diagnostics.error("RESTART_PARAMETER", {program, "", 0, 0},
+                          "NC program restart needs process parameter B036 'manual axis jogging "
+                          "causes reset' = No (process " +
+                              process + " has Yes; seed 000, 2.1)");
+        ok = false;
+    }
+    return ok;
 }
 
 ComputingProcess::ComputingProcess(const ProcessConfig& config, const ProgramStore& programs,
@@ -72,8 +95,10 @@ bool ComputingProcess::begin(const RestartSelection& selection, const Interprete
         local.error("RESTART_PROCESS", {},
                     "the selection is for process " + std::to_string(selection.process) +
                         ", this is process " + std::to_string(config_.index));
-    } else {
-        planRestartRoute(selection, programs_, route, local);
+    } else if (!parametersAllowRestart(selection.mainProgram, local)) {
+        // refused: Bxx.033 / Bxx.036 (seed 000, 2.1)
+    } else if (planRestartRoute(selection, programs_, route, local, routeCache_)) {
+        addStartWarnings(route, local, routeCache_);
     }
     for (const auto& [variable, value] : selection.variableChanges)
         if (variable < 0 || variable >= kVariableCount)
@@ -89,17 +114,51 @@ bool ComputingProcess::begin(const RestartSelection& selection, const Interprete
         progress_ = {};
         return false;
     }
+    start(selection, std::move(route), current, operatorOptions, budget, std::move(local));
+    const StopTarget target{route_.targetProgram->number, selection.target.block, 1};
+    target_ = target;
+    interpreter_.setStopTarget(target_);
+    return true;
+}
+
+bool ComputingProcess::beginSurvey(int mainProgram, const InterpreterState& current,
+                                   const InterpreterOptions& operatorOptions, std::uint64_t budget,
+                                   DiagnosticList& diagnostics) {
+    RestartRoute route;
+    route.main = programs_.find(config_.index, mainProgram);
+    if (interpreter_.configurationDiagnostics().hasErrors() || !route.main || budget == 0) {
+        diagnostics.error("RESTART_PROGRAM_NOT_FOUND", {mainProgram, "", 0, 0},
+                          "program " + std::to_string(mainProgram) + " cannot run in process " +
+                              std::to_string(config_.index));
+        progress_ = {};
+        return false;
+    }
+    route.selected = route.startSelected = route.startProgram = route.targetProgram = route.main;
+    RestartSelection selection;
+    selection.process = config_.index;
+    selection.mainProgram = mainProgram;
+    start(selection, std::move(route), current, operatorOptions, budget, {});
+    survey_ = true;
+    interpreter_.setStopTarget(std::nullopt);
+    return true;
+}
+
+void ComputingProcess::start(const RestartSelection& selection, RestartRoute route,
+                             const InterpreterState& current,
+                             const InterpreterOptions& operatorOptions, std::uint64_t budget,
+                             DiagnosticList diagnostics) {
     selection_ = selection;
     route_ = std::move(route);
     budget_ = budget;
-    diagnostics_ = std::move(local);
+    diagnostics_ = std::move(diagnostics);
     progress_ = {ComputingStatus::Running, 0, 0};
+    survey_ = false;
     abortRequested_.store(false);
     blocksSoFar_.store(0);
 
     interpreter_.restoreState(current);
     interpreter_.controlReset();
-    interpreter_.select(route_.selected, 0);
+    interpreter_.select(route_.startSelected, 0);  // program end and JMP resets as in a run
     InterpreterState start = interpreter_.state();
     for (const auto& [variable, value] : selection.variableChanges) {
         start.variables.values[static_cast<std::size_t>(variable)] = value;
@@ -115,15 +174,51 @@ bool ComputingProcess::begin(const RestartSelection& selection, const Interprete
     InterpreterOptions options = operatorOptions;
     options.continueAfterError = false;
     options.output = restartOutput(config_);
+    options.logicalAdaptiveFeed = true;  // G25 / G26 are remembered, nothing is measured
     interpreter_.options() = options;
     collector_.clear();
     filter_.resetCounters();
     filter_.cancelTransfers();
     interpreter_.setObserver(&collector_);
     publishBuffers();  // zeroed at the start (seed 000, 4.2)
-    target_ = {route_.targetProgram->number, selection.target.block, 1};
-    interpreter_.setStopTarget(target_);
-    return true;
+}
+
+ComputingCheckpoint ComputingProcess::checkpoint() const {
+    return {interpreter_.state(), collector_.m16(), collector_.q(), progress_.arrivals,
+            progress_.blocksInterpreted};
+}
+
+void ComputingProcess::resume(const ComputingCheckpoint& checkpoint) {
+    interpreter_.restoreState(checkpoint.state);
+    collector_.restore(checkpoint.m16, checkpoint.q);
+    progress_.arrivals = checkpoint.arrivals;
+    count(checkpoint.blocks - progress_.blocksInterpreted);
+}
+
+ComputingProgress ComputingProcess::step() {
+    if (progress_.status != ComputingStatus::Running &&
+        progress_.status != ComputingStatus::Stopped)
+        return progress_;
+    progress_.status = ComputingStatus::Running;
+    progress_.singleBlockStop = false;
+    if (progress_.blocksInterpreted >= budget_) {
+        budgetExhausted();
+        return progress_;
+    }
+    const RunResult result = interpreter_.step();
+    count(result.blocksInterpreted);
+    handle(result);
+    return progress_;
+}
+
+void ComputingProcess::budgetExhausted() {
+    const std::vector<StackLevel> levels = interpreter_.callStack();
+    const StackLevel at = levels.empty() ? StackLevel{} : levels.back();
+    diagnostics_.error("BLOCK_BUDGET", {at.program, at.block, at.line, 0},
+                       "the computing process was stopped after " + std::to_string(budget_) +
+                           " interpreted blocks (block budget) before it reached the target "
+                           "block");
+    finish(ComputingStatus::Failed);
 }
 
 ComputingProgress ComputingProcess::advance(std::uint64_t maxBlocks) {
@@ -144,14 +239,7 @@ ComputingProgress ComputingProcess::advance(std::uint64_t maxBlocks) {
             return progress_;
         }
         if (progress_.blocksInterpreted >= budget_) {
-            const std::vector<StackLevel> levels = interpreter_.callStack();
-            const StackLevel at = levels.empty() ? StackLevel{} : levels.back();
-            diagnostics_.error("BLOCK_BUDGET", {at.program, at.block, at.line, 0},
-                               "the computing process was stopped after " +
-                                   std::to_string(budget_) +
-                                   " interpreted blocks (block budget) before it reached the "
-                                   "target block");
-            finish(ComputingStatus::Failed);
+            budgetExhausted();
             return progress_;
         }
         const bool single = singleBlock_.load(std::memory_order_relaxed);
@@ -169,7 +257,7 @@ ComputingProgress ComputingProcess::advance(std::uint64_t maxBlocks) {
 ComputingProgress ComputingProcess::singleBlockStop() {
     // Single-block mode (seed 000, 2.7): held after every block as at M00;
     // Start (advance() again) interprets the next one. R-020.
-    publishRotaryAxisModes();
+    interpreter_.publishRotaryAxisModes();
     progress_.status = ComputingStatus::Stopped;
     progress_.singleBlockStop = true;
     return progress_;
@@ -190,10 +278,14 @@ ComputingProcess::Next ComputingProcess::handle(const RunResult& result) {
                 progress_.status = ComputingStatus::Waiting;
                 return Next::Return;
             }
-            publishRotaryAxisModes();  // page 60 el. 1..3 are updated at a program stop
+            // M00 / M01: the interpreter updated page 60 el. 1..3 (program stop)
             progress_.status = ComputingStatus::Stopped;
             return Next::Return;
         case RunStatus::Ended: {
+            if (survey_) {  // the verifier's run through the whole program is done
+                finish(ComputingStatus::Ended);
+                return Next::Return;
+            }
             const Program& p = *route_.targetProgram;
             diagnostics_.error(
                 "RESTART_TARGET_NOT_FOUND", locationOf(p, selection_.target.block),
@@ -212,8 +304,7 @@ ComputingProcess::Next ComputingProcess::handle(const RunResult& result) {
 }
 
 ComputingProcess::Next ComputingProcess::targetArrival() {
-    if (callStackMatches(interpreter_.state().callStack, route_.targetChain) &&
-        ++progress_.arrivals >= selection_.runs) {
+    if (atRouteLevel(interpreter_.state(), route_) && ++progress_.arrivals >= selection_.runs) {
         finish(ComputingStatus::TargetReached);
         return Next::Return;
     }
@@ -242,14 +333,6 @@ void ComputingProcess::publishBuffers() {
         data.write({61, config_.index, 1, element}, m16[i], MachineDataWriter::Nc);
         data.write({61, config_.index, 2, element}, q[i], MachineDataWriter::Nc);
     }
-}
-
-void ComputingProcess::publishRotaryAxisModes() {
-    const ModalState& modal = interpreter_.state().modal;
-    for (int spindle = 1; spindle <= 3; ++spindle)
-        interpreter_.machineData().write({60, config_.index, 0, spindle},
-                                         modal.rotaryAxisMode[static_cast<std::size_t>(spindle)],
-                                         MachineDataWriter::Nc);
 }
 
 void ComputingProcess::count(std::uint64_t blocks) {

@@ -21,9 +21,10 @@ enum class ComputingStatus {
     Failed,         ///< an error ended it (diagnostics): target not found, rejected block, budget
     Aborted,        ///< requestAbort() (Control reset) ended it
     Waiting,        ///< GAX / FAX waits for another process: advance() again looks (R-021)
+    Ended,          ///< beginSurvey(): the program ended (the verifier's run is complete)
 };
 
-/// "idle", "running", "stopped", "target", "failed", "aborted", "waiting".
+/// "idle", "running", "stopped", "target", "failed", "aborted", "waiting", "ended".
 const char* computingStatusName(ComputingStatus status);
 
 struct ComputingProgress {
@@ -31,6 +32,17 @@ struct ComputingProgress {
     std::uint64_t blocksInterpreted = 0;  ///< since begin()
     std::uint32_t arrivals = 0;           ///< arrivals at the target with the selected call chain
     bool singleBlockStop = false;         ///< Stopped by single-block mode (not M00 / M01)
+};
+
+/// Where a computing process stands at one arrival, to go on from there in
+/// another computing process of the same program (the restart verifier: one
+/// run through the program instead of one per target, restart.md R-028).
+struct ComputingCheckpoint {
+    InterpreterState state;  ///< the program pointer on the block arrived at
+    FunctionBuffer m16;      ///< page 61 buffers collected so far
+    FunctionBuffer q;
+    std::uint32_t arrivals = 0;  ///< arrivals at the target with its call chain before this one
+    std::uint64_t blocks = 0;    ///< blocks interpreted so far
 };
 
 /// The computing process of NC program restart (seed 000, 2.7, 2.8, 3.1, 4,
@@ -65,6 +77,24 @@ class ComputingProcess {
     bool begin(const RestartSelection& selection, const InterpreterState& current,
                const InterpreterOptions& operatorOptions, std::uint64_t budget,
                DiagnosticList& diagnostics);
+    /// The verifier's run: the computing process from N0000 of
+    /// `mainProgram` without a target, through the whole program; step() goes
+    /// one arrival further, status Ended at the program end. False (nothing
+    /// started) when the program cannot run.
+    bool beginSurvey(int mainProgram, const InterpreterState& current,
+                     const InterpreterOptions& operatorOptions, std::uint64_t budget,
+                     DiagnosticList& diagnostics);
+    /// One arrival: interprets the block the pointer is on (a skipped block
+    /// is passed over), with the handling of advance(). The verifier reads
+    /// state() between two steps.
+    ComputingProgress step();
+    /// The state at the current arrival (see ComputingCheckpoint).
+    ComputingCheckpoint checkpoint() const;
+    /// After begin(): goes on from `checkpoint`, taken at an arrival of the
+    /// same program and start by another computing process, as if the blocks
+    /// before had been interpreted here (the machine data they wrote must
+    /// already be in this process's pages).
+    void resume(const ComputingCheckpoint& checkpoint);
     /// Interprets at most `maxBlocks` blocks (Running / Stopped continue).
     /// Ends with TargetReached (page 60 and 61 written), Failed (BST, RET,
     /// M02, M30 before the target: RESTART_TARGET_NOT_FOUND; a rejected block;
@@ -87,6 +117,9 @@ class ComputingProcess {
     /// and FAX do not wait). With it, a GAX / FAX makes advance() return
     /// Waiting after its block until another process answers (seed 000, 5.4).
     void setAxisTransfer(AxisTransfer* transfer);
+    /// Program analyses kept across selections (the verifier; not owned;
+    /// nullptr = worked out for each begin()).
+    void setRouteCache(RestartRouteCache* cache) { routeCache_ = cache; }
     /// Withdraws a waiting GAX / FAX (Control reset of the restart).
     void cancelTransfers() { filter_.cancelTransfers(); }
 
@@ -113,10 +146,17 @@ class ComputingProcess {
   private:
     enum class Next { Continue, Return };
 
+    /// Bxx.033 and Bxx.036 are No (seed 000, 2.1); else RESTART_PARAMETER errors.
+    bool parametersAllowRestart(int program, DiagnosticList& diagnostics) const;
+    /// Puts the interpreter on the route's start block (begin, beginSurvey).
+    void start(const RestartSelection& selection, RestartRoute route,
+               const InterpreterState& current, const InterpreterOptions& operatorOptions,
+               std::uint64_t budget, DiagnosticList diagnostics);
+    void budgetExhausted();
+
     Next handle(const RunResult& result);
     Next targetArrival();
     void publishBuffers();
-    void publishRotaryAxisModes();
     void finish(ComputingStatus status);
     void count(std::uint64_t blocks);
     ComputingProgress singleBlockStop();
@@ -132,6 +172,8 @@ class ComputingProcess {
     std::uint64_t budget_ = 0;
     ComputingProgress progress_;
     DiagnosticList diagnostics_;
+    bool survey_ = false;  ///< beginSurvey(): no target, the program end is the end
+    RestartRouteCache* routeCache_ = nullptr;
     std::atomic<bool> abortRequested_{false};
     std::atomic<bool> singleBlock_{false};
     std::atomic<std::uint64_t> blocksSoFar_{0};

@@ -1,18 +1,14 @@
 #include "cnc_core/restart/RestartRoute.h"
 
+#include <optional>
 #include <string>
+
+#include "cnc_core/restart/LevelReach.h"
+#include "cnc_core/restart/ProgramScan.h"
 
 namespace mtc::core {
 
 namespace {
-
-/// A program level on the way to the target: where it was entered and the
-/// call that opened it (none for level 0).
-struct Level {
-    ProgramPtr program;
-    std::uint32_t entry = 0;
-    std::optional<CallFrame> call;
-};
 
 std::string refText(const BlockRef& ref) {
     return "program " + std::to_string(ref.program) + " block " + std::to_string(ref.block);
@@ -21,8 +17,8 @@ std::string refText(const BlockRef& ref) {
 class RoutePlanner {
   public:
     RoutePlanner(const RestartSelection& s, const ProgramStore& store, RestartRoute& route,
-                 DiagnosticList& diagnostics)
-        : s_(s), store_(store), route_(route), d_(diagnostics) {}
+                 DiagnosticList& diagnostics, RestartRouteCache* cache)
+        : s_(s), store_(store), route_(route), d_(diagnostics), cache_(cache) {}
 
     bool plan() {
         if (s_.runs < kMinRuns || s_.runs > kMaxRuns)
@@ -30,13 +26,14 @@ class RoutePlanner {
                         "the number of runs must be 1 .. 65536, not " + std::to_string(s_.runs));
         ProgramPtr main = program({s_.mainProgram, 0}, false);
         if (!main) return false;
-        levels_.push_back({main, 0, std::nullopt});
+        segments_.assign(1, LevelSegment{{ProgramLevel{main, 0, nullptr, 0}}, nullptr, 0});
         current_ = main;
         for (std::size_t i = 0; i < s_.path.size(); ++i)
             if (!step(s_.path[i], i + 1 < s_.path.size() ? s_.path[i + 1] : s_.target))
                 return false;
         route_.targetProgram = program(s_.target, true);
         if (!route_.targetProgram) return false;
+        route_.targetBlock = s_.target.block;
         if (route_.targetProgram->blocks[s_.target.block].flags & kBlockProgramEnd)
             return fail("RESTART_BLOCK_RANGE", locationOf(*route_.targetProgram, s_.target.block),
                         "PROGRAMMENDE cannot be the target block: the last target is the block "
@@ -47,17 +44,21 @@ class RoutePlanner {
                         "the target lies in program " + std::to_string(s_.target.program) +
                             ", but the path ends in program " + std::to_string(current_->number) +
                             " (a block of another program is reached through a jump or call)");
-        route_.selected = levels_.front().program;
+        const std::vector<ProgramLevel>& levels = segments_.back().levels;
+        route_.main = main;
+        route_.selected = levels.front().program;
         route_.targetChain.clear();
-        for (std::size_t k = 1; k < levels_.size(); ++k)
-            route_.targetChain.push_back(
-                {levels_[k].call->program->number, levels_[k].call->callBlock});
-        route_.startProgram = route_.selected;
+        for (std::size_t k = 1; k < levels.size(); ++k)
+            route_.targetChain.push_back({levels[k].caller->number, levels[k].callBlock});
+        route_.startProgram = main;
+        route_.startSelected = main;
         route_.startBlock = 0;
         route_.primary = false;
         route_.startFrames.clear();
-        if (s_.fromLastPrimary) findPrimaryStart();
-        return true;
+        std::optional<PrimaryStart> start;
+        if (s_.fromLastPrimary) start = findPrimaryStart();
+        route_.segments = segments_;
+        return onTheirLevels(start);
     }
 
   private:
@@ -106,8 +107,11 @@ class RoutePlanner {
                             " here, not in program " + std::to_string(p->number));
         if (!consistent(*p, ref, *word, destination)) return false;
         current_ = destination;
+        std::vector<ProgramLevel>& levels = segments_.back().levels;
         if (kind == PathStepKind::Jump) {
-            levels_.assign(1, {destination, 0, std::nullopt});
+            segments_.back().jumpProgram = p;
+            segments_.back().jumpBlock = ref.block;
+            segments_.push_back({{ProgramLevel{destination, 0, nullptr, 0}}, nullptr, 0});
             return true;
         }
         if (kind == PathStepKind::Branch) return true;
@@ -121,10 +125,10 @@ class RoutePlanner {
                                 std::to_string(destination->number) + ", where the path goes on");
             entry = static_cast<std::uint32_t>(found);
         }
-        levels_.push_back({destination, entry, CallFrame{p, ref.block, ref.block + 1}});
-        if (levels_.size() > static_cast<std::size_t>(kMaxSearchLevels))
+        levels.push_back({destination, entry, p, ref.block});
+        if (levels.size() > static_cast<std::size_t>(kMaxSearchLevels))
             return fail("RESTART_PATH_DEPTH", locationOf(*p, ref.block),
-                        "the target would lie on program level " + std::to_string(levels_.size()) +
+                        "the target would lie on program level " + std::to_string(levels.size()) +
                             "; at most 10 levels (9 nested calls) are possible (seed 000, 2.5)");
         return true;
     }
@@ -156,38 +160,90 @@ class RoutePlanner {
                         "then in program 99)");
     }
 
-    /// Searches backwards for a ':' block: first before the target on its
-    /// level, then from each calling block (inclusive) outwards.
-    void findPrimaryStart() {
-        ProgramPtr position = route_.targetProgram;
-        long from = static_cast<long>(s_.target.block) - 1;
-        for (std::size_t k = levels_.size(); k-- > 0;) {
-            const long lower = position == levels_[k].program ? levels_[k].entry : 0;
-            for (long b = from; b >= lower; --b) {
-                if (!(position->blocks[static_cast<std::size_t>(b)].flags & kBlockPrimary))
-                    continue;
-                route_.startProgram = position;
-                route_.startBlock = static_cast<std::uint32_t>(b);
-                route_.primary = true;
-                for (std::size_t j = 1; j <= k; ++j)
-                    route_.startFrames.push_back(*levels_[j].call);
-                return;
-            }
-            if (k == 0) break;
-            position = levels_[k].call->program;
-            from = static_cast<long>(levels_[k].call->callBlock);
+    /// The last ':' block before the target (R-002, across JMPs R-024).
+    std::optional<PrimaryStart> findPrimaryStart() {
+        std::optional<PrimaryStart> start = findLastPrimaryBlock(
+            segments_, route_.targetProgram, s_.target.block, scanForPrimaryBlock);
+        if (!start) {
+            d_.warning("RESTART_NO_PRIMARY_BLOCK",
+                       locationOf(*route_.targetProgram, s_.target.block),
+                       "there is no primary block (':') before the target; the computing process "
+                       "starts at the beginning of program " +
+                           std::to_string(route_.main->number));
+            return start;
         }
-        d_.warning("RESTART_NO_PRIMARY_BLOCK", locationOf(*route_.targetProgram, s_.target.block),
-                   "there is no primary block (':') before the target; the computing process "
-                   "starts at the beginning of program " +
-                       std::to_string(route_.selected->number));
+        route_.startProgram = start->program;
+        route_.startBlock = start->block;
+        route_.startSelected = segments_[start->segment].levels.front().program;
+        route_.primary = true;
+        route_.startFrames = start->frames;
+        return start;
+    }
+
+    /// Every block where the path leaves a program level (a call, a JMP) and
+    /// the target must be reached on that level: a block only a
+    /// subroutine call runs through is refused with the call to follow.
+    bool onTheirLevels(const std::optional<PrimaryStart>& start) {
+        for (std::size_t s = 0; s < segments_.size(); ++s) {
+            const std::vector<ProgramLevel>& levels = segments_[s].levels;
+            for (std::size_t k = 0; k < levels.size(); ++k) {
+                const bool last = k + 1 == levels.size();
+                const bool finalSegment = s + 1 == segments_.size();
+                const ProgramPtr exitProgram =
+                    !last ? levels[k + 1].caller
+                          : (finalSegment ? route_.targetProgram : segments_[s].jumpProgram);
+                const std::uint32_t exitBlock =
+                    !last ? levels[k + 1].callBlock
+                          : (finalSegment ? s_.target.block : segments_[s].jumpBlock);
+                if (exitProgram != levels[k].program) continue;  // a branch into program 99
+                std::vector<std::uint32_t> entries{levels[k].entry};
+                if (start && start->segment == s && start->level == static_cast<int>(k))
+                    entries.push_back(start->block);
+                const bool programStart = s == 0 && k == 0 && !route_.primary;
+                if (!reachedOnLevel(levels[k].program, entries, exitBlock, last && finalSegment,
+                                    programStart))
+                    return false;
+            }
+        }
+        return true;
+    }
+
+    bool reachedOnLevel(const ProgramPtr& program, const std::vector<std::uint32_t>& entries,
+                        std::uint32_t block, bool isTarget, bool programStart) {
+        const LevelReach reach(program);
+        if (cache_ ? cache_->reaches(program, entries, block) : reach.reaches(entries, block))
+            return true;
+        if (programStart) {  // seed 000, 2.4: a subroutine at the start needs the start block
+            std::optional<ProgramScan> own;
+            const ProgramScan& scan = cache_ ? cache_->scan(program) : own.emplace(program);
+            const std::optional<std::uint32_t> rts = scan.returnWithoutCall();
+            if (rts && *rts < block)
+                return fail("RESTART_START_BLOCK_NEEDED", locationOf(*program, *rts),
+                            "the program starts with a subroutine (RTS in " +
+                                program->blockId(*rts) +
+                                " without a call): the computing process would end there; "
+                                "select 'restart from last primary block' (seed 000, 2.4)");
+        }
+        const auto sub = reach.subroutineOf(block);
+        // Reached by no flow at all (dead code after M30): the computing process
+        // answers "target block cannot be found" as seed 000, 2.7 says.
+        if (!sub) return true;
+        const std::string id = program->blockId(block).empty() ? "block " + std::to_string(block)
+                                                               : program->blockId(block);
+        const std::string call = program->blockId(sub->callBlock);
+        return fail("RESTART_TARGET_IN_SUBROUTINE", locationOf(*program, block),
+                    (isTarget ? "the target " : "the path block ") + id +
+                        " is not reached on this program level: it belongs to the subroutine ." +
+                        sub->label + " that " + call + " calls; put the cursor on " + call +
+                        " and follow the call with <Plane+> (seed 000, 2.5)");
     }
 
     const RestartSelection& s_;
     const ProgramStore& store_;
     RestartRoute& route_;
     DiagnosticList& d_;
-    std::vector<Level> levels_;
+    RestartRouteCache* cache_;
+    std::vector<LevelSegment> segments_;
     ProgramPtr current_;  ///< program the path is in after the steps so far
 };
 
@@ -243,8 +299,8 @@ SourceLocation locationOf(const Program& program, std::uint32_t block) {
 }
 
 bool planRestartRoute(const RestartSelection& selection, const ProgramStore& store,
-                      RestartRoute& route, DiagnosticList& diagnostics) {
-    return RoutePlanner(selection, store, route, diagnostics).plan();
+                      RestartRoute& route, DiagnosticList& diagnostics, RestartRouteCache* cache) {
+    return RoutePlanner(selection, store, route, diagnostics, cache).plan();
 }
 
 bool callStackMatches(const std::vector<CallFrame>& stack, const std::vector<RouteFrame>& chain) {
@@ -254,6 +310,77 @@ bool callStackMatches(const std::vector<CallFrame>& stack, const std::vector<Rou
             stack[i].callBlock != chain[i].callBlock)
             return false;
     return true;
+}
+
+}  // namespace mtc::core
+
+namespace mtc::core {
+
+bool atRouteLevel(const InterpreterState& state, const RestartRoute& route) {
+    return state.selected == route.selected && callStackMatches(state.callStack, route.targetChain);
+}
+
+RestartRouteCache::RestartRouteCache() = default;
+RestartRouteCache::~RestartRouteCache() = default;
+
+bool RestartRouteCache::reaches(const ProgramPtr& program,
+                                const std::vector<std::uint32_t>& entries, std::uint32_t block) {
+    auto key = std::make_pair(program.get(), entries);
+    auto found = reach_.find(key);
+    if (found == reach_.end()) {
+        keep_.push_back(program);
+        found = reach_.emplace(std::move(key), LevelReach(program).reachable(entries)).first;
+    }
+    return block < found->second.size() && found->second[block];
+}
+
+const ProgramScan& RestartRouteCache::scan(const ProgramPtr& program) {
+    std::unique_ptr<ProgramScan>& slot = scans_[program.get()];
+    if (!slot) {
+        keep_.push_back(program);
+        slot = std::make_unique<ProgramScan>(program);
+    }
+    return *slot;
+}
+
+void addStartWarnings(const RestartRoute& route, DiagnosticList& diagnostics,
+                      RestartRouteCache* cache) {
+    if (!route.main || route.segments.empty()) return;
+    if (!route.primary) {
+        // The block of the main program the way passes: the call into level
+        // 1, the JMP that leaves it, or the target itself.
+        const LevelSegment& first = route.segments.front();
+        const bool jumped = route.segments.size() > 1;
+        std::optional<std::uint32_t> passed;
+        if (first.levels.size() > 1 && first.levels[1].caller == route.main)
+            passed = first.levels[1].callBlock;
+        else if (first.levels.size() == 1 && jumped && first.jumpProgram == route.main)
+            passed = first.jumpBlock;
+        else if (!jumped && first.levels.size() == 1 && route.targetProgram == route.main)
+            passed = route.targetBlock;
+        std::optional<ProgramScan> own;
+        const ProgramScan& scan = cache ? cache->scan(route.main) : own.emplace(route.main);
+        const auto rts = scan.returnWithoutCall();
+        if (rts && passed && *rts < *passed)
+            diagnostics.warning(
+                "RESTART_START_BLOCK_NEEDED", locationOf(*route.main, *rts),
+                "the program starts with a subroutine (RTS in " + route.main->blockId(*rts) +
+                    " without a call): select 'restart from last primary block', otherwise the "
+                    "computing process runs into the subroutine (seed 000, 2.4)");
+        return;
+    }
+    std::optional<ProgramScan> own;
+    const ProgramScan& scan =
+        cache ? cache->scan(route.startProgram) : own.emplace(route.startProgram);
+    const std::uint32_t block = route.startBlock;
+    if (scan.modalActiveBefore(block, 91, 90))
+        diagnostics.warning("RESTART_START_AFTER_G91", locationOf(*route.startProgram, block),
+                            "the start block lies after an incremental dimension G91: the "
+                            "computing process starts in G90 (seed 000, 5.1)");
+    if (scan.modalActiveBefore(block, 51, 50))
+        diagnostics.warning("RESTART_START_AFTER_G51", locationOf(*route.startProgram, block),
+                            "the start block lies after an incremental zero offset G51: the "
+                            "computing process does not see it (seed 000, 5.1)");
 }
 
 }  // namespace mtc::core

@@ -118,13 +118,20 @@ bool RestartSequence::accept(const RestartSelection& selection, DiagnosticList& 
                           ", program 99 or the cycle memory: the restart will stop after the "
                           "computing process");
     diagnostics.append(local);
-    diagnostics_ = std::move(local);
+    // The computing process's own diagnostics (begin() and the run) join when
+    // it ends; keeping them here too reported them twice.
+    diagnostics_ = DiagnosticList{};
+    for (const Diagnostic& d : local.items())
+        if (d.code == "RESTART_ADJUST_MISSING") diagnostics_.add(d);
+    computingReported_ = false;
     abortRequested_.store(false);
     budget_ = budget;
     liveBlocks_ = 0;
     held_ = false;
     reentry_ = {};
     actual_ = live_.state().modal.machine;
+    actualSpindleModes_ = live_.state().modal.rotaryAxisMode;
+    actualTools_ = live_.state().modal.toolSpindle;
     control_.setKeyHandler(this);
     control_.signalTable().set("mBPREP", 0);  // the restart screen is closed
     setSignal("SBPACT", 1);
@@ -137,6 +144,7 @@ bool RestartSequence::accept(const RestartSelection& selection, DiagnosticList& 
 void RestartSequence::react() {
     if (phase_ == RestartPhase::Active && signal("CBPSTR") == 1) {
         control_.setProgramActive(true);
+        resetMotionAnnouncement();
         phase_ = RestartPhase::Computing;
     }
     if (signal("SCREST") == 1 && signal("CREPOS") == 0) setSignal("SREPOS", 0);
@@ -165,11 +173,11 @@ void RestartSequence::advanceComputing(std::uint64_t maxBlocks) {
             setSignal("SHOLD", 1);
             return;
         case ComputingStatus::TargetReached:
-            diagnostics_.append(computing_.diagnostics());
+            takeComputingDiagnostics();
             targetReached();
             return;
         case ComputingStatus::Failed:
-            diagnostics_.append(computing_.diagnostics());
+        case ComputingStatus::Ended:  // only a survey ends without a target (never here)
             resetAll(RestartPhase::Failed);
             return;
         case ComputingStatus::Aborted:
@@ -180,6 +188,24 @@ void RestartSequence::advanceComputing(std::uint64_t maxBlocks) {
         case ComputingStatus::Waiting:  // GAX / FAX: the next advance() looks again
             return;
     }
+}
+
+void RestartSequence::resetMotionAnnouncement() {
+    // Axis signals are named A<process><axis>: "A00XSMCPOS", "A01Z2SMCNEG".
+    const std::string prefix = "A" + control_.signalPrefix().substr(1);
+    for (int axis = 0; axis < live_.axes().count(); ++axis) {
+        const AxisModel& model = live_.axes().axis(axis);
+        if (model.spindle && !model.rotary) continue;
+        const std::string name = prefix + model.displayName();
+        control_.signalTable().set(name + "SMCPOS", 0);
+        control_.signalTable().set(name + "SMCNEG", 0);
+    }
+}
+
+void RestartSequence::takeComputingDiagnostics() {
+    if (computingReported_) return;
+    computingReported_ = true;
+    diagnostics_.append(computing_.diagnostics());
 }
 
 void RestartSequence::targetReached() {
@@ -194,6 +220,11 @@ void RestartSequence::targetReached() {
     // groups (plane, zero offset) stay as computed. R-008.
     state.modal.transformation.deselect();
     state.modal.g[kGroupTransformation] = 30;
+    // Nothing moved and no spindle command was executed: the spindles keep
+    // their mode and the tool spindles their tools; page 60 says what ADJUST
+    // and REPOS must establish (seed 000, 4.1, 5.4; R-030).
+    state.modal.rotaryAxisMode = actualSpindleModes_;
+    state.modal.toolSpindle = actualTools_;
     live_.restoreState(state);
     live_.takeMachinePositions(actual_);  // the computing process moved nothing
     liveChanged_ = true;
@@ -335,6 +366,14 @@ bool RestartSequence::jog(int axis, double machinePosition) {
     move.end[static_cast<std::size_t>(axis)] = machinePosition;
     live_.takeMachinePositions(move.end);
     machine_.motion(move);
+    live_.manualJogPerformed();  // Bxx.036 = No for a restart (refused otherwise): no reset
+    return true;
+}
+
+bool RestartSequence::resumeComputing(const ComputingCheckpoint& checkpoint) {
+    if (phase_ != RestartPhase::Computing || computing_.progress().blocksInterpreted != 0)
+        return false;
+    computing_.resume(checkpoint);
     return true;
 }
 

@@ -68,6 +68,12 @@ class RestartSequence : public ControlKeyHandler, private AuxObserver {
     /// `machinePosition` (a jog; the machine sink sees the move). False when
     /// not in manual mode, not between subroutines, or outside the travel range.
     bool jog(int axis, double machinePosition);
+    /// The restart verifier: right after accept(), before the
+    /// computing process interpreted a block, it goes on from `checkpoint`
+    /// (taken by the verifier's own run through the program at the arrival
+    /// the selection names) instead of interpreting the blocks before again.
+    /// False (nothing changed) in any other phase.
+    bool resumeComputing(const ComputingCheckpoint& checkpoint);
     /// Asks for an abort from any thread; the next advance() performs it as
     /// Control reset would.
     void requestAbort();
@@ -75,6 +81,8 @@ class RestartSequence : public ControlKeyHandler, private AuxObserver {
     /// The cell's axis transfer handshake for GAX / FAX in the computing
     /// process (not owned; nullptr = none: they do not wait). R-021.
     void setAxisTransfer(AxisTransfer* transfer) { computing_.setAxisTransfer(transfer); }
+    /// Program analyses kept across restarts (the verifier; not owned).
+    void setRouteCache(RestartRouteCache* cache) { computing_.setRouteCache(cache); }
     /// "GAX X1" while the computing process waits for another process, else "".
     std::string waitingFor() const { return computing_.filter().waitingFor(); }
     /// Where the restart stands.
@@ -97,18 +105,27 @@ class RestartSequence : public ControlKeyHandler, private AuxObserver {
 
   private:
     void auxiliary(const AuxOutput& output, bool forwarded) override;
+    /// Motion announcement AxxSMCPOS / AxxSMCNEG of every axis to 0 at the
+    /// start of the computing process (seed 000, 6.4; R-033).
+    void resetMotionAnnouncement();
     void react();
     void advanceComputing(std::uint64_t maxBlocks);
     void targetReached();
+    /// Appends the computing process's diagnostics to the sequence's, once.
+    void takeComputingDiagnostics();
     bool start();
     bool repositionKey();
     void stop();
     bool changeMode(OperatingMode mode);
     bool beginAdjust();
     void runLive(std::uint64_t maxBlocks);
+    /// The next ADJUST block would return to the target with RTS before .REPOS.
+    bool returnBeforeRepos() const;
     bool handleLive(const RunResult& result);
     bool liveTarget();
     void reestablished();
+    /// Switches the process's adaptive feed control as the target had it.
+    void restoreAdaptiveFeed();
     void fail(const std::string& code, const std::string& message);
     void resetAll(RestartPhase phase);
     void setSignal(const char* name, int value);
@@ -124,14 +141,18 @@ class RestartSequence : public ControlKeyHandler, private AuxObserver {
     RestartPhase phase_ = RestartPhase::Idle;
     RestartPhase resumePhase_ = RestartPhase::Adjusting;  ///< continued after manual mode
     bool held_ = false;
-    bool liveChanged_ = false;  ///< the live interpreter holds restart state
+    bool liveChanged_ = false;       ///< the live interpreter holds restart state
+    bool computingReported_ = true;  ///< computing_.diagnostics() are in diagnostics_
     std::atomic<bool> abortRequested_{false};
     std::uint64_t budget_ = kDefaultBlockBudget;
     std::uint64_t liveBlocks_ = 0;
     std::array<double, kMaxAxes> actual_{};  ///< machine positions when the restart began
+    std::array<std::int8_t, kSpindleSlots> actualSpindleModes_{};  ///< spindle modes then
+    std::array<int, kToolSpindles> actualTools_{};                 ///< tools in the spindles then
     ReentryPoint reentry_;
     ProgramPtr adjustProgram_;
     std::optional<std::uint32_t> reposBlock_;
+    std::size_t adjustDepth_ = 0;  ///< call stack size inside ADJUST (its own level)
     DiagnosticList diagnostics_;
 };
 

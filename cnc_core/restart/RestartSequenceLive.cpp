@@ -1,5 +1,6 @@
 // RestartSequence, second half: ADJUST and REPOS on the process's own
 // interpreter, the re-entry, and the way back to a consistent state.
+#include "cnc_core/afc/AdaptiveFeedControl.h"
 #include "cnc_core/interp/ProgramFlow.h"
 #include "cnc_core/restart/RestartSequence.h"
 
@@ -37,6 +38,7 @@ bool RestartSequence::beginAdjust() {
     // returns there.
     InterpreterState state = live_.state();
     state.callStack.push_back({state.program, state.block, state.block});
+    adjustDepth_ = state.callStack.size();
     state.program = adjustProgram_;
     state.block = block;
     live_.restoreState(state);
@@ -47,10 +49,28 @@ bool RestartSequence::beginAdjust() {
     return true;
 }
 
+bool RestartSequence::returnBeforeRepos() const {
+    if (phase_ != RestartPhase::Adjusting || !reposBlock_) return false;
+    const InterpreterState& s = live_.state();
+    if (s.callStack.size() != adjustDepth_ || !s.program) return false;
+    if (s.program == adjustProgram_ && s.block == *reposBlock_) return false;  // REPOS begins
+    if (s.block >= s.program->blocks.size()) return false;
+    if ((s.program->blocks[s.block].flags & kBlockSkip) && live_.options().skipBlocks) return false;
+    const std::optional<Word> word = jumpWordOf(*s.program, s.block);
+    return word && word->jump == JumpKind::RTS;
+}
+
 void RestartSequence::runLive(std::uint64_t maxBlocks) {
     for (std::uint64_t i = 0; i < maxBlocks; ++i) {
         if (phase_ != RestartPhase::Adjusting && phase_ != RestartPhase::Repositioning) return;
         if (held_) return;
+        if (returnBeforeRepos()) {  // seed 000, 5.3: ADJUST has no RTS before .REPOS
+            fail("RESTART_ADJUST_RTS",
+                 "ADJUST ends with RTS before .REPOS: it would return to the target block and "
+                 "run the program as ADJUST; the block is not executed and nothing moves "
+                 "(seed 000, 5.3: ADJUST falls through into REPOS without RTS)");
+            return;
+        }
         if (liveBlocks_ >= budget_) {
             fail("BLOCK_BUDGET", "ADJUST and REPOS were stopped after " + std::to_string(budget_) +
                                      " interpreted blocks (block budget)");
@@ -105,7 +125,7 @@ bool RestartSequence::liveTarget() {
     }
     const StopTarget target = reentryTarget();
     if (state.program && state.program->number == target.program && state.block == target.block &&
-        callStackMatches(state.callStack, computing_.route().targetChain)) {
+        atRouteLevel(state, computing_.route())) {
         reestablished();
         return false;
     }
@@ -119,6 +139,7 @@ bool RestartSequence::liveTarget() {
 }
 
 void RestartSequence::reestablished() {
+    restoreAdaptiveFeed();
     live_.setStopTarget(std::nullopt);
     live_.setObserver(nullptr);
     liveChanged_ = false;
@@ -127,6 +148,30 @@ void RestartSequence::reestablished() {
     sps_.cycle();
     react();
     control_.setKeyHandler(nullptr);
+}
+
+void RestartSequence::restoreAdaptiveFeed() {
+    // G26 is a state of the NC the computing process determined (seed 000,
+    // 2.8); ADJUST and REPOS run without it (G77 excludes it), the program
+    // goes on with it.
+    AdaptiveFeedControl* afc = live_.adaptiveFeed();
+    const bool wanted = live_.state().modal.adaptiveFeed;
+    if (!afc || afc->active() == wanted) return;
+    if (!wanted) {
+        afc->switchOff();
+        return;
+    }
+    const int transformation = live_.state().modal.g[kGroupTransformation];
+    std::vector<int> active;
+    if (transformation != 30) active.push_back(transformation);
+    if (afc->switchOn(active) != AfcStatus::Ok) {
+        const std::vector<StackLevel> levels = live_.callStack();
+        const StackLevel at = levels.empty() ? StackLevel{} : levels.back();
+        diagnostics_.warning("RESTART_AFC_NOT_RESTORED", {at.program, at.block, at.line, 0},
+                             "adaptive feed control (G26) of the target could not be switched "
+                             "on again: " +
+                                 afc->message());
+    }
 }
 
 void RestartSequence::fail(const std::string& code, const std::string& message) {
@@ -138,6 +183,7 @@ void RestartSequence::fail(const std::string& code, const std::string& message) 
 }
 
 void RestartSequence::resetAll(RestartPhase phase) {
+    takeComputingDiagnostics();  // the warnings of its start and the error that ended it
     if (liveChanged_) {
         live_.setObserver(nullptr);
         live_.setStopTarget(std::nullopt);

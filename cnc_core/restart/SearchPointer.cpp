@@ -366,37 +366,45 @@ SearchReply SearchPointer::search(std::string_view text) {
     return {};
 }
 
-std::vector<ProgramLevel> SearchPointer::programLevels() const {
-    std::vector<ProgramLevel> list;
-    if (!active()) return list;
-    list.push_back({levels_[0].program, 0, nullptr, 0});
+std::vector<LevelSegment> SearchPointer::programSegments() const {
+    std::vector<LevelSegment> segments;
+    if (!active()) return segments;
+    segments.push_back({{ProgramLevel{levels_[0].program, 0, nullptr, 0}}, nullptr, 0});
     for (std::size_t i = 1; i < levels_.size(); ++i) {
         const SearchLevel& level = levels_[i];
-        if (level.call)
-            list.push_back(
+        if (level.call) {
+            segments.back().levels.push_back(
                 {level.program, level.entry, levels_[i - 1].program, levels_[i - 1].cursor});
-        else if (level.via == JumpKind::JMP)
-            list.assign(1, ProgramLevel{level.program, 0, nullptr, 0});
+        } else if (level.via == JumpKind::JMP) {
+            segments.back().jumpProgram = levels_[i - 1].program;
+            segments.back().jumpBlock = levels_[i - 1].cursor;
+            segments.push_back({{ProgramLevel{level.program, 0, nullptr, 0}}, nullptr, 0});
+        }
     }
-    return list;
+    return segments;
+}
+
+std::vector<ProgramLevel> SearchPointer::programLevels() const {
+    std::vector<LevelSegment> segments = programSegments();
+    return segments.empty() ? std::vector<ProgramLevel>{} : std::move(segments.back().levels);
 }
 
 std::optional<StartBlock> SearchPointer::startBlock() const {
     if (!active()) return std::nullopt;
-    const std::vector<ProgramLevel> levels = programLevels();
-    if (!fromLastPrimary_) return StartBlock{0, BlockRef{levels[0].program->number, 0}, false};
-    // Backwards from the target on its level, then from each call (inclusive) outwards.
-    ProgramPtr position = current().program;
-    std::uint32_t end = current().cursor;  // exclusive
-    for (std::size_t k = levels.size(); k-- > 0;) {
-        const std::uint32_t lower = position == levels[k].program ? levels[k].entry : 0;
-        if (auto primary = scan(position).lastPrimaryIn(lower, end))
-            return StartBlock{static_cast<int>(k), BlockRef{position->number, *primary}, true};
-        if (k == 0) break;
-        position = levels[k].caller;
-        end = levels[k].callBlock + 1;
-    }
-    return std::nullopt;
+    const std::vector<LevelSegment> segments = programSegments();
+    // Without the primary block the computing process starts at N0000 of the
+    // selected (main) program, also for a target behind a JMP.
+    if (!fromLastPrimary_)
+        return StartBlock{0, BlockRef{segments.front().levels.front().program->number, 0}, false};
+    // The one rule of the computing process: backwards from the
+    // target on its level, then from each call (inclusive) outwards, then
+    // before each JMP; with the screen's primary index for the look-ups.
+    const auto lookup = [this](const ProgramPtr& program, std::uint32_t first, std::uint32_t end) {
+        return scan(program).lastPrimaryIn(first, end);
+    };
+    const auto found = findLastPrimaryBlock(segments, current().program, current().cursor, lookup);
+    if (!found) return std::nullopt;
+    return StartBlock{found->level, BlockRef{found->program->number, found->block}, true};
 }
 
 SearchReply SearchPointer::setFromLastPrimary(bool on) {
@@ -463,46 +471,8 @@ AcceptResult SearchPointer::accept() const {
     s.variableChanges = variableChanges_;
     s.eventChanges = eventChanges_;
     result.start = *start;
-    addWarnings(*start, result.diagnostics);
-    result.ok = true;
+    result.ok = true;  // the NC's warnings (RS-011) come with ComputingProcess::begin
     return result;
-}
-
-void SearchPointer::addWarnings(const StartBlock& start, DiagnosticList& diagnostics) const {
-    if (!start.primary) {
-        // The block of the outermost program level the way passes: the call
-        // into level 1, or the target itself.
-        const std::vector<ProgramLevel> levels = programLevels();
-        const ProgramPtr& main = levels[0].program;
-        std::optional<std::uint32_t> passed;
-        if (levels.size() > 1 && levels[1].caller == main)
-            passed = levels[1].callBlock;
-        else if (levels.size() == 1 && current().program == main)
-            passed = current().cursor;
-        const auto rts = scan(main).returnWithoutCall();
-        if (rts && passed && *rts < *passed) {
-            SearchLevel shown{main, *rts, 0, JumpKind::BRA, false};
-            diagnostics.warning(
-                "RESTART_START_BLOCK_NEEDED", where(shown, *rts),
-                "the program starts with a subroutine (RTS in " + main->blockId(*rts) +
-                    " without a call): select 'restart from last primary block', otherwise the "
-                    "computing process runs into the subroutine (seed 000, 2.4)");
-        }
-        return;
-    }
-    const ProgramPtr program = store_.find(process_, start.block.program);
-    if (!program) return;
-    const ProgramScan& s = scan(program);
-    const std::uint32_t block = start.block.block;
-    const SearchLevel shown{program, block, 0, JumpKind::BRA, false};
-    if (s.modalActiveBefore(block, 91, 90))
-        diagnostics.warning("RESTART_START_AFTER_G91", where(shown, block),
-                            "the start block lies after an incremental dimension G91: the "
-                            "computing process starts in G90 (seed 000, 5.1)");
-    if (s.modalActiveBefore(block, 51, 50))
-        diagnostics.warning("RESTART_START_AFTER_G51", where(shown, block),
-                            "the start block lies after an incremental zero offset G51: the "
-                            "computing process does not see it (seed 000, 5.1)");
 }
 
 }  // namespace mtc::core

@@ -14,6 +14,7 @@
 #include "cnc_core/program/ProgramStore.h"
 #include "cnc_core/restart/ProgramScan.h"
 #include "cnc_core/restart/RestartSelection.h"
+#include "cnc_core/restart/StartBlockSearch.h"
 
 namespace mtc::core {
 
@@ -62,16 +63,6 @@ struct PlaneWindow {
 struct SearchReply {
     bool ok = true;
     std::optional<Diagnostic> note;
-};
-
-/// A program level as the running program would have it (seed 000, 2.5):
-/// calls (BSR, JSR, BEV, JEV) open one, JMP replaces all of them, branches
-/// stay on theirs. The 10-level limit counts these.
-struct ProgramLevel {
-    ProgramPtr program;
-    std::uint32_t entry = 0;      ///< block the level was entered at
-    ProgramPtr caller;            ///< program of the call (level > 0)
-    std::uint32_t callBlock = 0;  ///< block of the call in `caller`
 };
 
 /// Where the computing process starts (seed 000, 2.4).
@@ -190,6 +181,8 @@ class SearchPointer {
     std::string levelCommand(std::size_t level) const;
     /// The program levels of the way to the target (outermost first).
     std::vector<ProgramLevel> programLevels() const;
+    /// The levels of the whole path, split at its JMPs (main program first).
+    std::vector<LevelSegment> programSegments() const;
     /// Variables and events changed in the windows so far.
     const std::map<int, double>& variableChanges() const { return variableChanges_; }
     const std::map<EventRef, bool>& eventChanges() const { return eventChanges_; }
@@ -207,7 +200,6 @@ class SearchPointer {
     bool readJump(const ProgramPtr& program, std::uint32_t block, SearchJump& jump) const;
     bool resolveLabel(std::string_view name, const ProgramPtr& current, ProgramPtr& program,
                       std::uint32_t& block) const;
-    void addWarnings(const StartBlock& start, DiagnosticList& diagnostics) const;
 
     const ProgramStore& store_;
     int process_;

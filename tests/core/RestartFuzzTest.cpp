@@ -88,7 +88,9 @@ TEST(RestartFuzz, RandomSelectionsAndKeysLeaveConsistentSignals) {
             EXPECT_EQ(control.keyHandler(), nullptr);
         }
     }
-    EXPECT_GT(accepted, 40) << "enough random selections are valid";
+    // Random blocks of subroutine bodies without their call are refused
+    // (restart.md R-023): about a tenth of the rounds remain valid.
+    EXPECT_GT(accepted, 25) << "enough random selections are valid";
     EXPECT_GT(reachedTarget, 10) << "and some of them reach the target";
 }
 

@@ -84,8 +84,17 @@ void exercise(const ProgramStore& store, int process, int number, unsigned seed,
         if (!accepted.ok) continue;
         RestartRoute route;
         DiagnosticList diagnostics;
-        ASSERT_TRUE(planRestartRoute(accepted.selection, store, route, diagnostics))
-            << "seed " << seed << " step " << step << ": " << diagnostics.items().front().message;
+        if (!planRestartRoute(accepted.selection, store, route, diagnostics)) {
+            // The screen accepts a block of a subroutine body picked without
+            // Plane+ or a target after a subroutine at the program start; the
+            // NC refuses it (restart.md R-023).
+            const std::string code = diagnostics.items().front().code;
+            ASSERT_TRUE(code == "RESTART_TARGET_IN_SUBROUTINE" ||
+                        code == "RESTART_START_BLOCK_NEEDED")
+                << "seed " << seed << " step " << step << ": "
+                << diagnostics.items().front().message;
+            continue;
+        }
         ASSERT_EQ(accepted.start.block.block, route.startBlock) << "seed " << seed;
     }
 }

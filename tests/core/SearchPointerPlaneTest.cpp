@@ -116,11 +116,18 @@ TEST_F(SearchPointerTest, JmpContinuesTheSearchInTheOtherProgram) {
     ASSERT_TRUE(pointer.planePlus().ok);
     EXPECT_EQ(cursorText(pointer), "P7 N0000");
     EXPECT_FALSE(pointer.current().call);
-    // JMP ends program 5: program 7 is the only program level, the
-    // computing process starts at its N0000.
+    // JMP ends program 5: program 7 is the only program level, but the
+    // computing process starts at the beginning of the NC program, N0000 of
+    // program 5 (seed 000, 2.4; restart.md R-024).
     ASSERT_EQ(pointer.programLevels().size(), 1u);
     EXPECT_EQ(pointer.programLevels()[0].program->number, 7);
-    EXPECT_EQ(pointer.startBlock()->block, (BlockRef{7, 0}));
+    EXPECT_EQ(pointer.startBlock()->block, (BlockRef{5, 0}));
+    ASSERT_EQ(pointer.programSegments().size(), 2u);
+    EXPECT_EQ(pointer.programSegments()[0].jumpProgram->number, 5);
+    EXPECT_EQ(pointer.programSegments()[0]
+                  .jumpProgram->blocks[pointer.programSegments()[0].jumpBlock]
+                  .number,
+              15);
 }
 
 TEST_F(SearchPointerTest, JsrByVariableShowsTheValueAndJumpsWithIt) {

@@ -24,6 +24,22 @@ struct SearchSelectionTest : ::testing::Test {
             list.push_back(d.code);
         return list;
     }
+    /// What the NC answers to the accepted selection (the CLI and the screen
+    /// both get it from ComputingProcess::begin): refusals of the route and
+    /// the start warnings of RS-011.
+    DiagnosticList nc(const AcceptResult& result) {
+        RestartRoute route;
+        DiagnosticList d;
+        if (planRestartRoute(result.selection, cell.store, route, d)) addStartWarnings(route, d);
+        return d;
+    }
+    std::vector<std::string> ncCodes(const AcceptResult& result) {
+        std::vector<std::string> list;
+        const DiagnosticList answer = nc(result);
+        for (const auto& d : answer.items())
+            list.push_back(d.code);
+        return list;
+    }
 };
 
 }  // namespace
@@ -192,27 +208,30 @@ TEST_F(SearchSelectionTest, AcceptIsRefusedWhileAWindowIsOpen) {
     EXPECT_EQ(codes(result), std::vector<std::string>{"RESTART_WINDOW_OPEN"});
 }
 
-TEST_F(SearchSelectionTest, WarnsWhenASubroutineSitsAtTheProgramStart) {
+TEST_F(SearchSelectionTest, SubroutineAtTheProgramStartNeedsTheStartBlock) {
     ASSERT_TRUE(pointer.begin(8).ok);
     pointer.moveTo(4);  // N0004 after the subroutine and its call
     AcceptResult result = pointer.accept();
-    ASSERT_TRUE(result.ok);
-    ASSERT_EQ(codes(result), std::vector<std::string>{"RESTART_START_BLOCK_NEEDED"});
-    EXPECT_EQ(result.diagnostics.items()[0].where.block, "N0001");
-    // With the start block chosen the warning is gone.
+    ASSERT_TRUE(result.ok) << "the screen accepts it; the NC refuses it";
+    EXPECT_TRUE(result.diagnostics.empty());
+    ASSERT_EQ(ncCodes(result), std::vector<std::string>{"RESTART_START_BLOCK_NEEDED"});
+    const Diagnostic refusal = nc(result).items()[0];
+    EXPECT_EQ(refusal.severity, Severity::Error) << "seed 000, 2.4: the start block is mandatory";
+    EXPECT_EQ(refusal.where.block, "N0001");
+    // With the start block chosen it is accepted without a warning.
     ASSERT_TRUE(pointer.setFromLastPrimary(true).ok);
     result = pointer.accept();
     ASSERT_TRUE(result.ok);
-    EXPECT_TRUE(result.diagnostics.empty());
+    EXPECT_TRUE(nc(result).empty());
     EXPECT_EQ(result.start.block.block, 2u);
     // A target inside the subroutine itself is reached before its RTS.
     ASSERT_TRUE(pointer.setFromLastPrimary(false).ok);
     pointer.moveTo(1);
-    EXPECT_TRUE(pointer.accept().diagnostics.empty());
+    EXPECT_TRUE(nc(pointer.accept()).empty());
     // Program 5 has its subroutine after M30: no warning.
     ASSERT_TRUE(pointer.begin(5).ok);
-    pointer.end();
-    EXPECT_TRUE(pointer.accept().diagnostics.empty());
+    cursorOn(12);
+    EXPECT_TRUE(nc(pointer.accept()).empty());
 }
 
 TEST_F(SearchSelectionTest, WarnsWhenTheStartBlockLiesAfterG91OrG51) {
@@ -220,16 +239,17 @@ TEST_F(SearchSelectionTest, WarnsWhenTheStartBlockLiesAfterG91OrG51) {
     ASSERT_TRUE(pointer.setFromLastPrimary(false).ok);
     pointer.moveTo(2);  // start N0001: G91 only in its comment and later
     ASSERT_TRUE(pointer.setFromLastPrimary(true).ok);
-    EXPECT_TRUE(pointer.accept().diagnostics.empty());
+    EXPECT_TRUE(nc(pointer.accept()).empty());
     pointer.moveTo(4);  // start N0003 after G91 in N0002
     AcceptResult result = pointer.accept();
     ASSERT_TRUE(result.ok);
-    EXPECT_EQ(codes(result), std::vector<std::string>{"RESTART_START_AFTER_G91"});
-    EXPECT_EQ(result.diagnostics.items()[0].where.block, "N0003");
+    EXPECT_TRUE(result.diagnostics.empty()) << "the NC warns (ComputingProcess::begin)";
+    EXPECT_EQ(ncCodes(result), std::vector<std::string>{"RESTART_START_AFTER_G91"});
+    EXPECT_EQ(nc(result).items()[0].where.block, "N0003");
     pointer.moveTo(6);  // start N0005: G90 in N0004 ends G91
-    EXPECT_TRUE(pointer.accept().diagnostics.empty());
+    EXPECT_TRUE(nc(pointer.accept()).empty());
     pointer.moveTo(8);  // start N0007 after G51 in N0006
-    EXPECT_EQ(codes(pointer.accept()), std::vector<std::string>{"RESTART_START_AFTER_G51"});
+    EXPECT_EQ(ncCodes(pointer.accept()), std::vector<std::string>{"RESTART_START_AFTER_G51"});
 }
 
 TEST_F(SearchSelectionTest, StartBlockAndSelectionAgreeWithTheComputingProcessRoute) {
@@ -244,8 +264,12 @@ TEST_F(SearchSelectionTest, StartBlockAndSelectionAgreeWithTheComputingProcessRo
         }
         RestartRoute route;
         DiagnosticList diagnostics;
-        ASSERT_TRUE(planRestartRoute(accepted.selection, cell.store, route, diagnostics))
-            << where << ": " << diagnostics.items().front().message;
+        if (!planRestartRoute(accepted.selection, cell.store, route, diagnostics)) {
+            // A block the level never runs through (a subroutine body after
+            // M30, blocks after the BRA to a missing label): refused.
+            EXPECT_EQ(diagnostics.items().front().code, "RESTART_TARGET_IN_SUBROUTINE") << where;
+            return;
+        }
         EXPECT_EQ(accepted.start.block.program, route.startProgram->number) << where;
         EXPECT_EQ(accepted.start.block.block, route.startBlock) << where;
         EXPECT_EQ(accepted.start.primary, route.primary) << where;

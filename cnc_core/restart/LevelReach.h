@@ -1,0 +1,49 @@
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "cnc_core/language/Program.h"
+
+namespace mtc::core {
+
+/// Which blocks one program level can run through, read from the program
+/// text (restart.md R-023): from the level's entry (N0000, a label, a start
+/// block) the flow goes to the next block, and to the label of a branch in
+/// the same program (conditional branches both ways, BRA only to its label);
+/// a call (BSR, BEV, JSR, JEV) comes back to the next block; RTS, BST, RET,
+/// JMP, M02, M30 and PROGRAMMENDE end the level. A skip block or a block with
+/// errors may also fall through. This over-approximates what a run can do,
+/// so a block it does not reach is never reached on that level: it belongs
+/// to a subroutine (or is dead code). O(blocks) per query.
+class LevelReach {
+  public:
+    explicit LevelReach(ProgramPtr program) : program_(std::move(program)) {}
+
+    /// True when the flow entered at one of `entries` can arrive at `block`.
+    bool reaches(const std::vector<std::uint32_t>& entries, std::uint32_t block) const;
+    /// Every block the flow entered at `entries` can arrive at (one bit per block).
+    std::vector<bool> reachable(const std::vector<std::uint32_t>& entries) const;
+    /// The subroutine of this program that runs through `block`: the label of a
+    /// BSR / BEV of this program whose level reaches it, and the first block
+    /// calling it. std::nullopt when no call of this program reaches it.
+    struct Subroutine {
+        std::string label;
+        std::uint32_t labelBlock = 0;
+        std::uint32_t callBlock = 0;
+    };
+    std::optional<Subroutine> subroutineOf(std::uint32_t block) const;
+
+  private:
+    /// Walks from `entries`; stops early when `stopAt` is reached. Returns `seen`.
+    bool walk(const std::vector<std::uint32_t>& entries, std::vector<bool>& seen,
+              std::uint32_t stopAt) const;
+    /// Blocks the flow may continue with after `block` (up to two).
+    int successors(std::uint32_t block, std::uint32_t next[2]) const;
+
+    ProgramPtr program_;
+};
+
+}  // namespace mtc::core
