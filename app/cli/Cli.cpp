@@ -11,6 +11,7 @@
 #include "cli/RestartCommand.h"
 #include "cli/RunCommand.h"
 #include "cli/SetupDataCommand.h"
+#include "cli/VerifyRestartCommand.h"
 
 namespace mtc::cli {
 
@@ -37,6 +38,8 @@ int runCli(int argc, char** argv) {
             return runRunCommand(options);
         case Command::Restart:
             return runRestartCommand(options);
+        case Command::VerifyRestart:
+            return runVerifyRestartCommand(options);
         case Command::MachineData:
             return runMachineDataCommand(options);
         case Command::Compile:

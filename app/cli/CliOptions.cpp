@@ -19,6 +19,7 @@ Command commandFromName(std::string_view name) {
     if (name == "check") return Command::Check;
     if (name == "run") return Command::Run;
     if (name == "restart") return Command::Restart;
+    if (name == "verify-restart") return Command::VerifyRestart;
     if (name == "compile") return Command::Compile;
     if (name == "md") return Command::MachineData;
     if (name == "tools") return Command::Tools;
@@ -121,6 +122,8 @@ class CommandLineReader {
             o.restartOption = true;
         } else if (name == "--runs") {
             if (optionValue(name, inlineValue, hasInline, value)) runsValue(value);
+        } else if (name == "--max-passes") {
+            if (optionValue(name, inlineValue, hasInline, value)) maxPassesValue(value);
         } else if (isMachineDataOption(name)) {
             if (optionValue(name, inlineValue, hasInline, value))
                 out_.error = o.machineData.take(name, value);
@@ -136,7 +139,7 @@ class CommandLineReader {
         if (name == "--help" || name == "-h") helpRequested_ = true;
         if (name == "--version") versionRequested_ = true;
         if (name == "--from-primary") o.fromPrimary = o.restartOption = true;
-        if (name == "--adjust") o.adjust = o.restartOption = true;
+        if (name == "--adjust") o.adjust = true;
     }
 
     /// Number of runs (seed 000, 2.6): 1..65536.
@@ -149,6 +152,18 @@ class CommandLineReader {
             return;
         }
         out_.options.runs = static_cast<std::uint32_t>(number);
+    }
+
+    /// Passes per target block of verify-restart: 1..65536 like the number of runs.
+    void maxPassesValue(const std::string& value) {
+        std::uint64_t number = 0;
+        out_.options.verifyOption = true;
+        if (!parseUnsigned(value, number) || number < kMinRuns || number > kMaxRuns) {
+            out_.error = "bad value '" + value + "' for --max-passes (1.." +
+                         std::to_string(kMaxRuns) + ", like the number of runs)";
+            return;
+        }
+        out_.options.maxPasses = static_cast<std::uint32_t>(number);
     }
 
     void processValue(const std::string& value) {
@@ -203,8 +218,16 @@ class CommandLineReader {
             out_.error = "'run' takes exactly one program";
         } else if (o.restartOption && o.command != Command::Restart && o.command != Command::Help &&
                    o.command != Command::Version) {
-            out_.error =
-                "options --target, --runs, --from-primary and --adjust belong to 'restart'";
+            out_.error = "options --target, --runs and --from-primary belong to 'restart'";
+        } else if (o.adjust && o.command != Command::Restart &&
+                   o.command != Command::VerifyRestart && o.command != Command::Help &&
+                   o.command != Command::Version) {
+            out_.error = "option --adjust belongs to 'restart' and 'verify-restart'";
+        } else if (o.verifyOption && o.command != Command::VerifyRestart &&
+                   o.command != Command::Help && o.command != Command::Version) {
+            out_.error = "option --max-passes belongs to 'verify-restart'";
+        } else if (o.command == Command::VerifyRestart && o.arguments.size() != 1) {
+            out_.error = "'verify-restart' takes exactly one program";
         } else if (o.machineData.given && o.command != Command::MachineData &&
                    o.command != Command::Tools && o.command != Command::Offsets &&
                    o.command != Command::Help && o.command != Command::Version &&
@@ -258,6 +281,15 @@ Commands available:
                               (1..65536); start at the last primary block;
                               --adjust goes on with ADJUST, manual mode,
                               automatic, REPOS and the re-entry
+  verify-restart FILE|PROG [--adjust] [--max-passes K]
+                              restart verifier: every arrival at every block
+                              of the program tree (the first K passes of each,
+                              default 16) as a restart target; the computing
+                              process must compute the state of a normal run
+                              there; --adjust: after ADJUST and REPOS the
+                              cutting state must be the target's. Exit 0 when
+                              every target is re-established, 1 with the
+                              differences listed
   md get [PAGE] [--sub N]     machine data page PAGE of --process as a table
                               (without PAGE: the pages of the process);
                               --sub N shows only sub-page N (page 61)

@@ -16,6 +16,7 @@ enum class Command {
     Check,
     Run,
     Restart,
+    VerifyRestart,
     Compile,
     MachineData,
     Tools,
@@ -45,11 +46,14 @@ struct CliOptions {
     std::string outputPath;  ///< compile: -o OUT.NCO
     std::vector<std::string> userCompilers;  ///< compile: --user-compiler SLOT=COMMAND
     // restart (CLI-CONTRACT.md):
-    std::string target;              ///< --target PATH
-    std::uint32_t runs = 1;          ///< --runs K, 1..65536
-    bool fromPrimary = false;        ///< --from-primary
-    bool adjust = false;             ///< --adjust
-    bool restartOption = false;      ///< one of the four was given
+    std::string target;          ///< --target PATH
+    std::uint32_t runs = 1;      ///< --runs K, 1..65536
+    bool fromPrimary = false;    ///< --from-primary
+    bool adjust = false;         ///< --adjust (restart and verify-restart)
+    bool restartOption = false;  ///< --target, --runs or --from-primary was given
+    // verify-restart (CLI-CONTRACT.md "Extensions"):
+    std::uint32_t maxPasses = 16;    ///< --max-passes K, 1..65536
+    bool verifyOption = false;       ///< --max-passes was given
     MachineDataOptions machineData;  ///< md: --as, --password, --data, --sub
 };
 

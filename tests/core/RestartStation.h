@@ -69,6 +69,12 @@ struct StationCell {
         return 0;
     }
     core::BlockRef ref(int program, int number) const { return {program, block(program, number)}; }
+    /// Element `element` of machine data page `number` (sub-page `sub`) of this process.
+    double page(int number, int sub, int element) const {
+        double value = -12345;
+        machineData->read({number, config.index, sub, element}, value);
+        return value;
+    }
     /// A selection in main program `main` with target N`target` of `program`.
     core::RestartSelection selection(int main, int program, int target,
                                      std::uint32_t runs = 1) const {
