@@ -15,7 +15,10 @@ struct BlockPlan {
     MotionType motionType = MotionType::Linear;
     int planeAxis1 = -1, planeAxis2 = -1;  ///< arcs
     double center1 = 0.0, center2 = 0.0;   ///< arcs: machine units (G31: plane coordinates)
-    double feedRate = 0.0;                 ///< mm/min, 0 for rapid
+    /// Arcs: centre in plane coordinates (zero offsets applied, before G31/G32; tool compensation).
+    double planeCenter1 = 0.0, planeCenter2 = 0.0;
+    bool fullCircle = false;  ///< arcs: start and end coincide, one whole turn
+    double feedRate = 0.0;    ///< mm/min, 0 for rapid
 
     double dwellSeconds = -1.0;  ///< G4 time; < 0 = no dwell
     int programControl = -1;     ///< M00, M01, M02 or M30 of this block; -1 = none

@@ -55,7 +55,8 @@ Interpreter::Interpreter(const ProcessConfig& config, const ProgramStore& progra
                          MachineSink& sink, InterpreterServices services)
     : config_(config),
       programs_(programs),
-      sink_(sink),
+      compensation_(sink, config, axes_),
+      sink_(compensation_.output()),
       axes_(ProcessAxes::build(config, configDiagnostics_)),
       zeroOffsets_(offsetsFor(services, config, configDiagnostics_)),
       tools_(services.tools ? services.tools
@@ -133,6 +134,7 @@ void Interpreter::setStopTarget(std::optional<StopTarget> target) {
 
 void Interpreter::restoreState(const InterpreterState& state) {
     state_ = state;
+    compensation_.restart();
     modalChanged();
     programFlow_.clearCache();
     rebuildNames();
@@ -148,7 +150,13 @@ bool Interpreter::writeVariable(int index, double value) {
 RunResult Interpreter::step() {
     RunResult result;
     if (configDiagnostics_.hasErrors() || !state_.program) return run(0);
-    const Outcome outcome = executeNext(result.diagnostics, result.blocksInterpreted);
+    const std::uint64_t released = compensation_.released();
+    Outcome outcome = executeNext(result.diagnostics, result.blocksInterpreted);
+    // A held move (radius compensation) goes out with the next block that
+    // moves in the plane; the look-ahead bounds how many blocks that takes.
+    while (outcome == Outcome::Continue && compensation_.holding() &&
+           compensation_.released() == released)
+        outcome = executeNext(result.diagnostics, result.blocksInterpreted);
     switch (outcome) {
         case Outcome::Continue:
             result.status = RunStatus::Running;
@@ -229,7 +237,7 @@ Interpreter::Outcome Interpreter::executeNext(DiagnosticList& diagnostics,
         }
         diagnostics.warning("PROGRAM_END_MISSING", where,
                             "the program ended without BST, RET, M02 or M30");
-        programEnd();
+        programEnd(&diagnostics);
         return Outcome::Ended;
     }
     if (target_ && program.number == target_->program && index == target_->block &&
@@ -275,7 +283,15 @@ bool Interpreter::checkedBlock(const Program& program, std::uint32_t index,
     return executor_.plan(context, input_, state_, plan_) && planFlow(context) &&
            (input_.mtdCount == 0 && input_.writeCount == 0 ? true : validateMachineData(context)) &&
            (!afcInvolved_ || planAdaptiveFeed(context)) &&
-           (axisTransfer_ == nullptr || planAxisOwnership(context));
+           (axisTransfer_ == nullptr || planAxisOwnership(context)) &&
+           (!compensation_.involved(state_.modal, plan_.next) || planCompensation(context));
+}
+
+bool Interpreter::planCompensation(const BlockContext& context) {
+    const CompensationBlock block{state_.modal,       plan_.next,         plan_.hasMotion,
+                                  plan_.motionType,   input_.axisMask,    input_.axisFunction != 0,
+                                  plan_.planeCenter1, plan_.planeCenter2, plan_.fullCircle};
+    return compensation_.plan(context, block);
 }
 
 bool Interpreter::planFlow(const BlockContext& context) {

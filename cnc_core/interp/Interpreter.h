@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "cnc_core/compensation/ToolCompensation.h"
 #include "cnc_core/interp/BlockExecutor.h"
 #include "cnc_core/interp/BlockInput.h"
 #include "cnc_core/interp/BlockPlan.h"
@@ -142,7 +143,9 @@ class Interpreter {
     /// Same with a program that is not (or not yet) in the store.
     bool select(ProgramPtr program, std::uint32_t startBlock = 0,
                 DiagnosticList* diagnostics = nullptr);
-    /// Executes at most one block (skipped '/' blocks are passed over).
+    /// Executes one block (skipped '/' blocks are passed over). While tool
+    /// radius compensation holds a move back for the next block's start, the
+    /// following blocks are executed too until the machine gets a move.
     RunResult step();
     /// Executes blocks until program end, M00, the stop target, an error or
     /// `budget` blocks (then BLOCK_BUDGET). After Ended the program pointer
@@ -200,6 +203,12 @@ class Interpreter {
     /// Name the program addresses `axis` by now: its designation 2 (Cxx.075)
     /// while G31/G32 transforms it, else axisName() (seed 003, 4.5 and 5.2).
     std::string programmedAxisName(int axis) const;
+    /// Where the moves sent so far put the axes: the commanded machine
+    /// positions with the tool compensation (radius, edge, length) applied.
+    /// A move held back by radius compensation is not in it yet.
+    std::array<double, kMaxAxes> axisPositions() const {
+        return compensation_.tracking() ? compensation_.axisPositions() : state_.modal.machine;
+    }
     /// Workpiece coordinate of `axis` as the program sees it now (the
     /// inverse of the conversions of MotionPlanner: mm, degrees, diameter).
     double programmedPosition(int axis) const;
@@ -231,13 +240,15 @@ class Interpreter {
     SourceLocation sinkLocation(const Program& program, std::uint32_t index) const;
     Outcome commit(const Program& program, std::uint32_t index, DiagnosticList& diagnostics);
     bool planFlow(const BlockContext& context);
+    /// Tool radius and length compensation of the block (last plan step).
+    bool planCompensation(const BlockContext& context);
     bool validateMachineData(const BlockContext& context);
     void emitAux(const Program& program, std::uint32_t index);
     void sendAux(AuxOutput& out, char type, int spindle, double value, bool forwarded);
     void emitMotion(const Program& program, std::uint32_t index);
     void runCommands(const Program& program, std::uint32_t index);
-    Outcome applyFlow(const Program& program, std::uint32_t index);
-    void programEnd();
+    Outcome applyFlow(const Program& program, std::uint32_t index, DiagnosticList& diagnostics);
+    void programEnd(DiagnosticList* diagnostics = nullptr);
     /// G25/G26, ITM, AXD P-7-3651 of the block and, while G26 is active,
     /// the functions that exclude it (InterpreterAfc.cpp).
     bool planAdaptiveFeed(const BlockContext& context);
@@ -266,6 +277,9 @@ class Interpreter {
 
     const ProcessConfig& config_;
     const ProgramStore& programs_;
+    /// Tool compensation between the interpreter and the machine: the moves
+    /// go through it, everything else through sink_ (its output queue).
+    ToolCompensation compensation_;
     MachineSink& sink_;
     bool holdRequested_ = false;  ///< requestHold() during the current block
     DiagnosticList configDiagnostics_;

@@ -79,7 +79,8 @@ Interpreter::Outcome Interpreter::commit(const Program& program, std::uint32_t i
                                          DiagnosticList& diagnostics) {
     const bool transformationChanged =
         plan_.next.transformation.kind() != state_.modal.transformation.kind();
-    const bool motion = plan_.hasMotion && options_.output.motion;
+    // Moves go to tool compensation also when they are not sent: it follows the axes.
+    const bool motion = plan_.hasMotion && (options_.output.motion || compensation_.planned());
     if (motion) motion_.start = state_.modal.machine;
     assignModalState(state_.modal, plan_.next);
     planSynced_ = true;
@@ -101,6 +102,7 @@ Interpreter::Outcome Interpreter::commit(const Program& program, std::uint32_t i
         state_.lastQ = plan_.lastQ;
     }
     if (transformationChanged) rebuildNames();
+    compensation_.beginOutputs(options_.output.motion);
     const BlockInput& in = input_;
     if (in.spindleMask != 0 || in.hasTool || in.hasEdge || in.mCount != 0 || in.qCount != 0)
         emitAux(program, index);
@@ -111,10 +113,15 @@ Interpreter::Outcome Interpreter::commit(const Program& program, std::uint32_t i
     if (plan_.dwellSeconds >= 0.0 && options_.output.dwell)
         sink_.dwell(sinkLocation(program, index), plan_.dwellSeconds);
     if (input_.commandCount > 0) runCommands(program, index);
+    const bool stopping =
+        plan_.programControl == 0 || (plan_.programControl == 1 && options_.optionalStop);
+    // A tool path that turns out to cross an earlier one at a stop: the block
+    // is done, the run stops after it (check mode goes on).
+    const bool compensationOk = compensation_.endBlock(stopping, diagnostics);
     switch (plan_.programControl) {
         case 2:
         case 30:
-            programEnd();
+            programEnd(&diagnostics);
             return Outcome::Ended;
         default:
             break;
@@ -122,9 +129,10 @@ Interpreter::Outcome Interpreter::commit(const Program& program, std::uint32_t i
     if (flow_.kind == FlowPlan::Kind::Next) {
         ++state_.block;
     } else {
-        const Outcome flow = applyFlow(program, index);
+        const Outcome flow = applyFlow(program, index, diagnostics);
         if (flow != Outcome::Continue) return flow;
     }
+    if (!compensationOk && !options_.continueAfterError) return Outcome::Error;
     if (plan_.programControl == 0 || (plan_.programControl == 1 && options_.optionalStop)) {
         publishRotaryAxisModes();  // page 60 el. 1..3 "upon program stop" (seed 000, 4.1)
         return Outcome::Stopped;
@@ -185,7 +193,9 @@ void Interpreter::emitMotion(const Program& program, std::uint32_t index) {
         state_.modal.transformation.active() ? state_.modal.transformation.planeAxis(0) : -1;
     m.transformAxis2 =
         state_.modal.transformation.active() ? state_.modal.transformation.planeAxis(1) : -1;
-    sink_.motion(m);
+    m.compensated = false;  // tool compensation marks the moves it changes
+    m.inserted = false;
+    compensation_.motion(m, options_.output.motion);
 }
 
 void Interpreter::runCommands(const Program& program, std::uint32_t index) {
@@ -209,7 +219,8 @@ void Interpreter::runCommands(const Program& program, std::uint32_t index) {
     }
 }
 
-Interpreter::Outcome Interpreter::applyFlow(const Program& /*program*/, std::uint32_t index) {
+Interpreter::Outcome Interpreter::applyFlow(const Program& /*program*/, std::uint32_t index,
+                                            DiagnosticList& diagnostics) {
     switch (flow_.kind) {
         case FlowPlan::Kind::Next:
             ++state_.block;
@@ -231,7 +242,7 @@ Interpreter::Outcome Interpreter::applyFlow(const Program& /*program*/, std::uin
             return Outcome::Continue;
         }
         case FlowPlan::Kind::End:
-            programEnd();
+            programEnd(&diagnostics);
             return Outcome::Ended;
         case FlowPlan::Kind::Jump:
             resetBaseSystem();
@@ -270,7 +281,8 @@ void Interpreter::resetModal() {
     MotionPlanner(&axes_, zeroOffsets_.get()).recomputeWork(m);
 }
 
-void Interpreter::programEnd() {
+void Interpreter::programEnd(DiagnosticList* diagnostics) {
+    compensation_.programEnd(diagnostics);  // before the frame goes back to the defaults
     resetModal();
     for (int g = 1; g <= 16; ++g)
         state_.mGroups[static_cast<size_t>(g)] = -1;
@@ -289,6 +301,7 @@ void Interpreter::programEnd() {
 
 void Interpreter::controlReset() {
     if (!state_.selected) state_.selected = state_.program;
+    compensation_.controlReset();
     programEnd();
     if (afc_) {  // Clear Error of the panel is the Control reset key (afc.md AFC-012)
         afc_->controlReset();
@@ -336,6 +349,7 @@ std::string Interpreter::programmedAxisName(int axis) const {
 
 void Interpreter::takeMachinePositions(const std::array<double, kMaxAxes>& machine) {
     state_.modal.machine = machine;
+    compensation_.restart();
     MotionPlanner(&axes_, zeroOffsets_.get()).recomputeWork(state_.modal);
     modalChanged();
 }

@@ -36,7 +36,27 @@ struct Motion {
     /// G31/G32: machine axis indices spanning the transformed plane (-1 otherwise).
     int transformAxis1 = -1, transformAxis2 = -1;
     std::uint32_t blockIndex = 0;  ///< index of the block in Program::blocks
+    /// Tool compensation (docs/decisions/compensation.md): `start`, `end` and
+    /// the centre are where the axes go. When `compensated`, `programmedEnd`
+    /// holds the programmed end point and `end - toolOffset` the tool centre
+    /// (cutter centre, nose centre of a turning tool); otherwise both are `end`.
+    bool compensated = false;
+    bool inserted = false;  ///< a corner element the control inserted (runtime program's arrow)
+    std::array<double, kMaxAxes> programmedEnd{};
+    std::array<double, kMaxAxes> toolOffset{};  ///< axis position minus tool centre (edge, length)
 };
+
+/// Programmed end position of `axis` (the contour point, without any tool compensation).
+inline double programmedEndOf(const Motion& m, int axis) {
+    const auto a = static_cast<std::size_t>(axis);
+    return m.compensated ? m.programmedEnd[a] : m.end[a];
+}
+
+/// Tool-centre end position of `axis` (cutter centre, nose centre).
+inline double toolCentreOf(const Motion& m, int axis) {
+    const auto a = static_cast<std::size_t>(axis);
+    return m.compensated ? m.end[a] - m.toolOffset[a] : m.end[a];
+}
 
 /// An auxiliary function sent to the SPS (M, Q, S, T, E).
 struct AuxOutput {

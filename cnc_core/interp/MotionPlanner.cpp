@@ -294,6 +294,9 @@ bool MotionPlanner::arc(const BlockContext& context, const BlockInput& input,
     plan.planeAxis2 = p2;
     const Transformation& t = next.transformation;
     const double c1 = centre[0] + offsetOf(next, p1), c2 = centre[1] + offsetOf(next, p2);
+    plan.planeCenter1 = c1;
+    plan.planeCenter2 = c2;
+    plan.fullCircle = full;
     if (t.kind() == 32) {
         t.toMachine(*axes_, c1, c2, current.machine[static_cast<size_t>(p1)],
                     current.machine[static_cast<size_t>(p2)], plan.center1, plan.center2);

@@ -50,11 +50,17 @@ std::string where(const SourceLocation& location) {
 
 void TranscriptSink::motion(const Motion& m) {
     static const char* const kType[] = {"rapid", "linear", "cw", "ccw"};
-    text += "motion " + where(m.where) + " " + kType[static_cast<int>(m.type)];
-    bool moved = false;
+    text += "motion " + where(m.where) + (m.inserted ? " inserted " : " ") +
+            kType[static_cast<int>(m.type)];
+    bool moved = false, offset = false;
+    std::string programmed, tool;
     for (int a = 0; a < m.axisCount; ++a) {
         if (std::fabs(m.end[a] - m.start[a]) < 1e-9) continue;
-        text += " " + names_[static_cast<size_t>(a)] + "=" + number(m.end[a]);
+        const std::string name = " " + names_[static_cast<size_t>(a)] + "=";
+        text += name + number(m.end[a]);
+        programmed += name + number(programmedEndOf(m, a));
+        tool += name + number(toolCentreOf(m, a));
+        offset = offset || (m.compensated && m.toolOffset[static_cast<size_t>(a)] != 0.0);
         moved = true;
     }
     if (!moved) text += " (no axis moves)";
@@ -65,6 +71,10 @@ void TranscriptSink::motion(const Motion& m) {
     if (m.transformation != 30)
         text += " G" + std::to_string(m.transformation) +
                 (m.transformation == 32 ? " RI=" + number(m.effectiveRadius) : "");
+    // Tool compensation: the programmed end point and, when the tool centre is
+    // not the axis position (length, edge), the tool centre.
+    if (m.compensated && moved) text += " | programmed" + programmed;
+    if (offset) text += " | tool centre" + tool;
     text += "\n";
 }
 
@@ -116,6 +126,15 @@ std::string stateText(const Interpreter& interpreter) {
     text += " ri=" + number(s.modal.transformation.effectiveRadius()) + "\nstate machine";
     for (int a = 0; a < interpreter.axes().count(); ++a)
         text += " " + interpreter.axisName(a) + "=" + number(s.modal.machine[a]);
+    const auto axes = interpreter.axisPositions();
+    bool compensated = false;
+    for (int a = 0; a < interpreter.axes().count(); ++a)
+        compensated = compensated || std::fabs(axes[a] - s.modal.machine[a]) > 5e-5;
+    if (compensated) {  // tool compensation: where the axes stand
+        text += "\nstate axes";
+        for (int a = 0; a < interpreter.axes().count(); ++a)
+            text += " " + interpreter.axisName(a) + "=" + number(axes[a]);
+    }
     text += "\nstate programmed";
     for (int a = 0; a < interpreter.axes().count(); ++a)
         text += " " + interpreter.axisName(a) + "=" + number(interpreter.programmedPosition(a));

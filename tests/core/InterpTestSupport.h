@@ -22,6 +22,8 @@ core::ProgramPtr parse(const std::string& source, int number);
 
 /// Writes every sink call as one transcript line, in order:
 ///   motion N0010 L3 linear X=10.0000 Y=5.0000 F=1000.0000
+///   (tool compensation: "... | programmed X=.. Y=.. | tool centre X=.. Y=.."
+///   and "motion N0010 L3 inserted cw ..." for a corner element)
 ///   aux N0011 L4 M3 / S1=1500 / T7
 ///   dwell N0012 L5 2.0000
 ///   command N0013 L6 MTP ()
