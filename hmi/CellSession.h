@@ -112,6 +112,7 @@ class CellSession : public QObject {
     mtc::core::MachineDataStore& machineData() { return cell_.machineData(); }
     /// Tool lists and zero offsets of every process; the interpreters read them.
     mtc::core::SetupData& setupData() { return cell_.setupData(); }
+    const mtc::core::SetupData& setupData() const { return cell_.setupData(); }
     /// Keeps the machine data in `path` from now on: loads it (a damaged
     /// file is kept aside, the defaults stay) and returns what the user must
     /// be told (also kept in machineDataMessages()). Empty path: nothing is kept.

@@ -84,25 +84,31 @@ void MotionOutput::writeJson(const core::Motion& m) {
     json.value(m.where.line);
     json.key("type");
     json.value(typeName(m.type));
-    json.key("end");
-    json.beginObject();
-    for (int i = 0; i < m.axisCount && i < core::kMaxAxes; ++i) {
-        const std::string& name = axisName(i);
-        if (name.empty()) continue;
-        json.key(name);
-        json.value(m.end[static_cast<std::size_t>(i)]);
+    if (m.inserted) {
+        json.key("inserted");
+        json.value(true);
     }
-    json.endObject();
-    if (isArc(m.type)) {
+    // Under tool compensation "end" is the programmed end point, "tool_end"
+    // the tool centre and "axis_end" where the axes go when the tool centre
+    // is not the axis position (tool length, cutting edge of a turning tool).
+    writeAxes("end", m, [&](int axis) { return core::programmedEndOf(m, axis); });
+    bool offset = false;
+    for (int i = 0; i < m.axisCount && i < core::kMaxAxes; ++i)
+        offset = offset || (m.compensated && m.toolOffset[static_cast<std::size_t>(i)] != 0.0);
+    if (m.compensated)
+        writeAxes("tool_end", m, [&](int axis) { return core::toolCentreOf(m, axis); });
+    if (offset)
+        writeAxes("axis_end", m, [&](int axis) { return m.end[static_cast<std::size_t>(axis)]; });
+    if (isArc(m.type)) {  // the programmed circle's centre (the tool centre's circle is concentric)
         json.key("center");
         json.beginObject();
         if (!axisName(m.planeAxis1).empty()) {
             json.key(axisName(m.planeAxis1));
-            json.value(m.center1);
+            json.value(centreOf(m, m.planeAxis1, m.center1));
         }
         if (!axisName(m.planeAxis2).empty()) {
             json.key(axisName(m.planeAxis2));
-            json.value(m.center2);
+            json.value(centreOf(m, m.planeAxis2, m.center2));
         }
         json.endObject();
     }
@@ -119,6 +125,25 @@ void MotionOutput::writeJson(const core::Motion& m) {
     json.endObject();
 }
 
+double MotionOutput::centreOf(const core::Motion& m, int axis, double centre) {
+    if (!m.compensated || axis < 0 || axis >= core::kMaxAxes) return centre;
+    return centre - m.toolOffset[static_cast<std::size_t>(axis)];
+}
+
+void MotionOutput::writeAxes(const char* key, const core::Motion& m,
+                             const std::function<double(int)>& value) {
+    JsonWriter& json = *json_;
+    json.key(key);
+    json.beginObject();
+    for (int i = 0; i < m.axisCount && i < core::kMaxAxes; ++i) {
+        const std::string& name = axisName(i);
+        if (name.empty()) continue;
+        json.key(name);
+        json.value(value(i));
+    }
+    json.endObject();
+}
+
 void MotionOutput::appendAxisValue(int axis, double value) {
     const std::string& name = axisName(axis);
     if (name.empty()) return;
@@ -131,13 +156,19 @@ void MotionOutput::appendAxisValue(int axis, double value) {
 void MotionOutput::writeText(const core::Motion& m) {
     line_ = "P" + std::to_string(m.where.program) + ' ';
     line_ += m.where.block.empty() ? "-" : m.where.block;
-    line_ += " L" + std::to_string(m.where.line) + ' ' + typeName(m.type);
+    line_ +=
+        " L" + std::to_string(m.where.line) + (m.inserted ? " inserted " : " ") + typeName(m.type);
     for (int i = 0; i < m.axisCount && i < core::kMaxAxes; ++i)
-        appendAxisValue(i, m.end[static_cast<std::size_t>(i)]);
+        appendAxisValue(i, core::programmedEndOf(m, i));
     if (isArc(m.type)) {
         line_ += " centre";
-        appendAxisValue(m.planeAxis1, m.center1);
-        appendAxisValue(m.planeAxis2, m.center2);
+        appendAxisValue(m.planeAxis1, centreOf(m, m.planeAxis1, m.center1));
+        appendAxisValue(m.planeAxis2, centreOf(m, m.planeAxis2, m.center2));
+    }
+    if (m.compensated) {  // tool compensation: the tool centre
+        line_ += " tool";
+        for (int i = 0; i < m.axisCount && i < core::kMaxAxes; ++i)
+            appendAxisValue(i, core::toolCentreOf(m, i));
     }
     if (m.type != core::MotionType::Rapid) {
         line_ += " F=";

@@ -2,6 +2,7 @@
 
 #include <cstdint>
 #include <cstdio>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -63,6 +64,12 @@ class MotionOutput : public core::MachineSink {
 
   private:
     void writeJson(const core::Motion& motion);
+    /// `key`: {axis name: value(axis)} over the reported axes of `motion`.
+    void writeAxes(const char* key, const core::Motion& motion,
+                   const std::function<double(int)>& value);
+    /// Centre coordinate of a circle as the records give it: the programmed
+    /// circle's (tool compensation moves the axes' circle by the tool offset).
+    static double centreOf(const core::Motion& motion, int axis, double centre);
     void writeText(const core::Motion& motion);
     const std::string& axisName(int index) const;
     void appendAxisValue(int axis, double value);

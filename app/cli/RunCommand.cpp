@@ -244,8 +244,9 @@ void writeReport(RunCell& cell, core::Station& station, const MotionOutput& sink
     const Page61Buffers page61 = readPage61(interpreter.machineData(), station.process());
     const std::vector<double> positions = programmedPositions(interpreter);
     const std::vector<std::string> names = reportedAxisNames(interpreter);
-    const StateView view{
-        interpreter.state(), station.config(), interpreter.axes(), page61, names, positions};
+    const std::vector<double> axisPositions = compensatedAxisPositions(interpreter);
+    const StateView view{interpreter.state(), station.config(), interpreter.axes(), page61, names,
+                         positions,           &axisPositions};
     // The machine's time; without motion the machine does not move and the
     // interpreter's own count of the programmed time is all there is.
     const double time = sink.reportsMotion() || station.machine().seconds() > 0

@@ -1,5 +1,6 @@
 #include "cli/StateOutput.h"
 
+#include <cmath>
 #include <string>
 
 #include "cnc_core/interp/ModalGroups.h"
@@ -99,6 +100,18 @@ void writePosition(JsonWriter& json, const StateView& view) {
     json.endObject();
 }
 
+void writeAxisPositions(JsonWriter& json, const StateView& view) {
+    if (view.axisPositions == nullptr || view.axisPositions->empty()) return;
+    json.key("axis_position");
+    json.beginObject();
+    for (std::size_t i = 0; i < view.axisNames.size() && i < view.axisPositions->size(); ++i) {
+        if (view.axisNames[i].empty()) continue;
+        json.key(view.axisNames[i]);
+        json.value((*view.axisPositions)[i]);
+    }
+    json.endObject();
+}
+
 void writeCallStack(JsonWriter& json, const core::InterpreterState& state) {
     json.key("call_stack");
     json.beginArray();
@@ -126,6 +139,17 @@ std::vector<std::string> reportedAxisNames(const core::Interpreter& interpreter)
         names.push_back(axis.spindle && !axis.rotary ? std::string() : interpreter.axisName(i));
     }
     return names;
+}
+
+std::vector<double> compensatedAxisPositions(const core::Interpreter& interpreter) {
+    const auto axes = interpreter.axisPositions();
+    const auto& machine = interpreter.state().modal.machine;
+    bool differs = false;
+    for (int i = 0; i < interpreter.axes().count(); ++i)
+        differs = differs || std::abs(axes[static_cast<std::size_t>(i)] -
+                                      machine[static_cast<std::size_t>(i)]) > 1e-9;
+    if (!differs) return {};
+    return std::vector<double>(axes.begin(), axes.begin() + interpreter.axes().count());
 }
 
 std::vector<double> programmedPositions(const core::Interpreter& interpreter) {
@@ -163,6 +187,7 @@ void writeStateJson(JsonWriter& json, const StateView& view) {
     json.value(modal.feed);
     writeVariables(json, view.state.variables);
     writePosition(json, view);
+    writeAxisPositions(json, view);
     writeCallStack(json, view.state);
     json.endObject();
 }
@@ -187,6 +212,14 @@ void printStateText(std::FILE* stream, const StateView& view, const char* label)
         if (view.axisNames[i].empty()) continue;
         line += " " + positionName(view, i) + "=";
         JsonWriter::appendNumber(line, view.positions[i]);
+    }
+    if (view.axisPositions != nullptr && !view.axisPositions->empty()) {
+        line += "\n       axis position (tool compensation)";
+        for (std::size_t i = 0; i < view.axisNames.size() && i < view.axisPositions->size(); ++i) {
+            if (view.axisNames[i].empty()) continue;
+            line += " " + view.axisNames[i] + "=";
+            JsonWriter::appendNumber(line, (*view.axisPositions)[i]);
+        }
     }
     std::fprintf(stream, "%s\n", line.c_str());
 }

@@ -27,7 +27,15 @@ struct StateView {
     const Page61Buffers& page61;
     const std::vector<std::string>& axisNames;  ///< per machine axis; "" = not reported
     const std::vector<double>& positions;       ///< programmed position per machine axis
+    /// Where tool compensation (radius, edge, length) put the axes, machine
+    /// positions per machine axis; nullptr (or empty) when they stand at the
+    /// programmed positions. Reported as "axis_position".
+    const std::vector<double>* axisPositions = nullptr;
 };
+
+/// The axis positions of `interpreter` when tool compensation moved them
+/// away from the commanded machine positions, otherwise empty.
+std::vector<double> compensatedAxisPositions(const core::Interpreter& interpreter);
 
 /// Axis names of the machine axes (Interpreter::axisName, designation 1) for
 /// motion records and as the list of reported axes; spindles without rotary

@@ -13,8 +13,11 @@ CompensationFrame CompensationFrame::of(const ModalState& modal, const ToolData&
     const bool turning = tool.turning() && !modal.transformation.active();
     // The same edge positions as the GNE cycles (docs/decisions/gne.md G-008).
     if (turning) frame.edge = tool.radius * gne::edgeVector(tool.orientation);
+    // One axis gets a length under G48: a turning tool's is the 2nd plane axis
+    // (X under G18, the turret holds it radially: L2), every other tool's the
+    // perpendicular axis (L3), seed 003 ch. 3.6.
     frame.lengthAxis = turning ? frame.axis2 : modal.plane.perpendicularAxis();
-    frame.length = tool.length;
+    frame.length = turning ? tool.lengths[1] : tool.lengths[2];
     return frame;
 }
 

@@ -48,7 +48,10 @@ std::string mm(double value) {
 
 ToolCompensation::ToolCompensation(MachineSink& downstream, const ProcessConfig& config,
                                    const ProcessAxes& axes)
-    : config_(config), axes_(axes), queue_(downstream) {}
+    : axes_(axes),
+      configTools_(ToolList::fromConfig(config)),
+      tools_(&configTools_),
+      queue_(downstream) {}
 
 // ---------------------------------------------------------------- plan stage
 
@@ -59,10 +62,16 @@ bool ToolCompensation::plan(const BlockContext& context, const CompensationBlock
         axisPosition_ = block.current.machine;
         applied_ = {};
         engine_.reset();
-        frame_ = CompensationFrame::of(block.current, activeToolData(config_, block.current));
+        frame_ = CompensationFrame::of(block.current, activeToolData(*tools_, block.current));
         tracking_ = true;
     }
-    const ToolData tool = activeToolData(config_, block.next);
+    const ToolData tool = activeToolData(*tools_, block.next);
+    if (tool.edgeMissing &&
+        (sideOf(block.next) != comp::Side::None || block.next.g[kGroupToolLength] == 48))
+        return context.error("COMP_EDGE_UNKNOWN",
+                             "tool T" + std::to_string(tool.number) + " has no cutting edge E" +
+                                 std::to_string(tool.edge) +
+                                 " in the tool list: radius and lengths are unknown");
     p.engine = engine_;
     p.before = comp::Release{};
     p.release = comp::Release{};
@@ -75,7 +84,7 @@ bool ToolCompensation::plan(const BlockContext& context, const CompensationBlock
     p.movedAxes = block.programmedAxes;
     p.id = nextId_ + 1;
     if (!planFrameChange(context, block) || !planMove(context, block) ||
-        !planLengths(context, block, tool))
+        !planLengths(context, block))
         return false;
     p.valid = true;
     return true;
@@ -141,22 +150,21 @@ bool ToolCompensation::planMove(const BlockContext& context, const CompensationB
     return true;
 }
 
-bool ToolCompensation::planLengths(const BlockContext& context, const CompensationBlock& block,
-                                   const ToolData& tool) {
+bool ToolCompensation::planLengths(const BlockContext& context, const CompensationBlock& block) {
     Planned& p = planned_;
     if (!block.hasMotion) return true;
     const bool on = block.next.g[kGroupToolLength] == 48 && !block.machineMove;
     for (int a = 0; block.programmedAxes >> a; ++a) {
         if (!((block.programmedAxes >> a) & 1u)) continue;
         const auto i = static_cast<std::size_t>(a);
-        p.applied[i] = on && a == p.frame.lengthAxis ? tool.length : 0.0;
+        p.applied[i] = on && a == p.frame.lengthAxis ? p.frame.length : 0.0;
         const AxisModel& model = axes_.axis(a);
         const double position = block.next.machine[i] + p.applied[i];
         if (p.applied[i] != 0.0 && model.limited() &&
             (position < model.minPosition - 1e-9 || position > model.maxPosition + 1e-9))
             return context.error("TRAVEL_LIMIT",
                                  "axis " + model.displayName() + " would move to " + mm(position) +
-                                     " with the tool length " + mm(tool.length) +
+                                     " with the tool length " + mm(p.frame.length) +
                                      " (G48), outside its travel range " + mm(model.minPosition) +
                                      " .. " + mm(model.maxPosition));
     }
@@ -213,7 +221,7 @@ void ToolCompensation::beginOutputs(bool output) {
     if (!planned_.valid) return;
     output_ = output;
     if (planned_.frameChange) {
-        emit(planned_.before, nullptr, 0);
+        sendRelease(planned_.before, nullptr, 0);
         frame_ = planned_.frame;
     }
     engine_ = planned_.engine;
@@ -246,7 +254,7 @@ void ToolCompensation::motion(Motion& m, bool output) {
     if (p.viaEngine) {
         locations_[static_cast<std::size_t>(p.id % kLocations)] = m.where;
         nextId_ = p.id;
-        emit(p.release, &m, p.id);
+        sendRelease(p.release, &m, p.id);
         if (engine_.holding()) {
             held_ = m;
             queue_.hold();
@@ -291,7 +299,7 @@ bool ToolCompensation::programEnd(DiagnosticList* diagnostics) {
 bool ToolCompensation::interrupt(DiagnosticList& diagnostics, bool stop) {
     comp::Problem problem;
     const comp::Release release = stop ? engine_.stop(&problem) : engine_.interrupt(&problem);
-    emit(release, nullptr, 0);
+    sendRelease(release, nullptr, 0);
     if (!problem.code) return true;
     std::vector<std::string> details;
     if (problem.otherId != 0)
@@ -322,7 +330,8 @@ void ToolCompensation::restart() {
 
 // ------------------------------------------------------------------ emission
 
-void ToolCompensation::emit(const comp::Release& release, const Motion* current, int currentId) {
+void ToolCompensation::sendRelease(const comp::Release& release, const Motion* current,
+                                   int currentId) {
     const double feed = current ? current->feed : 0.0;
     auto shapeOf = [&](int id) -> const Motion& {
         return current && id == currentId ? *current : held_;

@@ -45,6 +45,9 @@ class ToolCompensation {
 
     /// The sink for everything but the moves (S, T, M, Q, dwells, commands).
     MachineSink& output() { return queue_; }
+    /// Reads radius, lengths and edge orientation from `tools` (the process's
+    /// tool list; it must outlive the stage); nullptr = the configuration's.
+    void useTools(const ToolList* tools) { tools_ = tools ? tools : &configTools_; }
 
     /// Whether the block needs the stage (cheap; otherwise plan() is skipped
     /// and the move passes unchanged).
@@ -114,14 +117,13 @@ class ToolCompensation {
     bool planFrameChange(const BlockContext& context, const CompensationBlock& block);
     bool planMove(const BlockContext& context, const CompensationBlock& block);
     /// G47/G48: the length offset of every axis the block programs.
-    bool planLengths(const BlockContext& context, const CompensationBlock& block,
-                     const ToolData& tool);
+    bool planLengths(const BlockContext& context, const CompensationBlock& block);
     comp::ContourMove contourMove(const CompensationBlock& block) const;
     /// Ends the held move at its perpendicular (`stop`: and switches off).
     bool interrupt(DiagnosticList& diagnostics, bool stop);
     /// Sends the pieces of `release` (the queued outputs after the first
     /// `beforeQueued`); `current` is the template of move `currentId`.
-    void emit(const comp::Release& release, const Motion* current, int currentId);
+    void sendRelease(const comp::Release& release, const Motion* current, int currentId);
     void emitPiece(const comp::ToolPiece& piece, const Motion& shape, double feed);
     /// A move without motion in the plane: the plane axes stay where the tool is.
     void placeInPlane(Motion& motion, const comp::Vec2& tool);
@@ -139,8 +141,9 @@ class ToolCompensation {
     /// Tool centre of the axis positions in the current frame.
     comp::Vec2 toolCentre() const;
 
-    const ProcessConfig& config_;
     const ProcessAxes& axes_;
+    ToolList configTools_;   ///< the configuration's tools (until useTools())
+    const ToolList* tools_;  ///< where the tool data come from
     OutputQueue queue_;
     comp::RadiusCompensation engine_;
     CompensationFrame frame_;

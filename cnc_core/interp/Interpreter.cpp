@@ -71,6 +71,7 @@ Interpreter::Interpreter(const ProcessConfig& config, const ProgramStore& progra
       executor_(
           {&config_, &axes_, zeroOffsets_.get(), tools_.get(), &defaults_, &mGroupOf_, 0.002}),
       programFlow_(programs, config.index, events_.get()) {
+    compensation_.useTools(tools_.get());  // radius, lengths, edges of the process's tool list
     const int plane = config.defaultPlane();
     if (plane < 17 || plane > 19)
         configDiagnostics_.error("CFG_DEFAULT_PLANE", {},

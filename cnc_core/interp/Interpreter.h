@@ -209,6 +209,10 @@ class Interpreter {
     std::array<double, kMaxAxes> axisPositions() const {
         return compensation_.tracking() ? compensation_.axisPositions() : state_.modal.machine;
     }
+    /// Machine positions `machine` as the program would write them now: zero
+    /// offsets and transformation undone, diameter and inch applied (the
+    /// inverse of MotionPlanner). E.g. the runtime program's inserted blocks.
+    std::array<double, kMaxAxes> programView(const std::array<double, kMaxAxes>& machine) const;
     /// Workpiece coordinate of `axis` as the program sees it now (the
     /// inverse of the conversions of MotionPlanner: mm, degrees, diameter).
     double programmedPosition(int axis) const;

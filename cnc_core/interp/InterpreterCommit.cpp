@@ -332,15 +332,34 @@ std::vector<StackLevel> Interpreter::callStack() const {
     return levels;
 }
 
-double Interpreter::programmedPosition(int axis) const {
-    const ModalState& m = state_.modal;
-    double v = m.work[static_cast<size_t>(axis)];
-    const AxisModel& model = axes_.axis(axis);
+namespace {
+
+/// Workpiece coordinate `v` (mm) of `axis` in the program's view of `m`.
+double programUnits(const ModalState& m, const AxisModel& model, int axis, double v) {
     if (model.rotary && !m.transformation.transforms(axis)) return v;
     if (m.g[kGroupRadiusDiameter] == 16 && m.plane.definitionOf(axis) == AxisDefinition::X)
         v *= 2.0;
     if (m.g[kGroupUnits] == 70) v /= kInch;
     return v;
+}
+
+}  // namespace
+
+double Interpreter::programmedPosition(int axis) const {
+    return programUnits(state_.modal, axes_.axis(axis), axis,
+                        state_.modal.work[static_cast<size_t>(axis)]);
+}
+
+std::array<double, kMaxAxes> Interpreter::programView(
+    const std::array<double, kMaxAxes>& machine) const {
+    ModalState m = state_.modal;
+    m.machine = machine;
+    MotionPlanner(&axes_, zeroOffsets_.get()).recomputeWork(m);
+    std::array<double, kMaxAxes> out{};
+    for (int a = 0; a < axes_.count(); ++a)
+        out[static_cast<size_t>(a)] =
+            programUnits(m, axes_.axis(a), a, m.work[static_cast<size_t>(a)]);
+    return out;
 }
 
 std::string Interpreter::programmedAxisName(int axis) const {

@@ -42,7 +42,13 @@ ToolList ToolList::fromConfig(const ProcessConfig& process) {
         edge.edge = 1;
         edge.radius = config.radius;
         edge.orientation = config.edgeOrientation;
-        (milling ? edge.length3 : edge.length1) = config.length;
+        // TOOL-002: the length along the tool's own axis. A milling tool
+        // points along the perpendicular axis (L3); on a lathe a turning tool
+        // sits radially in the turret, along X = the 2nd axis of G18 (L2),
+        // and a driven or axial tool (edge 0 or 9) is fed along the axis
+        // perpendicular to the plane it works in (L3: X under G20 Z C X).
+        const bool turning = config.edgeOrientation >= 1 && config.edgeOrientation <= 8;
+        (!milling && turning ? edge.length2 : edge.length3) = config.length;
         list.setEdge(config.number, edge, config.name);
     }
     return list;

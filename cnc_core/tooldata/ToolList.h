@@ -48,8 +48,9 @@ class ToolList {
   public:
     /// The list the machine configuration gives (`[process N tools]`): one
     /// edge E1 per tool with its radius, edge orientation and length; the
-    /// length is L3 when the process's default plane is G17 (a milling
-    /// tool along the perpendicular axis), L1 otherwise (TOOL-002).
+    /// length is L2 for a turning tool (orientation 1..8) of a process whose
+    /// default plane is not G17 (radial in the turret: X under G18), L3
+    /// otherwise (TOOL-002).
     static ToolList fromConfig(const ProcessConfig& process);
 
     const std::vector<Tool>& tools() const { return tools_; }

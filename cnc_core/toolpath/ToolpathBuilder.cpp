@@ -134,12 +134,14 @@ bool ToolpathBuilder::scenePointOf(const Transform& t, const Position& plane,
 void ToolpathBuilder::addChord(const Transform& t, const Position& from, const Position& to,
                                Layers layers) {
     std::array<double, 3> a{}, b{};
+    ToolpathLayer& scene = contourPass_ ? geometry_.contour : geometry_.scene;
+    ToolpathLayer& developed = contourPass_ ? geometry_.developedContour : geometry_.developed;
     if (layers != Layers::Developed && scenePointOf(t, from, a) && scenePointOf(t, to, b))
-        geometry_.scene.addSegment(a, b);
+        scene.addSegment(a, b);
     if (t.kind != 32 || layers == Layers::Scene) return;
     const auto u = static_cast<std::size_t>(t.linear >= 0 ? t.linear : t.axis1);
     const auto v = static_cast<std::size_t>(t.linear >= 0 ? t.rotary : t.axis2);
-    geometry_.developed.addSegment({from[u], from[v], 0.0}, {to[u], to[v], 0.0});
+    developed.addSegment({from[u], from[v], 0.0}, {to[u], to[v], 0.0});
 }
 
 int ToolpathBuilder::wrapChords(const Transform& t, double circumferentialTravel,
@@ -168,12 +170,11 @@ void ToolpathBuilder::addLine(const Transform& t, const Position& start, const P
     addChord(t, start, end, Layers::Developed);  // straight in the developed plane
 }
 
-void ToolpathBuilder::addArc(const Motion& m, const Transform& t, const Position& start,
-                             const Position& end) {
+void ToolpathBuilder::addArc(const Motion& m, double c1, double c2, const Transform& t,
+                             const Position& start, const Position& end) {
     const int p1 = m.planeAxis1, p2 = m.planeAxis2;
     if (p1 < 0 || p2 < 0 || p1 >= axes_.count() || p2 >= axes_.count())
         return addLine(t, start, end);
-    double c1 = m.center1, c2 = m.center2;
     if (t.kind == 32) {  // centre in machine positions: rotary axes in degrees
         if (axes_.axis(p1).rotary)
             c1 = curve::developedFromDegrees(c1, t.radius, axes_.axis(p1).polarDirection);
@@ -213,6 +214,18 @@ void ToolpathBuilder::addArc(const Motion& m, const Transform& t, const Position
     }
 }
 
+void ToolpathBuilder::addContour(const Motion& m, const Transform& t) {
+    Position start{}, end{};
+    toPlaneSpace(t, m.start, start);
+    toPlaneSpace(t, m.end, end);
+    contourPass_ = true;
+    if (kindOf(m.type) == ToolpathKind::Arc)
+        addArc(m, m.center1, m.center2, t, start, end);
+    else
+        addLine(t, start, end);
+    contourPass_ = false;
+}
+
 void ToolpathBuilder::motion(const Motion& m) {
     ToolpathMove move;
     move.program = m.where.program;
@@ -223,19 +236,45 @@ void ToolpathBuilder::motion(const Motion& m) {
     move.firstScene = static_cast<std::uint32_t>(geometry_.scene.segmentCount());
     move.firstDeveloped = static_cast<std::uint32_t>(geometry_.developed.segmentCount());
     geometry_.moves.push_back(move);
-    if (geometry_.scene.segmentCount() + geometry_.developed.segmentCount() >=
+    const Position offset = m.compensated ? m.toolOffset : Position{};
+    const Position previousOffset = lastOffset_;
+    const Position previousProgrammed = lastProgrammed_;
+    lastOffset_ = offset;
+    for (int a = 0; a < kMaxAxes; ++a)
+        lastProgrammed_[static_cast<std::size_t>(a)] = programmedEndOf(m, a);
+    if (geometry_.scene.segmentCount() + geometry_.developed.segmentCount() +
+            geometry_.contour.segmentCount() + geometry_.developedContour.segmentCount() >=
         settings_.segmentLimit) {
         geometry_.truncated = true;
         return;
     }
     const Transform t = transformOf(m);
+    // The tool centre: where the axes go minus the tool offset (length, edge).
+    Position startCentre = m.start, endCentre = m.end;
+    for (std::size_t a = 0; a < kMaxAxes; ++a) {
+        startCentre[a] -= previousOffset[a];
+        endCentre[a] -= offset[a];
+    }
     Position start{}, end{};
-    toPlaneSpace(t, m.start, start);
-    toPlaneSpace(t, m.end, end);
+    toPlaneSpace(t, startCentre, start);
+    toPlaneSpace(t, endCentre, end);
+    const auto centreOffset = [&](int axis) {
+        return axis >= 0 && axis < kMaxAxes ? offset[static_cast<std::size_t>(axis)] : 0.0;
+    };
+    const double c1 = m.center1 - centreOffset(m.planeAxis1);
+    const double c2 = m.center2 - centreOffset(m.planeAxis2);
     if (move.kind == ToolpathKind::Arc)
-        addArc(m, t, start, end);
+        addArc(m, c1, c2, t, start, end);
     else
         addLine(t, start, end);
+    if (m.compensated && !m.inserted) {
+        Motion programmed = m;  // the programmed contour: from the last programmed point
+        programmed.start = previousProgrammed;
+        programmed.end = m.programmedEnd;
+        programmed.center1 = c1;
+        programmed.center2 = c2;
+        addContour(programmed, t);
+    }
     if (t.kind == 32 && t.linear >= 0 && sceneAxis(t.linear) >= 0) {
         const auto l = static_cast<std::size_t>(t.linear);
         const bool first = geometry_.cylinderAxis < 0;

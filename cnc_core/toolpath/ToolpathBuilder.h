@@ -30,7 +30,9 @@ struct ToolpathSettings {
 /// axes outside G31/G32, U/V/W axes, spindles) do not move the picture.
 /// G31 moves are drawn in their fictitious cartesian plane; G32 moves in the
 /// developed plane (developed layer) and wrapped onto the cylinder of radius
-/// RI around the linear plane axis (scene layer). Decisions: docs/decisions/toolpath.md.
+/// RI around the linear plane axis (scene layer). Under tool compensation the
+/// layers draw the tool centre, the contour layers the programmed contour of
+/// the compensated moves. Decisions: docs/decisions/toolpath.md.
 class ToolpathBuilder : public MachineSink {
   public:
     ToolpathBuilder(const ProcessAxes& axes, ToolpathSettings settings = {});
@@ -63,13 +65,20 @@ class ToolpathBuilder : public MachineSink {
     /// (the developed layer takes G32 moves only).
     void addChord(const Transform& t, const Position& from, const Position& to, Layers layers);
     void addLine(const Transform& t, const Position& start, const Position& end);
-    void addArc(const Motion& m, const Transform& t, const Position& start, const Position& end);
+    /// `c1`, `c2`: the centre in machine positions (rotary axes in degrees).
+    void addArc(const Motion& m, double c1, double c2, const Transform& t, const Position& start,
+                const Position& end);
+    /// The programmed contour of a compensated move into the contour layers.
+    void addContour(const Motion& m, const Transform& t);
     int wrapChords(const Transform& t, double circumferentialTravel, double tolerance) const;
 
     ProcessAxes axes_;
     ToolpathSettings settings_;
     std::array<int, 3> machineAxisOfScene_{-1, -1, -1};
     ToolpathGeometry geometry_;
+    bool contourPass_ = false;   ///< addChord draws into the contour layers
+    Position lastOffset_{};      ///< tool offset (Motion::toolOffset) of the last move
+    Position lastProgrammed_{};  ///< programmed end point of the last move
 };
 
 }  // namespace mtc::core

@@ -99,13 +99,16 @@ std::vector<std::uint32_t> ToolpathGeometry::movesOfBlock(int program, std::uint
 }
 
 std::size_t ToolpathGeometry::memoryBytes() const {
-    return moves.capacity() * sizeof(ToolpathMove) + scene.memoryBytes() + developed.memoryBytes();
+    return moves.capacity() * sizeof(ToolpathMove) + scene.memoryBytes() + developed.memoryBytes() +
+           contour.memoryBytes() + developedContour.memoryBytes();
 }
 
 void ToolpathGeometry::clear() {
     moves.clear();
     scene.clear();
     developed.clear();
+    contour.clear();
+    developedContour.clear();
     cylinderRadius = 0.0;
     cylinderAxis = -1;
     cylinderFrom = cylinderTo = 0.0;

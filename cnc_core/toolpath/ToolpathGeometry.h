@@ -67,11 +67,17 @@ struct ToolpathLayer {
 /// The toolpath of a program run: moves in program order and two layers.
 /// `scene` is the 3D picture in machine coordinates (mm) with G32 moves
 /// wrapped onto the cylinder of radius RI; `developed` holds the G32 moves
-/// only, in the developed plane (axial mm, circumferential mm, 0).
+/// only, in the developed plane (axial mm, circumferential mm, 0). Both
+/// draw the path of the tool centre (with tool compensation, the cutter or
+/// nose centre). Where compensation moves the tool off the programmed
+/// contour, `contour` and `developedContour` hold the programmed contour of
+/// those moves (same coordinates), so the view can show both.
 struct ToolpathGeometry {
     std::vector<ToolpathMove> moves;
     ToolpathLayer scene;
     ToolpathLayer developed;
+    ToolpathLayer contour;
+    ToolpathLayer developedContour;
     double tolerance = 0.01;      ///< chordal tolerance the arcs were tessellated with (mm)
     double cylinderRadius = 0.0;  ///< RI of the last G32 move (0 = no G32 move)
     int cylinderAxis = -1;        ///< scene axis (0..2) of that cylinder's axis, -1 = none

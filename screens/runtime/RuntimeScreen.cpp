@@ -4,7 +4,9 @@
 #include <QLabel>
 #include <QTextBlock>
 #include <QVBoxLayout>
+#include <algorithm>
 
+#include "cnc_core/language/Parser.h"
 #include "hmi/CellSession.h"
 #include "hmi/ProgramWorkspace.h"
 #include "screens/editor/NcCodeEdit.h"
@@ -65,15 +67,29 @@ void RuntimeScreen::showProgram() {
     source_->load(program ? program->source : std::string());
     showSegment(segment_);
     listing_ = {};
+    const mtc::core::ProgramPtr runtime = runtimeProgram(program, result.get(), status);
+    const std::vector<mtc::core::InsertedBlock> inserted =
+        runtime ? insertedBlocks(runtime) : std::vector<mtc::core::InsertedBlock>();
+    const QString arrows = inserted.empty()
+                               ? QString()
+                               : QString(
+                                     " %1 marks the blocks tool compensation inserts while the "
+                                     "program runs.")
+                                     .arg(kIntermediateArrow.trimmed());
     if (result && result->status == mtc::core::CompileStatus::Compiled) {
-        listing_ = buildRuntimeListing(*result);
+        listing_ = buildRuntimeListing(*result, runtime.get(), inserted);
         compiled_->load(listing_.text);
-        note_->setText(QString("%1 blocks inserted by the compiler (marked %2).")
-                           .arg(listing_.intermediateBlocks)
-                           .arg(kIntermediateArrow.trimmed()));
+        note_->setText(QString("%1 blocks inserted by the compiler (N....:0001, ...).")
+                           .arg(listing_.intermediateBlocks) +
+                       arrows);
     } else if (status == mtc::core::CompileStatus::NotNeeded && program) {
-        compiled_->load(program->source);
-        note_->setText("The program needs no compilation: it runs as written.");
+        if (inserted.empty()) {
+            compiled_->load(program->source);
+        } else {
+            listing_ = buildSourceListing(*program, inserted);
+            compiled_->load(listing_.text);
+        }
+        note_->setText("The program needs no compilation: it runs as written." + arrows);
     } else {
         compiled_->load(QString());
         note_->setText(status == mtc::core::CompileStatus::Error
@@ -81,6 +97,40 @@ void RuntimeScreen::showProgram() {
                            : "The program is not compiled yet (Compile in the editor or the "
                              "program directory).");
     }
+}
+
+mtc::core::ProgramPtr RuntimeScreen::runtimeProgram(const mtc::core::ProgramPtr& source,
+                                                    const mtc::core::CompileResult* result,
+                                                    mtc::core::CompileStatus status) const {
+    if (result && result->status == mtc::core::CompileStatus::Compiled) {
+        // The object program as the station would run it (ProgramWorkspace::prepareRuntime).
+        mtc::core::ParseOptions options;
+        options.programNumber = program_;
+        options.name = source ? source->name : std::string();
+        return std::make_shared<mtc::core::Program>(
+            mtc::core::parseProgram(result->objectText, options));
+    }
+    return status == mtc::core::CompileStatus::NotNeeded ? source : nullptr;
+}
+
+std::vector<mtc::core::InsertedBlock> RuntimeScreen::insertedBlocks(
+    const mtc::core::ProgramPtr& runtime) const {
+    // The runtime program exists while the program runs (seed 001 ch. 1): the
+    // blocks tool compensation inserts come from a check run of it, with the
+    // station's tool list and zero offsets, on a copy of the program store.
+    if (!mtc::core::usesRadiusCompensation(*runtime)) return {};
+    const auto* session = context().session;
+    const auto& config = session->processConfig(context().process);
+    mtc::core::ProgramStore store = session->store();
+    store.putRuntime(config.index, program_, runtime);
+    auto blocks = mtc::core::insertedBlocks(config, store, program_, kInsertionBudget,
+                                            session->setupData().tools(config.index),
+                                            session->setupData().offsets(config.index))
+                      .blocks;
+    blocks.erase(std::remove_if(blocks.begin(), blocks.end(),
+                                [this](const auto& b) { return b.program != program_; }),
+                 blocks.end());
+    return blocks;
 }
 
 void RuntimeScreen::showSegment(int index) {

@@ -17,10 +17,11 @@ class NcCodeEdit;
 class VelocityPlot;
 
 /// Runtime program view (seed 001, ch. 1 and 12): the source program beside
-/// the compiled (runtime) program; blocks the compiler inserted are marked
-/// with an arrow; moving through the compiled program marks the source line
-/// each block stems from; below, the look-ahead velocity profile of the
-/// compile (seed 001 ch. 6, Fig. 6-1). Read-only.
+/// the compiled (runtime) program; the compiler's intermediate blocks carry
+/// their enhanced numbers, the blocks the control inserts while it runs (tool
+/// compensation) are marked with an arrow; moving through the compiled program marks the source
+/// line each block stems from; below, the look-ahead velocity profile of the compile (seed 001 ch.
+/// 6, Fig. 6-1). Read-only.
 class RuntimeScreen : public mtc::hmi::Screen {
     Q_OBJECT
   public:
@@ -36,7 +37,20 @@ class RuntimeScreen : public mtc::hmi::Screen {
     VelocityPlot* plot() const { return plot_; }
 
   private:
+    /// Blocks of the first blocks of a run the check run of the runtime view looks at.
+    static constexpr std::uint64_t kInsertionBudget = 200'000;
+
     void showProgram();
+    /// The blocks tool compensation inserts into the shown program (empty
+    /// when it uses no G41/G42).
+    std::vector<mtc::core::InsertedBlock> insertedBlocks(
+        const mtc::core::ProgramPtr& runtime) const;
+    /// The program the station runs for the shown number: the compile
+    /// result's object program, the source when it needs no compiling, else
+    /// nullptr.
+    mtc::core::ProgramPtr runtimeProgram(const mtc::core::ProgramPtr& source,
+                                         const mtc::core::CompileResult* result,
+                                         mtc::core::CompileStatus status) const;
     void followCompiledCursor();
     void showSegment(int index);
 

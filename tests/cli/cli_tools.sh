@@ -13,7 +13,7 @@ expect_rc 0 "tools get --json" --json --data "$data" tools get
 json_check "24 tools, T1 length is L3" 'len(d["tools"]) == 24 and d["tools"][0]["edges"][0]["l3"] == 82.5 and d["tools"][0]["name"] == "mill1"'
 json_check "file beside the data file" 'd["file"].endswith("/cell.tools")'
 expect_rc 0 "lathe tools" --json --process 1 --data "$data" tools get T1
-json_check "lathe edge orientation 3, length L1" 'd["tools"][0]["edges"][0]["orientation"] == 3 and d["tools"][0]["edges"][0]["l1"] == 61.5'
+json_check "lathe edge orientation 3, length L2 (radial)" 'd["tools"][0]["edges"][0]["orientation"] == 3 and d["tools"][0]["edges"][0]["l2"] == 61.5 and d["tools"][0]["edges"][0]["l1"] == 0'
 
 expect_rc 0 "add edge E2 to T5" --json --data "$data" tools set T5 E2 radius=0.8 orientation=3 corner_angle=55 setting_angle=93 l1_wear=-0.02
 json_check "T5 has two edges" '[e["e"] for e in d["tools"][0]["edges"]] == [1, 2] and d["tools"][0]["edges"][1]["corner_angle"] == 55'

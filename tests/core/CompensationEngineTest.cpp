@@ -123,6 +123,29 @@ TEST(CompensationEngine, ArcsChangeTheirRadiusAndMeetLinesAtTheIntersection) {
     expectLine(run.pieces[3], 13, 5, 13, 20);
 }
 
+TEST(CompensationEngine, TwoCirclesMeetAtAnInsideCornerInTheirIntersection) {
+    // G2 R10 around (20,-10) ends at (20,-20) heading -x; G3 R10 around
+    // (10,-20) leaves heading +y: a right turn, inside for G42. Tool circles
+    // R6.5 and R13.5; their centres 14.142 apart: along = 60 / (2 * 14.142),
+    // h = sqrt(6.5^2 - along^2) = sqrt(37.75): (18.5 + h / sqrt2, -11.5 - h / sqrt2).
+    Feed run;
+    // Start-up (40,-10)-(30,-10), the two circles, the cancel line: four pieces.
+    ASSERT_TRUE(run.move(line(40, -10, 30, -10), Side::Right, 3.5));
+    ASSERT_TRUE(run.move(arc(PathKind::ArcCw, 30, -10, 20, -20, 20, -10), Side::Right, 3.5));
+    ASSERT_TRUE(run.move(arc(PathKind::ArcCcw, 20, -20, 10, -10, 10, -20), Side::Right, 3.5));
+    ASSERT_TRUE(run.move(line(10, -10, 10, 10), Side::None, 3.5));
+    const double h = std::sqrt(37.75) / std::sqrt(2.0);
+    ASSERT_EQ(run.pieces.size(), 4u);
+    expectLine(run.pieces[0], 40, -10, 26.5, -10);  // start-up: perpendicular to the circle's start
+    EXPECT_EQ(run.pieces[1].path.kind, PathKind::ArcCw);
+    expectPoint(run.pieces[1].path.start, 26.5, -10);
+    expectPoint(run.pieces[1].path.end, 18.5 + h, -11.5 - h);
+    expectPoint(run.pieces[2].path.start, 18.5 + h, -11.5 - h);
+    expectPoint(run.pieces[2].path.end, 10, -6.5);  // perpendicular end: (10,-20) + 13.5 up
+    EXPECT_NEAR(run.pieces[2].path.radius(), 13.5, kTol);
+    EXPECT_NEAR((run.pieces[1].path.end - Vec2(20, -10)).norm(), 6.5, kTol);
+}
+
 TEST(CompensationEngine, ArcSmallerThanTheToolOnTheInsideIsRefused) {
     Feed run;
     ASSERT_TRUE(run.move(line(0, -5, 0, 0), Side::Left));

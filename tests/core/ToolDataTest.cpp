@@ -32,7 +32,9 @@ TEST(ToolData, TheConfigurationGivesEdgeOneOfEveryTool) {
     EXPECT_EQ(mill.find(1)->name, "mill1");
     const ToolList lathe = ToolList::fromConfig(*demoCell().process(1));
     EXPECT_EQ(lathe.edge(1, 0)->orientation, 3);
-    EXPECT_EQ(lathe.edge(1, 1)->length1, 61.5);
+    EXPECT_EQ(lathe.edge(1, 1)->length2, 61.5) << "a turning tool: radial, along X (L2 of G18)";
+    EXPECT_EQ(lathe.edge(1, 1)->length1, 0.0);
+    EXPECT_EQ(lathe.edge(9, 1)->length3, 73.5) << "the driven tool: along its own axis (L3)";
     EXPECT_EQ(lathe.edge(9, 2), nullptr);
 }
 

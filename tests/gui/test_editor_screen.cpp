@@ -59,6 +59,18 @@ const char* kLookAheadProgram =
     "N0009 M30\n"
     "N0010 PROGRAMMENDE\n";
 
+/// A chamfer (compiler) in a contour milled with G42 (tool T1, radius 3.5):
+/// the seed 001 ch. 1 example in our own numbers.
+const char* kCompensatedProgram =
+    "N0000 T1 G0 G17 G90 X-10 Y-10 Z5\n"
+    "N0001 G1 Z-1 F400\n"
+    "N0002 G42 X0 Y0\n"
+    "N0003 X20 CF3\n"
+    "N0004 Y20\n"
+    "N0005 G40 X30 Y30\n"
+    "N0006 M30\n"
+    "N0007 PROGRAMMENDE\n";
+
 }  // namespace
 
 class EditorScreenTest : public QObject {
@@ -72,6 +84,7 @@ class EditorScreenTest : public QObject {
         writeProgram(dir, 6, programHeader(6, "No keyword") + kPlainProgram);
         writeProgram(dir, 7, programHeader(7, "Chamfer test") + kChamferProgram);
         writeProgram(dir, 8, programHeader(8, "Look-ahead test") + kLookAheadProgram);
+        writeProgram(dir, 10, programHeader(10, "Compensated chamfer") + kCompensatedProgram);
         mtc::hmi::PanelOptions o;
         o.programsDir = dir_.path();
         return o;
@@ -157,7 +170,7 @@ class EditorScreenTest : public QObject {
         QVERIFY(!QFile::exists(QDir(dir_.path()).filePath("N1010007.NCO")));
     }
 
-    void runtimeViewMarksInsertedBlocksWithArrows() {
+    void runtimeViewNumbersTheCompilersBlocks() {
         PanelFixture panel(options());
         pickProgram(panel, 7);
         panel.press(Qt::Key_F6);
@@ -171,22 +184,69 @@ class EditorScreenTest : public QObject {
         QVERIFY(source->toPlainText().contains("CF3"));
         const QStringList lines = compiled->toPlainText().split('\n');
         QVERIFY(screen->listing().intermediateBlocks >= 2);  // chamfer and rounding
-        int arrows = 0;
-        for (const QString& line : lines)
-            if (line.startsWith(mtc::screens::kIntermediateArrow + "N0002:0001") ||
-                line.startsWith(mtc::screens::kIntermediateArrow + "N0003:0001"))
-                ++arrows;
-        QCOMPARE(arrows, 2);
+        // Seed 001 ch. 1: the compiler's intermediate blocks keep their
+        // enhanced numbers; the arrow belongs to the blocks the control
+        // inserts while it runs (tool compensation), none here.
+        int numbered = 0;
+        for (const QString& line : lines) {
+            if (line.startsWith("  N0002:0001") || line.startsWith("  N0003:0001")) ++numbered;
+            QVERIFY2(!line.startsWith(mtc::screens::kIntermediateArrow), qPrintable(line));
+        }
+        QCOMPARE(numbered, 2);
+        QCOMPARE(screen->listing().insertedBlocks, 0);
         QVERIFY(lines.contains("  N0000:0000 G0 G17 G90 X0 Y0 Z5"));
         // Down through the compiled program: the source line follows.
-        const int arrowRow = lines.indexOf(
-            QRegularExpression("^" + mtc::screens::kIntermediateArrow + "N0002:0001.*"));
+        const int arrowRow = lines.indexOf(QRegularExpression("^  N0002:0001.*"));
         QVERIFY(arrowRow > 0);
         for (int i = 0; i < arrowRow; ++i)
             panel.press(Qt::Key_Down);
         QCOMPARE(compiled->textCursor().blockNumber(), arrowRow);
         QVERIFY2(source->textCursor().block().text().startsWith("N0002"),
                  qPrintable(source->textCursor().block().text()));
+    }
+
+    void runtimeViewMarksTheBlocksCompensationInsertsWithArrows() {
+        PanelFixture panel(options());
+        pickProgram(panel, 10);
+        panel.press(Qt::Key_F6);
+        panel.press(Qt::Key_F3);
+        QTRY_VERIFY2(directoryRow(panel, 10).contains("[C]"), qPrintable(directoryRow(panel, 10)));
+        panel.press(Qt::Key_F4);  // Runtime program
+        auto* screen = qobject_cast<mtc::screens::RuntimeScreen*>(panel.window->currentScreen());
+        QVERIFY(screen);
+        const QStringList lines =
+            child<QPlainTextEdit>(panel, "runtime", "runtimeCompiled")->toPlainText().split('\n');
+        // Seed 001 ch. 1: "N0053:0000 ... / -> G2 ... / N0053:0001 ... / -> G2 ...":
+        // the outside corners before and after the chamfer get an arc each.
+        const QString arrow = mtc::screens::kIntermediateArrow + QString(10, ' ');
+        const int first = lines.indexOf(QRegularExpression("^  N0003:0000 .*"));
+        const int second = lines.indexOf(QRegularExpression("^  N0003:0001 .*"));
+        QVERIFY2(first > 0 && second == first + 2, qPrintable(lines.join('\n')));
+        QCOMPARE(lines[first + 1], arrow + "G3 X19.4749 Y-2.4749 I17 J0");
+        QCOMPARE(lines[second + 1], arrow + "G3 X23.5 Y3 I20 J3");
+        QCOMPARE(screen->listing().insertedBlocks, 2);
+        QVERIFY(screen->listing().inserted[first + 1]);
+        QVERIFY(!screen->listing().inserted[first]);
+        QVERIFY2(
+            child<QLabel>(panel, "runtime", "runtimeNote")->text().contains("tool compensation"),
+            qPrintable(child<QLabel>(panel, "runtime", "runtimeNote")->text()));
+    }
+
+    void runtimeViewOfAProgramWithoutCompilerKeywordsShowsTheArrowsToo() {
+        PanelFixture panel(options());
+        panel.session->addProgram(0, 22, "comp.nc",
+                                  "N0000 T1 G0 G17 G90 X-10 Y0 Z5\nN0001 G41 G1 X0 Y0 F300\n"
+                                  "N0002 Y20\nN0003 X20\nN0004 G40 X30 Y30\nN0005 M30\n");
+        QVERIFY(panel.session->selectProgram(0, 22));
+        panel.window->showScreen("runtime");
+        const QStringList lines =
+            child<QPlainTextEdit>(panel, "runtime", "runtimeCompiled")->toPlainText().split('\n');
+        // G41 (tool left, 3.5): at (0, 20) the contour turns right, an outside corner.
+        const int row = lines.indexOf("  N0002 Y20");
+        QVERIFY2(row >= 0, qPrintable(lines.join('\n')));
+        QCOMPARE(lines[row + 1],
+                 mtc::screens::kIntermediateArrow + QString(10, ' ') + "G2 X0 Y23.5 I0 J20");
+        QCOMPARE(lines[row + 2], QString("  N0003 X20"));
     }
 
     void runtimeViewPlotsTheLookAheadProfile() {
