@@ -36,9 +36,10 @@ const std::vector<Element> kContour = {
     {comp::PathKind::ArcCcw, 35, 15, 45, 25, 35, 25},  // tangent
     {comp::PathKind::Line, 45, 25, 45, 40},            // tangent
     {comp::PathKind::Line, 45, 40, 30, 40},            // left turn
-    {comp::PathKind::ArcCw, 30, 40, 20, 50, 30, 50},   // right turn into a circle
+    {comp::PathKind::ArcCw, 30, 40, 20, 50, 30, 50},   // tangent into a circle
     {comp::PathKind::ArcCcw, 20, 50, 10, 60, 10, 50},  // circle to circle, tangent
-    {comp::PathKind::Line, 10, 60, 0, 45},             // a corner after a circle
+    {comp::PathKind::Line, 10, 60, 0, 45},             // left turn after a circle
+    {comp::PathKind::Line, 0, 45, -10, 45},            // right turn
 };
 
 la::PathElement compilerElement(const Element& e) {
@@ -79,7 +80,7 @@ std::vector<comp::ToolPiece> interpreterPath(comp::Side side) {
     feed(planePath({comp::PathKind::Line, -10, 0, 0, 0}), side);  // start-up
     for (const Element& e : kContour)
         feed(planePath(e), side);
-    feed(planePath({comp::PathKind::Line, 0, 45, -10, 45}), comp::Side::None);  // cancel
+    feed(planePath({comp::PathKind::Line, -10, 45, -10, 60}), comp::Side::None);  // cancel
     EXPECT_GE(pieces.size(), 2u);
     if (pieces.size() < 2) return {};
     return {pieces.begin() + 1, pieces.end() - 1};
