@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <string_view>
 
+#include "cnc_core/language/CheckedNumber.h"
 #include "cnc_core/machine_data/StandardPages.h"
 
 namespace mtc::core {
@@ -247,7 +248,7 @@ AfcStatus AdaptiveFeedControl::measureIdleTorque(double feed, double speedFracti
                       "error 508: idling torque recording " +
                           std::string(afcAxisName(s.referenceAxis)) +
                           ": the block runs at constant speed for " +
-                          std::to_string(static_cast<int>(constantSeconds * 1000)) +
+                          std::to_string(clampedInteger<long long>(constantSeconds * 1000)) +
                           " ms, the measuring period is " +
                           std::to_string(static_cast<int>(s.measuringPeriodMs)) + " ms");
     const int samples = std::max(1, static_cast<int>(std::lround(period / kSampleSeconds)));

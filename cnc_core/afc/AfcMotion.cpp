@@ -4,6 +4,8 @@
 #include <cmath>
 #include <string>
 
+#include "cnc_core/language/CheckedNumber.h"
+
 namespace mtc::core {
 namespace {
 
@@ -34,7 +36,7 @@ double engagementAt(const AfcMoveInput& move, const ItmWindow& itm, double share
 }
 
 int samplesFor(double seconds) {
-    return std::clamp(static_cast<int>(seconds / kSampleEverySeconds), 1, kMaxSamplesPerSpan);
+    return clampedInteger(seconds / kSampleEverySeconds, 1, kMaxSamplesPerSpan);
 }
 
 /// ITM of the move: 508 / 509 become runtime errors. Returns false when the
@@ -223,7 +225,7 @@ TorqueModelParameters torqueModelFromConfig(const ProcessConfig& process) {
     p.feedExponent = parameter(process, "exponent", p.feedExponent);
     p.constantLoad = parameter(process, "load", p.constantLoad);
     p.noiseAmplitude = parameter(process, "noise", p.noiseAmplitude);
-    p.seed = static_cast<std::uint64_t>(std::max(0.0, parameter(process, "seed", 2002)));
+    p.seed = clampedInteger<std::uint64_t>(parameter(process, "seed", 2002));
     return p;
 }
 

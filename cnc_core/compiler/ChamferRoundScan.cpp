@@ -4,6 +4,9 @@
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
+#include <optional>
+
+#include "cnc_core/language/CheckedNumber.h"
 
 namespace mtc::core {
 
@@ -154,7 +157,11 @@ void readWords(const Program& program, const Block& block, std::size_t prefixSiz
         const std::size_t begin = word.column > prefixSize ? word.column - 1 - prefixSize : 0;
         switch (word.kind) {
             case WordKind::G: {
-                const int g = word.expr < 0 ? static_cast<int>(word.number) : -1;
+                const std::optional<int> number =
+                    word.expr < 0 ? exactInteger(word.number) : std::optional<int>(-1);
+                if (!number)
+                    break;  // G8888888888, G1.5: no G function (the interpreter refuses it)
+                const int g = *number;
                 if (g >= 0 && g <= 3) {
                     state.motionG = g;
                     out.explicitMotionG = true;

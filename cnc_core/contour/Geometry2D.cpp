@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "cnc_core/language/CheckedNumber.h"
+
 namespace mtc::core::gne {
 namespace {
 
@@ -122,10 +124,7 @@ std::vector<Point> tessellate(const std::vector<Segment>& path, double chordErro
         if (s.isArc()) {
             const double r = s.radius();
             const double step = r > chordError ? 2.0 * std::acos(1.0 - chordError / r) : kPi / 4;
-            // clamped as a double: a huge radius makes the step 0 (an
-            // infinite count) and a NaN compares false
-            const double count = std::ceil(s.sweep() / step);
-            pieces = count >= 2.0 ? static_cast<int>(std::min(count, 2000.0)) : 2;
+            pieces = clampedInteger(std::ceil(s.sweep() / step), 2, 2000);
         }
         for (int i = 1; i <= pieces; ++i)
             points.push_back(s.at(static_cast<double>(i) / pieces));

@@ -3,12 +3,14 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <optional>
 #include <sstream>
 
 #include "cnc_core/contour/ContourSolver.h"
 #include "cnc_core/contour/CycleSupport.h"
 #include "cnc_core/contour/GneText.h"
+#include "cnc_core/language/CheckedNumber.h"
 
 namespace mtc::core::gne {
 
@@ -75,13 +77,19 @@ bool parseToolBlock(const std::string& text, ToolAssumption& t) {
         marker != ";GNE" || name != "TOOL")
         return false;
     t = ToolAssumption{};
-    t.tool = std::atoi(tword.c_str() + 1);
+    char* end = nullptr;
+    const long tool = std::strtol(tword.c_str() + 1, &end, 10);  // atoi: undefined on overflow
+    if (*end != '\0' || tool < 1 || tool > 9'999'999) return false;
+    t.tool = static_cast<int>(tool);
     t.turning = false;
     std::string key;
     double value = 0;
     while (in >> key >> value) {
-        if (key == "EDGE")
-            t.edge = static_cast<int>(value), t.turning = true;
+        const std::optional<int> edge = key == "EDGE" ? exactInteger(value) : std::nullopt;
+        if (edge && *edge >= 0 && *edge <= 9)
+            t.edge = *edge, t.turning = true;
+        else if (key == "EDGE")
+            return false;
         else if (key == "TR")
             t.radius = value;
         else if (key == "CA")

@@ -7,6 +7,7 @@
 
 #include "cnc_core/contour/GneSchema.h"
 #include "cnc_core/contour/GneText.h"
+#include "cnc_core/language/CheckedNumber.h"
 
 namespace mtc::core::gne {
 namespace {
@@ -134,7 +135,7 @@ class Reader {
         double n = 0;
         if (!args.empty() && (!toNumber(args[0], n) || n < 1 || n > 9999 || std::floor(n) != n))
             error("GNE_CONT_NUMBER", "the contour number must be a whole number 1..9999");
-        item.contour.number = static_cast<int>(std::isfinite(n) ? n : 0);
+        item.contour.number = exactInteger(n).value_or(0);
         if (args.size() == 2) {
             if (args[1] == "RAW")
                 item.contour.raw = true;

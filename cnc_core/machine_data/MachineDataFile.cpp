@@ -129,7 +129,7 @@ bool MachineDataFile::parse(const std::string& text, std::string& cell,
     char checksum[17] = {};
     char after = 0;
     const std::string last = text.substr(endLine + 1);
-    if (std::sscanf(last.c_str(), "end %zu %16[0-9a-f]%c", &count, checksum, &after) != 3 ||
+    if (std::sscanf(last.c_str(), "end %19zu %16[0-9a-f]%c", &count, checksum, &after) != 3 ||
         after != '\n' || last.size() != 4 + std::to_string(count).size() + 1 + 16 + 1)
         return reason = "the end line is malformed", false;
     char expected[17];

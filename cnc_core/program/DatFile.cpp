@@ -27,7 +27,8 @@ bool headerFields(const std::string& header, DatFileName& out) {
     unsigned plant = 0;
     int package = 0, process = 0, number = 0;
     char kind[4];
-    if (std::sscanf(header.c_str(), "%%%3[A-Z]:%X:%d:%d:%d", kind, &plant, &package, &process,
+    // field widths: scanf's conversion of a number out of range is undefined
+    if (std::sscanf(header.c_str(), "%%%3[A-Z]:%7X:%9d:%9d:%9d", kind, &plant, &package, &process,
                     &number) != 5)
         return false;
     out = DatFileName{static_cast<int>(plant), package, process, number};

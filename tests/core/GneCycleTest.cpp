@@ -255,6 +255,19 @@ TEST(GneCycle, ToolBlockRecordsTheAssumption) {
     EXPECT_FALSE(parseToolBlock("T4 ;tool", back));
 }
 
+// Numbers of a tool block come from the program text: out of range they are
+// refused (they were converted with atoi and a cast, undefined behaviour).
+TEST(GneCycle, ToolBlockWithNumbersOutOfRangeIsNoToolBlock) {
+    ToolAssumption back;
+    for (const char* text :
+         {"T99999999999 ;GNE TOOL TR 1", "T4 ;GNE TOOL EDGE 1e300 TR 0.4", "T4 ;GNE TOOL EDGE -3",
+          "T4 ;GNE TOOL EDGE 2.5", "T4x ;GNE TOOL TR 1", "T-4 ;GNE TOOL TR 1"})
+        EXPECT_FALSE(parseToolBlock(text, back)) << text;
+    ASSERT_TRUE(parseToolBlock("T9999999 ;GNE TOOL EDGE 9 TR 0.4 CA 80 SA 95", back));
+    EXPECT_EQ(back.tool, 9999999);
+    EXPECT_EQ(back.edge, 9);
+}
+
 /// The expanded blocks run on the demo cell without any diagnostic.
 void expectRuns(const GneExpansion& e, int process) {
     std::string program;

@@ -60,3 +60,18 @@ TEST(MachineConfig, EmptyTextIsAnError) {
     EXPECT_FALSE(result.ok());
     EXPECT_EQ(result.diagnostics.items().front().code, "CFG_NO_PROCESS");
 }
+
+// Whole numbers out of int's range (and inf / nan) are refused before any
+// conversion: casting them was undefined behaviour (caught by UBSan).
+TEST(MachineConfig, IntegerValuesBeyondIntAreRefused) {
+    for (const char* value :
+         {"1e308", "-1e308", "inf", "-inf", "nan", "4294967296", "2147483648"}) {
+        const std::string text = std::string("[process 0]\nname = P\ntool_places = ") + value +
+                                 "\n[process " + value + "]\n";
+        const auto result = readMachineConfig(text);
+        std::vector<int> lines;
+        for (const auto& d : result.diagnostics.items())
+            lines.push_back(d.where.line);
+        EXPECT_EQ(lines, (std::vector<int>{3, 4})) << value;
+    }
+}

@@ -3,13 +3,21 @@
 #include "cnc_core/compiler/lookahead/LookAheadAnalysis.h"
 
 #include <cmath>
+#include <optional>
 
 #include "cnc_core/compiler/CompilerText.h"
 #include "cnc_core/compiler/lookahead/LookAheadScan.h"
+#include "cnc_core/language/CheckedNumber.h"
 #include "cnc_core/language/Keywords.h"
 
 namespace mtc::core::lookahead {
 namespace detail {
+
+namespace {
+// A T or E word beyond these matches no tool (the interpreter refuses it).
+constexpr long kNoNumber = -1;
+constexpr long kLongest = 999'999'999;
+}  // namespace
 
 Analyzer::Analyzer(const BlockSequence& blocks, CompileContext& context, const LookAheadDefaults& d)
     : blocks_(blocks),
@@ -19,7 +27,7 @@ Analyzer::Analyzer(const BlockSequence& blocks, CompileContext& context, const L
     const ProcessConfig* process = context.options().process;
     state_.metbMs = process ? process->number("B070", d.metbMs) : d.metbMs;
     state_.vfbt = process ? process->number("B071", d.vfbt) : d.vfbt;
-    state_.bbtrc = static_cast<int>(process ? process->number("B072", d.bbtrc) : d.bbtrc);
+    state_.bbtrc = clampedInteger(process ? process->number("B072", d.bbtrc) : d.bbtrc, 1, 10);
     blockCycleMs_ = process ? process->number("B073", d.blockCycleMs) : d.blockCycleMs;
     processIndex_ = process ? process->index : 0;
     state_.position = AxisVector::Zero(limits_.size());
@@ -119,10 +127,10 @@ void Analyzer::modalWord(const Word& w, AxisVector& target) {
             state_.axisFeedAxis = -1;
             break;
         case WordKind::T:
-            if (constant) state_.tool = static_cast<long>(w.number);
+            if (constant) state_.tool = clampedInteger(w.number, kNoNumber, kLongest);
             break;
         case WordKind::E:
-            if (constant) state_.edge = static_cast<long>(w.number);
+            if (constant) state_.edge = clampedInteger(w.number, kNoNumber, kLongest);
             break;
         default:
             break;
@@ -225,9 +233,9 @@ void Analyzer::toolRadius(std::size_t i, std::string_view args) {
         const std::string text = parts[k];
         if (text.find_first_not_of(' ') == std::string::npos) continue;
         const CompileTimeValue v = evaluate(i, text);
-        if (!v.ok || v.value != std::floor(v.value))
-            return void(report(i, "LA_TL_RADIUS_SYNTAX", "TL_RADIUS: bad T or E number"));
-        numbers[k] = static_cast<long>(v.value);
+        const std::optional<long> whole = v.ok ? exactInteger<long>(v.value) : std::nullopt;
+        if (!whole) return void(report(i, "LA_TL_RADIUS_SYNTAX", "TL_RADIUS: bad T or E number"));
+        numbers[k] = *whole;
     }
     if (numbers[0] < 1 || numbers[0] > 9999999 || numbers[1] < 1 || numbers[1] > 9)
         return void(report(i, "LA_VALUE_RANGE", "TL_RADIUS: T 1..9999999, E 1..9"));

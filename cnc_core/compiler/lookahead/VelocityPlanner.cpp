@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include "cnc_core/language/CheckedNumber.h"
+
 namespace mtc::core::lookahead {
 namespace {
 
@@ -107,10 +109,8 @@ std::vector<double> splitCandidates(const ElementProfile& p,
     const double stepTime = 2.0 * parameters.metbMs / 1000.0;
     auto ramp = [&](double vFrom, double vTo, double sFrom, double sTo) {
         const double rampTime = std::abs(vTo - vFrom) / p.acceleration;
-        // clamped as a double first: a huge or NaN ratio is no int
-        const double limit = std::max(1, parameters.maxSubBlocksPerRamp);
-        const double ratio = rampTime / stepTime;
-        const int steps = static_cast<int>(ratio >= 1.0 ? std::min(ratio, limit) : 1.0);
+        const int steps =
+            clampedInteger(rampTime / stepTime, 1, std::max(1, parameters.maxSubBlocksPerRamp));
         for (int m = 1; m < steps; ++m) {
             const double v = vFrom + (vTo - vFrom) * m / steps;
             const double s = vTo > vFrom ? (v * v - vFrom * vFrom) / (2.0 * p.acceleration)
