@@ -72,6 +72,19 @@ Definition readDefinition(std::string_view text, bool& found, std::size_t& label
     return d;
 }
 
+/// What stays of a DEFINE block: its label and its comment. Built in a new
+/// string: `text` must stay valid while both parts are read (a label of 16
+/// or more characters would otherwise free the block text it is cut from).
+std::string labelAndComment(std::string_view text, std::size_t labelEnd) {
+    std::string kept(text.substr(0, labelEnd));
+    const std::size_t comment = commentOffset(text);
+    if (comment < text.size()) {
+        if (!kept.empty()) kept += ' ';
+        kept += text.substr(comment);
+    }
+    return kept;
+}
+
 }  // namespace
 
 std::string checkMacroName(std::string_view name) {
@@ -187,13 +200,7 @@ void MacroPass::run(BlockSequence& blocks, CompileContext& context) const {
                             {"From this block on, " + d.name + " stands for: " + d.body}))
             return;
         table[d.name] = d.body;
-        const std::string_view text(block.text);
-        const std::size_t comment = commentOffset(text);
-        block.text = std::string(text.substr(0, labelEnd));
-        if (comment < text.size()) {
-            if (!block.text.empty()) block.text += ' ';
-            block.text += std::string(text.substr(comment));
-        }
+        block.text = labelAndComment(block.text, labelEnd);
         block.changed = true;
     }
 }

@@ -21,6 +21,20 @@ TEST(CompilerMacros, LocalMacroIsReplacedInTheFollowingBlocks) {
                                         "N0003:0000 G0 Z100 M5", "N0004:0000 G0 Z100"}));
 }
 
+// A label of 16 or more characters is a heap string of its own: the block
+// text it was cut from must stay alive while the comment is read (a
+// use-after-free before; caught by the asan preset and valgrind).
+TEST(CompilerMacros, LongLabelAndCommentOfADefineBlockStay) {
+    const std::string label = ".LABELNUMBER12345678901234567890";
+    const std::string comment = ";comment on the heap 123";
+    const CompileResult r = compileText("N0001 " + label + " DEFINE MAC AS G1 X1 " + comment +
+                                        "\nN0002 BRA " + label + "\nN0003 MAC\n");
+    ASSERT_EQ(r.status, CompileStatus::Compiled) << codes(r).size();
+    EXPECT_EQ(objectBlocks(r),
+              (std::vector<std::string>{"N0001:0000 " + label + " " + comment,
+                                        "N0002:0000 BRA " + label, "N0003:0000 G1 X1"}));
+}
+
 TEST(CompilerMacros, MacroNamesOnlyAsWholeWordsOutsideCommentsAndTexts) {
     const CompileResult r = compileText(
         "N0001 DEFINE M860 AS M86 M3 S10\n"
