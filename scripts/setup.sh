@@ -1,13 +1,22 @@
 #!/usr/bin/env bash
 # Installs the Debian packages the project needs (only the missing ones) and
 # configures + builds the given CMake preset with Ninja.
-# Usage: scripts/setup.sh [release|debug|asan]
+# Usage: scripts/setup.sh [release|debug|asan|fuzz]
+#        scripts/setup.sh tools   only the packages of scripts/fuzz.sh,
+#                                 scripts/lint.sh and scripts/valgrind.sh
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 preset="${1:-release}"
 
 packages=(build-essential cmake ninja-build qtbase5-dev libvtk9-dev libvtk9-qt-dev
           libeigen3-dev libgtest-dev libgmock-dev libbenchmark-dev xvfb xauth python3)
+# fuzzing (libFuzzer), lint (clang-tidy, clang-query) and memcheck: not
+# needed by the build or the suite (docs/FUZZING.md, docs/DECISIONS.md)
+tools=(clang clang-tidy clang-tools valgrind)
+case "$preset" in
+  fuzz) packages+=(clang) ;;
+  tools) packages+=("${tools[@]}") ;;
+esac
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
@@ -20,6 +29,7 @@ if [ ${#missing[@]} -gt 0 ]; then
   DEBIAN_FRONTEND=noninteractive "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
 fi
 
+[ "$preset" = tools ] && exit 0
 cd "$here"
 cmake --preset "$preset" >/dev/null
 cmake --build --preset "$preset"
