@@ -1,5 +1,7 @@
 #include "cli/VerifyRestartCommand.h"
 
+#include "cli/SetupDataCommand.h"
+
 #include <cstdio>
 #include <optional>
 #include <string>
@@ -9,6 +11,7 @@
 #include "cli/JsonWriter.h"
 #include "cli/MachineSetup.h"
 #include "cli/ProgramMemory.h"
+#include "cli/SetupDataCommand.h"
 #include "cnc_core/restart/RestartVerifier.h"
 
 namespace mtc::cli {
@@ -144,7 +147,13 @@ int runVerifyRestartCommand(const CliOptions& options) {
         return reportSetupFailure(failure, options.json);
     }
     const core::ProgramStore store = storeWith(setup->programs.store, request);
+    // The tool lists and zero offsets a `run` of the same program would use.
+    std::optional<core::SetupData> setupData;
+    if (!loadRunSetupData(setup->machine, options.machineData.dataFile, setupData, failure))
+        return reportSetupFailure(failure, options.json);
     core::VerifyOptions verify;
+    verify.tools = setupData->tools(request.process);
+    verify.zeroOffsets = setupData->offsets(request.process);
     verify.adjust = options.adjust;
     verify.maxPasses = options.maxPasses;
     verify.budget = options.maxBlocks;

@@ -6,6 +6,7 @@
 #include "hmi/CellSession.h"
 #include "screens/restart/ProgramListingModel.h"
 #include "screens/restart/RestartRun.h"
+#include "screens/restart/RestartVerification.h"
 
 namespace mtc::screens {
 
@@ -42,9 +43,40 @@ RestartController::RestartController(mtc::hmi::CellSession* session, int slot, Q
       slot_(slot),
       pointer_(session->store(), session->processConfig(slot).index, stationSources(session, slot)),
       listing_(new ProgramListingModel(this)),
-      run_(new RestartRun(session, slot, this)) {
+      run_(new RestartRun(session, slot, this)),
+      verification_(new RestartVerification(session, slot, this)) {
     connect(run_, &RestartRun::phaseChanged, this, &RestartController::phaseChanged);
     connect(run_, &RestartRun::progressed, this, &RestartController::changed);
+    connect(verification_, &RestartVerification::progressed, this, [this] {
+        const mtc::core::VerifyReport* report = verification_->programReport();
+        const bool clean = report && report->complete && report->targets == report->reestablished;
+        setMessage(verification_->running() || clean ? RestartMessage::Level::Info
+                                                     : RestartMessage::Level::Warning,
+                   verification_->programText());
+        emit changed();
+    });
+}
+
+void RestartController::verifyProgram() {
+    if (run_->active() || !pointer_.active()) {
+        setMessage(RestartMessage::Level::Error,
+                   run_->active() ? "Verification refused: an NC program restart is active."
+                                  : "Verification refused: no program is displayed.");
+        emit changed();
+        return;
+    }
+    QString why;
+    const int main = pointer_.levels().front().program->number;
+    if (!verification_->startProgram(main, why)) {
+        setMessage(RestartMessage::Level::Error, "Verification refused: " + why);
+        emit changed();
+    }
+}
+
+void RestartController::verifyAcceptedTarget() {
+    if (!accepted_.ok) return;
+    verification_->verifyTarget(accepted_.selection, run_->before());
+    emit changed();
 }
 
 RestartController::~RestartController() = default;
@@ -309,6 +341,13 @@ void RestartController::abort() {
 
 void RestartController::phaseChanged(mtc::core::RestartPhase phase) {
     using mtc::core::RestartPhase;
+    // The result review shows the verification of the target before Start;
+    // on a very large program it waits for its soft key.
+    constexpr std::uint64_t kAutomaticUpTo = 500'000;
+    if (phase == RestartPhase::TargetReached && run_->computedBlocks() <= kAutomaticUpTo)
+        verifyAcceptedTarget();
+    else if (phase == RestartPhase::Active || phase == RestartPhase::Computing)
+        verification_->clearTarget();
     // After each computing process the number of runs is 1 again (seed 000, 2.6).
     if (phase != RestartPhase::Active && phase != RestartPhase::Computing)
         pointer_.computingProcessDone();

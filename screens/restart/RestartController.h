@@ -15,6 +15,7 @@ namespace mtc::screens {
 
 class ProgramListingModel;
 class RestartRun;
+class RestartVerification;
 
 /// A line the restart screens show under their content.
 struct RestartMessage {
@@ -44,6 +45,15 @@ class RestartController : public QObject {
     const mtc::core::AcceptResult& accepted() const { return accepted_; }
     /// The restart of the station after Enter (computing process, ADJUST, REPOS).
     RestartRun* run() const { return run_; }
+    /// The restart verifier of the station (restart.md R-028).
+    RestartVerification* verification() const { return verification_; }
+    /// Soft key of the restart screen: verifies every arrival of the displayed
+    /// main program as a target (in slices; the message line shows the
+    /// coverage line when it is done). Refused while a restart is active.
+    void verifyProgram();
+    /// The result review: the accepted target as the CLI's verify-restart
+    /// checks it (a normal run to it, ADJUST and REPOS on private copies).
+    void verifyAcceptedTarget();
     /// "P1 N0020 (line 37)" of the accepted target; "" before the first Enter.
     QString acceptedTarget() const;
     /// What the restart is doing now, for the operator ("" before the first Enter).
@@ -132,6 +142,7 @@ class RestartController : public QObject {
     std::uint32_t preselectedBlock_ = 0;
     mtc::core::AcceptResult accepted_;
     RestartRun* run_;
+    RestartVerification* verification_;
 };
 
 }  // namespace mtc::screens

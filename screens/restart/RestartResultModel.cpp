@@ -6,6 +6,7 @@
 
 #include "cnc_core/interp/ModalGroups.h"
 #include "screens/restart/RestartRun.h"
+#include "screens/restart/RestartVerification.h"
 
 namespace mtc::screens {
 
@@ -58,8 +59,9 @@ QString buffer(const std::array<int, 40>& elements, int count) {
 
 }  // namespace
 
-RestartResultModel::RestartResultModel(const RestartRun* run, QObject* parent)
-    : QAbstractTableModel(parent), run_(run) {}
+RestartResultModel::RestartResultModel(const RestartRun* run,
+                                       const RestartVerification* verification, QObject* parent)
+    : QAbstractTableModel(parent), run_(run), verification_(verification) {}
 
 namespace {
 
@@ -137,6 +139,58 @@ void RestartResultModel::buildRows(QVector<Row>& rows) const {
     const mtc::core::RestartAuxCollector& collector = computing.collector();
     addRow(rows, "M(16) buffer", buffer(collector.m16().elements(), collector.m16().size()), "—");
     addRow(rows, "Q buffer", buffer(collector.q().elements(), collector.q().size()), "—");
+    addVerification(rows);
+}
+
+void RestartResultModel::addVerification(QVector<Row>& rows) const {
+    // The same comparison as `mtc200-cli verify-restart` (restart.md R-028):
+    // at the target: expected (the normal run); other column: what the
+    // computing process computed, or what ADJUST and REPOS will leave.
+    addSection(rows, "Verification: normal run vs. computing process, ADJUST and REPOS");
+    const auto& target = verification_->target();
+    if (!target) {
+        addRow(rows, "Not verified yet", "F4", "F4");
+        return;
+    }
+    using mtc::core::TargetOutcome;
+    if (target->outcome == TargetOutcome::Failed ||
+        target->outcome == TargetOutcome::NotSelectable) {
+        QString why = "the restart fails";
+        for (const auto& d : target->diagnostics.items())
+            if (d.severity == mtc::core::Severity::Error) {
+                why = QString::fromStdString(d.code + ": " + d.message);
+                break;
+            }
+        addRow(rows, "Verification", why, "—");
+        return;
+    }
+    if (target->outcome == TargetOutcome::Reestablished) {
+        addRow(rows, "Every item", "re-established", "re-established");
+        return;
+    }
+    for (const auto& d : target->computed)
+        addRow(rows, "Computing process: " + QString::fromStdString(d.label),
+               QString::fromStdString(d.expectedText), QString::fromStdString(d.actualText));
+    for (const auto& d : target->cutting)
+        addRow(rows, "After ADJUST / REPOS: " + QString::fromStdString(d.label),
+               QString::fromStdString(d.expectedText), QString::fromStdString(d.actualText));
+}
+
+QString RestartResultModel::verificationSummary() const {
+    const auto& target = verification_->target();
+    if (!target) return "not verified yet";
+    using mtc::core::TargetOutcome;
+    switch (target->outcome) {
+        case TargetOutcome::Reestablished:
+            return "re-established";
+        case TargetOutcome::Differs:
+            return QString("%1 differences")
+                .arg(static_cast<int>(target->computed.size() + target->cutting.size()));
+        case TargetOutcome::Failed:
+        case TargetOutcome::NotSelectable:
+            return "the restart fails";
+    }
+    return {};
 }
 
 void RestartResultModel::reload() {

@@ -6,6 +6,7 @@
 namespace mtc::screens {
 
 class RestartRun;
+class RestartVerification;
 
 /// The state the computing process restored at the target block next to the
 /// state the machine had when the restart was accepted (seed 000, 2.8, 3.1,
@@ -18,8 +19,10 @@ class RestartResultModel : public QAbstractTableModel {
     /// Role: true when the row's two values differ.
     static constexpr int DiffersRole = Qt::UserRole + 1;
 
-    /// Rows of `run` (which must outlive the model); empty until reload().
-    explicit RestartResultModel(const RestartRun* run, QObject* parent = nullptr);
+    /// Rows of `run` and the verification of its target (both must outlive
+    /// the model); empty until reload().
+    RestartResultModel(const RestartRun* run, const RestartVerification* verification,
+                       QObject* parent = nullptr);
 
     /// Re-reads the run (after a computing process).
     void reload();
@@ -28,6 +31,8 @@ class RestartResultModel : public QAbstractTableModel {
     bool differencesOnly() const { return differencesOnly_; }
     /// Number of rows that differ (whatever the filter).
     int differenceCount() const;
+    /// "re-established", "3 differences", "not verified yet" (the verification rows).
+    QString verificationSummary() const;
 
     int rowCount(const QModelIndex& parent = {}) const override;
     int columnCount(const QModelIndex& parent = {}) const override;
@@ -44,8 +49,10 @@ class RestartResultModel : public QAbstractTableModel {
 
   private:
     void buildRows(QVector<Row>& rows) const;
+    void addVerification(QVector<Row>& rows) const;
 
     const RestartRun* run_;
+    const RestartVerification* verification_;
     QVector<Row> all_;
     QVector<Row> shown_;
     bool differencesOnly_ = false;

@@ -14,7 +14,7 @@ namespace mtc::screens {
 RestartResultScreen::RestartResultScreen(const mtc::hmi::ScreenContext& context,
                                          std::shared_ptr<RestartController> controller)
     : Screen(context), controller_(std::move(controller)) {
-    model_ = new RestartResultModel(controller_->run(), this);
+    model_ = new RestartResultModel(controller_->run(), controller_->verification(), this);
     summary_ = new QLabel(this);
     summary_->setObjectName("resultSummary");
     summary_->setWordWrap(true);
@@ -56,10 +56,11 @@ void RestartResultScreen::render() {
     }
     const auto& s = controller_->accepted();
     summary_->setText(
-        QString("Target %1  ·  %2 blocks interpreted  ·  %3 differences")
+        QString("Target %1  ·  %2 blocks interpreted  ·  %3 differences  ·  verification: %4")
             .arg(controller_->acceptedTarget())
             .arg(run->computedBlocks())
-            .arg(model_->differenceCount()) +
+            .arg(model_->differenceCount())
+            .arg(model_->verificationSummary()) +
         (s.selection.runs > 1 ? QString("  ·  arrival %1").arg(s.selection.runs) : QString()));
     hint_->setText(controller_->phaseText());
 }
@@ -72,6 +73,12 @@ mtc::hmi::SoftKeys RestartResultScreen::softKeys() {
                    model_->setDifferencesOnly(!model_->differencesOnly());
                    emit softKeysChanged();
                }};
+    keys[3] = {"Verify\ntarget",
+               [this] {
+                   controller_->verifyAcceptedTarget();
+                   activated();
+               },
+               controller_->accepted().ok};
     keys[7] = {"Back", [this] { emit navigateTo("menu"); }};
     return keys;
 }

@@ -138,7 +138,16 @@ mtc::hmi::SoftKeys RestartScreen::softKeys() {
                    closePrompt();
                    controller_->accept();
                }};
-    keys[6] = {"Abort", [this] { controller_->abort(); }, controller_->run()->active()};
+    // F7: Abort while a restart runs; otherwise the restart verifier.
+    if (controller_->run()->active())
+        keys[6] = {"Abort", [this] { controller_->abort(); }};
+    else
+        keys[6] = {"Verify\nprogram",
+                   [this] {
+                       closePrompt();
+                       controller_->verifyProgram();
+                   },
+                   controller_->active()};
     keys[7] = {"Back", [this] { emit navigateTo("menu"); }};
     return keys;
 }
