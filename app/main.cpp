@@ -35,6 +35,11 @@ QString runToEnd(mtc::hmi::CellSession& session, int process) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    // High-dpi screens: the panel scales as a whole (fractional factors too,
+    // e.g. 1.5 at 144 dpi) instead of only its fonts growing (issue 20 §3).
+    QApplication::setAttribute(Qt::AA_EnableHighDpiScaling);
+    QApplication::setHighDpiScaleFactorRoundingPolicy(
+        Qt::HighDpiScaleFactorRoundingPolicy::PassThrough);
     QApplication app(argc, argv);
     QApplication::setOrganizationName("MTC200Sim");
     QApplication::setApplicationName("mtc200-panel");

@@ -1,7 +1,8 @@
 #include "hmi/SoftKeyBar.h"
 
 #include <QHBoxLayout>
-#include <QPushButton>
+
+#include "hmi/SoftKeyButton.h"
 
 namespace mtc::hmi {
 
@@ -10,10 +11,9 @@ SoftKeyBar::SoftKeyBar(QWidget* parent) : QWidget(parent) {
     layout->setContentsMargins(2, 2, 2, 2);
     layout->setSpacing(3);
     for (int i = 0; i < 8; ++i) {
-        auto* button = new QPushButton(this);
+        auto* button = new SoftKeyButton(QString("F%1").arg(i + 1), this);
         button->setObjectName(QString("softkey%1").arg(i + 1));
         button->setFocusPolicy(Qt::NoFocus);  // the panel is driven by F keys
-        button->setMinimumHeight(66);
         button->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Fixed);  // equal widths
         connect(button, &QPushButton::clicked, this, [this, i] { trigger(i); });
         layout->addWidget(button);
@@ -27,7 +27,7 @@ void SoftKeyBar::setKeys(const SoftKeys& keys) {
     keys_.resize(8);
     for (int i = 0; i < 8; ++i) {
         const SoftKey& key = keys_[i];
-        buttons_[i]->setText(QString("F%1\n%2").arg(i + 1).arg(key.label));
+        buttons_[i]->setLabel(key.label);
         buttons_[i]->setEnabled(key.enabled && key.action != nullptr);
     }
 }

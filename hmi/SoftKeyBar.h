@@ -4,9 +4,9 @@
 
 #include "hmi/SoftKey.h"
 
-class QPushButton;
-
 namespace mtc::hmi {
+
+class SoftKeyButton;
 
 /// The row of soft keys F1..F8 at the bottom of the panel. Buttons are
 /// named "softkey1".."softkey8"; clicking one or calling trigger() runs the
@@ -23,7 +23,7 @@ class SoftKeyBar : public QWidget {
     QString label(int index) const;
 
   private:
-    QVector<QPushButton*> buttons_;
+    QVector<SoftKeyButton*> buttons_;
     SoftKeys keys_;
 };
 

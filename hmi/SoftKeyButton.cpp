@@ -1,0 +1,88 @@
+#include "hmi/SoftKeyButton.h"
+
+#include <algorithm>
+
+#include <QEvent>
+#include <QFontMetrics>
+
+namespace mtc::hmi {
+
+namespace {
+/// Lines the label may take below the key name.
+constexpr int kLabelLines = 3;
+/// Room the button's frame and padding take from its width, in pixels.
+constexpr int kFrameWidth = 10;
+
+/// `word` shortened with "…" to `width` pixels.
+QString elided(const QString& word, const QFontMetrics& metrics, int width) {
+    return metrics.elidedText(word, Qt::ElideRight, width);
+}
+}  // namespace
+
+SoftKeyButton::SoftKeyButton(const QString& keyName, QWidget* parent)
+    : QPushButton(parent), keyName_(keyName) {
+    relayout();
+}
+
+void SoftKeyButton::setLabel(const QString& label) {
+    label_ = label;
+    relayout();
+}
+
+QStringList SoftKeyButton::fitLines(const QString& label, const QFontMetrics& metrics, int width,
+                                    int maxLines, bool& shortened) {
+    shortened = false;
+    QStringList lines;
+    const auto fits = [&](const QString& text) { return metrics.horizontalAdvance(text) <= width; };
+    // Greedy filling of each explicit line with its words.
+    for (const QString& paragraph : label.split('\n')) {
+        QString line;
+        for (const QString& word : paragraph.split(' ', Qt::SkipEmptyParts)) {
+            const QString joined = line.isEmpty() ? word : line + ' ' + word;
+            if (fits(joined)) {
+                line = joined;
+                continue;
+            }
+            if (!line.isEmpty()) lines << line;
+            line = word;
+            if (!fits(line)) {
+                line = elided(word, metrics, width);
+                shortened = true;
+            }
+        }
+        lines << line;
+    }
+    if (lines.size() > maxLines) {
+        shortened = true;
+        QString last = lines.mid(maxLines - 1).join(' ');
+        lines = lines.mid(0, maxLines - 1);
+        lines << elided(last, metrics, width);
+    }
+    return lines;
+}
+
+void SoftKeyButton::relayout() {
+    const QFontMetrics metrics(font());
+    const int width = std::max(1, this->width() - kFrameWidth);
+    bool shortened = false;
+    const QStringList lines = label_.isEmpty()
+                                  ? QStringList()
+                                  : fitLines(label_, metrics, width, kLabelLines, shortened);
+    shortened_ = shortened;
+    setText(lines.isEmpty() ? keyName_ : keyName_ + '\n' + lines.join('\n'));
+    setToolTip(shortened ? QString(label_).replace('\n', ' ') : QString());
+    // Room for the key name and the label lines at any font size (dpi).
+    setMinimumHeight(metrics.lineSpacing() * (1 + kLabelLines) + 8);
+}
+
+void SoftKeyButton::resizeEvent(QResizeEvent* event) {
+    QPushButton::resizeEvent(event);
+    relayout();
+}
+
+void SoftKeyButton::changeEvent(QEvent* event) {
+    QPushButton::changeEvent(event);
+    if (event->type() == QEvent::FontChange) relayout();
+}
+
+}  // namespace mtc::hmi
