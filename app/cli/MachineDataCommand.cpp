@@ -8,8 +8,9 @@
 #include "cli/CliOutput.h"
 #include "cli/MachineDataOutput.h"
 #include "cli/MachineSetup.h"
-#include "cnc_core/machine_data/SharedMachineDataFile.h"
 #include "cnc_core/machine_data/MachineDataLocation.h"
+#include "cnc_core/machine_data/SharedMachineDataFile.h"
+#include "cnc_core/text/Numbers.h"
 
 namespace mtc::cli {
 namespace {
@@ -27,9 +28,9 @@ std::optional<int> wholeNumber(const std::string& text) {
 /// A finite number in `text` (all of it), or nullopt.
 std::optional<double> number(const std::string& text) {
     if (text.empty()) return std::nullopt;
-    char* end = nullptr;
-    const double value = std::strtod(text.c_str(), &end);
-    if (end != text.c_str() + text.size() || !std::isfinite(value)) return std::nullopt;
+    double value = 0.0;
+    if (core::readNumberPrefix(text, value) != text.size() || !std::isfinite(value))
+        return std::nullopt;
     return value;
 }
 

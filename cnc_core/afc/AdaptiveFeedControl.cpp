@@ -7,6 +7,7 @@
 
 #include "cnc_core/language/CheckedNumber.h"
 #include "cnc_core/machine_data/StandardPages.h"
+#include "cnc_core/text/Numbers.h"
 
 namespace mtc::core {
 namespace {
@@ -16,9 +17,7 @@ constexpr double kSampleSeconds = 0.001;         // measurement cycle of ITM and
 constexpr std::size_t kTrendLimit = 200000;      // samples kept for the trend
 
 std::string percent(double value) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.1f %%", value);
-    return text;
+    return formatFixed(value, 1) + " %";
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 #include <cstdlib>
 
 #include "cnc_core/machine/MachineConfig.h"
+#include "cnc_core/text/Numbers.h"
 
 namespace mtc::core {
 namespace {
@@ -21,9 +22,7 @@ constexpr AfcParameterRange kRanges[] = {
 };
 
 std::string number(double value, bool whole) {
-    char text[32];
-    std::snprintf(text, sizeof text, whole ? "%.0f" : "%.2f", value);
-    std::string s = text;
+    std::string s = formatFixed(value, whole ? 0 : 2);
     if (!whole) {  // 500.00 -> 500.0, 0.01 stays
         while (s.size() > 3 && s.back() == '0' && s[s.size() - 2] != '.')
             s.pop_back();
@@ -63,10 +62,9 @@ bool readAfcParameterValue(std::string_view key, std::string_view text, double& 
     }
     const AfcParameterRange* range = afcParameterRange(key);
     if (!range) return true;
-    const std::string copy(text);
-    char* end = nullptr;
-    const double parsed = std::strtod(copy.c_str(), &end);
-    if (copy.empty() || end != copy.c_str() + copy.size() || !std::isfinite(parsed)) return false;
+    double parsed = 0.0;
+    if (text.empty() || readNumberPrefix(text, parsed) != text.size() || !std::isfinite(parsed))
+        return false;
     if (parsed < range->minimum || parsed > range->maximum) return false;
     if (range->whole && parsed != std::floor(parsed)) return false;
     value = parsed;

@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "cnc_core/interp/Interpreter.h"
+#include "cnc_core/text/Numbers.h"
 
 namespace mtc::core {
 namespace {
@@ -18,9 +19,7 @@ constexpr std::size_t kMaxInserted = 100000;  ///< one per block at most; a boun
 /// "12.5", "-3", "0.1235": up to four decimals, no trailing zeros.
 std::string number(double value) {
     if (std::fabs(value) < 0.00005) value = 0.0;
-    char text[40];
-    std::snprintf(text, sizeof text, "%.4f", value);
-    std::string out = text;
+    std::string out = formatFixed(value, 4);
     while (!out.empty() && out.back() == '0')
         out.pop_back();
     if (!out.empty() && out.back() == '.') out.pop_back();

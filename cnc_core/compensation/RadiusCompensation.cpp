@@ -3,6 +3,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "cnc_core/text/Numbers.h"
+
 namespace mtc::core::comp {
 namespace {
 
@@ -18,9 +20,7 @@ PlanePath straight(const Vec2& from, const Vec2& to) {
 }
 
 std::string mm(double value) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.4f", value);
-    return text;
+    return formatFixed(value, 4);
 }
 
 /// An outer corner: the contour turns away from the tool side (or reverses).

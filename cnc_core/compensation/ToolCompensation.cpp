@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "cnc_core/interp/ModalGroups.h"
+#include "cnc_core/text/Numbers.h"
 
 namespace mtc::core {
 namespace {
@@ -39,9 +40,7 @@ std::string describe(const SourceLocation& where) {
 }
 
 std::string mm(double value) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.4f", value);
-    return text;
+    return formatFixed(value, 4);
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "cnc_core/language/CheckedNumber.h"
+#include "cnc_core/text/Numbers.h"
 
 namespace mtc::core {
 
@@ -71,27 +72,7 @@ std::size_t wordEnd(const std::string& text, std::size_t begin) {
     return i;
 }
 
-/// CF/RD value from its raw arguments ("2", "=2.5", " = 1"), read from a
-/// copy of the arguments (the slow path of cornerValue).
-bool cornerValueFromCopy(std::string_view args, double& value) {
-    std::string s(args);
-    std::size_t i = 0;
-    while (i < s.size() && s[i] == ' ')
-        ++i;
-    if (i < s.size() && s[i] == '=') ++i;
-    while (i < s.size() && s[i] == ' ')
-        ++i;
-    if (i >= s.size()) return false;
-    char* end = nullptr;
-    value = std::strtod(s.c_str() + i, &end);
-    while (*end == ' ')
-        ++end;
-    return *end == '\0' && std::isfinite(value);
-}
-
-/// CF/RD value from its raw arguments, read in place: `args` lies inside a
-/// NUL-terminated program text. Falls back to a copy when the number runs
-/// past the arguments (same result as reading a copy in every case).
+/// CF/RD value from its raw arguments ("2", "=2.5", " = 1"), read in place.
 bool cornerValue(std::string_view args, double& value) {
     std::size_t i = 0;
     while (i < args.size() && args[i] == ' ')
@@ -101,9 +82,7 @@ bool cornerValue(std::string_view args, double& value) {
         ++i;
     if (i >= args.size()) return false;
     const char* stop = args.data() + args.size();
-    char* end = nullptr;
-    value = std::strtod(args.data() + i, &end);
-    if (end > stop) return cornerValueFromCopy(args, value);
+    const char* end = readNumberPrefix(args.data() + i, stop, value);
     while (end < stop && *end == ' ')
         ++end;
     return (end == stop || *end == '\0') && std::isfinite(value);

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <string>
+#include "cnc_core/text/Numbers.h"
 
 #include "cnc_core/contour/GneSchema.h"
 #include "cnc_core/contour/GneText.h"
@@ -23,9 +24,7 @@ bool toNumber(const std::string& token, double& value) {
     for (char c : token)
         if (!(std::isdigit(static_cast<unsigned char>(c)) || c == '.' || c == '-' || c == '+'))
             return false;
-    char* end = nullptr;
-    value = std::strtod(token.c_str(), &end);
-    return end && *end == '\0' && std::isfinite(value);
+    return readNumberPrefix(token, value) == token.size() && std::isfinite(value);
 }
 
 std::string trim(const std::string& s) {

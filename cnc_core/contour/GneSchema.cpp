@@ -4,6 +4,8 @@
 #include <cstdio>
 #include <limits>
 
+#include "cnc_core/text/Numbers.h"
+
 namespace mtc::core::gne {
 namespace {
 
@@ -157,12 +159,10 @@ const CallSpec* findCallSpec(std::string_view keyword) {
 
 std::string checkParam(const ParamSpec& spec, std::optional<double> value) {
     if (!value) return spec.required ? std::string(spec.name) + " is missing" : std::string();
-    char buffer[160];
     if (!std::isfinite(*value)) return std::string(spec.name) + " is not a number";
     if (*value < spec.minimum || *value > spec.maximum) {
-        std::snprintf(buffer, sizeof buffer, "%s = %g is outside %g .. %g", spec.name, *value,
-                      spec.minimum, spec.maximum);
-        return buffer;
+        return std::string(spec.name) + " = " + formatGeneral(*value) + " is outside " +
+               formatGeneral(spec.minimum) + " .. " + formatGeneral(spec.maximum);
     }
     if (spec.integer && std::floor(*value) != *value)
         return std::string(spec.name) + " must be a whole number";

@@ -6,6 +6,7 @@
 #include <cstdlib>
 
 #include "cnc_core/contour/GneSchema.h"
+#include "cnc_core/text/Numbers.h"
 
 namespace mtc::core::gne {
 
@@ -38,12 +39,12 @@ const char* centreLetters(GnePlane plane) {
 
 std::string formatValue(double value) {
     if (value == 0.0) return "0";
-    char buffer[40];
+    std::string text;
     for (int digits = 6; digits <= 17; ++digits) {
-        std::snprintf(buffer, sizeof buffer, "%.*g", digits, value);
-        if (std::strtod(buffer, nullptr) == value) break;
+        text = formatGeneral(value, digits);
+        if (leadingNumber(text) == value) break;
     }
-    return buffer;
+    return text;
 }
 
 namespace {

@@ -4,6 +4,8 @@
 #include <cstdlib>
 #include <cstring>
 
+#include "cnc_core/text/Numbers.h"
+
 namespace mtc::core::gne {
 namespace {
 
@@ -61,18 +63,19 @@ constexpr Glyph kGlyphs[] = {
 
 Stroke parseStroke(const char* text, std::size_t length) {
     Stroke stroke;
-    std::string s(text, length);
-    const char* p = s.c_str();
-    char* end = nullptr;
-    while (*p) {
-        const double x = std::strtod(p, &end);
-        if (end == p || *end != ',') break;
+    const char* p = text;
+    const char* last = text + length;
+    while (p != last) {
+        double x = 0.0;
+        double y = 0.0;
+        const char* end = readNumberPrefix(p, last, x);
+        if (end == p || end == last || *end != ',') break;
         p = end + 1;
-        const double y = std::strtod(p, &end);
+        end = readNumberPrefix(p, last, y);
         if (end == p) break;
         stroke.emplace_back(x, y);
         p = end;
-        while (*p == ' ')
+        while (p != last && *p == ' ')
             ++p;
     }
     return stroke;

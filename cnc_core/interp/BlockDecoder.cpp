@@ -5,6 +5,7 @@
 #include <cstdlib>
 
 #include "cnc_core/interp/ModalGroups.h"
+#include "cnc_core/text/Numbers.h"
 
 namespace mtc::core {
 
@@ -306,8 +307,7 @@ bool BlockDecoder::stallRecording(const Word& w) const {
         if (!evaluator_.readVariable(-1, static_cast<int>(n), period, failure))
             return error(w, failure.code, failure.message);
     } else {
-        period = std::strtod(value.c_str(), &end);
-        if (value.empty() || *end != '\0')
+        if (value.empty() || readNumberPrefix(value, period) != value.size())
             return error(w, "AXD_SYNTAX", "the period must be a number or a variable @n");
     }
     if (axis.empty() || axis.size() > 3)

@@ -8,6 +8,7 @@
 
 #include "cnc_core/contour/ToolCheck.h"
 #include "cnc_core/interp/AuxFunctionGroups.h"
+#include "cnc_core/text/Numbers.h"
 
 namespace mtc::core {
 namespace {
@@ -25,9 +26,7 @@ bool reportProblems(const BlockContext& c, const std::vector<PlaneProblem>& prob
 }
 
 std::string formatNumber(double value) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.10g", value);
-    return text;
+    return formatGeneral(value, 10);
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 
 #include "cnc_core/machine/AxisNameTable.h"
 #include "cnc_core/motion/SegmentGeometry.h"
+#include "cnc_core/text/Numbers.h"
 
 namespace mtc::core {
 namespace {
@@ -18,15 +19,11 @@ double distance(double dx, double dy) {
 }
 
 std::string format(double value) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.4f", value);
-    return text;
+    return formatFixed(value, 4);
 }
 
 std::string shortNumber(double value) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.6g", value);
-    return text;
+    return formatGeneral(value, 6);
 }
 
 }  // namespace

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "cnc_core/text/Numbers.h"
+
 namespace mtc::core {
 namespace {
 
@@ -43,10 +45,14 @@ std::size_t utf8Length(std::string_view text, std::size_t i) {
     const unsigned char lead = byte(i);
     std::size_t length = 0;
     if (lead < 0x80) return 1;
-    if (lead >= 0xC2 && lead <= 0xDF) length = 2;
-    else if (lead >= 0xE0 && lead <= 0xEF) length = 3;
-    else if (lead >= 0xF0 && lead <= 0xF4) length = 4;
-    else return 0;
+    if (lead >= 0xC2 && lead <= 0xDF)
+        length = 2;
+    else if (lead >= 0xE0 && lead <= 0xEF)
+        length = 3;
+    else if (lead >= 0xF0 && lead <= 0xF4)
+        length = 4;
+    else
+        return 0;
     if (i + length > text.size()) return 0;
     for (std::size_t k = 1; k < length; ++k)
         if ((byte(i + k) & 0xC0) != 0x80) return 0;
@@ -113,13 +119,18 @@ NumberProblem readWholeNumber(std::string_view text, double& value) {
 
 const char* describeNumberProblem(NumberProblem problem) {
     switch (problem) {
-        case NumberProblem::None: return "is a number";
-        case NumberProblem::Empty: return "is empty";
+        case NumberProblem::None:
+            return "is a number";
+        case NumberProblem::Empty:
+            return "is empty";
         case NumberProblem::NotANumber:
             return "is not a number (decimal notation with '.' as decimal point)";
-        case NumberProblem::NotFinite: return "is not a finite number";
-        case NumberProblem::Denormal: return "is too close to 0 to be held exactly";
-        case NumberProblem::NotWhole: return "is not a whole number";
+        case NumberProblem::NotFinite:
+            return "is not a finite number";
+        case NumberProblem::Denormal:
+            return "is too close to 0 to be held exactly";
+        case NumberProblem::NotWhole:
+            return "is not a whole number";
     }
     return "is not a number";
 }
@@ -161,9 +172,7 @@ bool isPrintableText(std::string_view text) {
 }
 
 std::string formatConfigNumber(double value) {
-    char text[40];
-    std::snprintf(text, sizeof text, "%.10g", value);
-    return text;
+    return formatGeneral(value, 10);
 }
 
 }  // namespace mtc::core

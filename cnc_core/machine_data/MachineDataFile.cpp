@@ -9,9 +9,11 @@
 #include <ctime>
 #include <filesystem>
 #include <fstream>
+#include <locale>
 #include <sstream>
 
 #include "cnc_core/program/AtomicWrite.h"
+#include "cnc_core/text/Numbers.h"
 
 namespace mtc::core {
 namespace {
@@ -87,6 +89,7 @@ bool readWholeFile(const std::string& path, std::string& text, std::string& erro
 /// One "<process> <page> <sub> <element> <value>" line.
 bool parseEntry(const std::string& line, MachineDataStore::Entry& entry) {
     std::istringstream in(line);
+    in.imbue(std::locale::classic());  // the file's numbers whatever the desk's locale
     MachineDataAddress& a = entry.address;
     std::string extra;
     if (!(in >> a.process >> a.page >> a.sub >> a.element >> entry.value)) return false;
@@ -95,10 +98,10 @@ bool parseEntry(const std::string& line, MachineDataStore::Entry& entry) {
 
 std::string describe(const MachineDataStore::Entry& entry) {
     char text[128];
-    std::snprintf(text, sizeof text, "process %d page %d sub %d element %d = %.10g",
-                  entry.address.process, entry.address.page, entry.address.sub,
-                  entry.address.element, entry.value);
-    return text;
+    std::snprintf(text, sizeof text,
+                  "process %d page %d sub %d element %d = ", entry.address.process,
+                  entry.address.page, entry.address.sub, entry.address.element);
+    return text + formatGeneral(entry.value, 10);
 }
 
 }  // namespace
@@ -108,9 +111,9 @@ std::string MachineDataFile::serialize(const MachineDataStore& store) {
     const std::vector<MachineDataStore::Entry> entries = store.entries();
     char line[160];
     for (const MachineDataStore::Entry& e : entries) {
-        std::snprintf(line, sizeof line, "%d %d %d %d %.17g\n", e.address.process, e.address.page,
-                      e.address.sub, e.address.element, e.value);
-        text += line;
+        std::snprintf(line, sizeof line, "%d %d %d %d ", e.address.process, e.address.page,
+                      e.address.sub, e.address.element);
+        text += line + formatGeneral(e.value, 17) + "\n";
     }
     std::snprintf(line, sizeof line, "end %zu %016" PRIx64 "\n", entries.size(),
                   fnv1a(text, text.size()));

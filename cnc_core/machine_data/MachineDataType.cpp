@@ -3,6 +3,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "cnc_core/text/Numbers.h"
+
 namespace mtc::core {
 
 const char* machineDataTypeName(MachineDataType type) {
@@ -60,13 +62,8 @@ std::optional<double> normalizeMachineDataValue(MachineDataType type, double val
 }
 
 std::string formatMachineDataValue(MachineDataType type, double value) {
-    char text[64];
     const int decimals = machineDataTypeDecimals(type);
-    if (decimals >= 0)
-        std::snprintf(text, sizeof text, "%.*f", decimals, value);
-    else
-        std::snprintf(text, sizeof text, "%.10g", value);
-    return text;
+    return decimals >= 0 ? formatFixed(value, decimals) : formatGeneral(value, 10);
 }
 
 }  // namespace mtc::core

@@ -10,6 +10,8 @@
 #include <cstdio>
 #include <cstring>
 
+#include "cnc_core/text/Numbers.h"
+
 namespace mtc::core {
 
 FileLock::FileLock(const std::string& guarded, double waitSeconds) {
@@ -42,8 +44,7 @@ FileLock::FileLock(const std::string& guarded, double waitSeconds) {
         const double waited = static_cast<double>(now.tv_sec - start.tv_sec) +
                               static_cast<double>(now.tv_nsec - start.tv_nsec) / 1e9;
         if (waited >= waitSeconds) {
-            char seconds[32];
-            std::snprintf(seconds, sizeof seconds, "%g", waitSeconds);
+            const std::string seconds = formatGeneral(waitSeconds);
             error_ = guarded + " is being changed by another program (its lock " + path +
                      " was held for " + seconds + " s); try again when it is done";
             break;

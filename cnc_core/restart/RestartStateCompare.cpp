@@ -6,6 +6,7 @@
 #include <cstdlib>
 
 #include "cnc_core/interp/ModalGroups.h"
+#include "cnc_core/text/Numbers.h"
 
 namespace mtc::core {
 
@@ -47,9 +48,7 @@ const char* gGroupName(int group) {
 }
 
 std::string numberText(double value) {
-    char text[40];
-    std::snprintf(text, sizeof text, "%.10g", value);
-    return text;
+    return formatGeneral(value, 10);
 }
 
 std::string bufferText(const std::array<int, FunctionBuffer::kLength>& buffer) {

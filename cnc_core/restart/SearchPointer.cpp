@@ -6,6 +6,7 @@
 
 #include "cnc_core/language/Keywords.h"
 #include "cnc_core/machine/EventTable.h"
+#include "cnc_core/text/Numbers.h"
 
 namespace mtc::core {
 
@@ -21,9 +22,7 @@ bool isCall(JumpKind kind) {
 }
 
 std::string formatNumber(double value) {
-    char buffer[32];
-    std::snprintf(buffer, sizeof buffer, "%.10g", value);
-    return buffer;
+    return formatGeneral(value, 10);
 }
 
 std::string_view trimmed(std::string_view text) {

@@ -1,6 +1,7 @@
 #include "cnc_core/tooldata/DataFileText.h"
 
 #include "cnc_core/machine/ConfigWords.h"
+#include "cnc_core/text/Numbers.h"
 
 #include <cmath>
 #include <cstdio>
@@ -60,7 +61,7 @@ bool DataFileText::number(int line, const std::string& key, const std::string& v
         refuse(line, key, value, "not a decimal number (" + range() + ")");
         return false;
     }
-    const double v = std::strtod(value.c_str(), nullptr);
+    const double v = leadingNumber(value);
     if (!std::isfinite(v) || v < low || v > high) {
         refuse(line, key, value, "out of range (" + range() + ")");
         return false;
@@ -91,18 +92,22 @@ bool DataFileText::integer(int line, const std::string& key, const std::string& 
 
 // The configuration's word rules, so the data files and the machine
 // configuration split and trim text the same way.
-std::string_view trimmedText(std::string_view s) { return trimConfigText(s); }
+std::string_view trimmedText(std::string_view s) {
+    return trimConfigText(s);
+}
 
-std::vector<std::string_view> wordsOf(std::string_view text) { return splitConfigWords(text); }
+std::vector<std::string_view> wordsOf(std::string_view text) {
+    return splitConfigWords(text);
+}
 
 std::string formatDataNumber(double value) {
     if (value == 0.0) return "0";
-    char buffer[40];
+    std::string text;
     for (int digits = 6; digits <= 17; ++digits) {
-        std::snprintf(buffer, sizeof buffer, "%.*g", digits, value);
-        if (std::strtod(buffer, nullptr) == value) break;
+        text = formatGeneral(value, digits);
+        if (leadingNumber(text) == value) break;
     }
-    return buffer;
+    return text;
 }
 
 }  // namespace mtc::core

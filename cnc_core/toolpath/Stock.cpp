@@ -1,5 +1,6 @@
 #include "cnc_core/toolpath/Stock.h"
 
+#include <locale>
 #include <sstream>
 
 #include <vector>
@@ -18,6 +19,7 @@ bool numbers(std::istringstream& in, std::vector<double>& out, std::size_t count
 
 bool parseStock(const std::string& text, Stock& stock, std::string& error) {
     std::istringstream in(text);
+    in.imbue(std::locale::classic());  // '.' decimals whatever the desk's locale
     std::string shape;
     in >> shape;
     Stock s;

@@ -8,6 +8,7 @@
 #include <cstdlib>
 
 #include "cnc_core/contour/Geometry2D.h"
+#include "cnc_core/text/Numbers.h"
 #include "screens/gne/GneEditModel.h"
 
 namespace mtc::screens {
@@ -152,7 +153,7 @@ void GneCanvas::drawCycles(QPainter& painter) const {
             for (std::size_t i = 0; i < code.size(); ++i) {
                 const char letter = code[i];
                 if (!std::isalpha(static_cast<unsigned char>(letter))) continue;
-                const double value = std::atof(code.c_str() + i + 1);
+                const double value = core::leadingNumber(std::string_view(code).substr(i + 1));
                 if (letter == 'G' && value >= 0 && value <= 3) motion = static_cast<int>(value);
                 if (letter == first) word[0] = value, known[0] = true;
                 if (letter == second) word[1] = value, known[1] = true;

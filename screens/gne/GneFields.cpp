@@ -7,6 +7,7 @@
 
 #include "cnc_core/contour/GneSchema.h"
 #include "cnc_core/contour/GneText.h"
+#include "cnc_core/text/Numbers.h"
 
 namespace mtc::screens::gnefields {
 
@@ -168,11 +169,9 @@ bool checked(const std::string& name, const std::string& text, double minimum, d
         message = name + ": '" + text + "' is not a number";
         return false;
     }
-    char buffer[160];
     if (v < minimum || v > maximum) {
-        std::snprintf(buffer, sizeof buffer, "%s = %s is outside %g .. %g", name.c_str(),
-                      text.c_str(), minimum, maximum);
-        message = buffer;
+        message = name + " = " + text + " is outside " + core::formatGeneral(minimum) + " .. " +
+                  core::formatGeneral(maximum);
         return false;
     }
     if (integer && std::floor(v) != v) {
@@ -191,9 +190,7 @@ bool parseNumber(const std::string& raw, double& value) {
     for (char c : t)
         if (!(std::isdigit(static_cast<unsigned char>(c)) || c == '.' || c == '-' || c == '+'))
             return false;
-    char* end = nullptr;
-    value = std::strtod(t.c_str(), &end);
-    return end && *end == '\0' && std::isfinite(value);
+    return core::readNumberPrefix(t, value) == t.size() && std::isfinite(value);
 }
 
 std::vector<Field> elementFields(const gne::ContourElement& e, gne::GnePlane plane) {

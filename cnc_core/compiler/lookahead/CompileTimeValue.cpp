@@ -3,6 +3,8 @@
 #include <cctype>
 #include <cmath>
 
+#include "cnc_core/text/Numbers.h"
+
 namespace mtc::core::lookahead {
 namespace {
 
@@ -99,7 +101,7 @@ class ValueParser {
         }
         if (digits.size() > 20 || digits.find('.') != digits.rfind('.') || digits == ".")
             return fail("bad number '" + digits + "'");
-        return std::stod(digits);
+        return leadingNumber(digits);
     }
     /// ACD_COMP[@n] or ACD_COMP[@p:n].
     double controllerValue(size_t keywordLength) {

@@ -7,15 +7,10 @@
 #include "cnc_core/compiler/Compiler.h"
 #include "cnc_core/compiler/CompilerText.h"
 #include "cnc_core/compiler/lookahead/LookAheadPass.h"
+#include "cnc_core/text/Numbers.h"
 
 namespace mtc::core::lookahead {
 namespace {
-
-std::string number(double value, const char* format) {
-    char text[64];
-    std::snprintf(text, sizeof text, format, value);
-    return text;
-}
 
 void sampleCurve(const LookAheadSegment& segment, int samples, VelocityProfile& profile) {
     double s0 = 0.0, t0 = 0.0;
@@ -93,11 +88,11 @@ std::string formatProfileCsv(const VelocityProfile& profile) {
     for (const ProfileRow& r : profile.rows) {
         text += r.block + ";" + std::to_string(r.sourceLine) + ";" + (r.generated ? "1" : "0");
         for (double v : {r.sStart, r.sEnd})
-            text += ";" + number(v, "%.4f");
+            text += ";" + formatFixed(v, 4);
         for (double v : {r.vStart, r.vEnd, r.vMax, r.feed})
-            text += ";" + number(v, "%.1f");
+            text += ";" + formatFixed(v, 1);
         for (double v : {r.tStart, r.time})
-            text += ";" + number(v, "%.6f");
+            text += ";" + formatFixed(v, 6);
         text += "\n";
     }
     return text;
