@@ -34,15 +34,38 @@ QString runToEnd(mtc::hmi::CellSession& session, int process) {
 }
 }  // namespace
 
+namespace {
+void nameTheApplication() {
+    QCoreApplication::setOrganizationName("MTC200Sim");
+    QCoreApplication::setApplicationName("mtc200-panel");
+    QCoreApplication::setApplicationVersion(MTC_PANEL_VERSION);
+}
+
+/// --help and --version need no display: answered before QApplication
+/// connects to one (a desk script or a package test without X).
+int answerHelp(int argc, char** argv) {
+    QCoreApplication core(argc, argv);
+    nameTheApplication();
+    mtc::hmi::PanelOptions options;
+    QString text;
+    bool exitNow = false;
+    if (!mtc::hmi::parsePanelOptions(QCoreApplication::arguments(), options, text, exitNow))
+        return fail(text);
+    QTextStream(stdout) << text;
+    return 0;
+}
+}  // namespace
+
 int main(int argc, char** argv) {
+    if (mtc::hmi::onlyAsksForHelp(argc, argv)) return answerHelp(argc, argv);
     // High-dpi screens: the panel scales as a whole (fractional factors too,
     // e.g. 1.5 at 144 dpi) instead of only its fonts growing (issue 20 §3).
     QApplication::setAttribute(Qt::AA_EnableHighDpiScaling);
     QApplication::setHighDpiScaleFactorRoundingPolicy(
         Qt::HighDpiScaleFactorRoundingPolicy::PassThrough);
     QApplication app(argc, argv);
-    QApplication::setOrganizationName("MTC200Sim");
-    QApplication::setApplicationName("mtc200-panel");
+    nameTheApplication();
+    mtc::hmi::useCNumberFormat();  // files and NC text keep '.' (D-013)
 
     mtc::hmi::PanelOptions options;
     QString error;

@@ -1,6 +1,7 @@
 #include "hmi/PanelOptions.h"
 
 #include <QCommandLineParser>
+#include <QCoreApplication>
 
 namespace mtc::hmi {
 
@@ -10,6 +11,7 @@ bool parsePanelOptions(const QStringList& arguments, PanelOptions& options, QStr
     QCommandLineParser parser;
     parser.setApplicationDescription("MTC200 operator panel simulator");
     auto help = parser.addHelpOption();
+    auto version = parser.addVersionOption();
     parser.addOptions({
         {"machine", "Machine configuration file (default: built-in demo cell).", "FILE"},
         {"programs", "Program directory with NuxxYzzz.DAT files (default: demo programs).", "DIR"},
@@ -36,6 +38,12 @@ bool parsePanelOptions(const QStringList& arguments, PanelOptions& options, QStr
     if (parser.isSet(help)) {
         exitNow = true;
         error = parser.helpText();
+        return true;
+    }
+    if (parser.isSet(version)) {
+        exitNow = true;
+        error = QCoreApplication::applicationName() + " " + QCoreApplication::applicationVersion() +
+                "\n";
         return true;
     }
     if (!parser.positionalArguments().isEmpty()) {
@@ -74,6 +82,16 @@ bool parsePanelOptions(const QStringList& arguments, PanelOptions& options, QStr
         }
     }
     return true;
+}
+
+bool onlyAsksForHelp(int argc, const char* const* argv) {
+    for (int i = 1; i < argc; ++i) {
+        const QByteArray argument(argv[i]);
+        if (argument == "-h" || argument == "--help" || argument == "-?" ||
+            argument == "--help-all" || argument == "-v" || argument == "--version")
+            return true;
+    }
+    return false;
 }
 
 }  // namespace mtc::hmi

@@ -24,6 +24,10 @@ struct PanelOptions {
     bool dataDefault = false;
 };
 
+/// True when the command line asks for --help or --version: main() answers
+/// those with a QCoreApplication, before any display is opened.
+bool onlyAsksForHelp(int argc, const char* const* argv);
+
 /// Parses the arguments (argv[0] included). On a usage error returns false
 /// and puts a one-line reason into `error`; --help/--version set `exitNow`.
 bool parsePanelOptions(const QStringList& arguments, PanelOptions& options, QString& error,

@@ -4,6 +4,7 @@
 #include <QFile>
 #include <QFileInfo>
 #include <QTextStream>
+#include <clocale>
 #include <optional>
 
 #include "cnc_core/machine/MachineConfigFile.h"
@@ -71,8 +72,8 @@ std::optional<mtc::core::MachineConfig> loadConfiguration(const PanelOptions& op
         mtc::core::MachineConfigReadOptions builtIn;
         builtIn.fileName = "built-in demo cell";
         builtIn.requireEndMarker = true;
-        result = mtc::core::readMachineConfig(
-            mtc::resources::find(mtc::resources::kDemoCellName), builtIn);
+        result = mtc::core::readMachineConfig(mtc::resources::find(mtc::resources::kDemoCellName),
+                                              builtIn);
     } else {
         result = mtc::core::readMachineConfigFile(options.machineFile.toStdString());
     }
@@ -92,7 +93,12 @@ std::optional<mtc::core::MachineConfig> loadConfiguration(const PanelOptions& op
 
 }  // namespace
 
+void useCNumberFormat() {
+    std::setlocale(LC_NUMERIC, "C");
+}
+
 std::unique_ptr<CellSession> createSession(const PanelOptions& options, QString& error) {
+    useCNumberFormat();
     std::optional<mtc::core::MachineConfig> config = loadConfiguration(options, error);
     if (!config) return nullptr;
     auto session = std::make_unique<CellSession>(std::move(*config));
@@ -103,9 +109,9 @@ std::unique_ptr<CellSession> createSession(const PanelOptions& options, QString&
         const QFileInfo directory(options.programsDir);
         if (!directory.isDir()) {
             error = QString("--programs %1: %2")
-                        .arg(options.programsDir,
-                             directory.exists() ? "is a file, not a program directory"
-                                                : "does not exist");
+                        .arg(options.programsDir, directory.exists()
+                                                      ? "is a file, not a program directory"
+                                                      : "does not exist");
             return nullptr;
         }
         // First the NC options: the programs are parsed knowing the global

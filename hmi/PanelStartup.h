@@ -11,6 +11,13 @@ class CellSession;
 class PanelWindow;
 class ScreenRegistry;
 
+/// Puts the C library's number format (LC_NUMERIC) back to "C" after
+/// QApplication took the desk's locale for everything (D-013): the core's
+/// files and NC text always use '.', whatever the desk's language. The
+/// texts, dates and collation keep the desk's locale. createSession() calls
+/// it, so the panel and every GUI test built on a session use it.
+void useCNumberFormat();
+
 /// Builds the cell the options ask for: machine configuration (file or the
 /// built-in demo cell) and programs (directory or the built-in demo
 /// programs). Returns nullptr and a readable `error` when a file is bad.

@@ -5,7 +5,7 @@
 #include <string_view>
 
 /// Number text of the core, the CLI and every file they write, independent
-/// of the process locale (D-NNN). The panel's QApplication switches the C
+/// of the process locale (D-013). The panel's QApplication switches the C
 /// library to the desk's locale; under de_DE `printf("%g")` writes "0,5" and
 /// `strtod("0.5")` stops at the '.', so no core code may use them for
 /// numbers. These functions use std::to_chars / std::from_chars, which are

@@ -1,4 +1,4 @@
-// Numbers whatever the desk's locale (issue 20 §2, D-NNN): the process is
+// Numbers whatever the desk's locale (issue 20 §2, D-013): the process is
 // switched to de_DE.UTF-8 (decimal comma, as the panel's QApplication does
 // on a German desk) and machine data, tool data, configuration values and a
 // program's values still read and write with '.' and round-trip exactly.
