@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "cnc_core/cell/Cell.h"
+#include "cnc_core/language/Diagnostic.h"
 
 namespace mtc::core {
 class AdaptiveFeedControl;
@@ -77,6 +78,11 @@ class CellSession : public QObject {
     /// Sets the directory programs are saved to (with .NCO/.ERR beside them).
     /// Also loads the cell's NC options from it (ncOptions()).
     void setProgramDirectory(const QString& directory);
+    /// Problems the program loader found with files of the program
+    /// directory (unreadable, not a file, bad name, duplicate, stale
+    /// temporary removed): every station's error window lists them.
+    void setLoadProblems(mtc::core::DiagnosticList problems) { loadProblems_ = std::move(problems); }
+    const mtc::core::DiagnosticList& loadProblems() const { return loadProblems_; }
     /// The NC options of the cell, shared by both stations (seed 001 ch. 4, 7, 8).
     NcOptionsHolder& ncOptions() { return *ncOptions_; }
 
@@ -166,6 +172,7 @@ class CellSession : public QObject {
     std::unique_ptr<mtc::core::SharedMachineDataFile> sharedData_;
     QTimer refreshTimer_;  ///< looks for changes of the data file by other programs
     QString programDirectory_;
+    mtc::core::DiagnosticList loadProblems_;
     QStringList machineDataMessages_;
     QTimer saveTimer_;                 ///< debounces saves of NC-written values
     std::uint64_t savedRevision_ = 0;  ///< store revision the file holds

@@ -121,6 +121,7 @@ std::unique_ptr<CellSession> createSession(const PanelOptions& options, QString&
         loader.loadDirectory(options.programsDir.toStdString());
     }
     reportLoaderProblems(loader.diagnostics());
+    session->setLoadProblems(loader.diagnostics());  // also in the error windows
     openMachineData(options, *session);
     return session;
 }

@@ -46,6 +46,7 @@ ProgramWorkspace::ProgramWorkspace(CellSession* session, int slot, QObject* pare
       compiler_(passesCapturing(lookAhead_)),
       options_(&session->ncOptions()) {
     loadErrorFiles();
+    reportLoadProblems();
     reportOptionProblems();
     connect(options_, &NcOptionsHolder::programsInvalidated, this,
             [this](int slot, const QList<int>& numbers) {
@@ -154,6 +155,19 @@ mtc::core::CompilerOptions ProgramWorkspace::compilerOptions(int number) const {
     options.globalMacros = options_->globalMacros();
     if (auto program = session_->program(slot_, number)) options.programName = program->name;
     return options;
+}
+
+void ProgramWorkspace::reportLoadProblems() {
+    for (const mtc::core::Diagnostic& d : session_->loadProblems().items()) {
+        ErrorEntry entry;
+        entry.warning = d.severity == mtc::core::Severity::Warning;
+        entry.program = d.where.program;
+        entry.code = QString::fromStdString(d.code);
+        entry.message = QString::fromStdString(d.message);
+        for (const std::string& detail : d.details)
+            entry.details << QString::fromStdString(detail);
+        errors_.add(entry);
+    }
 }
 
 void ProgramWorkspace::reportOptionProblems() {

@@ -113,6 +113,9 @@ class ProgramWorkspace : public QObject {
   private:
     /// The lines of the NC options files (GLOBAL_MACROS.MAC, NC_OPTIONS.CFG)
     /// that were refused go to the error window (GM-005, NO-002).
+    /// Puts the program loader's problems (CellSession::loadProblems) into
+    /// the error window.
+    void reportLoadProblems();
     void reportOptionProblems();
     /// The NC options made the compile results of `numbers` stale: their
     /// files are gone (NcOptionsHolder), status N, the sources run again.

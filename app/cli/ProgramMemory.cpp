@@ -135,6 +135,11 @@ bool resolveProgram(const std::string& argument, const ProgramMemory& memory, in
     core::ParseOptions options{request.number, request.displayName, memory.macroNames};
     request.program = std::make_shared<const core::Program>(
         core::DatFile::parse(std::move(text), request.displayName, options));
+    // A loose file name with a %NPG header: the program is the header's
+    // number, and the store must hold it under that number too (a copy of
+    // program 1 under another name replaced nothing, so a restart found
+    // two different programs 1).
+    if (request.number == 0) request.number = request.program->number;
     return true;
 }
 

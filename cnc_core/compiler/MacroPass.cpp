@@ -85,6 +85,18 @@ std::string labelAndComment(std::string_view text, std::size_t labelEnd) {
     return kept;
 }
 
+/// "" or the problem when a macro defined before names `name` in its
+/// instructions: defining `name` now would nest it (a single expansion
+/// would leave the word in the object program; issue 22 §6).
+std::string usedByEarlierMacro(const std::string& name, const MacroTable& table) {
+    const MacroTable only{{name, std::string()}};
+    for (const auto& [other, body] : table)
+        if (other != name && !findMacroUse(body, only).empty())
+            return "macros must not be nested (" + other + " uses " + name +
+                   ", which is defined after it)";
+    return std::string();
+}
+
 }  // namespace
 
 std::string checkMacroName(std::string_view name) {
@@ -185,6 +197,7 @@ void MacroPass::run(BlockSequence& blocks, CompileContext& context) const {
             const std::string nested = findMacroUse(d.body, withSelf);
             if (!nested.empty()) d.problem = "macros must not be nested (" + nested + ")";
         }
+        if (d.problem.empty()) d.problem = usedByEarlierMacro(d.name, table);
         if (!d.problem.empty()) {
             if (!context.report(block, Severity::Error, "COMPILER_BAD_MACRO",
                                 "Invalid macro definition.",

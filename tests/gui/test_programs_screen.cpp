@@ -1,5 +1,9 @@
 // Program directory: demo programs listed per station, listing shown, Enter selects.
+#include <sys/stat.h>
+
 #include <QLabel>
+#include <QListWidget>
+#include <QTemporaryDir>
 #include <QListView>
 #include <QPlainTextEdit>
 
@@ -47,6 +51,31 @@ class ProgramsScreenTest : public QObject {
         panel.press(Qt::Key_F1);
         QCOMPARE(panel.session->control(1).selectedProgram(), 99);
         QCOMPARE(panel.session->control(0).selectedProgram(), 0);
+    }
+
+
+    /// Issue 22 §6: what the program loader could not read is in every
+    /// station's error window, not only on stderr: a folder and a FIFO named
+    /// like programs, and a stale temporary file of a killed save.
+    void problemsOfTheProgramFolderAreShownInTheErrorWindow() {
+        QTemporaryDir dir;
+        writeProgram(QDir(dir.path()), 1, programHeader(1, "Good") + "N0000 G1 X1 F100\nN0001 M30\n");
+        QVERIFY(QDir(dir.path()).mkdir("N1010005.DAT"));
+        QVERIFY(::mkfifo(QDir(dir.path()).filePath("N1010006.DAT").toLocal8Bit().constData(), 0644) ==
+                0);
+        mtc::hmi::PanelOptions options;
+        options.programsDir = dir.path();
+        PanelFixture panel(options);
+        QVERIFY(panel.window->showScreen("errors"));
+        auto* list = panel.window->screen(0, "errors")->findChild<QListWidget*>("errorList");
+        QVERIFY(list);
+        QStringList texts;
+        for (int row = 0; row < list->count(); ++row)
+            texts << list->item(row)->text() + " " + list->item(row)->toolTip();
+        const QString all = texts.join('\n');
+        QVERIFY2(all.contains("N1010005.DAT is a directory"), qPrintable(all));
+        QVERIFY2(all.contains("N1010006.DAT is a FIFO"), qPrintable(all));
+        QVERIFY2(!all.contains("N1010001.DAT"), qPrintable(all));  // the good program is no problem
     }
 };
 
