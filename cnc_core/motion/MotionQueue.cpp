@@ -30,7 +30,7 @@ const QueueItem* MotionQueue::moveBeforeEnd() const {
     for (std::size_t i = size_; i-- > 0;) {
         const QueueItem& item = at(i);
         if (item.kind == QueueItem::Kind::Move) return &item;
-        if (item.kind == QueueItem::Kind::Dwell || item.action.stopsPath) return nullptr;
+        if (item.kind != QueueItem::Kind::Action || item.action.stopsPath) return nullptr;
     }
     return nullptr;
 }

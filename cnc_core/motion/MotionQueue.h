@@ -21,7 +21,11 @@ struct MachineAction {
 
 /// One entry of the look-ahead queue.
 struct QueueItem {
-    enum class Kind : std::uint8_t { Move, Dwell, Action };
+    /// Timed: a move whose course was worked out when it was queued (adaptive
+    /// feed control, docs/decisions/motion.md MOT-011): it starts and ends at
+    /// rest and travels `fraction` of its path in `seconds` (at 100 %
+    /// override) at a constant velocity.
+    enum class Kind : std::uint8_t { Move, Dwell, Action, Timed };
     Kind kind = Kind::Move;
     SourceLocation where;
     std::uint32_t blockIndex = 0;
@@ -33,8 +37,10 @@ struct QueueItem {
     double feed = 0.0;        ///< programmed path feed, plane units/s (0 for G0)
     double entryLimit = 0.0;  ///< junction velocity with the move before (0: starts at rest)
     double exitLimit = 0.0;   ///< planned velocity at the end (look-ahead), plane units/s
-    // Dwell:
+    // Dwell, Timed:
     double seconds = 0.0;
+    // Timed:
+    double fraction = 1.0;  ///< share of the path travelled (< 1: stopped on the path)
     // Action:
     MachineAction action;
 };

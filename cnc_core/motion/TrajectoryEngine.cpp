@@ -52,6 +52,17 @@ void TrajectoryEngine::pushAction(const SourceLocation& where, const MachineActi
     item.action = action;
 }
 
+void TrajectoryEngine::pushTimedMove(const Motion& motion, double seconds, double fraction) {
+    QueueItem& item = queue_.pushBack();
+    item.kind = QueueItem::Kind::Timed;
+    item.where = motion.where;
+    item.blockIndex = motion.blockIndex;
+    item.geometry = SegmentGeometry::of(motion, limits_);
+    item.rapid = motion.type == MotionType::Rapid;
+    item.seconds = std::isfinite(seconds) ? std::max(0.0, seconds) : 0.0;
+    item.fraction = std::isfinite(fraction) ? std::clamp(fraction, 0.0, 1.0) : 1.0;
+}
+
 // --------------------------------------------------------------- planning
 
 double TrajectoryEngine::capOf(const QueueItem& move) const {
@@ -66,7 +77,7 @@ bool TrajectoryEngine::planBackward(bool early) {
     bool last = true;
     for (std::size_t i = queue_.size(); i-- > 0;) {
         QueueItem& item = queue_.at(i);
-        if (item.kind == QueueItem::Kind::Dwell ||
+        if (item.kind == QueueItem::Kind::Dwell || item.kind == QueueItem::Kind::Timed ||
             (item.kind == QueueItem::Kind::Action && item.action.stopsPath)) {
             following = 0.0;
             last = false;
@@ -109,8 +120,9 @@ void TrajectoryEngine::replanAll() {
 
 // ------------------------------------------------------------------- time
 
-void TrajectoryEngine::spend(double seconds) {
+void TrajectoryEngine::spend(double seconds, double busy) {
     seconds_ += seconds;
+    busy_ += busy;
     spindles_.advance(seconds);
 }
 
@@ -119,7 +131,7 @@ double TrajectoryEngine::advance(double seconds) {
     double remaining = seconds;
     while (remaining > 0.0) {
         if (queue_.empty()) {
-            spend(remaining);
+            spend(remaining, 0.0);
             return seconds;
         }
         QueueItem& item = queue_.front();
@@ -135,6 +147,9 @@ double TrajectoryEngine::advance(double seconds) {
             case QueueItem::Kind::Action:
                 used = runAction(item, remaining, finished);
                 break;
+            case QueueItem::Kind::Timed:
+                used = runTimed(item, remaining, finished);
+                break;
         }
         remaining = used >= remaining ? 0.0 : remaining - used;
         if (finished) {
@@ -149,13 +164,17 @@ double TrajectoryEngine::runMove(QueueItem& move, double room, bool& finished) {
     if (!planned_) replanFront();
     const double left = profile_.reachesEnd() ? profile_.duration() - profileTime_ : kForever;
     if (left <= room) {
-        spend(std::max(0.0, left));
+        spend(std::max(0.0, left), std::max(0.0, left));
         move.geometry.machinePoint(move.geometry.length(), position_);
         velocity_ = profile_.endVelocity();
         finished = true;
         return std::max(0.0, left);
     }
-    spend(room);
+    // A profile that comes to rest short of the end (hold, override 0 %)
+    // stands after its duration: the braking is busy time, the standstill not.
+    const double busy =
+        profile_.reachesEnd() ? room : std::clamp(profile_.duration() - profileTime_, 0.0, room);
+    spend(room, busy);
     profileTime_ += room;
     profile_.sample(profileTime_, pathS_, velocity_);
     move.geometry.machinePoint(pathS_, position_);
@@ -165,11 +184,11 @@ double TrajectoryEngine::runMove(QueueItem& move, double room, bool& finished) {
 double TrajectoryEngine::runDwell(QueueItem& dwell, double room, bool& finished) {
     const double left = dwell.seconds - dwelt_;
     if (left <= room) {
-        spend(std::max(0.0, left));
+        spend(std::max(0.0, left), std::max(0.0, left));
         finished = true;
         return std::max(0.0, left);
     }
-    spend(room);
+    spend(room, room);
     dwelt_ += room;
     return room;
 }
@@ -189,11 +208,40 @@ double TrajectoryEngine::runAction(QueueItem& item, double room, bool& finished)
     }
     const double left = spindles_.secondsToSpeed(action.spindle);
     if (left <= room) {
-        spend(left);
+        spend(left, left);
         finished = spindles_.atSpeed(action.spindle);
         return left;
     }
-    spend(room);
+    spend(room, room);
+    return room;
+}
+
+double TrajectoryEngine::rateOf(const QueueItem& item) const {
+    if (held_) return 0.0;
+    return (item.rapid ? rapidOverride_ : feedOverride_) / 100.0;
+}
+
+double TrajectoryEngine::runTimed(QueueItem& timed, double room, bool& finished) {
+    const double travel = timed.fraction * timed.geometry.length();
+    const double rate = rateOf(timed);
+    const double left = timed.seconds - dwelt_;
+    if (!(left > 0.0) || (rate > 0.0 && left / rate <= room)) {
+        const double used = left > 0.0 ? left / rate : 0.0;
+        spend(used, used);
+        dwelt_ = timed.seconds;
+        timed.geometry.machinePoint(travel, position_);
+        velocity_ = 0.0;
+        finished = true;
+        return used;
+    }
+    if (rate > 0.0) {
+        spend(room, room);
+        dwelt_ += room * rate;
+    } else {
+        spend(room, 0.0);  // held or at 0 %: the axes stand
+    }
+    timed.geometry.machinePoint(travel * dwelt_ / timed.seconds, position_);
+    velocity_ = travel / timed.seconds * rate;
     return room;
 }
 
@@ -202,7 +250,7 @@ void TrajectoryEngine::finishFront() {
     lastWhere_ = item.where;
     lastBlock_ = item.blockIndex;
     if (item.kind == QueueItem::Kind::Action) reached_.push_back(item.action.tag);
-    const bool flowsOut = item.kind == QueueItem::Kind::Move ||
+    const bool flowsOut = item.kind == QueueItem::Kind::Move ||  // Timed ends at rest
                           (item.kind == QueueItem::Kind::Action && !item.action.stopsPath);
     queue_.popFront();
     planned_ = false;
@@ -259,12 +307,49 @@ void TrajectoryEngine::stop() {
 
 // ------------------------------------------------------------------ state
 
+double TrajectoryEngine::secondsToDrain() const {
+    double total = 0.0;
+    double v = velocity_;  // velocity carried into the next move
+    for (std::size_t i = 0; i < queue_.size(); ++i) {
+        const QueueItem& item = queue_.at(i);
+        const double done = i == 0 ? dwelt_ : 0.0;
+        switch (item.kind) {
+            case QueueItem::Kind::Move: {
+                SegmentProfile profile;
+                const double s = i == 0 ? pathS_ : 0.0;
+                profile.plan(s, v, item.geometry.length() - s, capOf(item), item.exitLimit,
+                             item.limits.acceleration);
+                if (!profile.reachesEnd()) return kForever;
+                total += profile.duration();
+                v = profile.endVelocity();
+                break;
+            }
+            case QueueItem::Kind::Dwell:
+                total += std::max(0.0, item.seconds - done);
+                v = 0.0;
+                break;
+            case QueueItem::Kind::Timed: {
+                const double rate = rateOf(item);
+                if (!(rate > 0.0)) return kForever;
+                total += std::max(0.0, item.seconds - done) / rate;
+                v = 0.0;
+                break;
+            }
+            case QueueItem::Kind::Action:
+                if (item.action.stopsPath) v = 0.0;
+                break;
+        }
+    }
+    return total;
+}
+
 double TrajectoryEngine::position(int axis) const {
     return axis >= 0 && axis < kMaxAxes ? position_[static_cast<std::size_t>(axis)] : 0.0;
 }
 
 bool TrajectoryEngine::moving() const {
-    return !queue_.empty() && queue_.front().kind == QueueItem::Kind::Move;
+    return !queue_.empty() && (queue_.front().kind == QueueItem::Kind::Move ||
+                               queue_.front().kind == QueueItem::Kind::Timed);
 }
 
 const QueueItem* TrajectoryEngine::currentMove() const {

@@ -40,6 +40,11 @@ class TrajectoryEngine {
     void pushDwell(const SourceLocation& where, double seconds);
     /// A machine action; its tag is reported by takeReached() when it is executed.
     void pushAction(const SourceLocation& where, const MachineAction& action);
+    /// A move whose course is already known (adaptive feed control, MOT-011):
+    /// from rest to rest, `fraction` (0..1) of its path in `seconds` at 100 %
+    /// override, at a constant velocity; the feed (G1/G2/G3) or rapid (G0)
+    /// override scales its time, feed hold stops it at once.
+    void pushTimedMove(const Motion& motion, double seconds, double fraction);
 
     // --- time ---
     /// Moves everything on by up to `seconds` and returns the time taken. It
@@ -66,7 +71,18 @@ class TrajectoryEngine {
     // --- the state ---
     /// Nothing queued: every move and dwell is done, the axes are at rest.
     bool idle() const { return queue_.empty(); }
+    /// Every second advance() was given (since construction or resetClock()).
     double seconds() const { return seconds_; }
+    /// Busy time: the seconds something was queued, except where the axes
+    /// stood on a move under feed hold or at override 0 % (the operator's
+    /// wait, as at M00, is no machine time; docs/decisions/station.md ST-003).
+    double busySeconds() const { return busy_; }
+    /// Sets seconds() and busySeconds() to 0.
+    void resetClock() { seconds_ = busy_ = 0.0; }
+    /// How long the queue takes from now if nothing changes (no override
+    /// change, no hold; spindle waits not counted); infinite while the axes
+    /// stand for good (hold, override 0 %).
+    double secondsToDrain() const;
     /// Machine positions (mm, degrees for rotary axes).
     const Position& position() const { return position_; }
     double position(int axis) const;
@@ -78,8 +94,13 @@ class TrajectoryEngine {
     double distanceToGo(int axis) const;
     /// The entry being executed, or the last one executed when idle.
     const SourceLocation& currentLocation() const;
+    /// Forgets the last executed entry (a new run: nothing executed yet).
+    void clearLocation() {
+        lastWhere_ = {};
+        lastBlock_ = 0;
+    }
     std::uint32_t currentBlockIndex() const;
-    /// True while a move is being executed (its geometry is currentMove()).
+    /// True while a move (or timed move) is being executed (its geometry is currentMove()).
     bool moving() const;
     const QueueItem* currentMove() const;
     /// Path distance travelled along the current move.
@@ -103,10 +124,14 @@ class TrajectoryEngine {
     void afterPlanChange(bool frontChanged);
     /// Caps changed (override, hold): the whole queue and the front from where it is.
     void replanAll();
-    void spend(double seconds);
+    /// Time passes; `busy` of it counts as busy time.
+    void spend(double seconds, double busy);
     double runMove(QueueItem& move, double room, bool& finished);
     double runDwell(QueueItem& dwell, double room, bool& finished);
     double runAction(QueueItem& action, double room, bool& finished);
+    double runTimed(QueueItem& timed, double room, bool& finished);
+    /// Override of `item` as a factor (0 under feed hold).
+    double rateOf(const QueueItem& item) const;
     void finishFront();
 
     MotionLimits limits_;
@@ -118,10 +143,11 @@ class TrajectoryEngine {
     double plannedExit_ = 0.0;
     double pathS_ = 0.0;
     double velocity_ = 0.0;
-    double dwelt_ = 0.0;          ///< seconds of the front dwell done
+    double dwelt_ = 0.0;          ///< seconds of the front dwell (timed move at 100 %) done
     bool actionApplied_ = false;  ///< the front action's spindle change is made
     Position position_{};
     double seconds_ = 0.0;
+    double busy_ = 0.0;
     double feedOverride_ = 100.0;
     double rapidOverride_ = 100.0;
     bool held_ = false;
