@@ -53,7 +53,8 @@ void MotionOutput::motion(const core::Motion& motion) {
     if (stopped_) {  // AFC-012: the record shows where the axes stopped
         reached = motion;
         for (int i = 0; i < motion.axisCount && i < core::kMaxAxes; ++i)
-            reached.end[static_cast<std::size_t>(i)] = machine_->position(i);
+            reached.end[static_cast<std::size_t>(i)] =
+                machine_->lastMoveEnd()[static_cast<std::size_t>(i)];
         written = &reached;
     }
     if (mode_ == MotionMode::Json && json_ != nullptr) writeJson(*written);

@@ -1,6 +1,8 @@
 #include "cnc_core/cell/Station.h"
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 
 #include "cnc_core/afc/AdaptiveFeedControl.h"
 #include "cnc_core/afc/AfcMotion.h"
@@ -70,6 +72,28 @@ bool Station::press(ControlKey key) {
     if (key == ControlKey::ControlReset) machine_.stop();
     ++revision_;
     return ok;
+}
+
+void Station::setFeedOverride(int percent) {
+    machine_.setFeedOverride(percent);
+    ++revision_;
+}
+
+int Station::feedOverride() const {
+    return static_cast<int>(std::lround(machine_.feedOverride()));
+}
+
+int Station::feedOverrideMax() const {
+    return static_cast<int>(std::lround(machine_.feedOverrideMax()));
+}
+
+void Station::setRapidOverride(int percent) {
+    machine_.setRapidOverride(percent);
+    ++revision_;
+}
+
+int Station::rapidOverride() const {
+    return static_cast<int>(std::lround(machine_.rapidOverride()));
 }
 
 bool Station::selectProgram(int number) {
@@ -142,6 +166,12 @@ void Station::reset() {
     waitingAxis_.clear();
     machine_.stop();
     machine_.reset();
+    // The axes stopped where they were, mid-block perhaps: the next move
+    // starts there (the interpreter took the block end for granted).
+    std::array<double, kMaxAxes> where{};
+    for (int axis = 0; axis < kMaxAxes; ++axis)
+        where[static_cast<std::size_t>(axis)] = machine_.position(axis);
+    interpreter_.takeMachinePositions(where);
     lastProgram_.reset();
     control_.setCurrentBlock({});
     ++revision_;
@@ -162,7 +192,11 @@ double Station::advance(double seconds, std::uint64_t maxBlocks) {
     const double busyBefore = machine_.seconds();
     for (;;) {
         const std::uint64_t before = blocks;
+        const RestartPhase phase = restartPhase_;
         advanceRestart(blocks, maxBlocks);
+        // State re-established: the call ends at that instant, before the
+        // program runs on, so the screens see the axes at the re-entry point.
+        if (restartPhase_ != phase && restartPhase_ == RestartPhase::Reestablished) break;
         feed(blocks, maxBlocks);
         settle();
         // Out of blocks while the machine still wants more: the station
@@ -201,7 +235,10 @@ void Station::abortRestart() {
 
 bool Station::jogRestart(int axis, double distance) {
     if (axis < 0 || axis >= kMaxAxes) return false;
-    const bool ok = restart_.jog(axis, machine_.position(axis) + distance);
+    // From where the last jog goes (the axis may still be on its way there).
+    const double from = machine_.idle() ? machine_.position(axis)
+                                        : machine_.lastMoveEnd()[static_cast<std::size_t>(axis)];
+    const bool ok = restart_.jog(axis, from + distance);
     if (ok) ++revision_;
     return ok;
 }
@@ -220,14 +257,17 @@ void Station::advanceRestart(std::uint64_t& blocks, std::uint64_t maxBlocks) {
         restart_.advance(maxBlocks > blocks ? maxBlocks - blocks : 0);
         blocks += restart_.computing().blocksSoFar() - before;
     } else if (phase == RestartPhase::Adjusting || phase == RestartPhase::Repositioning) {
-        // ADJUST and REPOS move the axes: one block whenever the machine wants more.
-        do {
+        // ADJUST and REPOS move the axes block by block, each when the
+        // machine has finished the one before (no look-ahead): the sequence
+        // sees its phase end (manual mode, state re-established) only when
+        // the axes are really there.
+        while (machine_.idle() && blocks < maxBlocks && !restart_.held() &&
+               (restart_.phase() == RestartPhase::Adjusting ||
+                restart_.phase() == RestartPhase::Repositioning)) {
             const std::uint64_t before = restart_.sequenceBlocks();
             restart_.advance(1);
             blocks += std::max<std::uint64_t>(1, restart_.sequenceBlocks() - before);
-        } while (machine_.wantsMore() && blocks < maxBlocks && !restart_.held() &&
-                 (restart_.phase() == RestartPhase::Adjusting ||
-                  restart_.phase() == RestartPhase::Repositioning));
+        }
     } else {
         restart_.advance(0);  // an SPS scan while the sequence waits for the operator
     }

@@ -73,6 +73,17 @@ class Station : private ProgramRunner {
     /// than `seconds` when the block bound was reached first (the station
     /// lags; the next call goes on from there).
     double advance(double seconds, std::uint64_t maxBlocks = kBlocksPerAdvance);
+    // ---- the operator's overrides (docs/decisions/motion.md MOT-006): they
+    // act at once on the moving axes, whoever runs them.
+    /// Feed override of G1/G2/G3 in percent, clamped to 0 ... feedOverrideMax().
+    void setFeedOverride(int percent);
+    int feedOverride() const;
+    /// Largest feed override of the process (B074, 100 ... 200 %).
+    int feedOverrideMax() const;
+    /// Rapid traverse override of G0 in percent, clamped to 0 ... 100.
+    void setRapidOverride(int percent);
+    int rapidOverride() const;
+
     /// A program or MDI entry runs (active, not held, not stopped).
     bool running() const { return run_ != Run::None && feeding_; }
     /// Something needs time: a run, or the machine working off its queue.

@@ -187,6 +187,8 @@ void Interpreter::emitMotion(const Program& program, std::uint32_t index) {
     m.center1 = arc ? plan_.center1 : 0.0;
     m.center2 = arc ? plan_.center2 : 0.0;
     m.feed = plan_.feedRate;
+    m.exactStop = state_.modal.g[kGroupExactStop] == 9;
+    m.blendCorners = state_.modal.g[kGroupAcceleration] == 7;
     m.transformation = state_.modal.transformation.kind();
     m.effectiveRadius = state_.modal.transformation.effectiveRadius();
     m.transformAxis1 =

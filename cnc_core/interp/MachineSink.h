@@ -44,6 +44,10 @@ struct Motion {
     bool inserted = false;  ///< a corner element the control inserted (runtime program's arrow)
     std::array<double, kMaxAxes> programmedEnd{};
     std::array<double, kMaxAxes> toolOffset{};  ///< axis position minus tool centre (edge, length)
+    /// Block transition in force (groups 10 / 11, docs/decisions/motion.md
+    /// MOT-005): G9 exact stop, G7 corners not at rest (with G9 only).
+    bool exactStop = false;
+    bool blendCorners = false;
 };
 
 /// Programmed end position of `axis` (the contour point, without any tool compensation).

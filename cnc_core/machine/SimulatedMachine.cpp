@@ -14,6 +14,39 @@ namespace {
 constexpr std::size_t kAuxKept = 200;
 constexpr double kPi = 3.14159265358979323846;
 
+/// What an auxiliary function does on the machine (MOT-007): S sets a
+/// spindle's speed without stopping the path; Mj03 / Mj04 start spindle j
+/// (j = 0: spindle 1) and the program waits until it is at speed; Mj05 and
+/// Mj19 stop it; every M, T, E and Q waits for the SPS with the axes at rest.
+motion::MachineAction machineAction(const AuxOutput& output, const motion::MotionLimits& limits,
+                                    std::uint32_t tag) {
+    using Rotation = motion::SpindleSet::Rotation;
+    motion::MachineAction action;
+    action.tag = tag;
+    if (output.type == 'S') {
+        action.spindle = output.spindle;
+        action.speed = std::abs(output.value);
+        action.stopsPath = false;
+        return action;
+    }
+    if (output.type != 'M' || !(output.value >= 0 && output.value < 1000)) return action;
+    const int value = static_cast<int>(output.value);
+    const int function = value % 100;
+    const int spindle = value / 100 == 0 ? 1 : value / 100;
+    if (spindle > 3) return action;
+    const bool present = limits.spindles[static_cast<std::size_t>(spindle)].present;
+    if (function == 3 || function == 4) {
+        action.spindle = spindle;
+        action.rotation =
+            static_cast<int>(function == 3 ? Rotation::Clockwise : Rotation::CounterClockwise);
+        action.waitForSpindle = present;
+    } else if (function == 5 || function == 19) {
+        action.spindle = spindle;
+        action.rotation = static_cast<int>(Rotation::Stopped);
+    }
+    return action;
+}
+
 /// Under G32 the feed is a path feed on the developed cylinder surface: the
 /// rotary axis of the transformed plane counts in millimetres there (angle x
 /// RI, signed by the polar direction as the interpreter develops it).
@@ -52,160 +85,95 @@ double motionSeconds(const Motion& motion, const ProcessConfig& config) {
 }
 
 SimulatedMachine::SimulatedMachine(const ProcessConfig& config)
-    : config_(config), material_(std::make_unique<AfcMaterial>(config)) {}
+    : config_(config),
+      engine_(motion::MotionLimits::fromConfig(config)),
+      material_(std::make_unique<AfcMaterial>(config)) {}
 
 SimulatedMachine::~SimulatedMachine() = default;
 
 void SimulatedMachine::motion(const Motion& m) {
+    ++motions_;
     lastReportsAfc_ = afc_ && (afc_->active() || afc_->idleMeasurementRequested());
     const double planned = motionSeconds(m, config_);
-    ++motions_;
     lastAdapted_ = false;
     lastFraction_ = 1.0;
     lastFeed_ =
         m.type == MotionType::Rapid && planned > 0 ? motionPathLength(m) / planned * 60.0 : m.feed;
-    // G26 controls, ITM measures, the trend observes the feed moves; with
-    // none of these the move is a plain one (same result, no cost).
-    const bool observed = afc_ && (afc_->active() || afc_->idleMeasurementRequested() ||
-                                   (recorder_ && m.type != MotionType::Rapid));
-    const bool adaptive = observed && afc_->available() && planned > 0;
-    current_ = m.where;
-    remainingIsRapid_ = m.type == MotionType::Rapid;
-    remainingIsDwell_ = false;
-    if (adaptive) {
-        remaining_ += adaptiveMove(m, planned);
-        return;
-    }
-    remaining_ += planned;
     for (int i = 0; i < m.axisCount && i < kMaxAxes; ++i)
-        position_[i] = m.end[i];
-    if (afc_) afc_->setClock(seconds_ + remaining_);  // the end of the queued work
+        lastEnd_[static_cast<std::size_t>(i)] = m.end[static_cast<std::size_t>(i)];
+    if (afc_ && afc_->available() && planned > 0) {
+        // G26 controls and ITM measures: the move's course is theirs.
+        if (afc_->active() || afc_->idleMeasurementRequested()) return adaptiveMove(m, planned);
+    }
+    if (afc_ && afc_->available() && planned > 0 && recorder_ && m.type != MotionType::Rapid) {
+        observeMove(m, planned);  // the trend observes the torque; the move is a plain one
+    } else {
+        afcClock_ = std::max(afcClock_, seconds()) + planned;
+        if (afc_) afc_->setClock(afcClock_);  // the end of the queued work
+    }
+    engine_.pushMove(m, {m.exactStop, m.blendCorners});
 }
 
 double SimulatedMachine::advance(double seconds) {
-    if (seconds <= 0.0) return 0.0;
-    const double percent = remainingIsDwell_   ? 100.0
-                           : remainingIsRapid_ ? rapidOverride_
-                                               : feedOverride_;
-    if (idle() || held_ || percent <= 0.0) return seconds;  // standing: no busy time
-    const double rate = percent / 100.0;
-    const double needed = remaining_ / rate;
-    if (needed <= seconds) {  // the queued output is done within this call
-        remaining_ = 0.0;
-        seconds_ += needed;
-        return needed;
+    if (!(seconds > 0.0)) return 0.0;
+    // The station filled the queue as far as it could: with room left it
+    // has nothing to give until the queue runs empty.
+    const bool hadRoom = engine_.wantsMore();
+    double left = seconds;
+    while (left > 0.0) {
+        const double used = engine_.advance(left);
+        left = used >= left ? 0.0 : left - used;
+        collectReached();
+        if (engine_.idle() || (!hadRoom && engine_.wantsMore())) break;
     }
-    remaining_ -= seconds * rate;
-    seconds_ += seconds;
-    return seconds;
+    return seconds - left;
+}
+
+void SimulatedMachine::collectReached() {
+    for (std::uint32_t tag : engine_.takeReached()) {
+        if (tag == 0 || pendingAux_.empty()) continue;  // a command, no auxiliary function
+        if (aux_.size() == kAuxKept) aux_.erase(aux_.begin());
+        aux_.push_back(pendingAux_.front());
+        pendingAux_.pop_front();
+    }
 }
 
 void SimulatedMachine::stop() {
-    remaining_ = 0.0;
-    held_ = false;
-}
-
-double SimulatedMachine::distanceToGo(int) const {
-    return 0.0;  // the interim machine's axes are at the end point of the move
-}
-
-double SimulatedMachine::actualFeed() const {
-    if (idle() || held_ || remainingIsDwell_) return 0.0;
-    return lastFeed_ * (remainingIsRapid_ ? rapidOverride_ : feedOverride_) / 100.0;
-}
-
-void SimulatedMachine::attachAdaptiveFeed(AdaptiveFeedControl* afc, AfcTrendRecorder* recorder) {
-    afc_ = afc;
-    recorder_ = recorder;
-}
-
-double SimulatedMachine::referenceSpeedFraction(const Motion& m) const {
-    const int significance = afc_->effectiveSettings().referenceAxis;
-    const std::string name = afcAxisName(significance);
-    for (std::size_t i = 0; i < config_.axes.size() && i < kMaxAxes; ++i) {
-        const AxisConfig& axis = config_.axes[i];
-        if (significance >= 10 && axis.kind == AxisKind::Spindle &&
-            axis.spindleIndex == significance - 9)
-            return axis.maxSpeed > 0
-                       ? spindleSpeed_[static_cast<std::size_t>(axis.spindleIndex)] / axis.maxSpeed
-                       : 0.0;
-        if (significance < 10 && axis.name == name) {
-            const double travel = std::abs(m.end[i] - m.start[i]);
-            const double length = motionPathLength(m);
-            const double feed = length > 0 ? lastFeed_ * travel / length : 0.0;
-            return axis.maxVelocity > 0 ? feed / axis.maxVelocity : 0.0;
-        }
-    }
-    return 0.0;
-}
-
-double SimulatedMachine::accelerationSeconds(const Motion& m, double feed) const {
-    double weakest = 0.0;
-    const int count = std::min<int>(m.axisCount, static_cast<int>(config_.axes.size()));
-    for (int i = 0; i < count; ++i) {
-        const double a = config_.axes[static_cast<std::size_t>(i)].maxAcceleration;
-        if (std::abs(m.end[i] - m.start[i]) > 1e-9 && a > 0 && (weakest == 0.0 || a < weakest))
-            weakest = a;
-    }
-    return weakest > 0 ? feed / 60.0 / weakest : 0.0;
-}
-
-double SimulatedMachine::adaptiveMove(const Motion& m, double planned) {
-    AfcMoveInput move;
-    move.length = motionPathLength(m);
-    move.feed = m.type == MotionType::Rapid ? lastFeed_ : m.feed;
-    move.plannedSeconds = planned;
-    move.accelerationSeconds = accelerationSeconds(m, lastFeed_);
-    move.speedFraction = referenceSpeedFraction(m);
-    move.engagement = cuttingEngagement(config_);
-    move.materialKnown = material_->known();
-    const MaterialShare share = material_->along(m);
-    move.cutFrom = share.from;
-    move.cutTo = share.to;
-    move.feedMove = m.type != MotionType::Rapid;
-    move.startTime = seconds_ + remaining_;  // after what is queued
-    const AfcMoveResult result = simulateAfcMove(*afc_, move, recorder_);
-    // AFC-012: after 509 / 510 the axes stand where they stopped, on the path.
-    const std::array<double, kMaxAxes> reached = motionPointAt(m, result.fraction);
-    for (int i = 0; i < m.axisCount && i < kMaxAxes; ++i)
-        position_[i] = reached[i];
-    lastFeed_ = result.meanFeed;
-    lastAdapted_ = result.adapted;
-    lastFraction_ = result.fraction;
-    return result.seconds;
+    engine_.stop();
+    for (int i = 0; i < kMaxAxes; ++i)  // the axes stand where they stopped
+        lastEnd_[static_cast<std::size_t>(i)] = engine_.position(i);
+    pendingAux_.clear();
+    afcClock_ = seconds();
 }
 
 void SimulatedMachine::auxiliary(const AuxOutput& output) {
     if (output.type == 'S' && output.spindle >= 1 && output.spindle <= 3)
         spindleSpeed_[static_cast<std::size_t>(output.spindle)] = std::abs(output.value);
-    if (aux_.size() == kAuxKept) aux_.erase(aux_.begin());
-    aux_.push_back(output);
+    pendingAux_.push_back(output);
+    engine_.pushAction(output.where, machineAction(output, engine_.limits(), ++nextTag_));
 }
 
 void SimulatedMachine::dwell(const SourceLocation& where, double seconds) {
-    current_ = where;
-    if (seconds <= 0) return;
-    remaining_ += seconds;
-    remainingIsDwell_ = true;
-    remainingIsRapid_ = false;
-    if (afc_) afc_->setClock(seconds_ + remaining_);
+    if (!(seconds > 0)) return;
+    engine_.pushDwell(where, seconds);
+    afcClock_ = std::max(afcClock_, this->seconds()) + seconds;
+    if (afc_) afc_->setClock(afcClock_);
 }
 
-void SimulatedMachine::command(const SourceLocation&, const std::string&, const std::string&) {}
-
-double SimulatedMachine::position(int index) const {
-    return index >= 0 && index < kMaxAxes ? position_[index] : 0.0;
+void SimulatedMachine::command(const SourceLocation& where, const std::string&,
+                               const std::string&) {
+    // AXD, MTP, TCH, GAX ...: the axes come to rest before it (MOT-007).
+    engine_.pushAction(where, motion::MachineAction{});
 }
 
 void SimulatedMachine::reset() {
     if (recorder_) recorder_->clear();  // a new run starts a new trend at time 0
-    seconds_ = 0.0;
-    remaining_ = 0.0;
-    held_ = false;
+    engine_.resetClock();
+    engine_.clearLocation();
     motions_ = 0;
     aux_.clear();
+    afcClock_ = 0.0;
     if (afc_) afc_->setClock(0.0);
-    current_ = {};
 }
 
 }  // namespace mtc::core

@@ -2,11 +2,14 @@
 
 #include <array>
 #include <cstdint>
+#include <deque>
 #include <memory>
 #include <vector>
 
+#include "cnc_core/afc/AfcMotion.h"
 #include "cnc_core/interp/MachineSink.h"
 #include "cnc_core/machine/MachineConfig.h"
+#include "cnc_core/motion/TrajectoryEngine.h"
 
 namespace mtc::core {
 
@@ -22,24 +25,29 @@ class AfcTrendRecorder;
 double motionSeconds(const Motion& motion, const ProcessConfig& config);
 
 /// The machine behind a station's interpreter (cnc_core/cell/Station): it
-/// takes every output into a bounded queue and works it off in simulated
-/// time when the station calls advance(). The contract the station relies on
-/// (TEAM.md, station <-> motion-tools):
+/// takes every output into the bounded look-ahead queue of the trajectory
+/// engine (cnc_core/motion, docs/decisions/motion.md) and works it off in
+/// simulated time when the station calls advance(): the axes move
+/// continuously under their velocity and acceleration limits, auxiliary
+/// functions and commands happen when the machine reaches them, in program
+/// order with the moves. The contract the station relies on (TEAM.md,
+/// station <-> motion):
 ///  - the interpreter may send the next block while wantsMore() is true; a
 ///    block's outputs are always taken, even when they overfill the queue;
 ///  - advance(dt) moves on by at most dt and returns the time it used; it
-///    returns early the moment the queue has room again or runs empty, so
-///    the station refills it at exactly that simulated instant. The result
-///    must not depend on how the time is cut into advance() calls (the CLI
-///    advances in one call what the panel does in 20 ms ticks);
-///  - seconds() counts only busy time (moving, dwelling): a program takes
-///    the same simulated time whether the operator waits at M00 or not;
-///  - hold() / resume() is feed hold, stop() (Control reset) empties the
-///    queue at once, positions stay where the axes are.
-/// Interim implementation until the time-based engine (cnc_core/motion)
-/// replaces it: a queue of one output, the axes jump to the end point when a
-/// move is queued and the move then takes its duration (motionSeconds(), at
-/// the override) before the next one is taken.
+///    returns early the moment the queue has room again (when it had none)
+///    or runs empty, so the station refills it at exactly that simulated
+///    instant. The result does not depend on how the time is cut into
+///    advance() calls (the CLI advances in one call what the panel does in
+///    20 ms ticks);
+///  - seconds() counts only busy time (moving, dwelling, waiting for a
+///    spindle): a program takes the same simulated time whether the operator
+///    waits at M00 or holds the feed or not;
+///  - hold() brakes the axes on the path, resume() goes on mid-block,
+///    stop() (Control reset) stops them at once and empties the queue.
+/// Moves under adaptive feed control (G26, ITM) keep their bounded
+/// simulation (cnc_core/afc/AfcMotion.h): worked out when queued, executed
+/// as a timed move from rest to rest (MOT-011).
 class SimulatedMachine : public MachineSink {
   public:
     explicit SimulatedMachine(const ProcessConfig& config);
@@ -54,38 +62,46 @@ class SimulatedMachine : public MachineSink {
                  const std::string& arguments) override;
 
     // ---- time (driven by the station)
-    /// True while the queue has room for the next block's outputs.
-    bool wantsMore() const { return idle(); }
+    /// True while the look-ahead queue has room for the next block's outputs.
+    bool wantsMore() const { return engine_.wantsMore(); }
     /// Moves on by at most `seconds` of simulated time; returns the time
     /// used (less when the queue got room or ran empty first).
     double advance(double seconds);
     /// Nothing queued: the axes stand.
-    bool idle() const { return remaining_ <= 0.0; }
-    /// Feed hold (Stop): the queued work waits; resume() continues it.
-    void hold() { held_ = true; }
-    void resume() { held_ = false; }
-    bool held() const { return held_; }
-    /// Control reset: the queue is emptied at once; positions stay.
+    bool idle() const { return engine_.idle(); }
+    /// Feed hold (Stop): the axes brake on the path; resume() continues mid-block.
+    void hold() { engine_.hold(); }
+    void resume() { engine_.resume(); }
+    bool held() const { return engine_.held(); }
+    /// Control reset: the axes stop at once, the queue is emptied (queued
+    /// auxiliary functions never reach the SPS); positions stay.
     void stop();
-    /// Feed override in percent of the programmed feed (0 ... configured maximum).
-    void setFeedOverride(double percent) { feedOverride_ = percent < 0 ? 0.0 : percent; }
-    double feedOverride() const { return feedOverride_; }
-    /// Rapid override in percent of the rapid velocity.
-    void setRapidOverride(double percent) { rapidOverride_ = percent < 0 ? 0.0 : percent; }
-    double rapidOverride() const { return rapidOverride_; }
+    /// Feed override in percent of the programmed feed (0 ... feedOverrideMax()).
+    void setFeedOverride(double percent) { engine_.setFeedOverride(percent); }
+    double feedOverride() const { return engine_.feedOverride(); }
+    /// Largest feed override of the process (B074, MOT-006).
+    double feedOverrideMax() const { return engine_.limits().feedOverrideMax; }
+    /// Rapid override in percent of the rapid velocity (0 ... 100).
+    void setRapidOverride(double percent) { engine_.setRapidOverride(percent); }
+    double rapidOverride() const { return engine_.rapidOverride(); }
     /// Busy simulated seconds since construction or the last reset().
-    double seconds() const { return seconds_; }
-    /// Position of machine axis `index` (order of ProcessConfig::axes).
-    double position(int index) const;
+    double seconds() const { return engine_.busySeconds(); }
+    /// Position of machine axis `index` (order of ProcessConfig::axes), now.
+    double position(int index) const { return engine_.position(index); }
     /// Distance machine axis `index` still has to go in the current move.
-    double distanceToGo(int index) const;
+    double distanceToGo(int index) const { return engine_.distanceToGo(index); }
     /// Path feed the axes move at now, mm/min (0 standing, dwelling or held).
-    double actualFeed() const;
+    double actualFeed() const { return engine_.velocity() * 60.0; }
     /// Program, block and line of the output being worked off (the last one
     /// when idle; empty before the first).
-    const SourceLocation& currentLocation() const { return current_; }
+    const SourceLocation& currentLocation() const { return engine_.currentLocation(); }
+    /// The spindles S1..S3 (actual speeds ramp in time).
+    const motion::SpindleSet& spindles() const { return engine_.spindles(); }
+    /// The trajectory engine (its queue, for views and tests).
+    const motion::TrajectoryEngine& engine() const { return engine_; }
     std::uint64_t motionCount() const { return motions_; }
-    /// The auxiliary functions sent to the SPS, oldest first (last 200 kept).
+    /// The auxiliary functions the machine has reached (sent to the SPS),
+    /// oldest first (last 200 kept).
     const std::vector<AuxOutput>& recentAux() const { return aux_; }
     /// Clears the clock, the output log and the attached trend recorder;
     /// positions stay where they are.
@@ -99,39 +115,46 @@ class SimulatedMachine : public MachineSink {
     double lastMoveFeed() const { return lastFeed_; }
     /// The last move was slowed down by G26.
     bool lastMoveAdapted() const { return lastAdapted_; }
-    /// Share of the last move's path the axes travelled (< 1: an error of
-    /// adaptive feed control stopped them; position() says where).
+    /// Share of the last move's path the axes travel (< 1: an error of
+    /// adaptive feed control stops them at lastMoveEnd()).
     double lastMoveFraction() const { return lastFraction_; }
+    /// Where the axes stand after the last queued move (its end, or where
+    /// adaptive feed control stopped it), machine positions.
+    const std::array<double, kMaxAxes>& lastMoveEnd() const { return lastEnd_; }
     /// The last move ran with G26 on or with an idle torque measurement
     /// (ITM) requested: its feed is the one adaptive feed control gave.
     bool lastMoveReportsAfc() const { return lastReportsAfc_; }
 
   private:
-    /// The move under adaptive feed control; returns its duration and
-    /// sets the positions (short of the end when an error stopped it).
-    double adaptiveMove(const Motion& motion, double planned);
+    /// G26 / ITM: the move is worked out by adaptive feed control now and
+    /// queued as a timed move.
+    void adaptiveMove(const Motion& motion, double planned);
+    /// G25 with a trend recorder: the torque is only observed (trend, 007).
+    void observeMove(const Motion& motion, double planned);
+    AfcMoveInput afcInput(const Motion& motion, double planned) const;
     double referenceSpeedFraction(const Motion& motion) const;
     double accelerationSeconds(const Motion& motion, double feed) const;
+    /// Moves the auxiliary functions the engine reached into recentAux().
+    void collectReached();
 
     const ProcessConfig& config_;
+    motion::TrajectoryEngine engine_;
     AdaptiveFeedControl* afc_ = nullptr;
     AfcTrendRecorder* recorder_ = nullptr;
     std::unique_ptr<AfcMaterial> material_;  ///< where the raw part is (engagement)
-    std::array<double, 4> spindleSpeed_{};   ///< last S per spindle 1..3 (rpm)
+    std::array<double, 4> spindleSpeed_{};   ///< last S per spindle 1..3 (rpm), as queued
+    /// Trend clock: where the queued work ends at the programmed feeds
+    /// (start of the next observed move; adaptive moves start at the exact
+    /// end of the queue).
+    double afcClock_ = 0.0;
     double lastFeed_ = 0.0;
     bool lastAdapted_ = false;
     double lastFraction_ = 1.0;
     bool lastReportsAfc_ = false;
-    std::array<double, kMaxAxes> position_{};
-    double seconds_ = 0.0;
-    double remaining_ = 0.0;  ///< work of the queued output, seconds at 100 %
-    bool remainingIsRapid_ = false;
-    bool remainingIsDwell_ = false;
-    bool held_ = false;
-    double feedOverride_ = 100.0;
-    double rapidOverride_ = 100.0;
-    SourceLocation current_;
+    std::array<double, kMaxAxes> lastEnd_{};
     std::uint64_t motions_ = 0;
+    std::uint32_t nextTag_ = 0;         ///< tag of the last queued auxiliary function
+    std::deque<AuxOutput> pendingAux_;  ///< queued, not yet reached (tags in order)
     std::vector<AuxOutput> aux_;
 };
 

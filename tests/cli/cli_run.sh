@@ -91,7 +91,9 @@ json_check "AXIS_NOT_HELD at N0005 line 5, Y moved after GAX" 'd["diagnostics"][
 # position and the actual feed; a last sample at the end.
 printf 'N0001 G1 G90 X10 F600\nN0002 X20\nN0003 G4 F0.5\nN0004 M30\n' >"$TEST_TMP/samples.nc"
 expect_rc 0 "run --sample-ms 250" --json run "$TEST_TMP/samples.nc" --sample-ms 250
-json_check "samples every 0.25 s up to the end, 2.5 s" '[round(s["t"], 6) for s in d["samples"]] == [0.25 * i for i in range(11)] and abs(d["simulated_time"] - 2.5) < 1e-9'
+# 20 mm at 10 mm/s with one ramp up and down at 2500 mm/s^2 (+0.004 s), 0.5 s dwell.
+json_check "samples every 0.25 s up to the end, 2.504 s" '[round(s["t"], 6) for s in d["samples"]] == [0.25 * i for i in range(11)] + [2.504] and abs(d["simulated_time"] - 2.504) < 1e-9'
+json_check "positions in between: X on its way at 10 mm/s" 'abs(d["samples"][4]["position"]["X"] - 9.98) < 1e-9 and abs(d["samples"][6]["position"]["X"] - 14.98) < 1e-9'
 json_check "sample fields" 'all(set(s) == {"t", "program", "block", "position", "feed"} for s in d["samples"])'
 json_check "samples follow the blocks" 'd["samples"][2]["block"] == "N0001" and d["samples"][6]["block"] == "N0002" and d["samples"][9]["block"] == "N0003"'
 json_check "feed while moving, none while dwelling" 'd["samples"][3]["feed"] > 0 and d["samples"][9]["feed"] == 0'

@@ -33,35 +33,55 @@ struct CellFixture {
     Cell cell;
 };
 
-// 10 mm at F600 = 1 s per move.
+// 10 mm at F600 = 1 s per move; the three moves are collinear, so the
+// look-ahead crosses their ends at full feed.
 const char* kThreeMoves =
     "N0001 G1 G90 X10 F600\n"
     "N0002 X20\n"
     "N0003 X30\n"
     "N0004 M30\n";
 
+constexpr double kFeed = 10.0;  // mm/s
+
+/// Path acceleration of a move along X on the demo mill (mm/s^2).
+double xAcceleration(const core::Station& station) {
+    return station.config().axes[0].maxAcceleration;
+}
+
+/// X after `t` seconds of a move from rest at kFeed (past the ramp).
+double xAfter(double t, double a) {
+    return kFeed * t - kFeed * kFeed / (2 * a);
+}
+
 TEST(Station, StartRunsTheProgramInSimulatedTime) {
     CellFixture f;
     core::Station& mill = f.select(0, 1, kThreeMoves);
+    const double a = xAcceleration(mill);
     ASSERT_TRUE(mill.press(ControlKey::Start));
     EXPECT_TRUE(mill.control().programActive());
     EXPECT_EQ(mill.control().signalTable().get("P00SACTIV"), 1);
     mill.advance(0.5);
     EXPECT_EQ(mill.control().currentBlock(), "N0001") << "the block the machine executes";
     EXPECT_NEAR(mill.machine().seconds(), 0.5, 1e-9);
+    EXPECT_NEAR(mill.machine().position(0), xAfter(0.5, a), 1e-9) << "on the way, not at X10";
+    EXPECT_NEAR(mill.machine().distanceToGo(0), 10.0 - xAfter(0.5, a), 1e-9);
+    EXPECT_NEAR(mill.machine().actualFeed(), 600.0, 1e-9);
     mill.advance(1.0);
     EXPECT_EQ(mill.control().currentBlock(), "N0002");
-    EXPECT_EQ(mill.machine().position(0), 20.0);
+    EXPECT_NEAR(mill.machine().position(0), xAfter(1.5, a), 1e-9);
     mill.advance(10.0);
     EXPECT_FALSE(mill.control().programActive());
-    EXPECT_NEAR(mill.machine().seconds(), 3.0, 1e-9) << "busy time only";
+    // 30 mm at 10 mm/s plus the ramps up and down (v/a) once: no stop at N0001/N0002.
+    EXPECT_NEAR(mill.machine().seconds(), 3.0 + kFeed / a, 1e-9) << "busy time only";
     EXPECT_EQ(mill.machine().position(0), 30.0);
+    EXPECT_EQ(mill.machine().actualFeed(), 0.0);
     EXPECT_TRUE(mill.control().alarm().empty()) << mill.control().alarm();
 }
 
-TEST(Station, StopHoldsAndStartResumes) {
+TEST(Station, StopBrakesMidBlockAndStartResumes) {
     CellFixture f;
     core::Station& mill = f.select(0, 1, kThreeMoves);
+    const double a = xAcceleration(mill);
     ASSERT_TRUE(mill.press(ControlKey::Start));
     mill.advance(1.5);
     const double busy = mill.machine().seconds();
@@ -71,14 +91,21 @@ TEST(Station, StopHoldsAndStartResumes) {
     EXPECT_EQ(mill.control().signalTable().get("P00SHOLD"), 1);
     for (int i = 0; i < 50; ++i)
         mill.advance(0.1);
-    EXPECT_EQ(mill.machine().seconds(), busy) << "nothing moves while held";
-    EXPECT_EQ(mill.machine().position(0), x);
+    // The axes brake on the path (v/a seconds, v^2/2a mm) and then stand.
+    EXPECT_NEAR(mill.machine().seconds(), busy + kFeed / a, 1e-9) << "standing is no busy time";
+    EXPECT_NEAR(mill.machine().position(0), x + kFeed * kFeed / (2 * a), 1e-9);
+    EXPECT_EQ(mill.machine().actualFeed(), 0.0);
+    EXPECT_EQ(mill.control().currentBlock(), "N0002") << "held mid-block";
     EXPECT_TRUE(mill.control().programActive());
     ASSERT_TRUE(mill.press(ControlKey::Start));
     EXPECT_FALSE(mill.control().programHeld());
+    mill.advance(0.5);
+    EXPECT_NEAR(mill.machine().actualFeed(), 600.0, 1e-9) << "on its way again";
     mill.advance(10.0);
     EXPECT_FALSE(mill.control().programActive());
-    EXPECT_NEAR(mill.machine().seconds(), 3.0, 1e-9) << "the hold added no busy time";
+    EXPECT_EQ(mill.machine().position(0), 30.0) << "the same end";
+    // One extra stop: braking and starting again cost v/a more than cruising.
+    EXPECT_NEAR(mill.machine().seconds(), 3.0 + 2 * kFeed / a, 1e-9);
 }
 
 TEST(Station, ProgrammedStopAndSingleBlockHoldWhenTheMachineStands) {
@@ -107,12 +134,19 @@ TEST(Station, ControlResetEndsTheRunAtOnce) {
     core::Station& mill = f.select(0, 1, kThreeMoves);
     ASSERT_TRUE(mill.press(ControlKey::Start));
     mill.advance(0.5);
+    const double x = mill.machine().position(0);
     ASSERT_TRUE(mill.press(ControlKey::ControlReset));
     EXPECT_FALSE(mill.control().programActive());
     EXPECT_TRUE(mill.machine().idle());
     EXPECT_FALSE(mill.busy());
     mill.advance(5.0);
-    EXPECT_EQ(mill.machine().position(0), 10.0) << "the axes stay where they are";
+    EXPECT_EQ(mill.machine().position(0), x) << "the axes stay where they are, mid-block";
+    EXPECT_EQ(mill.interpreter().state().modal.machine[0], x) << "the next move starts there";
+    // A new run starts from where the axes stopped: no jump.
+    ASSERT_TRUE(mill.press(ControlKey::Start));
+    mill.advance(0.01);
+    EXPECT_GE(mill.machine().position(0), x);
+    EXPECT_LT(mill.machine().position(0), x + 0.2);
 }
 
 TEST(Station, ARuntimeErrorEndsTheRunWithTheAlarm) {
@@ -136,7 +170,7 @@ TEST(Station, TwoStationsRunAtOnce) {
     EXPECT_TRUE(mill.control().programActive());
     EXPECT_TRUE(lathe.control().programActive());
     f.runInTicks(0.02);
-    EXPECT_NEAR(mill.machine().seconds(), 3.0, 1e-9);
+    EXPECT_NEAR(mill.machine().seconds(), 3.0 + kFeed / xAcceleration(mill), 1e-9);
     EXPECT_GT(lathe.machine().seconds(), 0.0);
     EXPECT_FALSE(lathe.control().programActive());
 }

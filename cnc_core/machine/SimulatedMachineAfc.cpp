@@ -1,0 +1,94 @@
+// SimulatedMachine, adaptive feed control part: moves under G26 / ITM are
+// worked out by the bounded simulation of cnc_core/afc (AfcMotion.h) when
+// they are queued and executed as timed moves (docs/decisions/motion.md
+// MOT-011); under G25 the torque of the feed moves is only observed for the
+// trend.
+#include <algorithm>
+#include <cmath>
+
+#include "cnc_core/afc/AfcMaterial.h"
+#include "cnc_core/afc/AfcMotion.h"
+#include "cnc_core/interp/MotionPath.h"
+#include "cnc_core/machine/SimulatedMachine.h"
+
+namespace mtc::core {
+
+void SimulatedMachine::attachAdaptiveFeed(AdaptiveFeedControl* afc, AfcTrendRecorder* recorder) {
+    afc_ = afc;
+    recorder_ = recorder;
+}
+
+double SimulatedMachine::referenceSpeedFraction(const Motion& m) const {
+    const int significance = afc_->effectiveSettings().referenceAxis;
+    const std::string name = afcAxisName(significance);
+    for (std::size_t i = 0; i < config_.axes.size() && i < kMaxAxes; ++i) {
+        const AxisConfig& axis = config_.axes[i];
+        if (significance >= 10 && axis.kind == AxisKind::Spindle &&
+            axis.spindleIndex == significance - 9)
+            return axis.maxSpeed > 0
+                       ? spindleSpeed_[static_cast<std::size_t>(axis.spindleIndex)] / axis.maxSpeed
+                       : 0.0;
+        if (significance < 10 && axis.name == name) {
+            const double travel = std::abs(m.end[i] - m.start[i]);
+            const double length = motionPathLength(m);
+            const double feed = length > 0 ? lastFeed_ * travel / length : 0.0;
+            return axis.maxVelocity > 0 ? feed / axis.maxVelocity : 0.0;
+        }
+    }
+    return 0.0;
+}
+
+double SimulatedMachine::accelerationSeconds(const Motion& m, double feed) const {
+    double weakest = 0.0;
+    const int count = std::min<int>(m.axisCount, static_cast<int>(config_.axes.size()));
+    for (int i = 0; i < count; ++i) {
+        const double a = config_.axes[static_cast<std::size_t>(i)].maxAcceleration;
+        if (std::abs(m.end[i] - m.start[i]) > 1e-9 && a > 0 && (weakest == 0.0 || a < weakest))
+            weakest = a;
+    }
+    return weakest > 0 ? feed / 60.0 / weakest : 0.0;
+}
+
+AfcMoveInput SimulatedMachine::afcInput(const Motion& m, double planned) const {
+    AfcMoveInput move;
+    move.length = motionPathLength(m);
+    move.feed = m.type == MotionType::Rapid ? lastFeed_ : m.feed;
+    move.plannedSeconds = planned;
+    move.accelerationSeconds = accelerationSeconds(m, lastFeed_);
+    move.speedFraction = referenceSpeedFraction(m);
+    move.engagement = cuttingEngagement(config_);
+    move.materialKnown = material_->known();
+    const MaterialShare share = material_->along(m);
+    move.cutFrom = share.from;
+    move.cutTo = share.to;
+    move.feedMove = m.type != MotionType::Rapid;
+    return move;
+}
+
+void SimulatedMachine::adaptiveMove(const Motion& m, double planned) {
+    AfcMoveInput move = afcInput(m, planned);
+    // It starts when the queue before it is worked off (at the overrides in
+    // force; a hold now does not move it).
+    const double drain = engine_.secondsToDrain();
+    move.startTime = std::max(afcClock_, seconds() + (std::isfinite(drain) ? drain : 0.0));
+    const AfcMoveResult result = simulateAfcMove(*afc_, move, recorder_);
+    // AFC-012: after 509 / 510 the axes stand where they stopped, on the path.
+    const std::array<double, kMaxAxes> reached = motionPointAt(m, result.fraction);
+    for (int i = 0; i < m.axisCount && i < kMaxAxes; ++i)
+        lastEnd_[static_cast<std::size_t>(i)] = reached[static_cast<std::size_t>(i)];
+    lastFeed_ = result.meanFeed;
+    lastAdapted_ = result.adapted;
+    lastFraction_ = result.fraction;
+    afcClock_ = move.startTime + result.seconds;
+    engine_.pushTimedMove(m, result.seconds, result.fraction);
+}
+
+void SimulatedMachine::observeMove(const Motion& m, double planned) {
+    AfcMoveInput move = afcInput(m, planned);
+    move.startTime = std::max(afcClock_, seconds());
+    const AfcMoveResult result = simulateAfcMove(*afc_, move, recorder_);
+    lastFeed_ = result.meanFeed;
+    afcClock_ = move.startTime + result.seconds;
+}
+
+}  // namespace mtc::core
