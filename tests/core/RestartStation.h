@@ -41,7 +41,7 @@ inline const char* kLibrary =
 /// names the restart tests use: its store, the station's interpreter (`live`),
 /// the machine data, and a recording of everything the station sends to its
 /// machine (`sps`: moves, aux functions; Station::setOutputListener).
-struct StationCell {
+struct StationCell : ProcessPrograms<StationCell> {
     explicit StationCell(int process)
         : cell(demoCell()),
           station(cell.station(cell.slotOfProcess(process))),
@@ -53,38 +53,6 @@ struct StationCell {
     }
     ~StationCell() { station.setOutputListener(nullptr); }
 
-    /// Parses and stores program `number` (a parse error fails the test).
-    core::ProgramPtr add(const std::string& source, int number) {
-        core::ProgramPtr p = parse(source, number);
-        EXPECT_FALSE(p->diagnostics.hasErrors()) << diagnosticsText(p->diagnostics);
-        store.put(config.index, number, p);
-        return p;
-    }
-    /// Block index of block N`number` of program `program`.
-    std::uint32_t block(int program, int number) const {
-        const core::ProgramPtr p = store.find(config.index, program);
-        for (std::uint32_t b = 0; p && b < p->blocks.size(); ++b)
-            if (p->blocks[b].number == number) return b;
-        ADD_FAILURE() << "no N" << number << " in program " << program;
-        return 0;
-    }
-    core::BlockRef ref(int program, int number) const { return {program, block(program, number)}; }
-    /// Element `element` of machine data page `number` (sub-page `sub`) of this process.
-    double page(int number, int sub, int element) const {
-        double value = -12345;
-        machineData->read({number, config.index, sub, element}, value);
-        return value;
-    }
-    /// A selection in main program `main` with target N`target` of `program`.
-    core::RestartSelection selection(int main, int program, int target,
-                                     std::uint32_t runs = 1) const {
-        core::RestartSelection s;
-        s.process = config.index;
-        s.mainProgram = main;
-        s.target = ref(program, target);
-        s.runs = runs;
-        return s;
-    }
 
     core::Cell cell;
     core::Station& station;
