@@ -38,11 +38,16 @@ QKeySequence speedKeyShortcut() {
     return QKeySequence(Qt::SHIFT | Qt::Key_F10);
 }
 
+QKeySequence baseScreenShortcut() {
+    return QKeySequence(Qt::Key_F11);
+}
+
 QVector<KeyAssignment> globalKeyAssignments() {
     QVector<KeyAssignment> list = {
         {"F1 … F8", "Soft keys of the current screen (labels in the bar at the bottom)"},
         {"Esc", "Back to the main menu of the station"},
         {"Ctrl+PgUp / Ctrl+PgDn", "Previous / next station (process); each keeps its screen"},
+        {"F11", "Base screen of the station: positions, feed, spindles, running block"},
         {"F12", "This help: every key assignment"},
         {"Tab / Shift+Tab", "Move the focus between fields of a screen"},
     };

@@ -20,6 +20,9 @@ QKeySequence machineKeyShortcut(mtc::core::ControlKey key);
 /// The key that changes the simulation speed (x1, x10, as fast as possible).
 QKeySequence speedKeyShortcut();
 
+/// The key that shows the station's base screen (position display).
+QKeySequence baseScreenShortcut();
+
 /// All machine control keys in bar order.
 QVector<mtc::core::ControlKey> machineKeys();
 

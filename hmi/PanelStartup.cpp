@@ -136,6 +136,9 @@ bool applyStartOptions(const PanelOptions& options, CellSession& session, PanelW
         }
         window.showStation(slot);
     }
+    // Every station starts on its base screen (docs/DECISIONS.md D-014);
+    // --screen shows another one on the station of --process.
+    window.showScreenOnEveryStation("position");
     const int slot = window.currentStation();
     if (!options.program.isEmpty()) {
         bool isNumber = false;

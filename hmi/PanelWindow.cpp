@@ -25,6 +25,8 @@ const QString kMenuScreen = "menu";
 const QString kHelpScreen = "help";
 const QString kRestartScreen = "restart";
 const QString kReposScreen = "repos";
+const QString kBaseScreen = "position";
+const QString kProgramsScreen = "programs";
 }  // namespace
 
 PanelWindow::PanelWindow(CellSession* session, const ScreenRegistry* registry, QWidget* parent)
@@ -125,6 +127,7 @@ void PanelWindow::installShortcuts() {
     };
     add(QKeySequence(Qt::Key_Escape), [this] { showScreen(kMenuScreen); });
     add(QKeySequence(Qt::Key_F12), [this] { showScreen(kHelpScreen); });
+    add(baseScreenShortcut(), [this] { showScreen(kBaseScreen); });
     add(QKeySequence(Qt::CTRL | Qt::Key_PageUp), [this] { showStation(station_ - 1); });
     add(QKeySequence(Qt::CTRL | Qt::Key_PageDown), [this] { showStation(station_ + 1); });
     for (mtc::core::ControlKey key : machineKeys())
@@ -140,6 +143,17 @@ bool PanelWindow::showScreen(const QString& name) {
     target->activated();
     target->setFocus();
     refresh();
+    return true;
+}
+
+bool PanelWindow::showScreenOnEveryStation(const QString& name) {
+    for (int slot = 0; slot < screens_.size(); ++slot) {
+        Screen* target = screen(slot, name);
+        if (!target) return false;
+        currentScreen_[slot] = name;
+        stationPages_[slot]->setCurrentWidget(target);
+    }
+    showStation(station_);
     return true;
 }
 
@@ -177,6 +191,12 @@ void PanelWindow::onMachineKey(mtc::core::ControlKey key) {
     // REPOS during a restart's repositioning phase: the SPS sets PxxCREPOS,
     // which brings up the repositioning screen (seed 000, Fig. 7-14 rung 6).
     if (accepted && key == mtc::core::ControlKey::Repos) showScreen(kReposScreen);
+    // A program started from the menu or the program directory is watched
+    // on the base screen (D-014); other screens (MDI, restart) stay.
+    const QString current = currentScreenName();
+    if (accepted && key == mtc::core::ControlKey::Start &&
+        (current == kMenuScreen || current == kProgramsScreen))
+        showScreen(kBaseScreen);
 }
 
 void PanelWindow::restoreSettings() {

@@ -28,6 +28,8 @@ class PanelWindow : public QMainWindow {
 
     /// Shows screen `name` on the current station; false if unknown.
     bool showScreen(const QString& name);
+    /// Every station shows screen `name` (start-up: the base screen); false if unknown.
+    bool showScreenOnEveryStation(const QString& name);
     /// Switches to station `slot` (wraps around); its last screen reappears.
     void showStation(int slot);
     int currentStation() const { return station_; }

@@ -14,6 +14,7 @@
 #include "screens/mdi/MdiScreen.h"
 #include "screens/menu/MenuScreen.h"
 #include "screens/nc_options/NcOptionsScreen.h"
+#include "screens/position/PositionScreen.h"
 #include "screens/programs/ProgramsScreen.h"
 #include "screens/restart/ReposScreen.h"
 #include "screens/restart/RestartControllers.h"
@@ -110,6 +111,10 @@ void registerAllScreens(mtc::hmi::ScreenRegistry& registry) {
                 [workspace](int program, int line) { workspace->requestEdit(program, line); });
             return screen;
         });
+    // The base screen: the station's first screen after start-up (F11 from
+    // anywhere). Last in the menu so the other screens keep their soft keys.
+    registry.add("position", "Base screen (position)",
+                 [](const ScreenContext& c) { return new PositionScreen(c); });
 }
 
 }  // namespace mtc::screens

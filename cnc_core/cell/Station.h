@@ -104,6 +104,12 @@ class Station : private ProgramRunner {
     RunStatus runStatus() const { return runStatus_; }
     /// Held at M00 / M01 (or M01 with optional stop): Start continues.
     bool atProgrammedStop() const { return stoppedBy_ == Pending::ProgrammedStop; }
+    /// Held after a block in single-block mode: Start runs the next block.
+    bool atSingleBlockStop() const { return stoppedBy_ == Pending::SingleBlock; }
+    /// The program and block index interpreted last (what the station shows
+    /// while the machine stands); nullptr before the first block of a run.
+    const ProgramPtr& lastInterpretedProgram() const { return lastProgram_; }
+    std::uint32_t lastInterpretedBlock() const { return lastBlock_; }
     /// Sees everything the interpreter (and the restart's jogging) sends to
     /// the machine, as it is sent (the CLI's motion list, recording tests).
     /// Not owned; nullptr = none.

@@ -1,0 +1,324 @@
+#include "cnc_core/cell/StationStatus.h"
+
+#include <algorithm>
+
+#include "cnc_core/cell/Station.h"
+#include "cnc_core/interp/MotionPlanner.h"
+
+namespace mtc::core {
+
+namespace {
+
+/// What each G group is about (docs/decisions/interpreter.md).
+const char* groupTopic(int group) {
+    switch (group) {
+        case kGroupInterpolation:
+            return "interpolation";
+        case kGroupPlane:
+            return "plane";
+        case kGroupToolPath:
+            return "radius comp.";
+        case kGroupZeroOffset:
+            return "zero offset";
+        case kGroupFeedType:
+            return "feed type";
+        case kGroupDimension:
+            return "dimensions";
+        case kGroupRadiusDiameter:
+            return "radius/diameter";
+        case kGroupUnits:
+            return "units";
+        case kGroupSurfaceSpeed:
+            return "spindle speed";
+        case kGroupAcceleration:
+            return "acceleration";
+        case kGroupExactStop:
+            return "exact stop";
+        case kGroupToolLength:
+            return "length comp.";
+        case kGroupTransformation:
+            return "transformation";
+        default:
+            return "";
+    }
+}
+
+/// The block's source text on one line, at most `limit` characters.
+std::string oneLine(std::string_view text, std::size_t limit = 160) {
+    std::string line;
+    line.reserve(std::min(text.size(), limit));
+    for (char c : text) {
+        if (line.size() >= limit) break;
+        const bool space = c == '\n' || c == '\r' || c == '\t' || c == ' ';
+        if (space && (line.empty() || line.back() == ' ')) continue;
+        line.push_back(space ? ' ' : c);
+    }
+    while (!line.empty() && line.back() == ' ')
+        line.pop_back();
+    return line;
+}
+
+/// The program and block the station shows as current, and its call level.
+struct ShownBlock {
+    ProgramPtr program;
+    std::uint32_t index = 0;
+    int level = 0;
+};
+
+/// Call level of `program` in the interpreter: the innermost level that
+/// runs it (the interpreter may be a block ahead of the machine).
+int levelOf(const InterpreterState& state, const Program* program) {
+    if (state.program.get() == program) return static_cast<int>(state.callStack.size());
+    for (std::size_t i = state.callStack.size(); i-- > 0;)
+        if (state.callStack[i].program.get() == program) return static_cast<int>(i);
+    return 0;
+}
+
+/// A program of the current run with number `number` (nullptr = none).
+ProgramPtr runProgram(const Station& station, int number) {
+    const InterpreterState& state = station.interpreter().state();
+    if (state.program && state.program->number == number) return state.program;
+    for (std::size_t i = state.callStack.size(); i-- > 0;)
+        if (state.callStack[i].program && state.callStack[i].program->number == number)
+            return state.callStack[i].program;
+    if (station.lastInterpretedProgram() && station.lastInterpretedProgram()->number == number)
+        return station.lastInterpretedProgram();
+    if (state.selected && state.selected->number == number) return state.selected;
+    return nullptr;
+}
+
+ShownBlock shownBlock(const Station& station) {
+    // As Station::showCurrentBlock: the block the machine executes; while it
+    // stands, the one interpreted last.
+    ShownBlock shown;
+    const SimulatedMachine& machine = station.machine();
+    const SourceLocation& at = machine.currentLocation();
+    if (!machine.idle() && at.line > 0) {
+        shown.program = runProgram(station, at.program);
+        if (shown.program) shown.index = blockIndexAtLine(*shown.program, at.line);
+    }
+    if (!shown.program && station.lastInterpretedProgram()) {
+        shown.program = station.lastInterpretedProgram();
+        shown.index = station.lastInterpretedBlock();
+    }
+    if (shown.program) shown.level = levelOf(station.interpreter().state(), shown.program.get());
+    return shown;
+}
+
+void describeBlocks(const Station& station, int around, StationStatus& status) {
+    const ShownBlock shown = shownBlock(station);
+    if (!shown.program || shown.program->blocks.size() == 0) return;
+    const Program& program = *shown.program;
+    const std::uint32_t count = static_cast<std::uint32_t>(program.blocks.size());
+    const std::uint32_t current = std::min(shown.index, count - 1);
+    const std::uint32_t span = static_cast<std::uint32_t>(std::max(0, around));
+    const std::uint32_t first = current > span ? current - span : 0;
+    const std::uint32_t last = std::min(count - 1, current + span);
+    for (std::uint32_t i = first; i <= last; ++i) {
+        const Block& block = program.blocks[i];
+        status.blocks.push_back(
+            {program.blockId(i), oneLine(program.text(block.sourceText)), i == current});
+    }
+    status.program = program.number;
+    status.callLevel = shown.level;
+    const InterpreterState& state = station.interpreter().state();
+    const int selected =
+        state.selected ? state.selected->number : station.control().selectedProgram();
+    status.inLibrary = program.number == 99 && selected != 99;
+}
+
+SpindleTurn turnOf(int mFunction, int spindle) {
+    if (mFunction < 0) return SpindleTurn::Unknown;
+    const int owner = mFunction / 100 == 0 ? 1 : mFunction / 100;
+    if (owner != spindle) return SpindleTurn::Unknown;
+    switch (mFunction % 100) {
+        case 3:
+            return SpindleTurn::Clockwise;
+        case 4:
+            return SpindleTurn::CounterClockwise;
+        case 5:
+            return SpindleTurn::Stopped;
+        case 19:
+            return SpindleTurn::Oriented;
+        default:
+            return SpindleTurn::Unknown;
+    }
+}
+
+/// The spindle's direction: the last M of the group its M3 belongs to
+/// (M3 / M103 for S1, Mj03 for Sj). Unknown when that group is group 16
+/// (every other M) and its last M is not one of the spindle's.
+SpindleTurn spindleTurn(const Station& station, int spindle) {
+    const ProcessConfig& config = station.config();
+    const InterpreterState& state = station.interpreter().state();
+    const int candidates[2] = {spindle * 100 + 3, spindle == 1 ? 3 : -1};
+    for (int m : candidates) {
+        if (m < 0) continue;
+        const MGroupConfig* group = config.mGroupOf(m);
+        const int number = group ? group->number : 16;
+        if (number < 1 || number > 16) continue;
+        const SpindleTurn turn = turnOf(state.mGroups[static_cast<std::size_t>(number)], spindle);
+        if (turn != SpindleTurn::Unknown) return turn;
+    }
+    return SpindleTurn::Unknown;
+}
+
+void describeSpindles(const Station& station, StationStatus& status) {
+    const ModalState& modal = station.interpreter().state().modal;
+    const ProcessAxes& axes = station.interpreter().axes();
+    for (int a = 0; a < axes.count(); ++a) {
+        const AxisModel& model = axes.axis(a);
+        if (!model.spindle || model.spindleIndex < 1 || model.spindleIndex >= kSpindleSlots)
+            continue;
+        const auto j = static_cast<std::size_t>(model.spindleIndex);
+        SpindleStatus spindle;
+        spindle.index = model.spindleIndex;
+        spindle.name = model.configName;
+        spindle.programmed = modal.spindleSpeed[j];
+        spindle.turn = spindleTurn(station, model.spindleIndex);
+        spindle.rotaryAxisMode = modal.rotaryAxisMode[j] != 0;
+        // The simulated spindle reaches its speed at once (no ramp yet).
+        const bool turning =
+            spindle.turn == SpindleTurn::Clockwise || spindle.turn == SpindleTurn::CounterClockwise;
+        spindle.actual = turning && !spindle.rotaryAxisMode ? spindle.programmed : 0.0;
+        status.spindles.push_back(spindle);
+    }
+}
+
+void describeAxes(const Station& station, StationStatus& status) {
+    const Interpreter& interpreter = station.interpreter();
+    const ProcessAxes& axes = interpreter.axes();
+    const SimulatedMachine& machine = station.machine();
+    // Workpiece coordinates of where the axes ARE: the interpreter's view
+    // of the actual machine positions (zero offset, allocation, transformation).
+    std::array<double, kMaxAxes> actual{};
+    for (int a = 0; a < axes.count() && a < kMaxAxes; ++a)
+        actual[static_cast<std::size_t>(a)] = machine.position(a);
+    const std::array<double, kMaxAxes> work = interpreter.programView(actual);
+    const ModalState& modal = interpreter.state().modal;
+    const MotionPlanner planner(&axes, &interpreter.zeroOffsets());
+    for (int a = 0; a < axes.count() && a < kMaxAxes; ++a) {
+        const AxisModel& model = axes.axis(a);
+        if (model.spindle && !model.rotary) continue;  // a plain spindle turns, it has no position
+        AxisStatus axis;
+        axis.name = interpreter.programmedAxisName(a);
+        axis.rotary = model.rotary && !modal.transformation.transforms(a);
+        axis.machine = machine.position(a);
+        axis.work = work[static_cast<std::size_t>(a)];
+        axis.toGo = machine.distanceToGo(a);
+        status.axes.push_back(axis);
+        status.zeroOffsetValues.push_back(planner.offsetOf(modal, a));
+    }
+}
+
+void describeTool(const Station& station, StationStatus& status) {
+    const ModalState& modal = station.interpreter().state().modal;
+    status.tool = modal.tool;
+    status.edge = modal.edge;
+    const ToolEdge* edge = station.interpreter().tools().edge(modal.tool, modal.edge);
+    if (modal.tool <= 0 || !edge) return;
+    status.edgeKnown = true;
+    status.edgeRadius = edge->totalRadius();
+    for (int i = 0; i < 3; ++i)
+        status.edgeLength[i] = edge->totalLength(i + 1);
+    status.edgeOrientation = edge->orientation;
+}
+
+ProgramState programState(const Station& station) {
+    const ProcessControl& control = station.control();
+    if (station.restart().active())
+        return station.restart().phase() == RestartPhase::Active ? ProgramState::WaitingForSps
+                                                                 : ProgramState::Restart;
+    if (!control.programActive()) {
+        const RunStatus ended = station.runStatus();
+        if ((ended == RunStatus::Error || ended == RunStatus::BudgetExceeded) &&
+            !control.alarm().empty())
+            return ProgramState::Error;
+        return control.selectedProgram() == 0 ? ProgramState::NoProgram : ProgramState::Ready;
+    }
+    if (!station.waitingAxis().empty()) return ProgramState::WaitingForAxis;
+    if (station.atProgrammedStop()) return ProgramState::ProgrammedStop;
+    if (station.atSingleBlockStop()) return ProgramState::SingleBlock;
+    if (control.programHeld()) return ProgramState::FeedHold;
+    return ProgramState::Running;
+}
+
+}  // namespace
+
+const char* spindleTurnName(SpindleTurn turn) {
+    switch (turn) {
+        case SpindleTurn::Clockwise:
+            return "CW (M3)";
+        case SpindleTurn::CounterClockwise:
+            return "CCW (M4)";
+        case SpindleTurn::Stopped:
+            return "stopped (M5)";
+        case SpindleTurn::Oriented:
+            return "oriented (M19)";
+        case SpindleTurn::Unknown:
+            break;
+    }
+    return "-";
+}
+
+const char* programStateName(ProgramState state) {
+    switch (state) {
+        case ProgramState::NoProgram:
+            return "no program selected";
+        case ProgramState::Ready:
+            return "ready: Start runs the program";
+        case ProgramState::Running:
+            return "running";
+        case ProgramState::FeedHold:
+            return "feed hold: Start continues";
+        case ProgramState::ProgrammedStop:
+            return "programmed stop (M00/M01): Start continues";
+        case ProgramState::SingleBlock:
+            return "single block: Start runs the next block";
+        case ProgramState::WaitingForAxis:
+            return "waiting for an axis (GAX)";
+        case ProgramState::WaitingForSps:
+            return "NC program restart: waiting for the SPS";
+        case ProgramState::Restart:
+            return "NC program restart active";
+        case ProgramState::Error:
+            return "stopped by an error";
+    }
+    return "";
+}
+
+std::uint32_t blockIndexAtLine(const Program& program, int line) {
+    const std::size_t count = program.blocks.size();
+    std::size_t low = 0, high = count;  // first block whose line is > `line`
+    while (low < high) {
+        const std::size_t mid = low + (high - low) / 2;
+        if (static_cast<int>(program.blocks[mid].line) <= line)
+            low = mid + 1;
+        else
+            high = mid;
+    }
+    return static_cast<std::uint32_t>(low == 0 ? 0 : low - 1);
+}
+
+StationStatus describeStation(const Station& station, int around) {
+    StationStatus status;
+    const ModalState& modal = station.interpreter().state().modal;
+    describeAxes(station, status);
+    describeSpindles(station, status);
+    status.programmedFeed = modal.feed;
+    status.feedPerRevolution = modal.g[kGroupFeedType] == 95;
+    status.actualFeed = station.machine().actualFeed();
+    status.feedOverride = station.machine().feedOverride();
+    status.rapidOverride = station.machine().rapidOverride();
+    for (int group : usedGGroups()) {
+        const int code = modal.g[static_cast<std::size_t>(group)];
+        if (code >= 0) status.gFunctions.push_back({group, code, groupTopic(group)});
+    }
+    describeTool(station, status);
+    status.zeroOffset = modal.g[kGroupZeroOffset];
+    describeBlocks(station, around, status);
+    status.state = programState(station);
+    return status;
+}
+
+}  // namespace mtc::core

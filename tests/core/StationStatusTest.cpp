@@ -1,0 +1,171 @@
+// What the base screen shows of a station (core::describeStation), read
+// while the station runs in simulated time: actual positions in workpiece
+// and machine coordinates, the running block and its neighbours, the call
+// level (program 99), spindles, tool edge, G functions and program status.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "InterpTestSupport.h"
+#include "cnc_core/cell/Cell.h"
+#include "cnc_core/cell/StationStatus.h"
+
+namespace mtc::test {
+namespace {
+
+using core::ControlKey;
+using core::ProgramState;
+
+struct StatusFixture {
+    StatusFixture() : cell(demoCell()) {}
+    core::Station& select(int number, const std::string& source, int slot = 0) {
+        core::ProgramPtr program = cell.addProgram(slot, number, "status.nc", source);
+        EXPECT_FALSE(program->diagnostics.hasErrors()) << diagnosticsText(program->diagnostics);
+        core::Station& station = cell.station(slot);
+        EXPECT_TRUE(station.selectProgram(number));
+        return station;
+    }
+    core::Cell cell;
+};
+
+const core::BlockLineStatus* currentBlock(const core::StationStatus& status) {
+    for (const auto& block : status.blocks)
+        if (block.current) return &block;
+    return nullptr;
+}
+
+// 10 mm at F600 = 1 s per move; G54 of the mill is X-150 Y-80 Z-120.
+const char* kOffsetMoves =
+    "N0001 G54 G90 G0 X10 Y5 S1200 M3\n"
+    "N0002 G1 X20 F600\n"
+    "N0003 X30\n"
+    "N0004 X40\n"
+    "N0005 M30\n";
+
+TEST(StationStatus, ActualPositionsInWorkpieceAndMachineCoordinates) {
+    StatusFixture f;
+    core::Station& mill = f.select(1, kOffsetMoves);
+    EXPECT_EQ(core::describeStation(mill).state, ProgramState::Ready);
+    ASSERT_TRUE(mill.press(ControlKey::Start));
+    // The rapid move of N0001, then half of N0002.
+    for (int tick = 0; tick < 10'000 && mill.control().currentBlock() != "N0002"; ++tick)
+        mill.advance(0.01);
+    mill.advance(0.5);
+    const core::StationStatus status = core::describeStation(mill);
+    EXPECT_EQ(status.state, ProgramState::Running);
+    ASSERT_EQ(status.axes.size(), 3u) << "X, Y, Z; the spindle S1 is not a position";
+    EXPECT_EQ(status.axes[0].name, "X");
+    EXPECT_DOUBLE_EQ(status.axes[0].machine, mill.machine().position(0));
+    EXPECT_DOUBLE_EQ(status.axes[0].work, status.axes[0].machine + 150.0);
+    EXPECT_DOUBLE_EQ(status.axes[1].work, 5.0);
+    EXPECT_DOUBLE_EQ(status.axes[1].machine, -75.0);
+    EXPECT_EQ(status.zeroOffset, 54);
+    ASSERT_EQ(status.zeroOffsetValues.size(), 3u);
+    EXPECT_DOUBLE_EQ(status.zeroOffsetValues[0], -150.0);
+    EXPECT_DOUBLE_EQ(status.zeroOffsetValues[2], -120.0);
+    EXPECT_DOUBLE_EQ(status.programmedFeed, 600.0);
+    EXPECT_FALSE(status.feedPerRevolution);
+    EXPECT_DOUBLE_EQ(status.actualFeed, 600.0);
+    EXPECT_DOUBLE_EQ(status.feedOverride, 100.0);
+    ASSERT_EQ(status.spindles.size(), 1u);
+    EXPECT_EQ(status.spindles[0].turn, core::SpindleTurn::Clockwise);
+    EXPECT_DOUBLE_EQ(status.spindles[0].programmed, 1200.0);
+    EXPECT_DOUBLE_EQ(status.spindles[0].actual, 1200.0);
+
+    // The running block with its neighbours, the current one marked.
+    const core::BlockLineStatus* current = currentBlock(status);
+    ASSERT_NE(current, nullptr);
+    EXPECT_EQ(current->id, "N0002");
+    EXPECT_EQ(current->text, "N0002 G1 X20 F600");
+    ASSERT_EQ(status.blocks.size(), 4u) << "two before (only one exists), two after";
+    EXPECT_EQ(status.blocks.front().id, "N0001");
+    EXPECT_EQ(status.blocks.back().id, "N0004");
+    EXPECT_EQ(status.program, 1);
+    EXPECT_EQ(status.callLevel, 0);
+    EXPECT_FALSE(status.inLibrary);
+
+    mill.advance(1.0);  // in N0003: the display follows the machine
+    const core::StationStatus later = core::describeStation(mill);
+    EXPECT_EQ(currentBlock(later)->id, "N0003");
+    EXPECT_GT(later.axes[0].work, status.axes[0].work);
+}
+
+TEST(StationStatus, ASubroutineOfProgram99IsShownAsSuch) {
+    StatusFixture f;
+    f.cell.addProgram(0, 99, "library.nc",
+                      "N0001 BST\n.SIDE\nN0010 G1 G91 Y10 F600\nN0011 Y10\nN0012 RTS\n");
+    core::Station& mill = f.select(2, "N0001 G90 G1 X0 Y0 F600\nN0002 BSR .SIDE\nN0003 M30\n");
+    ASSERT_TRUE(mill.press(ControlKey::Start));
+    mill.advance(0.5);  // N0010 of program 99
+    const core::StationStatus status = core::describeStation(mill);
+    ASSERT_NE(currentBlock(status), nullptr);
+    EXPECT_EQ(currentBlock(status)->id, "N0010");
+    EXPECT_EQ(status.program, 99);
+    EXPECT_TRUE(status.inLibrary);
+    EXPECT_EQ(status.callLevel, 1);
+    mill.advance(10.0);
+    EXPECT_FALSE(mill.control().programActive());
+}
+
+TEST(StationStatus, ProgramStateFollowsHoldsStopsAndErrors) {
+    StatusFixture f;
+    core::Station& mill =
+        f.select(3, "N0001 G90 G1 X10 F600\nN0002 M00\nN0003 X20\nN0004 X30\nN0005 T999\n");
+    ASSERT_TRUE(mill.press(ControlKey::Start));
+    mill.advance(0.5);
+    ASSERT_TRUE(mill.press(ControlKey::Stop));
+    EXPECT_EQ(core::describeStation(mill).state, ProgramState::FeedHold);
+    ASSERT_TRUE(mill.press(ControlKey::Start));
+    mill.advance(1.0);
+    EXPECT_EQ(core::describeStation(mill).state, ProgramState::ProgrammedStop);
+    ASSERT_TRUE(mill.press(ControlKey::SingleBlock));
+    ASSERT_TRUE(mill.press(ControlKey::Start));
+    mill.advance(2.0);
+    EXPECT_EQ(core::describeStation(mill).state, ProgramState::SingleBlock);
+    ASSERT_TRUE(mill.press(ControlKey::SingleBlock));
+    ASSERT_TRUE(mill.press(ControlKey::Start));
+    mill.advance(5.0);
+    EXPECT_FALSE(mill.control().programActive());
+    EXPECT_EQ(core::describeStation(mill).state, ProgramState::Error);
+    ASSERT_TRUE(mill.press(ControlKey::ControlReset));
+    EXPECT_EQ(core::describeStation(mill).state, ProgramState::Ready);
+}
+
+TEST(StationStatus, ToolEdgeAndGFunctionsOfTheLathe) {
+    StatusFixture f;
+    core::Station& lathe =
+        f.select(4, "N0001 G95 T2 E1 F0.2 S2 800 M203\nN0002 G1 X40 Z10\nN0003 M30\n", 1);
+    ASSERT_TRUE(lathe.press(ControlKey::Start));
+    lathe.advance(0.01);
+    const core::StationStatus status = core::describeStation(lathe);
+    EXPECT_TRUE(status.feedPerRevolution);
+    EXPECT_DOUBLE_EQ(status.programmedFeed, 0.2);
+    EXPECT_EQ(status.tool, 2);
+    EXPECT_EQ(status.edge, 1);
+    EXPECT_TRUE(status.edgeKnown);
+    const core::ToolEdge* edge = lathe.interpreter().tools().edge(2, 1);
+    ASSERT_NE(edge, nullptr);
+    EXPECT_DOUBLE_EQ(status.edgeRadius, edge->totalRadius());
+    bool feedType = false;
+    for (const auto& g : status.gFunctions)
+        if (g.group == core::kGroupFeedType) feedType = g.code == 95;
+    EXPECT_TRUE(feedType);
+    const core::SpindleStatus* s2 = nullptr;
+    for (const auto& s : status.spindles)
+        if (s.index == 2) s2 = &s;
+    ASSERT_NE(s2, nullptr);
+    EXPECT_EQ(s2->turn, core::SpindleTurn::Clockwise);
+    EXPECT_DOUBLE_EQ(s2->programmed, 800.0);
+}
+
+TEST(StationStatus, BlockIndexAtLineFindsTheBlockOfAContinuationLine) {
+    core::ProgramPtr program = parse("N0001 G1 X1\n\nN0002 X2\nN0003 X3\n", 5);
+    EXPECT_EQ(core::blockIndexAtLine(*program, 1), 0u);
+    EXPECT_EQ(core::blockIndexAtLine(*program, 2), 0u);
+    EXPECT_EQ(core::blockIndexAtLine(*program, 3), 1u);
+    EXPECT_EQ(core::blockIndexAtLine(*program, 4), 2u);
+    EXPECT_EQ(core::blockIndexAtLine(*program, 99), 2u);
+}
+
+}  // namespace
+}  // namespace mtc::test
