@@ -129,11 +129,13 @@ PositionScreen::PositionScreen(const mtc::hmi::ScreenContext& context) : Screen(
     feedLayout->setContentsMargins(0, 0, 0, 0);
     feedLayout->setSpacing(0);
     feedLayout->addWidget(feeds_);
-    feedLayout->addWidget(feedOverride_);
-    feedLayout->addWidget(rapidOverride_);
+    auto* overrides = new QHBoxLayout;  // side by side: the side column stays low
+    overrides->addWidget(feedOverride_);
+    overrides->addWidget(rapidOverride_);
+    feedLayout->addLayout(overrides);
     side->addWidget(makeBox(this, "Feed and override", feedBox));
     spindles_ = makeLabel(this, "spindleValues", normal);
-    side->addWidget(makeBox(this, "Spindles", spindles_));
+    side->addWidget(makeBox(this, "Spindles (programmed / actual)", spindles_));
     tool_ = makeLabel(this, "toolValues", normal);
     side->addWidget(makeBox(this, "Tool and edge", tool_));
     middle->addLayout(side, 2);
@@ -235,8 +237,8 @@ void PositionScreen::showFeedsAndSpindles() {
                         .arg(status_.programmedFeed, 9, 'f', status_.feedPerRevolution ? 3 : 1)
                         .arg(unit)
                         .arg(status_.actualFeed, 9, 'f', 1));
-    feedOverride_->setText("Feed override  " + percent(status_.feedOverride));
-    rapidOverride_->setText("Rapid override " + percent(status_.rapidOverride));
+    feedOverride_->setText("Override F " + percent(status_.feedOverride));
+    rapidOverride_->setText("G0 " + percent(status_.rapidOverride));
     QStringList spindles;
     for (const auto& s : status_.spindles) {
         QString line = QString("%1 %2 / %3 rpm %4")
@@ -247,8 +249,7 @@ void PositionScreen::showFeedsAndSpindles() {
         if (s.rotaryAxisMode) line += " (rotary axis)";
         spindles << line;
     }
-    spindles_->setText(spindles.isEmpty() ? QString("none")
-                                          : "programmed / actual\n" + spindles.join('\n'));
+    spindles_->setText(spindles.isEmpty() ? QString("none") : spindles.join('\n'));
     QString tool = QString("T%1  E%2").arg(status_.tool).arg(status_.edge);
     if (status_.tool <= 0)
         tool = "no tool (T0)";
