@@ -30,7 +30,9 @@ QString runToEnd(mtc::hmi::CellSession& session, int process) {
            station.runBlocks() < mtc::core::kDefaultBlockBudget)
         station.advance(3600.0);
     session.advance(0.0);  // the screens learn what changed
-    return QString::fromStdString(station.control().alarm());
+    // Held at M00 / single block: say so (a prompt, not an alarm).
+    const std::string& alarm = station.control().alarm();
+    return QString::fromStdString(alarm.empty() ? station.control().prompt() : alarm);
 }
 }  // namespace
 

@@ -1,6 +1,8 @@
 #include "hmi/MachineKeyBar.h"
 
 #include <QPushButton>
+#include <QStyle>
+#include <QVariant>
 #include <QVBoxLayout>
 
 #include "hmi/KeyMap.h"
@@ -17,7 +19,9 @@ MachineKeyBar::MachineKeyBar(QWidget* parent) : QWidget(parent) {
         button->setToolTip(machineKeyShortcut(key).toString(QKeySequence::NativeText));
         button->setFocusPolicy(Qt::NoFocus);
         button->setMinimumSize(110, 40);
+        button->setProperty("lamp", false);
         connect(button, &QPushButton::clicked, this, [this, key] { emit keyPressed(key); });
+        buttons_.push_back({key, button});
         layout->addWidget(button);
     }
     layout->addStretch();
@@ -30,6 +34,21 @@ MachineKeyBar::MachineKeyBar(QWidget* parent) : QWidget(parent) {
     connect(speed_, &QPushButton::clicked, this, &MachineKeyBar::speedPressed);
     layout->addWidget(speed_);
     setSpeedText("\u00d71");
+}
+
+QPushButton* MachineKeyBar::button(mtc::core::ControlKey key) const {
+    for (const auto& entry : buttons_)
+        if (entry.first == key) return entry.second;
+    return nullptr;
+}
+
+void MachineKeyBar::setLamp(mtc::core::ControlKey key, bool on) {
+    QPushButton* target = button(key);
+    if (!target || target->property("lamp").toBool() == on) return;
+    target->setProperty("lamp", on);
+    // The style sheet selects on the property: polish again to repaint.
+    target->style()->unpolish(target);
+    target->style()->polish(target);
 }
 
 void MachineKeyBar::setSpeedText(const QString& text) {

@@ -1,5 +1,7 @@
 #pragma once
 
+#include <QPair>
+#include <QVector>
 #include <QWidget>
 
 class QPushButton;
@@ -18,6 +20,10 @@ class MachineKeyBar : public QWidget {
     explicit MachineKeyBar(QWidget* parent = nullptr);
     /// Shows the speed factor on the Speed key ("x10").
     void setSpeedText(const QString& text);
+    /// Lights or darkens the lamp of `key` (button property "lamp").
+    void setLamp(mtc::core::ControlKey key, bool on);
+    /// The button of `key` (nullptr for a key the bar does not have).
+    QPushButton* button(mtc::core::ControlKey key) const;
 
   signals:
     void keyPressed(mtc::core::ControlKey key);
@@ -25,6 +31,7 @@ class MachineKeyBar : public QWidget {
 
   private:
     QPushButton* speed_;
+    QVector<QPair<mtc::core::ControlKey, QPushButton*>> buttons_;
 };
 
 }  // namespace mtc::hmi

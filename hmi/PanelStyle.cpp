@@ -17,6 +17,9 @@ QWidget#softKeyBar QPushButton:pressed, QWidget#machineKeyBar QPushButton:presse
 }
 QWidget#softKeyBar QPushButton:disabled { color: #8a8a8a; }
 QWidget#machineKeyBar QPushButton { background: #dfe6ef; }
+QWidget#machineKeyBar QPushButton[lamp="true"] {
+    background: #ffd34d; border: 2px solid #b07800; font-weight: bold;
+}
 QAbstractItemView, QPlainTextEdit, QTextBrowser { background: white; selection-background-color: #00307a; }
 )");
 }

@@ -8,6 +8,7 @@
 #include <QStackedWidget>
 #include <QVBoxLayout>
 
+#include "cnc_core/cell/StationStatus.h"
 #include "hmi/CellSession.h"
 #include "hmi/KeyMap.h"
 #include "hmi/MachineKeyBar.h"
@@ -181,6 +182,9 @@ Screen* PanelWindow::screen(int slot, const QString& name) const {
 void PanelWindow::refresh() {
     Screen* current = currentScreen();
     header_->show(*session_, station_, current ? current->title() : QString());
+    const auto& station = session_->station(station_);
+    for (mtc::core::ControlKey key : machineKeys())
+        machineKeys_->setLamp(key, mtc::core::keyLamp(station, key));
     softKeys_->setKeys(current ? current->softKeys() : SoftKeys{});
 }
 

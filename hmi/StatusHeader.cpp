@@ -3,6 +3,7 @@
 #include <QGridLayout>
 #include <QLabel>
 
+#include "cnc_core/cell/StationStatus.h"
 #include "hmi/CellSession.h"
 
 namespace mtc::hmi {
@@ -51,13 +52,26 @@ void StatusHeader::show(const CellSession& session, int slot, const QString& tit
                           : QString("Program: %1").arg(control.selectedProgram());
     if (!control.currentBlock().empty())
         program += QString("  Block: %1").arg(QString::fromStdString(control.currentBlock()));
-    if (control.programActive()) program += "  (active)";
+    const char* state =
+        mtc::core::programStateWord(mtc::core::programStateOf(session.station(slot)));
+    if (*state != '\0') program += QString("  (%1)").arg(state);
     program_->setText(program);
     screen_->setText(title);
     speed_->setText("Speed " + session.speedText());
+    // An alarm says what went wrong; a prompt what the operator does next
+    // in an ordinary state (single block, programmed stop): not an alarm.
     const QString alarm = QString::fromStdString(control.alarm());
-    alarm_->setText(alarm.isEmpty() ? QString("No alarm") : QString("Alarm: %1").arg(alarm));
-    alarm_->setStyleSheet(alarm.isEmpty() ? "" : "color: #b00000; font-weight: bold;");
+    const QString prompt = QString::fromStdString(control.prompt());
+    if (!alarm.isEmpty()) {
+        alarm_->setText(QString("Alarm: %1").arg(alarm));
+        alarm_->setStyleSheet("color: #ffd000; font-weight: bold;");
+    } else if (!prompt.isEmpty()) {
+        alarm_->setText(prompt);
+        alarm_->setStyleSheet("color: #b8e0ff; font-weight: normal;");
+    } else {
+        alarm_->setText("No alarm");
+        alarm_->setStyleSheet("");
+    }
 }
 
 }  // namespace mtc::hmi

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "cnc_core/cell/Station.h"
+#include "cnc_core/interp/AuxFunctionGroups.h"
 #include "cnc_core/interp/MotionPlanner.h"
 
 namespace mtc::core {
@@ -146,16 +147,14 @@ SpindleTurn turnOf(int mFunction, int spindle) {
 }
 
 /// The spindle's direction: the last M of the group its M3 belongs to
-/// (M3 / M103 for S1, Mj03 for Sj). Unknown when that group is group 16
-/// (every other M) and its last M is not one of the spindle's.
-SpindleTurn spindleTurn(const Station& station, int spindle) {
-    const ProcessConfig& config = station.config();
+/// (M3 / M103 for S1, Mj03 for Sj; the interpreter's group rule). Unknown
+/// when that group is group 16 and its last M is not one of the spindle's.
+SpindleTurn spindleTurn(const Station& station, const AuxFunctionGroups& groups, int spindle) {
     const InterpreterState& state = station.interpreter().state();
     const int candidates[2] = {spindle * 100 + 3, spindle == 1 ? 3 : -1};
     for (int m : candidates) {
         if (m < 0) continue;
-        const MGroupConfig* group = config.mGroupOf(m);
-        const int number = group ? group->number : 16;
+        const int number = groups.groupOf(m);
         if (number < 1 || number > 16) continue;
         const SpindleTurn turn = turnOf(state.mGroups[static_cast<std::size_t>(number)], spindle);
         if (turn != SpindleTurn::Unknown) return turn;
@@ -166,6 +165,7 @@ SpindleTurn spindleTurn(const Station& station, int spindle) {
 void describeSpindles(const Station& station, StationStatus& status) {
     const ModalState& modal = station.interpreter().state().modal;
     const ProcessAxes& axes = station.interpreter().axes();
+    const AuxFunctionGroups groups(station.config());
     for (int a = 0; a < axes.count(); ++a) {
         const AxisModel& model = axes.axis(a);
         if (!model.spindle || model.spindleIndex < 1 || model.spindleIndex >= kSpindleSlots)
@@ -175,7 +175,7 @@ void describeSpindles(const Station& station, StationStatus& status) {
         spindle.index = model.spindleIndex;
         spindle.name = model.configName;
         spindle.programmed = modal.spindleSpeed[j];
-        spindle.turn = spindleTurn(station, model.spindleIndex);
+        spindle.turn = spindleTurn(station, groups, model.spindleIndex);
         spindle.rotaryAxisMode = modal.rotaryAxisMode[j] != 0;
         // The simulated spindle reaches its speed at once (no ramp yet).
         const bool turning =
@@ -224,7 +224,9 @@ void describeTool(const Station& station, StationStatus& status) {
     status.edgeOrientation = edge->orientation;
 }
 
-ProgramState programState(const Station& station) {
+}  // namespace
+
+ProgramState programStateOf(const Station& station) {
     const ProcessControl& control = station.control();
     if (station.restart().active())
         return station.restart().phase() == RestartPhase::Active ? ProgramState::WaitingForSps
@@ -243,7 +245,31 @@ ProgramState programState(const Station& station) {
     return ProgramState::Running;
 }
 
-}  // namespace
+bool keyLamp(const Station& station, ControlKey key) {
+    const ProcessControl& control = station.control();
+    const SignalTable& signals = control.signalTable();
+    switch (key) {
+        case ControlKey::Manual:
+            return control.mode() == OperatingMode::Manual;
+        case ControlKey::Automatic:
+            return control.mode() == OperatingMode::Automatic;
+        case ControlKey::Mdi:
+            return control.mode() == OperatingMode::Mdi;
+        case ControlKey::Start:
+            return (control.programActive() && !control.programHeld()) || station.computing();
+        case ControlKey::Stop:
+            return control.programActive() && control.programHeld();
+        case ControlKey::SingleBlock:
+            return control.singleBlock();
+        case ControlKey::ProgramRestart:
+            return station.restart().active() || signals.get("mBPREP") == 1;
+        case ControlKey::Repos:
+            return signals.get(control.signalPrefix() + "CREPOS") == 1;
+        case ControlKey::ControlReset:
+            return false;
+    }
+    return false;
+}
 
 const char* spindleTurnName(SpindleTurn turn) {
     switch (turn) {
@@ -287,6 +313,30 @@ const char* programStateName(ProgramState state) {
     return "";
 }
 
+const char* programStateWord(ProgramState state) {
+    switch (state) {
+        case ProgramState::NoProgram:
+        case ProgramState::Ready:
+            return "";
+        case ProgramState::Running:
+            return "running";
+        case ProgramState::FeedHold:
+            return "feed hold";
+        case ProgramState::ProgrammedStop:
+            return "M00 stop";
+        case ProgramState::SingleBlock:
+            return "single block";
+        case ProgramState::WaitingForAxis:
+        case ProgramState::WaitingForSps:
+            return "waiting";
+        case ProgramState::Restart:
+            return "restart";
+        case ProgramState::Error:
+            return "error";
+    }
+    return "";
+}
+
 std::uint32_t blockIndexAtLine(const Program& program, int line) {
     const std::size_t count = program.blocks.size();
     std::size_t low = 0, high = count;  // first block whose line is > `line`
@@ -317,7 +367,7 @@ StationStatus describeStation(const Station& station, int around) {
     describeTool(station, status);
     status.zeroOffset = modal.g[kGroupZeroOffset];
     describeBlocks(station, around, status);
-    status.state = programState(station);
+    status.state = programStateOf(station);
     return status;
 }
 

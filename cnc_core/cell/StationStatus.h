@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "cnc_core/language/Program.h"
+#include "cnc_core/machine/ProcessControl.h"
 
 namespace mtc::core {
 
@@ -65,6 +66,18 @@ enum class ProgramState {
 
 /// "running", "feed hold", ... (lower case; the screen capitalises).
 const char* programStateName(ProgramState state);
+/// One or two words for the status header: "running", "feed hold",
+/// "M00 stop", "single block", "waiting", "restart", "error", "".
+const char* programStateWord(ProgramState state);
+
+/// What the program of `station` is doing now.
+ProgramState programStateOf(const Station& station);
+
+/// The lamp of machine control key `key` on the panel: lit while what the
+/// key selects is in force (its mode, single block, feed hold, a running
+/// program, an NC program restart, multi-block retrace possible). Control
+/// reset is a momentary key without lamp.
+bool keyLamp(const Station& station, ControlKey key);
 
 /// Everything the base screen ("position") shows of a station, read from
 /// the station at one instant. Plain data; describeStation() builds it.

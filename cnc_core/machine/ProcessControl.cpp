@@ -80,6 +80,7 @@ bool ProcessControl::press(ControlKey key) {
             if (runner_) runner_->reset();
             setProgramActive(false);
             alarm_.clear();
+            prompt_.clear();
             currentBlock_.clear();
             signals_.set(p + "CRESET", 0);
             return true;
@@ -140,6 +141,7 @@ bool ProcessControl::start() {
     const bool resuming = active_;
     if (!resuming) setProgramActive(true);
     alarm_.clear();
+    prompt_.clear();
     std::string result = resuming ? runner_->resume()
                          : mdi    ? runner_->startMdi()
                                   : runner_->start(selectedProgram_);
@@ -167,13 +169,14 @@ bool ProcessControl::selectProgram(int number) {
 
 void ProcessControl::programFinished(std::string alarm) {
     setProgramActive(false);
+    prompt_.clear();
     if (!alarm.empty()) alarm_ = std::move(alarm);
 }
 
 void ProcessControl::programStopped(std::string message) {
     held_ = true;
     signals_.set(signalPrefix() + "SHOLD", 1);
-    alarm_ = std::move(message);
+    prompt_ = std::move(message);
 }
 
 void ProcessControl::setProgramActive(bool active) {

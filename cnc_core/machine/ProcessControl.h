@@ -81,6 +81,9 @@ class ProcessControl {
     bool programActive() const { return active_; }
     bool programHeld() const { return held_; }
     const std::string& alarm() const { return alarm_; }
+    /// What the operator is asked to do in an ordinary state ("Single
+    /// block: press Start ..."): a prompt, not an alarm. "" = none.
+    const std::string& prompt() const { return prompt_; }
     /// Single-block mode (PxxCSBLK = 1): a running program, the computing
     /// process of NC program restart included, holds after every block.
     bool singleBlock() const;
@@ -102,8 +105,9 @@ class ProcessControl {
     void setRunner(ProgramRunner* runner) { runner_ = runner; }
     /// The runner reports the end of the program (or an error that ended it).
     void programFinished(std::string alarm);
-    /// The runner reports a programmed stop (M00/M01): the program stays
-    /// active and held until Start.
+    /// The runner reports a programmed stop (M00/M01) or a single-block
+    /// hold: the program stays active and held until Start; `message`
+    /// becomes the prompt (Start, Control reset and the program end clear it).
     void programStopped(std::string message);
 
     /// Installs (or with nullptr removes) the handler that sees every key
@@ -132,6 +136,7 @@ class ProcessControl {
     int selectedProgram_ = 0;
     std::string currentBlock_;
     std::string alarm_;
+    std::string prompt_;
     SignalTable signals_;
 };
 

@@ -158,6 +158,40 @@ TEST(StationStatus, ToolEdgeAndGFunctionsOfTheLathe) {
     EXPECT_DOUBLE_EQ(s2->programmed, 800.0);
 }
 
+TEST(StationStatus, KeyLampsFollowModeSingleBlockHoldAndRun) {
+    StatusFixture f;
+    core::Station& mill = f.select(6, "N0001 G90 G1 X10 F600\nN0002 X20\nN0003 M30\n");
+    EXPECT_TRUE(core::keyLamp(mill, ControlKey::Automatic));
+    EXPECT_FALSE(core::keyLamp(mill, ControlKey::Manual));
+    EXPECT_FALSE(core::keyLamp(mill, ControlKey::Start));
+    ASSERT_TRUE(mill.press(ControlKey::SingleBlock));
+    EXPECT_TRUE(core::keyLamp(mill, ControlKey::SingleBlock));
+    ASSERT_TRUE(mill.press(ControlKey::Start));
+    EXPECT_TRUE(core::keyLamp(mill, ControlKey::Start));
+    EXPECT_FALSE(core::keyLamp(mill, ControlKey::Stop));
+    mill.advance(2.0);  // held after N0001: a prompt, not an alarm
+    EXPECT_EQ(core::programStateOf(mill), ProgramState::SingleBlock);
+    EXPECT_TRUE(core::keyLamp(mill, ControlKey::Stop));
+    EXPECT_FALSE(core::keyLamp(mill, ControlKey::Start));
+    EXPECT_TRUE(mill.control().alarm().empty()) << mill.control().alarm();
+    EXPECT_NE(mill.control().prompt().find("Start"), std::string::npos);
+    ASSERT_TRUE(mill.press(ControlKey::SingleBlock));
+    ASSERT_TRUE(mill.press(ControlKey::Start));
+    EXPECT_TRUE(mill.control().prompt().empty()) << "Start clears the prompt";
+    EXPECT_FALSE(core::keyLamp(mill, ControlKey::SingleBlock));
+    ASSERT_TRUE(mill.press(ControlKey::Stop));
+    EXPECT_TRUE(core::keyLamp(mill, ControlKey::Stop));
+    EXPECT_STREQ(core::programStateWord(core::programStateOf(mill)), "feed hold");
+    ASSERT_TRUE(mill.press(ControlKey::ControlReset));
+    EXPECT_FALSE(core::keyLamp(mill, ControlKey::Stop));
+    EXPECT_FALSE(core::keyLamp(mill, ControlKey::ControlReset));
+    ASSERT_TRUE(mill.press(ControlKey::Manual));
+    EXPECT_TRUE(core::keyLamp(mill, ControlKey::Manual));
+    EXPECT_FALSE(core::keyLamp(mill, ControlKey::Automatic));
+    ASSERT_TRUE(mill.press(ControlKey::ProgramRestart));
+    EXPECT_TRUE(core::keyLamp(mill, ControlKey::ProgramRestart));
+}
+
 TEST(StationStatus, BlockIndexAtLineFindsTheBlockOfAContinuationLine) {
     core::ProgramPtr program = parse("N0001 G1 X1\n\nN0002 X2\nN0003 X3\n", 5);
     EXPECT_EQ(core::blockIndexAtLine(*program, 1), 0u);
