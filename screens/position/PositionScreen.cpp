@@ -31,8 +31,8 @@ QFrame* makeBox(QWidget* parent, const QString& title, QWidget* content) {
     box->setFrameShape(QFrame::StyledPanel);
     box->setStyleSheet("QFrame { background: white; }");
     auto* layout = new QVBoxLayout(box);
-    layout->setContentsMargins(6, 4, 6, 4);
-    layout->setSpacing(2);
+    layout->setContentsMargins(6, 2, 6, 2);
+    layout->setSpacing(1);
     auto* heading = new QLabel(title, box);
     QFont bold = heading->font();
     bold.setBold(true);
@@ -111,6 +111,8 @@ PositionScreen::PositionScreen(const mtc::hmi::ScreenContext& context) : Screen(
     axes->setStyleSheet("QFrame#axisDisplay { background: white; }");
     axisGrid_ = new QGridLayout(axes);
     axisGrid_->setHorizontalSpacing(12);
+    axisGrid_->setVerticalSpacing(2);
+    axisGrid_->setContentsMargins(8, 4, 8, 4);
     const char* headings[kAxisColumns] = {"Axis", "Workpiece", "Machine", "To go"};
     for (int column = 0; column < kAxisColumns; ++column) {
         auto* heading = new QLabel(headings[column], axes);
