@@ -42,23 +42,33 @@ Station::~Station() {
     control_.setRunner(nullptr);
 }
 
+void Station::Output::sent(const SourceLocation& where) {
+    ++outputs;
+    last.program = where.program;
+    last.line = where.line;
+}
+
 void Station::Output::motion(const Motion& m) {
+    sent(m.where);
     machine.motion(m);
     if (listener) listener->motion(m);
 }
 
 void Station::Output::auxiliary(const AuxOutput& a) {
+    sent(a.where);
     machine.auxiliary(a);
     if (listener) listener->auxiliary(a);
 }
 
 void Station::Output::dwell(const SourceLocation& where, double seconds) {
+    sent(where);
     machine.dwell(where, seconds);
     if (listener) listener->dwell(where, seconds);
 }
 
 void Station::Output::command(const SourceLocation& where, const std::string& keyword,
                               const std::string& arguments) {
+    sent(where);
     machine.command(where, keyword, arguments);
     if (listener) listener->command(where, keyword, arguments);
 }
@@ -69,6 +79,7 @@ bool Station::press(ControlKey key) {
     // (program, MDI, the restart's ADJUST / REPOS).
     if (ok && key == ControlKey::Stop && control_.programActive()) machine_.hold();
     if (ok && key == ControlKey::Start && machine_.held()) machine_.resume();
+    if (ok && key == ControlKey::Start) machine_.continueAfterBlockStop();
     if (key == ControlKey::ControlReset) machine_.stop();
     ++revision_;
     return ok;
@@ -145,6 +156,8 @@ void Station::beginRun(Run run) {
 }
 
 std::string Station::resume() {
+    // Single block switched off while held at a block: the run goes on.
+    if (pending_ == Pending::SingleBlock && !control_.singleBlock()) pending_ = Pending::None;
     feeding_ = run_ != Run::None && pending_ == Pending::None;
     if (feeding_) stoppedBy_ = Pending::None;
     return {};
@@ -166,6 +179,7 @@ void Station::reset() {
     waitingAxis_.clear();
     machine_.stop();
     machine_.reset();
+    queued_.clear();
     // The axes stopped where they were, mid-block perhaps: the next move
     // starts there (the interpreter took the block end for granted).
     std::array<double, kMaxAxes> where{};
@@ -296,11 +310,14 @@ void Station::feed(std::uint64_t& blocks, std::uint64_t maxBlocks) {
         const InterpreterState& state = interpreter_.state();
         if (state.program.get() != lastProgram_.get()) lastProgram_ = state.program;
         lastBlock_ = state.block;
+        const int callLevel = static_cast<int>(state.callStack.size());
+        const std::uint64_t outputsBefore = output_.outputs;
         const RunResult result = budget_ > 0 && runBlocks_ >= budget_ ? budgetExceeded()
                                  : run_ == Run::Mdi                   ? mdi_.step()
                                                                       : interpreter_.step();
         blocks += result.blocksInterpreted;
         runBlocks_ += result.blocksInterpreted;
+        if (output_.outputs != outputsBefore) recordQueuedBlock(lastProgram_, lastBlock_, callLevel);
         if (!result.diagnostics.empty()) runDiagnostics_.append(result.diagnostics);
         if (!waitingAxis_.empty() && result.blocksInterpreted > 0) {
             waitingAxis_.clear();  // the GAX was granted
@@ -344,6 +361,18 @@ bool Station::handle(const RunResult& result) {
 }
 
 void Station::settle() {
+    // Single block switched on while the look-ahead had queued more blocks:
+    // the machine rests at the end of the block it was in.
+    machine_.setStopAtBlockEnds(control_.singleBlock() && run_ != Run::None &&
+                                !restart_.active());
+    if (machine_.atBlockStop() && run_ != Run::None && stoppedBy_ == Pending::None) {
+        feeding_ = false;
+        stoppedBy_ = Pending::SingleBlock;
+        ++revision_;
+        interpreter_.publishRotaryAxisModes();
+        control_.programStopped("Single block: press Start for the next block");
+        return;
+    }
     if (pending_ == Pending::None || !machine_.idle()) return;
     const Pending pending = pending_;
     pending_ = Pending::None;
@@ -404,7 +433,21 @@ void Station::finish(const RunResult& result) {
     if (mdi && mdiEnded_) mdiEnded_(alarm.empty());
 }
 
+void Station::recordQueuedBlock(const ProgramPtr& program, std::uint32_t index, int callLevel) {
+    QueuedBlockState entry;
+    entry.program = output_.last.program;
+    entry.line = output_.last.line;
+    entry.source = program;
+    entry.index = index;
+    entry.callLevel = callLevel;
+    const InterpreterState& state = interpreter_.state();
+    assignModalState(entry.modal, state.modal);
+    entry.mGroups = state.mGroups;
+    queued_.record(std::move(entry));
+}
+
 void Station::showCurrentBlock() {
+    queued_.follow(machine_.currentLocation(), machine_.idle());
     // The block the machine executes; while it stands, the one interpreted last.
     if (!machine_.idle() && !machine_.currentLocation().block.empty()) {
         if (control_.currentBlock() != machine_.currentLocation().block)

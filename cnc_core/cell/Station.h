@@ -7,6 +7,7 @@
 #include <string>
 
 #include "cnc_core/afc/AfcTrendRecorder.h"
+#include "cnc_core/cell/QueuedBlockStates.h"
 #include "cnc_core/interp/Interpreter.h"
 #include "cnc_core/machine/MachineConfig.h"
 #include "cnc_core/machine/ProcessControl.h"
@@ -110,6 +111,10 @@ class Station : private ProgramRunner {
     /// while the machine stands); nullptr before the first block of a run.
     const ProgramPtr& lastInterpretedProgram() const { return lastProgram_; }
     std::uint32_t lastInterpretedBlock() const { return lastBlock_; }
+    /// The interpreter's state after the block the machine executes now
+    /// (the interpreter may be the look-ahead ahead); nullptr while the
+    /// machine stands or runs a move no block of this run queued.
+    const QueuedBlockState* executingBlockState() const { return queued_.executing(); }
     /// Sees everything the interpreter (and the restart's jogging) sends to
     /// the machine, as it is sent (the CLI's motion list, recording tests).
     /// Not owned; nullptr = none.
@@ -173,8 +178,11 @@ class Station : private ProgramRunner {
         void dwell(const SourceLocation& where, double seconds) override;
         void command(const SourceLocation& where, const std::string& keyword,
                      const std::string& arguments) override;
+        void sent(const SourceLocation& where);
         SimulatedMachine& machine;
         MachineSink* listener = nullptr;
+        std::uint64_t outputs = 0;  ///< calls so far; `last` is the latest one's location
+        SourceLocation last;
     };
     enum class Run { None, Program, Mdi };
     /// What happens once the machine has worked off its queue.
@@ -202,6 +210,8 @@ class Station : private ProgramRunner {
     bool waitForAxis();
     void finish(const RunResult& result);
     void showCurrentBlock();
+    /// Keeps the interpreter's state after a block that queued work.
+    void recordQueuedBlock(const ProgramPtr& program, std::uint32_t index, int callLevel);
 
     const ProcessConfig& config_;
     ProcessControl control_;
@@ -238,6 +248,7 @@ class Station : private ProgramRunner {
     std::string waitingAxis_;
     ProgramPtr lastProgram_;  ///< program and block interpreted last
     std::uint32_t lastBlock_ = 0;
+    QueuedBlockStates queued_;
 };
 
 }  // namespace mtc::core

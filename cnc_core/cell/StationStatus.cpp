@@ -1,10 +1,12 @@
 #include "cnc_core/cell/StationStatus.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "cnc_core/cell/Station.h"
 #include "cnc_core/interp/AuxFunctionGroups.h"
 #include "cnc_core/interp/MotionPlanner.h"
+#include "cnc_core/machine/AxisNameTable.h"
 
 namespace mtc::core {
 
@@ -59,6 +61,20 @@ std::string oneLine(std::string_view text, std::size_t limit = 160) {
     return line;
 }
 
+/// The interpreter's modal state as of the block the machine executes (the
+/// interpreter may be the look-ahead ahead), its state now when the machine
+/// stands or the block is not known.
+const ModalState& shownModal(const Station& station) {
+    const QueuedBlockState* executing = station.executingBlockState();
+    return executing ? executing->modal : station.interpreter().state().modal;
+}
+
+/// The last M of each group, as of the same block.
+const std::array<int, 17>& shownMGroups(const Station& station) {
+    const QueuedBlockState* executing = station.executingBlockState();
+    return executing ? executing->mGroups : station.interpreter().state().mGroups;
+}
+
 /// The program and block the station shows as current, and its call level.
 struct ShownBlock {
     ProgramPtr program;
@@ -92,6 +108,12 @@ ShownBlock shownBlock(const Station& station) {
     // As Station::showCurrentBlock: the block the machine executes; while it
     // stands, the one interpreted last.
     ShownBlock shown;
+    if (const QueuedBlockState* executing = station.executingBlockState()) {
+        shown.program = executing->source;
+        shown.index = executing->index;
+        shown.level = executing->callLevel;
+        return shown;
+    }
     const SimulatedMachine& machine = station.machine();
     const SourceLocation& at = machine.currentLocation();
     if (!machine.idle() && at.line > 0) {
@@ -150,20 +172,21 @@ SpindleTurn turnOf(int mFunction, int spindle) {
 /// (M3 / M103 for S1, Mj03 for Sj; the interpreter's group rule). Unknown
 /// when that group is group 16 and its last M is not one of the spindle's.
 SpindleTurn spindleTurn(const Station& station, const AuxFunctionGroups& groups, int spindle) {
-    const InterpreterState& state = station.interpreter().state();
+    const std::array<int, 17>& mGroups = shownMGroups(station);
     const int candidates[2] = {spindle * 100 + 3, spindle == 1 ? 3 : -1};
     for (int m : candidates) {
         if (m < 0) continue;
         const int number = groups.groupOf(m);
         if (number < 1 || number > 16) continue;
-        const SpindleTurn turn = turnOf(state.mGroups[static_cast<std::size_t>(number)], spindle);
+        const SpindleTurn turn = turnOf(mGroups[static_cast<std::size_t>(number)], spindle);
         if (turn != SpindleTurn::Unknown) return turn;
     }
     return SpindleTurn::Unknown;
 }
 
 void describeSpindles(const Station& station, StationStatus& status) {
-    const ModalState& modal = station.interpreter().state().modal;
+    const ModalState& modal = shownModal(station);
+    const motion::SpindleSet& machineSpindles = station.machine().spindles();
     const ProcessAxes& axes = station.interpreter().axes();
     const AuxFunctionGroups groups(station.config());
     for (int a = 0; a < axes.count(); ++a) {
@@ -177,10 +200,10 @@ void describeSpindles(const Station& station, StationStatus& status) {
         spindle.programmed = modal.spindleSpeed[j];
         spindle.turn = spindleTurn(station, groups, model.spindleIndex);
         spindle.rotaryAxisMode = modal.rotaryAxisMode[j] != 0;
-        // The simulated spindle reaches its speed at once (no ramp yet).
-        const bool turning =
-            spindle.turn == SpindleTurn::Clockwise || spindle.turn == SpindleTurn::CounterClockwise;
-        spindle.actual = turning && !spindle.rotaryAxisMode ? spindle.programmed : 0.0;
+        // The machine's spindle ramps to its speed (motion::SpindleSet).
+        spindle.actual = spindle.rotaryAxisMode
+                             ? 0.0
+                             : std::abs(machineSpindles.actualSpeed(model.spindleIndex));
         status.spindles.push_back(spindle);
     }
 }
@@ -194,14 +217,14 @@ void describeAxes(const Station& station, StationStatus& status) {
     std::array<double, kMaxAxes> actual{};
     for (int a = 0; a < axes.count() && a < kMaxAxes; ++a)
         actual[static_cast<std::size_t>(a)] = machine.position(a);
-    const std::array<double, kMaxAxes> work = interpreter.programView(actual);
-    const ModalState& modal = interpreter.state().modal;
+    const ModalState& modal = shownModal(station);
+    const std::array<double, kMaxAxes> work = interpreter.programView(actual, modal);
     const MotionPlanner planner(&axes, &interpreter.zeroOffsets());
     for (int a = 0; a < axes.count() && a < kMaxAxes; ++a) {
         const AxisModel& model = axes.axis(a);
         if (model.spindle && !model.rotary) continue;  // a plain spindle turns, it has no position
         AxisStatus axis;
-        axis.name = interpreter.programmedAxisName(a);
+        axis.name = programmedAxisName(axes, modal.transformation, a);
         axis.rotary = model.rotary && !modal.transformation.transforms(a);
         axis.machine = machine.position(a);
         axis.work = work[static_cast<std::size_t>(a)];
@@ -212,7 +235,7 @@ void describeAxes(const Station& station, StationStatus& status) {
 }
 
 void describeTool(const Station& station, StationStatus& status) {
-    const ModalState& modal = station.interpreter().state().modal;
+    const ModalState& modal = shownModal(station);
     status.tool = modal.tool;
     status.edge = modal.edge;
     const ToolEdge* edge = station.interpreter().tools().edge(modal.tool, modal.edge);
@@ -352,7 +375,7 @@ std::uint32_t blockIndexAtLine(const Program& program, int line) {
 
 StationStatus describeStation(const Station& station, int around) {
     StationStatus status;
-    const ModalState& modal = station.interpreter().state().modal;
+    const ModalState& modal = shownModal(station);
     describeAxes(station, status);
     describeSpindles(station, status);
     status.programmedFeed = modal.feed;

@@ -213,6 +213,10 @@ class Interpreter {
     /// offsets and transformation undone, diameter and inch applied (the
     /// inverse of MotionPlanner). E.g. the runtime program's inserted blocks.
     std::array<double, kMaxAxes> programView(const std::array<double, kMaxAxes>& machine) const;
+    /// The same under `modal` (zero offset, units, transformation) instead
+    /// of the state now: a display of a block the interpreter has passed.
+    std::array<double, kMaxAxes> programView(const std::array<double, kMaxAxes>& machine,
+                                             const ModalState& modal) const;
     /// Workpiece coordinate of `axis` as the program sees it now (the
     /// inverse of the conversions of MotionPlanner: mm, degrees, diameter).
     double programmedPosition(int axis) const;

@@ -354,7 +354,12 @@ double Interpreter::programmedPosition(int axis) const {
 
 std::array<double, kMaxAxes> Interpreter::programView(
     const std::array<double, kMaxAxes>& machine) const {
-    ModalState m = state_.modal;
+    return programView(machine, state_.modal);
+}
+
+std::array<double, kMaxAxes> Interpreter::programView(const std::array<double, kMaxAxes>& machine,
+                                                      const ModalState& modal) const {
+    ModalState m = modal;
     m.machine = machine;
     MotionPlanner(&axes_, zeroOffsets_.get()).recomputeWork(m);
     std::array<double, kMaxAxes> out{};

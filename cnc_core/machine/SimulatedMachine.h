@@ -73,6 +73,10 @@ class SimulatedMachine : public MachineSink {
     void hold() { engine_.hold(); }
     void resume() { engine_.resume(); }
     bool held() const { return engine_.held(); }
+    /// Single block: rest at the end of each block, wait for Start there.
+    void setStopAtBlockEnds(bool on) { engine_.setStopAtBlockEnds(on); }
+    bool atBlockStop() const { return engine_.atBlockStop(); }
+    void continueAfterBlockStop() { engine_.continueAfterBlockStop(); }
     /// Control reset: the axes stop at once, the queue is emptied (queued
     /// auxiliary functions never reach the SPS); positions stay.
     void stop();

@@ -8,6 +8,12 @@ namespace mtc::core::motion {
 
 namespace {
 constexpr double kForever = std::numeric_limits<double>::infinity();
+
+/// Two queue entries come from the same block (a block may queue several:
+/// an inserted corner arc and its line, an M function and a move).
+bool sameBlock(const SourceLocation& a, const SourceLocation& b) {
+    return a.program == b.program && a.line == b.line;
+}
 }  // namespace
 
 TrajectoryEngine::TrajectoryEngine(const MotionLimits& limits, std::size_t lookAhead)
@@ -77,6 +83,8 @@ bool TrajectoryEngine::planBackward(bool early) {
     bool last = true;
     for (std::size_t i = queue_.size(); i-- > 0;) {
         QueueItem& item = queue_.at(i);
+        if (blockStops_ && i + 1 < queue_.size() && !sameBlock(item.where, queue_.at(i + 1).where))
+            following = 0.0;  // single block: at rest where the next block begins
         if (item.kind == QueueItem::Kind::Dwell || item.kind == QueueItem::Kind::Timed ||
             (item.kind == QueueItem::Kind::Action && item.action.stopsPath)) {
             following = 0.0;
@@ -131,6 +139,10 @@ double TrajectoryEngine::advance(double seconds) {
     double remaining = seconds;
     while (remaining > 0.0) {
         if (queue_.empty()) {
+            spend(remaining, 0.0);
+            return seconds;
+        }
+        if (atBlockStop_) {  // the axes stand, time passes without work
             spend(remaining, 0.0);
             return seconds;
         }
@@ -264,6 +276,13 @@ void TrajectoryEngine::finishFront() {
         (queue_.front().kind == QueueItem::Kind::Move ||
          (queue_.front().kind == QueueItem::Kind::Action && !queue_.front().action.stopsPath));
     if (!flowsOut || !flowsOn) velocity_ = 0.0;
+    // Single block: wait before the next block when the axes are at rest
+    // (switched on too late to brake, they go on to the next block's end).
+    if (blockStops_ && !queue_.empty() && !sameBlock(lastWhere_, queue_.front().where) &&
+        std::abs(velocity_) < 1e-9) {
+        velocity_ = 0.0;
+        atBlockStop_ = true;
+    }
 }
 
 // --------------------------------------------------------------- operator
@@ -292,6 +311,13 @@ void TrajectoryEngine::resume() {
     replanAll();
 }
 
+void TrajectoryEngine::setStopAtBlockEnds(bool on) {
+    if (on == blockStops_) return;
+    blockStops_ = on;
+    if (!on) atBlockStop_ = false;
+    replanAll();
+}
+
 void TrajectoryEngine::stop() {
     if (!queue_.empty()) {
         lastWhere_ = queue_.front().where;
@@ -302,6 +328,7 @@ void TrajectoryEngine::stop() {
     pathS_ = velocity_ = dwelt_ = 0.0;
     actionApplied_ = false;
     held_ = false;
+    atBlockStop_ = false;
     spindles_.stopAll();
 }
 
@@ -348,7 +375,7 @@ double TrajectoryEngine::position(int axis) const {
 }
 
 bool TrajectoryEngine::moving() const {
-    return !queue_.empty() && (queue_.front().kind == QueueItem::Kind::Move ||
+    return !queue_.empty() && !atBlockStop_ && (queue_.front().kind == QueueItem::Kind::Move ||
                                queue_.front().kind == QueueItem::Kind::Timed);
 }
 
@@ -364,11 +391,12 @@ double TrajectoryEngine::distanceToGo(int axis) const {
 }
 
 const SourceLocation& TrajectoryEngine::currentLocation() const {
-    return queue_.empty() ? lastWhere_ : queue_.front().where;
+    // At a single-block stop the block just finished is the one shown.
+    return queue_.empty() || atBlockStop_ ? lastWhere_ : queue_.front().where;
 }
 
 std::uint32_t TrajectoryEngine::currentBlockIndex() const {
-    return queue_.empty() ? lastBlock_ : queue_.front().blockIndex;
+    return queue_.empty() || atBlockStop_ ? lastBlock_ : queue_.front().blockIndex;
 }
 
 std::vector<std::uint32_t> TrajectoryEngine::takeReached() {

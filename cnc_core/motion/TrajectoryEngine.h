@@ -64,6 +64,14 @@ class TrajectoryEngine {
     /// Continues after hold() from where the axes stand, mid-block.
     void resume();
     bool held() const { return held_; }
+    /// Single block (MOT-015): every block ends at rest and the next one
+    /// waits for continueAfterBlockStop(). Switched on while moving, the
+    /// axes stop at the end of the first block they can still brake for.
+    void setStopAtBlockEnds(bool on);
+    bool stopsAtBlockEnds() const { return blockStops_; }
+    /// The axes stand at the end of a block and the next one waits.
+    bool atBlockStop() const { return atBlockStop_; }
+    void continueAfterBlockStop() { atBlockStop_ = false; }
     /// Control reset: the axes stop where they are at once, the queue is
     /// emptied, the spindles ramp down, a hold is cleared.
     void stop();
@@ -92,7 +100,8 @@ class TrajectoryEngine {
     double velocity() const { return velocity_; }
     /// End of the move being executed minus the position, per axis (0 between moves).
     double distanceToGo(int axis) const;
-    /// The entry being executed, or the last one executed when idle.
+    /// The entry being executed, or the last one executed when idle or at a
+    /// single-block stop.
     const SourceLocation& currentLocation() const;
     /// Forgets the last executed entry (a new run: nothing executed yet).
     void clearLocation() {
@@ -151,6 +160,8 @@ class TrajectoryEngine {
     double feedOverride_ = 100.0;
     double rapidOverride_ = 100.0;
     bool held_ = false;
+    bool blockStops_ = false;   ///< single block: rest at each block's end
+    bool atBlockStop_ = false;  ///< waiting there for continueAfterBlockStop()
     SourceLocation lastWhere_;
     std::uint32_t lastBlock_ = 0;
     std::vector<std::uint32_t> reached_;

@@ -91,6 +91,54 @@ TEST(MotionOperator, HoldBrakesAcrossBlocksWhenTheBlockIsTooShort) {
     EXPECT_EQ(engine.currentLocation().block, "N0001");
 }
 
+/// A move of block N000`line` (single block tells blocks apart by their line).
+Motion blockMove(double from, double to, double feed, int lineNumber) {
+    Motion m = line({from, 0, 0}, {to, 0, 0}, feed);
+    m.where.line = lineNumber;
+    return m;
+}
+
+TEST(MotionOperator, SingleBlockSwitchedOnMidBlockRestsAtTheEndOfThatBlock) {
+    TrajectoryEngine engine(threeAxes());
+    for (int n = 1; n <= 3; ++n)
+        engine.pushMove(blockMove(100.0 * (n - 1), 100.0 * n, 6000, n), {});
+    drive(engine, 0.5);
+    ASSERT_LT(engine.position(0), 100.0);
+    engine.setStopAtBlockEnds(true);
+    drive(engine, 5.0);
+    EXPECT_EQ(engine.position(0), 100.0) << "at rest exactly at the block's end";
+    EXPECT_EQ(engine.velocity(), 0.0);
+    EXPECT_TRUE(engine.atBlockStop());
+    EXPECT_EQ(engine.queuedCount(), 2u) << "the next blocks wait in the queue";
+    const double waited = engine.busySeconds();
+    drive(engine, 3.0);
+    EXPECT_EQ(engine.busySeconds(), waited) << "waiting for Start is no machine time";
+    engine.continueAfterBlockStop();
+    drive(engine, 5.0);
+    EXPECT_EQ(engine.position(0), 200.0);
+    EXPECT_TRUE(engine.atBlockStop());
+    engine.setStopAtBlockEnds(false);
+    EXPECT_FALSE(engine.atBlockStop()) << "switched off: the run goes on";
+    runToIdle(engine);
+    EXPECT_EQ(engine.position(0), 300.0);
+}
+
+TEST(MotionOperator, SingleBlockTooLateToBrakeRestsAtTheNextBlockEnd) {
+    TrajectoryEngine engine(threeAxes());
+    for (int n = 1; n <= 3; ++n)
+        engine.pushMove(blockMove(100.0 * (n - 1), 100.0 * n, 30000, n), {});
+    // At 500 mm/s the braking distance is 50 mm: 10 mm before the end is too late.
+    while (engine.position(0) < 90.0)
+        drive(engine, 0.001);
+    engine.setStopAtBlockEnds(true);
+    drive(engine, 5.0);
+    EXPECT_EQ(engine.position(0), 200.0);
+    EXPECT_EQ(engine.velocity(), 0.0);
+    EXPECT_TRUE(engine.atBlockStop());
+    EXPECT_EQ(engine.currentLocation().line, 2) << "the block just finished is shown";
+    EXPECT_EQ(engine.distanceToGo(0), 0.0);
+}
+
 TEST(MotionOperator, ControlResetStopsAtOnceAndEmptiesTheQueue) {
     TrajectoryEngine engine(threeAxes());
     engine.pushMove(line({0, 0, 0}, {100, 0, 0}, 6000, false, "N0005"), {});

@@ -216,5 +216,28 @@ TEST(StationMotion, TicksDoNotChangeTheResultWithOverridesSpindlesAndAdaptiveFee
     }
 }
 
+TEST(StationMotion, SingleBlockSwitchedOnDuringARunHoldsAtTheEndOfTheRunningBlock) {
+    MillFixture f;
+    core::Station& mill = f.select("N0001 G90 G1 X10 F600\nN0002 X20\nN0003 X30\nN0004 M30\n");
+    ASSERT_TRUE(mill.press(ControlKey::Start));
+    mill.advance(0.5);
+    ASSERT_LT(mill.machine().position(0), 10.0);
+    ASSERT_TRUE(mill.press(ControlKey::SingleBlock));
+    mill.advance(5.0);
+    EXPECT_TRUE(mill.atSingleBlockStop());
+    EXPECT_TRUE(mill.control().programHeld());
+    EXPECT_EQ(mill.machine().position(0), 10.0) << "the look-ahead had queued N0002 already";
+    EXPECT_EQ(mill.control().currentBlock(), "N0001");
+    ASSERT_TRUE(mill.press(ControlKey::Start));
+    mill.advance(5.0);
+    EXPECT_TRUE(mill.atSingleBlockStop());
+    EXPECT_EQ(mill.machine().position(0), 20.0);
+    ASSERT_TRUE(mill.press(ControlKey::SingleBlock));  // off: Start runs to the end
+    ASSERT_TRUE(mill.press(ControlKey::Start));
+    f.runToEnd();
+    EXPECT_EQ(mill.machine().position(0), 30.0);
+    EXPECT_FALSE(mill.control().programActive());
+}
+
 }  // namespace
 }  // namespace mtc::test

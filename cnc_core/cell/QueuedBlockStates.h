@@ -1,0 +1,51 @@
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <deque>
+
+#include "cnc_core/interp/InterpreterState.h"
+#include "cnc_core/language/Diagnostic.h"
+
+namespace mtc::core {
+
+/// The interpreter's state right after a block that gave the machine work.
+/// The interpreter runs up to the look-ahead ahead of the axes, so what the
+/// base screen shows of the block being executed (G functions, zero offset,
+/// tool, spindle direction, call level) must come from here, not from the
+/// interpreter's state now.
+struct QueuedBlockState {
+    int program = 0;  ///< where the block's outputs come from (SourceLocation)
+    int line = 0;
+    ProgramPtr source;        ///< the program of the block
+    std::uint32_t index = 0;  ///< its block index
+    int callLevel = 0;        ///< 0 = main program
+    ModalState modal;
+    std::array<int, 17> mGroups{};
+};
+
+/// The states of the blocks in the machine's queue, oldest first. The
+/// station records one per block with outputs and follows the block the
+/// machine executes; the entries before it are done and dropped.
+class QueuedBlockStates {
+  public:
+    /// Most entries kept: far more than a look-ahead holds; beyond it the
+    /// oldest go (a display falls back to the interpreter's state).
+    static constexpr std::size_t kCapacity = 4096;
+
+    void record(QueuedBlockState state);
+    /// The machine executes `at` (`idle`: nothing): drops what lies before
+    /// the first entry of that location, or everything when idle.
+    void follow(const SourceLocation& at, bool idle);
+    /// The state of the block the machine executes; nullptr when it is not
+    /// one of the recorded blocks (idle, jogging, a restart's move).
+    const QueuedBlockState* executing() const;
+    void clear();
+    std::size_t size() const { return states_.size(); }
+
+  private:
+    std::deque<QueuedBlockState> states_;
+    bool matched_ = false;  ///< the front is the block the machine executes
+};
+
+}  // namespace mtc::core
