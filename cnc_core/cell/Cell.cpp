@@ -85,11 +85,13 @@ void Cell::setNcOptions(NcOptions options) {
 
 void Cell::reparseNaming(const std::vector<std::string>& names) {
     std::vector<std::pair<std::pair<int, int>, ProgramPtr>> affected;
-    for (const auto& [key, program] : store_.programs()) {
+    for (const auto& entry : store_.programs()) {
+        // (No structured binding: clang's C++17 cannot capture one in a lambda.)
+        const ProgramPtr& program = entry.second;
         const bool names_one = std::any_of(names.begin(), names.end(), [&](const std::string& n) {
             return program->source.find(n) != std::string::npos;
         });
-        if (names_one) affected.emplace_back(key, program);
+        if (names_one) affected.emplace_back(entry.first, program);
     }
     for (const auto& [key, program] : affected)
         store_.put(key.first, key.second,
