@@ -3,8 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
-#include "cnc_core/machine_data/SharedMachineDataFile.h"
 #include "cnc_core/machine_data/MachineDataStore.h"
+#include "cnc_core/machine_data/SharedMachineDataFile.h"
+#include "cnc_core/tooldata/SetupDataEditor.h"
 #include "hmi/NcOptionsHolder.h"
 
 namespace mtc::hmi {
@@ -41,6 +42,8 @@ CellSession::CellSession(mtc::core::MachineConfig config, QObject* parent)
     refreshTimer_.setInterval(kRefreshMs);
     connect(&refreshTimer_, &QTimer::timeout, this, [this] { refreshMachineData(); });
     ncOptions_ = std::make_unique<NcOptionsHolder>(this);
+    setupEditor_ =
+        std::make_unique<mtc::core::SetupDataEditor>(setupData(), mtc::core::SetupDataFiles{});
 }
 
 void CellSession::setProgramDirectory(const QString& directory) {
@@ -159,15 +162,20 @@ QStringList CellSession::openMachineDataFile(const QString& path) {
     machineDataMessages_.clear();
     sharedData_.reset();
     refreshTimer_.stop();
+    setupEditor_ =
+        std::make_unique<mtc::core::SetupDataEditor>(setupData(), mtc::core::SetupDataFiles{});
     if (path.isEmpty()) return machineDataMessages_;
     sharedData_ = std::make_unique<mtc::core::SharedMachineDataFile>(path.toStdString());
     const mtc::core::MachineDataLoadResult result = sharedData_->open(machineData());
     savedRevision_ = machineData().revision();
     for (const mtc::core::Diagnostic& d : result.diagnostics.items())
         machineDataMessages_ << QString::fromStdString(d.message);
-    // Tool lists and zero offsets beside it (a refused file changes nothing).
+    // Tool lists and zero offsets beside it (a refused file changes nothing);
+    // the editor looks at the files before they are read (SetupDataEditor).
+    const mtc::core::SetupDataFiles files = mtc::core::setupDataFilesBeside(path.toStdString());
+    setupEditor_ = std::make_unique<mtc::core::SetupDataEditor>(setupData(), files);
     mtc::core::DiagnosticList setup;
-    setupData().load(mtc::core::setupDataFilesBeside(path.toStdString()), setup);
+    setupData().load(files, setup);
     for (const mtc::core::Diagnostic& d : setup.items())
         machineDataMessages_ << QString::fromStdString(d.message);
     refreshTimer_.start();

@@ -18,6 +18,7 @@ class AfcTrendRecorder;
 class Interpreter;
 class MachineDataStore;
 class SharedMachineDataFile;
+class SetupDataEditor;
 class SimulatedMachine;
 }  // namespace mtc::core
 
@@ -81,7 +82,9 @@ class CellSession : public QObject {
     /// Problems the program loader found with files of the program
     /// directory (unreadable, not a file, bad name, duplicate, stale
     /// temporary removed): every station's error window lists them.
-    void setLoadProblems(mtc::core::DiagnosticList problems) { loadProblems_ = std::move(problems); }
+    void setLoadProblems(mtc::core::DiagnosticList problems) {
+        loadProblems_ = std::move(problems);
+    }
     const mtc::core::DiagnosticList& loadProblems() const { return loadProblems_; }
     /// The NC options of the cell, shared by both stations (seed 001 ch. 4, 7, 8).
     NcOptionsHolder& ncOptions() { return *ncOptions_; }
@@ -119,6 +122,10 @@ class CellSession : public QObject {
     /// Tool lists and zero offsets of every process; the interpreters read them.
     mtc::core::SetupData& setupData() { return cell_.setupData(); }
     const mtc::core::SetupData& setupData() const { return cell_.setupData(); }
+    /// Every operator change of the tool lists and zero offsets goes through
+    /// it: checked, effective for the next block, saved beside the machine
+    /// data file under its lock (not kept without a machine data file).
+    mtc::core::SetupDataEditor& setupEditor() { return *setupEditor_; }
     /// Keeps the machine data in `path` from now on: loads it (a damaged
     /// file is kept aside, the defaults stay) and returns what the user must
     /// be told (also kept in machineDataMessages()). Empty path: nothing is kept.
@@ -178,6 +185,7 @@ class CellSession : public QObject {
     std::uint64_t savedRevision_ = 0;  ///< store revision the file holds
     QString autoSaveError_;
     std::unique_ptr<NcOptionsHolder> ncOptions_;
+    std::unique_ptr<mtc::core::SetupDataEditor> setupEditor_;
 };
 
 }  // namespace mtc::hmi

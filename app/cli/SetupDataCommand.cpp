@@ -7,6 +7,7 @@
 #include "cli/MachineSetup.h"
 #include "cnc_core/machine_data/MachineDataLocation.h"
 #include "cnc_core/tooldata/SetupData.h"
+#include "cnc_core/tooldata/SetupDataEditor.h"
 
 namespace mtc::cli {
 
@@ -19,6 +20,7 @@ struct Session {
     core::SetupDataFiles files;
     bool defaultLocation = false;
     core::DiagnosticList diagnostics;
+    std::optional<core::SetupDataEditor> editor;
 };
 
 /// Loads machine, process and the data files; false (exit code set) on failure.
@@ -35,6 +37,9 @@ bool open(const CliOptions& options, Session& s, int& exitCode) {
     s.defaultLocation = data.empty();
     s.files = core::setupDataFilesBeside(data.empty() ? core::defaultMachineDataPath(s.config.name)
                                                       : data);
+    // Before the files are read: a change another program makes from now on
+    // is taken over when this one saves.
+    s.editor.emplace(*s.data, s.files, "command line");
     if (!s.data->load(s.files, problems) || problems.hasErrors()) {
         exitCode = reportSetupFailure(problems, options.json);
         return false;
@@ -42,21 +47,28 @@ bool open(const CliOptions& options, Session& s, int& exitCode) {
     return true;
 }
 
-/// Saves one file after a change; false (diagnostic) when it cannot.
-bool save(Session& s, bool tools) {
+/// Before a change goes through the editor (checks, lock, atomic save): the
+/// default location's folder is made; without a file a warning says the
+/// change is not kept. False (diagnostic) when the folder cannot be made.
+bool prepareSave(Session& s, bool tools) {
     const std::string& file = tools ? s.files.tools : s.files.offsets;
-    if (file.empty()) {
-        s.diagnostics.warning("SETUP_DATA_NOT_KEPT", {},
-                              "--data - keeps nothing: the change is not saved");
-        return true;
-    }
     std::string error;
-    if (s.defaultLocation && !core::makeParentDirectories(file, error)) {
+    if (!file.empty() && s.defaultLocation && !core::makeParentDirectories(file, error)) {
         s.diagnostics.error(tools ? "TOOL_FILE_SAVE" : "OFFSET_FILE_SAVE", {}, file + ": " + error);
         return false;
     }
-    return tools ? s.data->saveTools(file, s.diagnostics)
-                 : s.data->saveOffsets(file, s.diagnostics);
+    if (file.empty())
+        s.diagnostics.warning("SETUP_DATA_NOT_KEPT", {},
+                              "--data - keeps nothing: the change is not saved");
+    return true;
+}
+
+/// Exit code of a change: 0 done (and saved where kept), 1 refused, 2 not saved.
+int editOutcome(Session& s, const core::SetupDataEdit& edit, bool tools) {
+    s.diagnostics.append(edit.diagnostics);
+    const std::string& file = tools ? s.files.tools : s.files.offsets;
+    if (!edit.changed) return 1;
+    return edit.saved || file.empty() ? 0 : 2;
 }
 
 // ------------------------------------------------------------------ tools
@@ -138,7 +150,8 @@ int toolsGet(const CliOptions& options, Session& s) {
     if (options.arguments.size() == 2) {
         long long t = 0;
         int exitCode = 2;
-        if (!tag(options.arguments[1], 'T', 9999999, t, exitCode, options.json)) return exitCode;
+        if (!tag(options.arguments[1], 'T', core::kMaxToolNumber, t, exitCode, options.json))
+            return exitCode;
         const core::Tool* tool = list.find(static_cast<int>(t));
         if (!tool) {
             s.diagnostics.error("TOOL_UNKNOWN", {},
@@ -164,52 +177,37 @@ int toolsSet(const CliOptions& options, Session& s) {
             "'tools set' needs T<n> [E<m>] KEY=VALUE... (or T<n> [E<m>] delete)", options.json);
     long long t = 0, e = 1;
     int exitCode = 2;
-    if (!tag(args[1], 'T', 9999999, t, exitCode, options.json)) return exitCode;
+    if (!tag(args[1], 'T', core::kMaxToolNumber, t, exitCode, options.json)) return exitCode;
     std::size_t next = 2;
     const bool edgeGiven = args[2].size() >= 2 && args[2][0] == 'E';
-    if (edgeGiven && !tag(args[2], 'E', 9, e, exitCode, options.json)) return exitCode;
+    if (edgeGiven && !tag(args[2], 'E', core::kMaxEdgeNumber, e, exitCode, options.json))
+        return exitCode;
     if (edgeGiven) ++next;
-    core::ToolList& list = *s.data->tools(options.process);
     const int number = static_cast<int>(t), edgeNumber = static_cast<int>(e);
-    if (next + 1 == args.size() && args[next] == "delete") {
-        const bool removed =
-            edgeGiven ? list.removeEdge(number, edgeNumber) : list.removeTool(number);
-        if (!removed) {
-            s.diagnostics.error(
-                "TOOL_UNKNOWN", {},
-                "T" + std::to_string(t) + (edgeGiven ? " E" + std::to_string(e) : std::string()) +
-                    " is not in the tool list of process " + std::to_string(options.process));
-            printTools(s, options.process, {}, options.json);
-            if (!options.json) printRefusedDiagnostics(s.diagnostics);
-            return 1;
-        }
-    } else {
-        const core::ToolEdge* existing = list.edge(number, edgeNumber);
-        core::ToolEdge edge = existing ? *existing : core::ToolEdge{};
-        edge.edge = edgeNumber;
-        std::string name;
-        core::DataFileText text("command line", s.diagnostics, "TOOL_VALUE");
-        for (std::size_t i = next; i < args.size(); ++i) {
-            const std::size_t eq = args[i].find('=');
-            if (eq == std::string::npos)
-                return reportUsageError(
-                    "expected KEY=VALUE, got '" + args[i] + "'; keys: " + core::toolKeysHelp(),
-                    options.json);
-            core::applyToolValue(text, 0, args[i].substr(0, eq), args[i].substr(eq + 1), edge,
-                                 name);
-        }
-        if (text.failed()) {  // nothing is changed or saved
-            printTools(s, options.process, {}, options.json);
-            if (!options.json) printRefusedDiagnostics(s.diagnostics);
-            return 1;
-        }
-        list.setEdge(number, edge, name);
+    core::SetupDataEditor::KeyValues values;
+    const bool remove = next + 1 == args.size() && args[next] == "delete";
+    for (std::size_t i = next; i < args.size() && !remove; ++i) {
+        const std::size_t eq = args[i].find('=');
+        if (eq == std::string::npos)
+            return reportUsageError(
+                "expected KEY=VALUE, got '" + args[i] + "'; keys: " + core::toolKeysHelp(),
+                options.json);
+        values.emplace_back(args[i].substr(0, eq), args[i].substr(eq + 1));
     }
-    if (!save(s, true)) {
+    int result = 2;
+    if (prepareSave(s, true)) {
+        const core::SetupDataEdit edit =
+            !remove     ? s.editor->setToolValues(options.process, number, edgeNumber, values)
+            : edgeGiven ? s.editor->removeEdge(options.process, number, edgeNumber)
+                        : s.editor->removeTool(options.process, number);
+        result = editOutcome(s, edit, true);
+    }
+    if (result != 0) {  // refused: nothing changed; 2: not saved
         printTools(s, options.process, {}, options.json);
         if (!options.json) printRefusedDiagnostics(s.diagnostics);
-        return 2;
+        return result;
     }
+    const core::ToolList& list = *s.data->tools(options.process);
     std::vector<const core::Tool*> shown;
     if (const core::Tool* tool = list.find(number)) shown.push_back(tool);
     printTools(s, options.process, shown, options.json);
@@ -218,29 +216,10 @@ int toolsSet(const CliOptions& options, Session& s) {
 
 // ---------------------------------------------------------------- offsets
 
-/// Columns shown for a process: the definitions its axes can have, plus
-/// every column with a value.
-std::vector<core::AxisDefinition> shownColumns(const core::ProcessConfig& process,
-                                               const core::ZeroOffsetTable& table) {
-    std::vector<core::AxisDefinition> columns;
-    for (int d = 0; d < core::kDefinitionCount; ++d) {
-        const auto definition = static_cast<core::AxisDefinition>(d);
-        bool used = false;
-        for (const core::AxisConfig& axis : process.axes)
-            for (const std::string& name : axis.definitions)
-                used =
-                    used || (name.size() == 1 && core::definitionFromLetter(name[0]) == definition);
-        for (int code = 54; code <= 59; ++code)
-            used = used || table.value(code, definition) != 0.0;
-        if (used) columns.push_back(definition);
-    }
-    return columns;
-}
-
 void printOffsets(const Session& s, int process, const std::vector<int>& codes, bool asJson) {
     const core::ZeroOffsetTable& table = *s.data->offsets(process);
     const std::vector<core::AxisDefinition> columns =
-        shownColumns(*s.config.process(process), table);
+        core::zeroOffsetColumns(*s.config.process(process), table);
     if (asJson) {
         JsonWriter json(stdout);
         beginStatusDocument(json, s.diagnostics.hasErrors() ? "error" : "ok");
@@ -300,25 +279,20 @@ int offsetsSet(const CliOptions& options, Session& s) {
             "'offsets set' needs G54..G59 COLUMN=VALUE... (columns X Y Z U V W "
             "A B C)",
             options.json);
-    core::ZeroOffsetTable changed = *s.data->offsets(options.process);
-    core::DataFileText text("command line", s.diagnostics, "OFFSET_VALUE");
+    core::SetupDataEditor::KeyValues values;
     for (std::size_t i = 2; i < args.size(); ++i) {
         const std::size_t eq = args[i].find('=');
         if (eq == std::string::npos)
             return reportUsageError("expected COLUMN=VALUE, got '" + args[i] + "'", options.json);
-        core::applyOffsetValue(text, 0, code, args[i].substr(0, eq), args[i].substr(eq + 1),
-                               changed);
+        values.emplace_back(args[i].substr(0, eq), args[i].substr(eq + 1));
     }
-    if (text.failed()) {
+    int result = 2;
+    if (prepareSave(s, false))
+        result = editOutcome(s, s.editor->setOffsets(options.process, code, values), false);
+    if (result != 0) {
         printOffsets(s, options.process, {}, options.json);
         if (!options.json) printRefusedDiagnostics(s.diagnostics);
-        return 1;
-    }
-    *s.data->offsets(options.process) = changed;
-    if (!save(s, false)) {
-        printOffsets(s, options.process, {}, options.json);
-        if (!options.json) printRefusedDiagnostics(s.diagnostics);
-        return 2;
+        return result;
     }
     printOffsets(s, options.process, {code}, options.json);
     return 0;

@@ -62,6 +62,15 @@ void appendRecord(std::string& out, const Tool& tool, const ToolEdge& e) {
 
 }  // namespace
 
+std::string toolValueRange(const std::string& key) {
+    for (const NumberKey& k : kNumberKeys)
+        if (key == k.key)
+            return formatDataNumber(k.low) + " .. " + formatDataNumber(k.high) + " " + k.unit;
+    if (key == "orientation") return "0 .. 9";
+    if (key == "name") return "1..24 of A-Z a-z 0-9 _ - .";
+    return {};
+}
+
 const char* toolKeysHelp() {
     return "radius (0..999.99999 mm), radius_wear (-99.99999..99.99999 mm), l1 l2 l3 "
            "(-9999.9999..9999.9999 mm), l1_wear l2_wear l3_wear (-99.99999..99.99999 mm), "
@@ -115,8 +124,8 @@ bool parseToolFile(std::string_view text, const std::string& fileName, ToolLists
     auto record = [&](int line, int process, std::string_view body) {
         const std::vector<std::string_view> words = wordsOf(body);
         long long t = 0, e = 0;
-        if (words.size() < 2 || !tagNumber(reader, line, words[0], 'T', 9999999, t) ||
-            !tagNumber(reader, line, words[1], 'E', 9, e))
+        if (words.size() < 2 || !tagNumber(reader, line, words[0], 'T', kMaxToolNumber, t) ||
+            !tagNumber(reader, line, words[1], 'E', kMaxEdgeNumber, e))
             return;
         ToolEdge edge;
         edge.edge = static_cast<int>(e);

@@ -12,6 +12,10 @@ namespace mtc::core {
 /// The tool lists of a cell by process number.
 using ToolLists = std::map<int, ToolList>;
 
+/// Largest tool number T and cutting edge number E (seed 001 ch. 6).
+inline constexpr long long kMaxToolNumber = 9999999;
+inline constexpr long long kMaxEdgeNumber = 9;
+
 /// Format name of the tool list file (docs/TOOL-DATA.md).
 inline constexpr std::string_view kToolFileFormat = "mtc200-tools";
 
@@ -31,6 +35,10 @@ bool parseToolFile(std::string_view text, const std::string& fileName, ToolLists
 /// the value is out of its range.
 bool applyToolValue(DataFileText& text, int line, const std::string& key, const std::string& value,
                     ToolEdge& edge, std::string& name);
+
+/// The allowed range of one edge key as refusals name it ("0 .. 999.99999
+/// mm", "0 .. 9"; "" for an unknown key), for prompts.
+std::string toolValueRange(const std::string& key);
 
 /// The keys of an edge record with their allowed ranges, for help texts.
 const char* toolKeysHelp();

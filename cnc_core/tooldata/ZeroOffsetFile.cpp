@@ -8,6 +8,22 @@ int zeroOffsetCode(std::string_view word) {
     return 0;
 }
 
+std::vector<AxisDefinition> zeroOffsetColumns(const ProcessConfig& process,
+                                              const ZeroOffsetTable& table) {
+    std::vector<AxisDefinition> columns;
+    for (int d = 0; d < kDefinitionCount; ++d) {
+        const auto definition = static_cast<AxisDefinition>(d);
+        bool used = false;
+        for (const AxisConfig& axis : process.axes)
+            for (const std::string& name : axis.definitions)
+                used = used || (name.size() == 1 && definitionFromLetter(name[0]) == definition);
+        for (int code = 54; code <= 59; ++code)
+            used = used || table.value(code, definition) != 0.0;
+        if (used) columns.push_back(definition);
+    }
+    return columns;
+}
+
 bool applyOffsetValue(DataFileText& text, int line, int code, const std::string& column,
                       const std::string& value, ZeroOffsetTable& table) {
     const AxisDefinition d =

@@ -3,6 +3,7 @@
 #include <map>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "cnc_core/machine/ZeroOffsetTable.h"
 #include "cnc_core/tooldata/DataFileText.h"
@@ -32,6 +33,11 @@ bool parseOffsetFile(std::string_view text, const std::string& fileName, ZeroOff
 /// `mtc200-cli offsets set` takes) into `table`; false with a refusal.
 bool applyOffsetValue(DataFileText& text, int line, int code, const std::string& column,
                       const std::string& value, ZeroOffsetTable& table);
+
+/// The columns shown for a process (CLI, panel): every definition its axes
+/// can have (docs/MACHINE-CONFIG.md), plus every column that holds a value.
+std::vector<AxisDefinition> zeroOffsetColumns(const ProcessConfig& process,
+                                              const ZeroOffsetTable& table);
 
 /// "G54" -> 54 (G54..G59); 0 otherwise.
 int zeroOffsetCode(std::string_view word);
