@@ -22,6 +22,8 @@
 #include "screens/restart/RestartScreen.h"
 #include "screens/runtime/RuntimeScreen.h"
 #include "screens/signals/SignalsScreen.h"
+#include "screens/tooldata/ToolTableScreen.h"
+#include "screens/tooldata/ZeroOffsetScreen.h"
 #include "screens/toolpath/ToolpathLink.h"
 #include "screens/toolpath/ToolpathScreen.h"
 
@@ -78,6 +80,11 @@ void registerAllScreens(mtc::hmi::ScreenRegistry& registry) {
                  [](const ScreenContext& c) { return new SignalsScreen(c); });
     registry.add("machine-data", "Machine data",
                  [](const ScreenContext& c) { return new MachineDataScreen(c); });
+    // Tool table and zero offsets of the station's process (setup data).
+    registry.add("tools", "Tool table",
+                 [](const ScreenContext& c) { return new ToolTableScreen(c); });
+    registry.add("offsets", "Zero offsets",
+                 [](const ScreenContext& c) { return new ZeroOffsetScreen(c); });
     registry.add("afc-trend", "Adaptive feed trend",
                  [](const ScreenContext& c) { return new AfcTrendScreen(c); });
     registry.add("help", "Key assignments",

@@ -1,0 +1,79 @@
+#include "screens/tooldata/ZeroOffsetScreen.h"
+
+#include "cnc_core/tooldata/DataFileText.h"
+#include "cnc_core/tooldata/SetupDataEditor.h"
+#include "cnc_core/tooldata/ZeroOffsetFile.h"
+#include "hmi/CellSession.h"
+#include "screens/tooldata/ZeroOffsetModel.h"
+
+namespace mtc::screens {
+
+ZeroOffsetScreen::ZeroOffsetScreen(const mtc::hmi::ScreenContext& context)
+    : SetupTableScreen(context, "offset") {
+    model_ = new ZeroOffsetModel(&context.session->processConfig(context.process),
+                                 context.session->setupData().offsets(processNumber()), this);
+    setModel(model_);
+    updateHeading();
+}
+
+void ZeroOffsetScreen::activated() {
+    model_->refresh();
+    updateHeading();
+    showCursor();
+}
+
+void ZeroOffsetScreen::updateHeading() {
+    const std::string& file = context().session->setupEditor().files().offsets;
+    const auto& process = context().session->processConfig(context().process);
+    QString axes;
+    for (const mtc::core::AxisConfig& axis : process.axes)
+        axes += (axes.isEmpty() ? "" : " ") + QString::fromStdString(axis.name);
+    setHeading(QString("Zero offsets of process %1 (%2), axes %3; a column applies to the axis "
+                       "with that definition    file: %4")
+                   .arg(process.index)
+                   .arg(QString::fromStdString(process.name), axes,
+                        file.empty() ? QString("not kept") : QString::fromStdString(file)));
+}
+
+mtc::hmi::SoftKeys ZeroOffsetScreen::softKeys() {
+    mtc::hmi::SoftKeys keys(8);
+    keys[0] = {"Edit", [this] { startEdit(); }};
+    keys[7] = {"Back", [this] { emit navigateTo("menu"); }};
+    return keys;
+}
+
+QString ZeroOffsetScreen::cellName() const {
+    return QString("G%1 %2").arg(model_->currentCode()).arg(QChar(model_->currentColumn()));
+}
+
+void ZeroOffsetScreen::startEdit() {
+    if (editing_) return;
+    if (model_->currentColumn() == '\0') {
+        say("Put the cursor on an axis column (cursor right) to change an offset");
+        return;
+    }
+    const std::string limit = mtc::core::formatDataNumber(mtc::core::kMaxZeroOffset);
+    editing_ = true;
+    openInput(QString("New zero offset %1 (-%2 .. %2 mm, degrees on a rotary axis):")
+                  .arg(cellName(), QString::fromStdString(limit)),
+              model_->currentValueText());
+}
+
+void ZeroOffsetScreen::inputConfirmed(const QString& text) {
+    editing_ = false;
+    const QString what = cellName();
+    const QString old = model_->currentValueText();
+    const mtc::core::SetupDataEdit edit = context().session->setupEditor().setOffsets(
+        processNumber(), model_->currentCode(),
+        {{std::string(1, model_->currentColumn()), text.toStdString()}});
+    model_->refresh();
+    say(outcomeText(edit, what + " = " + model_->currentValueText(), what + " stays " + old));
+    showCursor();
+}
+
+void ZeroOffsetScreen::inputCancelled() {
+    editing_ = false;
+    say("Input cancelled: " + cellName() + " stays " + model_->currentValueText());
+}
+
+}  // namespace mtc::screens
