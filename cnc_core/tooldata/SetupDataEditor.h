@@ -37,7 +37,7 @@ struct SetupDataEdit {
 /// lock the machine data file uses, bounded wait) the file is read again
 /// and, when another program changed it since this editor last read or
 /// wrote it, its processes are taken over before the change is applied and
-/// written (docs/decisions/tool-data.md TOOL-010).
+/// written (docs/decisions/tool-data.md TOOL-006).
 class SetupDataEditor {
   public:
     using KeyValues = std::vector<std::pair<std::string, std::string>>;

@@ -45,7 +45,7 @@ QVariant CursorTableModel::data(const QModelIndex& index, int role) const {
             return (index.row() == row_ ? QString("\u2192") : QString(" ")) + text;
         }
         case Qt::TextAlignmentRole:
-            return QVariant::fromValue(
+            return static_cast<int>(
                 Qt::AlignVCenter | (rightAligned(index.column()) ? Qt::AlignRight : Qt::AlignLeft));
         case Qt::BackgroundRole:
             if (atCursor) return QBrush(QPalette().color(QPalette::Highlight));

@@ -4,6 +4,7 @@
 #include <QKeyEvent>
 #include <QLabel>
 #include <QTableView>
+#include <QTimer>
 #include <QVBoxLayout>
 #include <algorithm>
 
@@ -49,11 +50,13 @@ SetupTableScreen::SetupTableScreen(const mtc::hmi::ScreenContext& context, const
     input_->close();
 }
 
-void SetupTableScreen::setModel(CursorTableModel* model) {
+void SetupTableScreen::setModel(CursorTableModel* model, bool stretch) {
     model_ = model;
     table_->setModel(model);
-    table_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
-    table_->horizontalHeader()->setStretchLastSection(true);
+    QHeaderView* header = table_->horizontalHeader();
+    header->setSectionResizeMode(stretch ? QHeaderView::Stretch : QHeaderView::ResizeToContents);
+    if (stretch) header->setSectionResizeMode(0, QHeaderView::ResizeToContents);
+    header->setStretchLastSection(false);
 }
 
 int SetupTableScreen::processNumber() const {
@@ -111,8 +114,13 @@ bool SetupTableScreen::browseKey(int key) {
 }
 
 void SetupTableScreen::showCursor() {
-    if (model_ && model_->rowCount() > 0)
-        table_->scrollTo(model_->index(model_->cursorRow(), model_->cursorColumn()));
+    if (!model_ || model_->rowCount() == 0) return;
+    // Before the first layout the viewport is a few pixels wide and would
+    // scroll the table to its last columns: scroll once it has its size.
+    QTimer::singleShot(0, this, [this] {
+        if (model_->rowCount() > 0)
+            table_->scrollTo(model_->index(model_->cursorRow(), model_->cursorColumn()));
+    });
 }
 
 void SetupTableScreen::openInput(const QString& prompt, const QString& text) {

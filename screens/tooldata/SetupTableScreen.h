@@ -26,8 +26,9 @@ class SetupTableScreen : public mtc::hmi::Screen {
     SetupTableScreen(const mtc::hmi::ScreenContext& context, const char* prefix);
 
   protected:
-    /// Call once the model exists: shows it in the table.
-    void setModel(CursorTableModel* model);
+    /// Call once the model exists: shows it in the table, the columns as
+    /// wide as their contents or (`stretch`) sharing the width.
+    void setModel(CursorTableModel* model, bool stretch);
     bool eventFilter(QObject* watched, QEvent* event) override;
     void hideEvent(QHideEvent* event) override;
 

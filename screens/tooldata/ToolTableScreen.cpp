@@ -12,7 +12,7 @@ namespace mtc::screens {
 ToolTableScreen::ToolTableScreen(const mtc::hmi::ScreenContext& context)
     : SetupTableScreen(context, "tool") {
     model_ = new ToolTableModel(context.session->setupData().tools(processNumber()), this);
-    setModel(model_);
+    setModel(model_, false);
     model_->setCursor(0, ToolTableModel::Radius);
     updateHeading();
 }
@@ -26,11 +26,12 @@ void ToolTableScreen::activated() {
 void ToolTableScreen::updateHeading() {
     const std::string& file = context().session->setupEditor().files().tools;
     const auto& process = context().session->processConfig(context().process);
-    setHeading(QString("Tool list of process %1 (%2): %3 edges    file: %4")
+    setHeading(QString("Tool list of process %1 (%2): %3 edges\nFile: %4")
                    .arg(process.index)
                    .arg(QString::fromStdString(process.name))
                    .arg(model_->rowCount())
-                   .arg(file.empty() ? QString("not kept") : QString::fromStdString(file)));
+                   .arg(file.empty() ? QString("none, changes hold until the panel ends")
+                                     : QString::fromStdString(file)));
 }
 
 mtc::hmi::SoftKeys ToolTableScreen::softKeys() {

@@ -12,7 +12,7 @@ ZeroOffsetScreen::ZeroOffsetScreen(const mtc::hmi::ScreenContext& context)
     : SetupTableScreen(context, "offset") {
     model_ = new ZeroOffsetModel(&context.session->processConfig(context.process),
                                  context.session->setupData().offsets(processNumber()), this);
-    setModel(model_);
+    setModel(model_, true);
     updateHeading();
 }
 
@@ -25,14 +25,24 @@ void ZeroOffsetScreen::activated() {
 void ZeroOffsetScreen::updateHeading() {
     const std::string& file = context().session->setupEditor().files().offsets;
     const auto& process = context().session->processConfig(context().process);
+    // Which axis can use which column (G20 may change an axis's definition).
     QString axes;
-    for (const mtc::core::AxisConfig& axis : process.axes)
-        axes += (axes.isEmpty() ? "" : " ") + QString::fromStdString(axis.name);
-    setHeading(QString("Zero offsets of process %1 (%2), axes %3; a column applies to the axis "
-                       "with that definition    file: %4")
+    for (const mtc::core::AxisConfig& axis : process.axes) {
+        QStringList letters;
+        for (const std::string& d : axis.definitions)
+            if (d.size() == 1 &&
+                mtc::core::definitionFromLetter(d[0]) != mtc::core::AxisDefinition::None)
+                letters << QString::fromStdString(d);
+        if (letters.isEmpty()) continue;  // a spindle
+        axes += (axes.isEmpty() ? "" : "  ") + QString::fromStdString(axis.name) + ": " +
+                letters.join('/');
+    }
+    setHeading(QString("Zero offsets of process %1 (%2). Columns are axis definitions (axis: "
+                       "definitions %3)\nFile: %4")
                    .arg(process.index)
                    .arg(QString::fromStdString(process.name), axes,
-                        file.empty() ? QString("not kept") : QString::fromStdString(file)));
+                        file.empty() ? QString("none, changes hold until the panel ends")
+                                     : QString::fromStdString(file)));
 }
 
 mtc::hmi::SoftKeys ZeroOffsetScreen::softKeys() {

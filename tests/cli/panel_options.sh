@@ -7,7 +7,7 @@ out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
 export XDG_CONFIG_HOME="$out/config"
 
-for screen in menu programs signals help; do
+for screen in menu programs signals help tools offsets; do
   "$MTC_PANEL" --screen "$screen" --screenshot "$out/$screen.png" 2>"$out/err"
   rc=$?
   check "screenshot of $screen exits 0" "[ $rc -eq 0 ]"
