@@ -224,8 +224,8 @@ class ToolScreensTest : public QObject {
         QVERIFY(ToolPanel::file(dir.filePath("cell.tools")).contains("T1 E1 radius=1.4 "));
         QCOMPARE(panel.session->setupData().tools(0)->edge(1, 1)->radius, 3.5);
         const std::vector<double> wider = panel.run(1, 61, kLatheProgram);
-        // The tool nose runs along -Z: one more mm of radius is one more mm
-        // between the contour and the tool centre on X... or Z at the end.
+        // One more mm of radius puts the tool nose centre one more mm away
+        // from the contour: the end point moves by 1 mm in all.
         double moved = 0.0;
         for (std::size_t axis = 0; axis < before.size(); ++axis)
             moved += std::abs(wider.at(axis) - before.at(axis));
