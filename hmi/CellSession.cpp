@@ -40,7 +40,10 @@ CellSession::CellSession(mtc::core::MachineConfig config, QObject* parent)
             saveTimer_.start();
     });
     refreshTimer_.setInterval(kRefreshMs);
-    connect(&refreshTimer_, &QTimer::timeout, this, [this] { refreshMachineData(); });
+    connect(&refreshTimer_, &QTimer::timeout, this, [this] {
+        refreshMachineData();
+        refreshSetupData();
+    });
     ncOptions_ = std::make_unique<NcOptionsHolder>(this);
     setupEditor_ =
         std::make_unique<mtc::core::SetupDataEditor>(setupData(), mtc::core::SetupDataFiles{});
@@ -211,6 +214,17 @@ bool CellSession::saveMachineData(QString& error) {
             emit processChanged(slot);
     }
     return true;
+}
+
+void CellSession::refreshSetupData() {
+    mtc::core::DiagnosticList notes;
+    const bool takenOver = setupEditor_->refresh(notes);
+    for (const mtc::core::Diagnostic& d : notes.items())
+        machineDataMessages_ << QString::fromStdString(d.message);
+    if (!notes.empty()) emit setupDataNotice(QString::fromStdString(notes.items().back().message));
+    if (takenOver)
+        for (int slot = 0; slot < processCount(); ++slot)
+            emit processChanged(slot);
 }
 
 int CellSession::refreshMachineData() {

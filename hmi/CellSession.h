@@ -139,6 +139,10 @@ class CellSession : public QObject {
     /// Looks whether another program changed the data file and takes its
     /// values over (the panel checks every kRefreshMs). Returns how many.
     int refreshMachineData();
+    /// Takes over the tool lists and zero offsets another program (`tools
+    /// set`, a second panel) saved to the files beside the data file; the
+    /// panel checks every kRefreshMs with the machine data.
+    void refreshSetupData();
     /// Interval of the check for changes by other programs.
     static constexpr int kRefreshMs = 1000;
     /// True while values changed since the last save or load (MTD writes of
@@ -160,6 +164,9 @@ class CellSession : public QObject {
     /// Values of the machine data file another program changed were taken
     /// over (`message` says how many and from which file).
     void machineDataNotice(const QString& message);
+    /// Tool lists or zero offsets of the files were taken over, or a file
+    /// another program wrote is refused (`message` says which).
+    void setupDataNotice(const QString& message);
     /// The speed factor changed.
     void speedChanged();
 

@@ -146,6 +146,27 @@ SetupDataEdit SetupDataEditor::setOffsets(int process, int code, const KeyValues
     });
 }
 
+bool SetupDataEditor::refresh(DiagnosticList& diagnostics) {
+    constexpr double kLookWait = 0.1;  // a writer holds the lock for milliseconds
+    bool takenOver = false;
+    for (const bool tools : {true, false}) {
+        const std::string& file = tools ? files_.tools : files_.offsets;
+        const std::string stamp = fileStamp(file);
+        std::string& refused = tools ? refusedToolStamp_ : refusedOffsetStamp_;
+        if (stamp.empty() || stamp == (tools ? toolStamp_ : offsetStamp_) || stamp == refused)
+            continue;
+        const FileLock lock(file, kLookWait);
+        if (!lock.locked()) continue;
+        SetupDataEdit look;
+        if (tools ? takeOverTools(look) : takeOverOffsets(look))
+            takenOver = true;
+        else
+            refused = stamp;  // said once; a save will not overwrite it either
+        diagnostics.append(look.diagnostics);
+    }
+    return takenOver;
+}
+
 SetupDataEdit SetupDataEditor::commitTools(int process, const ToolChange& change) {
     SetupDataEdit edit;
     const std::shared_ptr<ToolList> list = data_.tools(process);

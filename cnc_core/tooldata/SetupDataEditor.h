@@ -64,6 +64,13 @@ class SetupDataEditor {
     /// COLUMN=VALUE pairs of zero offset G`code` (54..59), all or none.
     SetupDataEdit setOffsets(int process, int code, const KeyValues& values);
 
+    /// Takes over what another program saved to the files since this
+    /// editor last read or wrote them (one stat per file when nothing
+    /// changed; a file being written is looked at next time). True when
+    /// something was taken over (a SETUP_DATA_TAKEN_OVER note in
+    /// `diagnostics`); a refused file is reported once and left alone.
+    bool refresh(DiagnosticList& diagnostics);
+
   private:
     using ToolChange = std::function<bool(ToolList&, DataFileText&, DiagnosticList&)>;
     using OffsetChange = std::function<bool(ZeroOffsetTable&, DataFileText&)>;
@@ -82,8 +89,10 @@ class SetupDataEditor {
     SetupDataFiles files_;
     std::string inputName_;
     double lockWait_;
-    std::string toolStamp_;    ///< "size:mtime:inode" of the tool file at the last read/write
-    std::string offsetStamp_;  ///< the same of the offset file
+    std::string toolStamp_;         ///< "size:mtime:inode" of the tool file at the last read/write
+    std::string offsetStamp_;       ///< the same of the offset file
+    std::string refusedToolStamp_;  ///< a refused tool file refresh() reported
+    std::string refusedOffsetStamp_;  ///< the same of the offset file
 };
 
 /// "size:mtime:inode" of a file, "" when it is missing.

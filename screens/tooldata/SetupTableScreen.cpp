@@ -48,6 +48,12 @@ SetupTableScreen::SetupTableScreen(const mtc::hmi::ScreenContext& context, const
     layout->addWidget(message_);
     setFocusProxy(table_);
     input_->close();
+    // Another program saved the files: the table shows their values now.
+    connect(context.session, &mtc::hmi::CellSession::setupDataNotice, this,
+            [this](const QString& notice) {
+                dataChangedElsewhere();
+                say(notice);
+            });
 }
 
 void SetupTableScreen::setModel(CursorTableModel* model, bool stretch) {

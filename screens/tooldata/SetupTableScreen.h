@@ -37,6 +37,8 @@ class SetupTableScreen : public mtc::hmi::Screen {
     /// The input was confirmed with `text` / cancelled with Escape.
     virtual void inputConfirmed(const QString& text) = 0;
     virtual void inputCancelled() = 0;
+    /// Another program's save was taken over: show the values again.
+    virtual void dataChangedElsewhere() = 0;
 
     void openInput(const QString& prompt, const QString& text);
     void closeInput();

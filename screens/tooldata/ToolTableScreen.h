@@ -27,6 +27,7 @@ class ToolTableScreen : public SetupTableScreen {
     void startEdit() override;
     void inputConfirmed(const QString& text) override;
     void inputCancelled() override;
+    void dataChangedElsewhere() override { activated(); }
 
   private:
     enum class Input { None, Value, NewTool, NewEdge, RemoveEdge, RemoveTool };

@@ -25,6 +25,7 @@ class ZeroOffsetScreen : public SetupTableScreen {
     void startEdit() override;
     void inputConfirmed(const QString& text) override;
     void inputCancelled() override;
+    void dataChangedElsewhere() override { activated(); }
 
   private:
     /// "G54 X" of the cursor cell.

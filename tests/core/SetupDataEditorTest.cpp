@@ -147,6 +147,38 @@ TEST(SetupDataEditor, AnotherProgramsSaveIsTakenOverNotOverwritten) {
     EXPECT_EQ(cell.reread().offsets(1)->value(55, AxisDefinition::X), 250.0);
 }
 
+// The panel looks at the files every second: another program's save is
+// taken over without a change of its own; a refused file is said once.
+TEST(SetupDataEditor, RefreshTakesOverAnotherProgramsSave) {
+    EditedCell cell;
+    SetupDataEditor panel(cell.data, cell.files);
+    DiagnosticList notes;
+    EXPECT_FALSE(panel.refresh(notes));
+    EXPECT_TRUE(notes.empty());
+    {
+        DiagnosticList problems;
+        SetupData other = SetupData::fromConfig(demoCell(), problems);
+        SetupDataEditor cli(other, cell.files, "command line");
+        ASSERT_TRUE(cli.setToolValues(0, 3, 1, {{"radius_wear", "-0.05"}}).saved);
+        ASSERT_TRUE(cli.setOffsets(0, 57, {{"Z", "12"}}).saved);
+    }
+    EXPECT_TRUE(panel.refresh(notes));
+    EXPECT_EQ(notes.size(), 2u);
+    EXPECT_EQ(cell.data.tools(0)->edge(3, 1)->radiusWear, -0.05);
+    EXPECT_EQ(cell.data.offsets(0)->value(57, AxisDefinition::Z), 12.0);
+    notes.clear();
+    EXPECT_FALSE(panel.refresh(notes)) << "nothing new";
+    EXPECT_TRUE(notes.empty());
+    { std::ofstream(cell.files.tools) << "format = mtc200-tools 1\n[process 0]\nT1 E1 radius=x\n"; }
+    EXPECT_FALSE(panel.refresh(notes));
+    EXPECT_TRUE(notes.hasErrors());
+    notes.clear();
+    EXPECT_FALSE(panel.refresh(notes));
+    EXPECT_TRUE(notes.empty()) << "a refused file is said once";
+    EXPECT_EQ(cell.data.tools(0)->edge(1, 1)->radius, 3.5);
+    EXPECT_FALSE(panel.setToolValues(0, 1, 1, {{"radius", "4"}}).saved) << "and not overwritten";
+}
+
 TEST(SetupDataEditor, ALockedFileIsNotWrittenButTheChangeHolds) {
     EditedCell cell;
     SetupDataEditor editor(cell.data, cell.files, "entry", 0.05);

@@ -11,6 +11,7 @@
 
 #include "PanelFixture.h"
 #include "cnc_core/cell/Station.h"
+#include "cnc_core/tooldata/SetupDataEditor.h"
 
 namespace {
 
@@ -247,6 +248,29 @@ class ToolScreensTest : public QObject {
         for (std::size_t axis = 0; axis < wider.size(); ++axis)
             dz += wider.at(axis) - shifted.at(axis);
         QCOMPARE(dz, 5.5);
+    }
+
+    // Another program (`offsets set`, here the core's editor as the CLI uses
+    // it) saves the file under the panel: within the 1 s check the table
+    // shows the new value and says so.
+    void anotherProgramsSaveIsShown() {
+        QTemporaryDir dir;
+        ToolPanel panel(withDataIn(dir));
+        mtc::hmi::Screen* screen = panel.open(0, "offsets");
+        QAbstractItemModel* table = ToolPanel::table(screen, "offsetTable");
+        QCOMPARE(table->index(1, 1).data().toString(), QString("50.000"));
+        {
+            mtc::core::DiagnosticList problems;
+            mtc::core::SetupData other =
+                mtc::core::SetupData::fromConfig(panel.session->config(), problems);
+            mtc::core::SetupDataEditor cli(
+                other, mtc::core::setupDataFilesBeside(dir.filePath("cell.mdt").toStdString()));
+            QVERIFY(cli.setOffsets(0, 55, {{"X", "61.25"}}).saved);
+        }
+        QTRY_COMPARE(table->index(1, 1).data().toString(), QString("61.250"));
+        QVERIFY(ToolPanel::text(screen, "offsetMessage").contains("taken over"));
+        QCOMPARE(panel.session->setupData().offsets(0)->value(55, mtc::core::AxisDefinition::X),
+                 61.25);
     }
 
     void theScreensAreInTheMainMenu() {
