@@ -38,6 +38,14 @@ QKeySequence speedKeyShortcut() {
     return QKeySequence(Qt::SHIFT | Qt::Key_F10);
 }
 
+QKeySequence feedOverrideShortcut(int direction) {
+    return QKeySequence(Qt::ALT | (direction > 0 ? Qt::Key_Up : Qt::Key_Down));
+}
+
+QKeySequence rapidOverrideShortcut(int direction) {
+    return QKeySequence(Qt::ALT | (direction > 0 ? Qt::Key_PageUp : Qt::Key_PageDown));
+}
+
 QKeySequence baseScreenShortcut() {
     return QKeySequence(Qt::Key_F11);
 }
@@ -54,6 +62,15 @@ QVector<KeyAssignment> globalKeyAssignments() {
     for (ControlKey key : machineKeys())
         list.push_back({machineKeyShortcut(key).toString(QKeySequence::NativeText),
                         QString("Machine control key '%1'").arg(mtc::core::keyName(key))});
+    const auto pair = [](const QKeySequence& up, const QKeySequence& down) {
+        return up.toString(QKeySequence::NativeText) + " / " +
+               down.toString(QKeySequence::NativeText);
+    };
+    list.push_back({pair(feedOverrideShortcut(1), feedOverrideShortcut(-1)),
+                    "Feed override one step up / down (0 … the machine's maximum, "
+                    "shown under the M keys)"});
+    list.push_back({pair(rapidOverrideShortcut(1), rapidOverrideShortcut(-1)),
+                    "Rapid traverse override one step up / down (0, 1, 10, 25, 50, 100 %)"});
     list.push_back({speedKeyShortcut().toString(QKeySequence::NativeText),
                     "Simulation speed: \u00d71 \u2192 \u00d710 \u2192 as fast as possible "
                     "(shown in the header)"});

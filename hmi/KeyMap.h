@@ -20,6 +20,11 @@ QKeySequence machineKeyShortcut(mtc::core::ControlKey key);
 /// The key that changes the simulation speed (x1, x10, as fast as possible).
 QKeySequence speedKeyShortcut();
 
+/// The keys of the override switches: one position up (`direction` > 0) or
+/// down (feed: Alt+Up / Alt+Down, rapid: Alt+PgUp / Alt+PgDn).
+QKeySequence feedOverrideShortcut(int direction);
+QKeySequence rapidOverrideShortcut(int direction);
+
 /// The key that shows the station's base screen (position display).
 QKeySequence baseScreenShortcut();
 

@@ -1,5 +1,7 @@
 #include "hmi/MachineKeyBar.h"
 
+#include <QHBoxLayout>
+#include <QLabel>
 #include <QPushButton>
 #include <QStyle>
 #include <QVariant>
@@ -25,6 +27,9 @@ MachineKeyBar::MachineKeyBar(QWidget* parent) : QWidget(parent) {
         layout->addWidget(button);
     }
     layout->addStretch();
+    feedOverride_ = addOverride("feedOverrideSwitch", "Feed override", false);
+    rapidOverride_ = addOverride("rapidOverrideSwitch", "Rapid override", true);
+    setOverrides(100, 100);
     speed_ = new QPushButton(this);
     speed_->setObjectName("speedKey");
     speed_->setToolTip(speedKeyShortcut().toString(QKeySequence::NativeText) +
@@ -34,6 +39,39 @@ MachineKeyBar::MachineKeyBar(QWidget* parent) : QWidget(parent) {
     connect(speed_, &QPushButton::clicked, this, &MachineKeyBar::speedPressed);
     layout->addWidget(speed_);
     setSpeedText("\u00d71");
+}
+
+QLabel* MachineKeyBar::addOverride(const QString& name, const QString& title, bool rapid) {
+    auto* label = new QLabel(this);
+    label->setObjectName(name);
+    label->setAlignment(Qt::AlignCenter);
+    label->setToolTip(title);
+    auto* row = new QHBoxLayout;
+    row->setSpacing(2);
+    const auto add = [&](const char* suffix, const QString& text, int direction) {
+        auto* button = new QPushButton(text, this);
+        button->setObjectName(name + suffix);
+        button->setFocusPolicy(Qt::NoFocus);
+        button->setMinimumHeight(28);
+        const QKeySequence keys =
+            rapid ? rapidOverrideShortcut(direction) : feedOverrideShortcut(direction);
+        button->setToolTip(title + (direction > 0 ? " up (" : " down (") +
+                           keys.toString(QKeySequence::NativeText) + ")");
+        connect(button, &QPushButton::clicked, this,
+                [this, rapid, direction] { emit overrideStep(rapid, direction); });
+        row->addWidget(button);
+    };
+    add("Down", QString::fromUtf8("−"), -1);
+    add("Up", "+", 1);
+    auto* box = qobject_cast<QVBoxLayout*>(layout());
+    box->addWidget(label);
+    box->addLayout(row);
+    return label;
+}
+
+void MachineKeyBar::setOverrides(int feedPercent, int rapidPercent) {
+    feedOverride_->setText(QString("Feed %1 %").arg(feedPercent));
+    rapidOverride_->setText(QString("Rapid %1 %").arg(rapidPercent));
 }
 
 QPushButton* MachineKeyBar::button(mtc::core::ControlKey key) const {

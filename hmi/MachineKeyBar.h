@@ -4,6 +4,7 @@
 #include <QVector>
 #include <QWidget>
 
+class QLabel;
 class QPushButton;
 
 #include "cnc_core/machine/ProcessControl.h"
@@ -13,13 +14,18 @@ namespace mtc::hmi {
 /// The machine control keys (M keys) at the right edge of the panel.
 /// Buttons are named "mkey-<n>" in bar order (see machineKeys()); every
 /// press is reported through keyPressed, never handled here. Below them the
-/// simulation's Speed key ("speedKey", speedPressed).
+/// override switches of feed and rapid traverse (labels "feedOverrideSwitch",
+/// "rapidOverrideSwitch" with the percentage, buttons "<name>Up" / "<name>Down",
+/// reported through overrideStep) and the simulation's Speed key
+/// ("speedKey", speedPressed).
 class MachineKeyBar : public QWidget {
     Q_OBJECT
   public:
     explicit MachineKeyBar(QWidget* parent = nullptr);
     /// Shows the speed factor on the Speed key ("x10").
     void setSpeedText(const QString& text);
+    /// Shows the overrides in force (percent).
+    void setOverrides(int feedPercent, int rapidPercent);
     /// Lights or darkens the lamp of `key` (button property "lamp").
     void setLamp(mtc::core::ControlKey key, bool on);
     /// The button of `key` (nullptr for a key the bar does not have).
@@ -28,9 +34,14 @@ class MachineKeyBar : public QWidget {
   signals:
     void keyPressed(mtc::core::ControlKey key);
     void speedPressed();
+    /// An override button: `rapid` false = feed; `direction` +1 / -1.
+    void overrideStep(bool rapid, int direction);
 
   private:
+    QLabel* addOverride(const QString& name, const QString& title, bool rapid);
     QPushButton* speed_;
+    QLabel* feedOverride_;
+    QLabel* rapidOverride_;
     QVector<QPair<mtc::core::ControlKey, QPushButton*>> buttons_;
 };
 

@@ -58,6 +58,7 @@ PanelWindow::PanelWindow(CellSession* session, const ScreenRegistry* registry, Q
     installShortcuts();
     connect(machineKeys_, &MachineKeyBar::keyPressed, this, &PanelWindow::onMachineKey);
     connect(machineKeys_, &MachineKeyBar::speedPressed, session_, &CellSession::cycleSpeed);
+    connect(machineKeys_, &MachineKeyBar::overrideStep, this, &PanelWindow::stepOverride);
     connect(session_, &CellSession::speedChanged, this, [this] {
         machineKeys_->setSpeedText(session_->speedText());
         refresh();
@@ -134,6 +135,10 @@ void PanelWindow::installShortcuts() {
     for (mtc::core::ControlKey key : machineKeys())
         add(machineKeyShortcut(key), [this, key] { onMachineKey(key); });
     add(speedKeyShortcut(), [this] { session_->cycleSpeed(); });
+    for (int direction : {1, -1}) {
+        add(feedOverrideShortcut(direction), [this, direction] { stepOverride(false, direction); });
+        add(rapidOverrideShortcut(direction), [this, direction] { stepOverride(true, direction); });
+    }
 }
 
 bool PanelWindow::showScreen(const QString& name) {
@@ -185,7 +190,17 @@ void PanelWindow::refresh() {
     const auto& station = session_->station(station_);
     for (mtc::core::ControlKey key : machineKeys())
         machineKeys_->setLamp(key, mtc::core::keyLamp(station, key));
+    machineKeys_->setOverrides(station.feedOverride(), station.rapidOverride());
     softKeys_->setKeys(current ? current->softKeys() : SoftKeys{});
+}
+
+void PanelWindow::stepOverride(bool rapid, int direction) {
+    mtc::core::Station& station = session_->station(station_);
+    if (rapid)
+        station.stepRapidOverride(direction);
+    else
+        station.stepFeedOverride(direction);
+    session_->notifyChanged(station_);
 }
 
 void PanelWindow::onMachineKey(mtc::core::ControlKey key) {

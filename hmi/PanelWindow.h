@@ -51,6 +51,8 @@ class PanelWindow : public QMainWindow {
     void installShortcuts();
     void refresh();
     void onMachineKey(mtc::core::ControlKey key);
+    /// An override switch of the shown station one position up or down.
+    void stepOverride(bool rapid, int direction);
     /// The question before a user compiler that came with the program folder
     /// runs (docs/DECISIONS.md D-010): true when the operator says Yes.
     bool askToRunUserCompiler(int slot, const QString& command, const QString& folder);

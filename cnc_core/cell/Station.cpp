@@ -6,6 +6,7 @@
 
 #include "cnc_core/afc/AdaptiveFeedControl.h"
 #include "cnc_core/afc/AfcMotion.h"
+#include "cnc_core/machine/OverrideSwitch.h"
 #include "cnc_core/machine_data/MachineDataStore.h"
 #include "cnc_core/mdi/MdiEntry.h"
 
@@ -92,6 +93,14 @@ void Station::setFeedOverride(int percent) {
 
 int Station::feedOverride() const {
     return static_cast<int>(std::lround(machine_.feedOverride()));
+}
+
+void Station::stepFeedOverride(int direction) {
+    setFeedOverride(feedOverrideStep(feedOverride(), direction, feedOverrideMax()));
+}
+
+void Station::stepRapidOverride(int direction) {
+    setRapidOverride(rapidOverrideStep(rapidOverride(), direction));
 }
 
 int Station::feedOverrideMax() const {

@@ -84,6 +84,10 @@ class Station : private ProgramRunner {
     /// Rapid traverse override of G0 in percent, clamped to 0 ... 100.
     void setRapidOverride(int percent);
     int rapidOverride() const;
+    /// The panel's override switches: one position up (`direction` > 0) or
+    /// down (< 0) (OverrideSwitch.h, MOT-016).
+    void stepFeedOverride(int direction);
+    void stepRapidOverride(int direction);
 
     /// A program or MDI entry runs (active, not held, not stopped).
     bool running() const { return run_ != Run::None && feeding_; }
