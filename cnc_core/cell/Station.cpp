@@ -32,7 +32,8 @@ Station::Station(const ProcessConfig& config, const ProgramStore& programs,
       output_(machine_),
       interpreter_(config, programs, output_, services),
       sps_(control_),
-      restart_(control_, sps_, interpreter_, programs, output_, services.otherProcesses) {
+      restart_(control_, sps_, interpreter_, programs, output_, services.otherProcesses),
+      jog_(control_, interpreter_, machine_) {
     restart_.setAxisTransfer(services.axisTransfer);
     control_.setRunner(this);
     machine_.attachAdaptiveFeed(afc_.get(), &trend_);
@@ -230,6 +231,7 @@ double Station::advance(double seconds, std::uint64_t maxBlocks) {
         left -= used;
         if (used <= 0.0 && blocks == before) break;  // nothing can go on
     }
+    jog_.settle();
     if (blocks > 0 || machine_.seconds() != busyBefore) ++revision_;
     showCurrentBlock();
     return seconds > 0.0 ? seconds - left : 0.0;
@@ -254,6 +256,28 @@ void Station::abortRestart() {
     std::uint64_t blocks = 0;
     advanceRestart(blocks, 0);
     machine_.stop();
+}
+
+bool Station::jogBy(int axis, double distance, bool rapid) {
+    if (restart_.active()) return jogRestart(axis, distance);
+    return jogDone(jog_.moveBy(axis, distance, rapid));
+}
+
+bool Station::jogStart(int axis, int direction, bool rapid) {
+    if (restart_.active()) return false;  // the restart jogs by increments only
+    return jogDone(jog_.start(axis, direction, rapid));
+}
+
+void Station::jogRelease() {
+    jog_.release();
+    ++revision_;
+}
+
+bool Station::jogDone(const std::string& refusal) {
+    ++revision_;
+    if (refusal.empty()) return true;
+    control_.setAlarm(refusal);
+    return false;
 }
 
 bool Station::jogRestart(int axis, double distance) {

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "cnc_core/afc/AfcTrendRecorder.h"
+#include "cnc_core/cell/ManualJog.h"
 #include "cnc_core/cell/QueuedBlockStates.h"
 #include "cnc_core/interp/Interpreter.h"
 #include "cnc_core/machine/MachineConfig.h"
@@ -143,6 +144,18 @@ class Station : private ProgramRunner {
     /// Diagnostics of the last MDI run (lines = lines of the MDI input).
     const DiagnosticList& lastMdiDiagnostics() const { return mdiDiagnostics_; }
 
+    // ---- manual mode (issue 17 §2, MOT-017): jog keys and the handwheel
+    // move machine axis `axis` through the machine in time. Between the
+    // restart's subroutines (seed 000, 2.9) the restart's rules apply. A
+    // refusal returns false and says why in the alarm line.
+    /// One increment (or handwheel detents times their factor): `distance`.
+    bool jogBy(int axis, double distance, bool rapid = false);
+    /// A jog key held down: moves until jogRelease() or the travel limit.
+    bool jogStart(int axis, int direction, bool rapid = false);
+    void jogRelease();
+    /// A jog move is queued or running.
+    bool jogging() const { return jog_.moving(); }
+
     // ---- NC program restart (seed 000): the sequence takes the M keys while
     // it is active; advance() runs its computing process in block slices and
     // ADJUST / REPOS through the machine in time.
@@ -214,6 +227,8 @@ class Station : private ProgramRunner {
     bool waitForAxis();
     void finish(const RunResult& result);
     void showCurrentBlock();
+    /// A jog's refusal ("" = none) goes to the alarm line; true when none.
+    bool jogDone(const std::string& refusal);
     /// Keeps the interpreter's state after a block that queued work.
     void recordQueuedBlock(const ProgramPtr& program, std::uint32_t index, int callLevel);
 
@@ -253,6 +268,7 @@ class Station : private ProgramRunner {
     ProgramPtr lastProgram_;  ///< program and block interpreted last
     std::uint32_t lastBlock_ = 0;
     QueuedBlockStates queued_;
+    ManualJog jog_;
 };
 
 }  // namespace mtc::core

@@ -224,6 +224,7 @@ void describeAxes(const Station& station, StationStatus& status) {
         const AxisModel& model = axes.axis(a);
         if (model.spindle && !model.rotary) continue;  // a plain spindle turns, it has no position
         AxisStatus axis;
+        axis.index = a;
         axis.name = programmedAxisName(axes, modal.transformation, a);
         axis.rotary = model.rotary && !modal.transformation.transforms(a);
         axis.machine = machine.position(a);

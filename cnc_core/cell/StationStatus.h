@@ -13,6 +13,7 @@ class Station;
 
 /// One axis of the position display (every axis except a plain spindle).
 struct AxisStatus {
+    int index = 0;         ///< machine axis index (what Station::jogBy() takes)
     std::string name;      ///< as the program addresses it now ("X", "Z2", "C", "Y1" under G32)
     bool rotary = false;   ///< degrees instead of mm
     double work = 0.0;     ///< actual position in workpiece coordinates (programmed units)

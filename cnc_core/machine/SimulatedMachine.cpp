@@ -146,6 +146,14 @@ void SimulatedMachine::stop() {
     afcClock_ = seconds();
 }
 
+bool SimulatedMachine::discardAtRest() {
+    if (!engine_.discardAtRest()) return false;
+    for (int i = 0; i < kMaxAxes; ++i)
+        lastEnd_[static_cast<std::size_t>(i)] = engine_.position(i);
+    pendingAux_.clear();
+    return true;
+}
+
 void SimulatedMachine::auxiliary(const AuxOutput& output) {
     if (output.type == 'S' && output.spindle >= 1 && output.spindle <= 3)
         spindleSpeed_[static_cast<std::size_t>(output.spindle)] = std::abs(output.value);

@@ -80,6 +80,9 @@ class SimulatedMachine : public MachineSink {
     /// Control reset: the axes stop at once, the queue is emptied (queued
     /// auxiliary functions never reach the SPS); positions stay.
     void stop();
+    /// Drops the queue once the axes are at rest, the spindles keep turning
+    /// (a jog key released); false while the axes still move.
+    bool discardAtRest();
     /// Feed override in percent of the programmed feed (0 ... feedOverrideMax()).
     void setFeedOverride(double percent) { engine_.setFeedOverride(percent); }
     double feedOverride() const { return engine_.feedOverride(); }

@@ -318,6 +318,21 @@ void TrajectoryEngine::setStopAtBlockEnds(bool on) {
     replanAll();
 }
 
+bool TrajectoryEngine::discardAtRest() {
+    if (std::abs(velocity_) > 1e-9) return false;
+    if (!queue_.empty()) {
+        lastWhere_ = queue_.front().where;
+        lastBlock_ = queue_.front().blockIndex;
+    }
+    queue_.clear();
+    planned_ = false;
+    pathS_ = velocity_ = dwelt_ = 0.0;
+    actionApplied_ = false;
+    held_ = false;
+    atBlockStop_ = false;
+    return true;
+}
+
 void TrajectoryEngine::stop() {
     if (!queue_.empty()) {
         lastWhere_ = queue_.front().where;

@@ -75,6 +75,10 @@ class TrajectoryEngine {
     /// Control reset: the axes stop where they are at once, the queue is
     /// emptied, the spindles ramp down, a hold is cleared.
     void stop();
+    /// Drops what is queued once the axes are at rest (a released jog key
+    /// after the axes braked under hold()); unlike stop() the spindles keep
+    /// turning. Returns false (nothing done) while the axes still move.
+    bool discardAtRest();
 
     // --- the state ---
     /// Nothing queued: every move and dwell is done, the axes are at rest.

@@ -1,12 +1,16 @@
 #include "screens/position/PositionScreen.h"
 
+#include <algorithm>
+
 #include <QFontDatabase>
 #include <QFrame>
 #include <QGridLayout>
 #include <QHBoxLayout>
+#include <QKeyEvent>
 #include <QLabel>
 #include <QStringList>
 #include <QVBoxLayout>
+#include <QWheelEvent>
 
 #include "hmi/CellSession.h"
 
@@ -120,6 +124,11 @@ PositionScreen::PositionScreen(const mtc::hmi::ScreenContext& context) : Screen(
         axisGrid_->addWidget(heading, 0, column, column == 0 ? Qt::AlignLeft : Qt::AlignRight);
     }
     axisGrid_->setRowStretch(100, 1);
+    jogLine_ = makeLabel(axes, "jogLine", normal);
+    jogLine_->setWordWrap(true);
+    jogLine_->setStyleSheet("color: #00307a;");
+    jogLine_->setVisible(false);
+    axisGrid_->addWidget(jogLine_, 101, 0, 1, kAxisColumns);
     middle->addWidget(axes, 3);
 
     auto* side = new QVBoxLayout;
@@ -179,6 +188,24 @@ void PositionScreen::showEvent(QShowEvent* event) {
 
 mtc::hmi::SoftKeys PositionScreen::softKeys() {
     mtc::hmi::SoftKeys keys(8);
+    if (manualMode()) {
+        const double step = jogStep();
+        keys[5] = {step == 0.0 ? QString("Jog step\ncontinuous")
+                               : QString("Jog step\n%1").arg(step, 0, 'f', step < 1 ? 3 : 0),
+                   [this] {
+                       stepIndex_ = stepIndex_ + 1 >=
+                                            static_cast<int>(mtc::core::kJogIncrements.size())
+                                        ? -1
+                                        : stepIndex_ + 1;
+                       refresh();
+                       emit softKeysChanged();
+                   }};
+        keys[6] = {rapid_ ? QString("Rapid\non") : QString("Rapid\noff"), [this] {
+                       rapid_ = !rapid_;
+                       refresh();
+                       emit softKeysChanged();
+                   }};
+    }
     keys[0] = {"Program\ndirectory", [this] { emit navigateTo("programs"); }};
     keys[1] = {"Error\ndisplay", [this] { emit navigateTo("errors"); }};
     keys[2] = {"MDI", [this] { emit navigateTo("mdi"); }};
@@ -197,6 +224,78 @@ void PositionScreen::refresh() {
     showBlocks();
     state_->setText(stateText(status_.state));
     state_->setStyleSheet(stateStyle(status_.state));
+    showJogLine();
+}
+
+bool PositionScreen::manualMode() const {
+    const auto& station = context().session->station(context().process);
+    return station.control().mode() == mtc::core::OperatingMode::Manual;
+}
+
+int PositionScreen::jogAxis() const {
+    if (status_.axes.empty()) return -1;
+    const int row = std::clamp(jogRow_, 0, static_cast<int>(status_.axes.size()) - 1);
+    return status_.axes[static_cast<std::size_t>(row)].index;
+}
+
+double PositionScreen::jogStep() const {
+    return stepIndex_ < 0 ? 0.0 : mtc::core::kJogIncrements[static_cast<std::size_t>(stepIndex_)];
+}
+
+void PositionScreen::showJogLine() {
+    const bool manual = manualMode();
+    jogLine_->setVisible(manual);
+    if (!manual || status_.axes.empty()) return;
+    const int row = std::clamp(jogRow_, 0, static_cast<int>(status_.axes.size()) - 1);
+    const double step = jogStep();
+    jogLine_->setText(
+        QString("Manual: jog %1 with + / \u2212 (\u2191/\u2193 axis), %2%3; wheel = handwheel")
+            .arg(QString::fromStdString(status_.axes[static_cast<std::size_t>(row)].name))
+            .arg(step == 0.0 ? QString("continuous while held")
+                             : QString("step %1").arg(step, 0, 'f', 3))
+            .arg(rapid_ ? QString(", rapid") : QString()));
+}
+
+void PositionScreen::keyPressEvent(QKeyEvent* event) {
+    if (!manualMode() || status_.axes.empty()) return Screen::keyPressEvent(event);
+    auto& station = context().session->station(context().process);
+    const int key = event->key();
+    if (key == Qt::Key_Up || key == Qt::Key_Down) {
+        const int count = static_cast<int>(status_.axes.size());
+        jogRow_ = (jogRow_ + (key == Qt::Key_Down ? 1 : count - 1)) % count;
+        refresh();
+        return;
+    }
+    if (key != Qt::Key_Plus && key != Qt::Key_Minus) return Screen::keyPressEvent(event);
+    if (event->isAutoRepeat()) return;  // a held key is one continuous jog, not many steps
+    const int direction = key == Qt::Key_Plus ? 1 : -1;
+    const double step = jogStep();
+    if (step == 0.0) {
+        jogKeyHeld_ = station.jogStart(jogAxis(), direction, rapid_);
+    } else {
+        station.jogBy(jogAxis(), direction * step, rapid_);
+    }
+    context().session->notifyChanged(context().process);
+}
+
+void PositionScreen::keyReleaseEvent(QKeyEvent* event) {
+    const int key = event->key();
+    if (jogKeyHeld_ && !event->isAutoRepeat() && (key == Qt::Key_Plus || key == Qt::Key_Minus)) {
+        jogKeyHeld_ = false;
+        context().session->station(context().process).jogRelease();
+        context().session->notifyChanged(context().process);
+        return;
+    }
+    Screen::keyReleaseEvent(event);
+}
+
+void PositionScreen::wheelEvent(QWheelEvent* event) {
+    const int detents = event->angleDelta().y() / 120;
+    if (!manualMode() || status_.axes.empty() || detents == 0) return Screen::wheelEvent(event);
+    const double step = jogStep() == 0.0 ? 0.01 : jogStep();
+    context().session->station(context().process).jogBy(jogAxis(), detents * step, rapid_);
+    context().session->notifyChanged(context().process);
+    event->accept();
 }
 
 void PositionScreen::addAxisRow(int row) {
@@ -226,7 +325,9 @@ void PositionScreen::showAxes() {
         if (!shown) continue;
         const auto& axis = status_.axes[static_cast<std::size_t>(row)];
         const QString unit = axis.rotary ? QString("\u00b0") : QString();
-        axisRows_[row][0]->setText(QString::fromStdString(axis.name));
+        const bool jogged = row == std::clamp(jogRow_, 0, count - 1) && manualMode();
+        axisRows_[row][0]->setText((jogged ? QString("\u25b8") : QString()) +
+                                   QString::fromStdString(axis.name));
         axisRows_[row][1]->setText(position(axis.work) + unit);
         axisRows_[row][2]->setText(position(axis.machine) + unit);
         axisRows_[row][3]->setText(position(axis.toGo) + unit);

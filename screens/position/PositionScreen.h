@@ -19,8 +19,14 @@ namespace mtc::screens {
 ///
 /// Children for tests: "programState", "blockContext", "blockList",
 /// "feedValues", "feedOverride", "rapidOverride", "spindleValues",
-/// "gFunctions", "toolValues", "zeroOffset"; per shown axis n (0-based)
-/// "axisName-n", "axisWork-n", "axisMachine-n", "axisToGo-n".
+/// "gFunctions", "toolValues", "zeroOffset", "jogLine"; per shown axis n
+/// (0-based) "axisName-n", "axisWork-n", "axisMachine-n", "axisToGo-n".
+///
+/// Manual mode (issue 17 §2): ↑/↓ choose the axis, + / − jog it by the step
+/// (F6: continuous while held, 0.001 … 10), F7 switches rapid on and off,
+/// the mouse wheel over the screen is the handwheel (one detent = one step;
+/// 0.01 in continuous). The keys go to the station (Station::jogBy /
+/// jogStart / jogRelease), which moves the axes and refuses with a reason.
 class PositionScreen : public mtc::hmi::Screen {
     Q_OBJECT
   public:
@@ -35,6 +41,9 @@ class PositionScreen : public mtc::hmi::Screen {
 
   protected:
     void showEvent(QShowEvent* event) override;
+    void keyPressEvent(QKeyEvent* event) override;
+    void keyReleaseEvent(QKeyEvent* event) override;
+    void wheelEvent(QWheelEvent* event) override;
 
   private:
     void refresh();
@@ -44,7 +53,18 @@ class PositionScreen : public mtc::hmi::Screen {
     void showBlocks();
     /// Adds the row of labels for axis `row` (name, workpiece, machine, to go).
     void addAxisRow(int row);
+    void showJogLine();
+    bool manualMode() const;
+    /// Machine axis index of the chosen jog axis (-1: none shown).
+    int jogAxis() const;
+    /// The step of one press or detent (mm, degrees); 0 = continuous.
+    double jogStep() const;
 
+    int jogRow_ = 0;        ///< row of the axis table jogged
+    int stepIndex_ = 3;     ///< -1 continuous, else kJogIncrements (1 mm)
+    bool rapid_ = false;    ///< jog at rapid traverse
+    bool jogKeyHeld_ = false;
+    QLabel* jogLine_;
     mtc::core::StationStatus status_;
     QGridLayout* axisGrid_;
     QVector<QVector<QLabel*>> axisRows_;

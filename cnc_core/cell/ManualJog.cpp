@@ -1,0 +1,106 @@
+#include "cnc_core/cell/ManualJog.h"
+
+#include <cmath>
+#include <cstdio>
+
+#include "cnc_core/interp/Interpreter.h"
+#include "cnc_core/machine/ProcessControl.h"
+#include "cnc_core/machine/SimulatedMachine.h"
+
+namespace mtc::core {
+
+namespace {
+
+/// Jog feed as a share of max_velocity (MOT-017).
+constexpr double kJogFeedShare = 0.2;
+/// How far a continuous jog of an axis without travel limits goes at most
+/// (a rotary table: 10 turns); release() ends it long before.
+constexpr double kEndlessJogReach = 3600.0;
+
+std::string format(double value) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.3f", value);
+    return text;
+}
+
+}  // namespace
+
+ManualJog::ManualJog(ProcessControl& control, Interpreter& interpreter, SimulatedMachine& machine)
+    : control_(control), interpreter_(interpreter), machine_(machine) {}
+
+std::string ManualJog::check(int axis) const {
+    if (control_.mode() != OperatingMode::Manual) return "Jogging needs manual mode (M key Manual)";
+    if (control_.programActive()) return "Jogging is refused while a program is active";
+    if (axis < 0 || axis >= interpreter_.axes().count()) return "No such axis to jog";
+    const AxisModel& model = interpreter_.axes().axis(axis);
+    if (model.spindle && !model.rotary) return "A spindle is not jogged; it turns with M3/M4";
+    if (releasing_) return "The axis is still braking";
+    return {};
+}
+
+std::string ManualJog::moveBy(int axis, double distance, bool rapid) {
+    if (std::string refusal = check(axis); !refusal.empty()) return refusal;
+    if (!std::isfinite(distance) || distance == 0.0) return "No jog distance";
+    // From where the previous jog goes (the axis may still be on its way).
+    const double from = machine_.idle() ? machine_.position(axis)
+                                        : machine_.lastMoveEnd()[static_cast<std::size_t>(axis)];
+    return queue(axis, from + distance, rapid);
+}
+
+std::string ManualJog::start(int axis, int direction, bool rapid) {
+    if (std::string refusal = check(axis); !refusal.empty()) return refusal;
+    if (!machine_.idle()) return "The axes are still moving";
+    const AxisModel& model = interpreter_.axes().axis(axis);
+    const double from = machine_.position(axis);
+    double target = direction > 0 ? from + kEndlessJogReach : from - kEndlessJogReach;
+    if (model.limited()) target = direction > 0 ? model.maxPosition : model.minPosition;
+    return queue(axis, target, rapid);
+}
+
+std::string ManualJog::queue(int axis, double target, bool rapid) {
+    const AxisModel& model = interpreter_.axes().axis(axis);
+    const std::string name = interpreter_.programmedAxisName(axis);
+    if (model.limited() && (target < model.minPosition - 1e-9 || target > model.maxPosition + 1e-9))
+        return "Travel limit: " + name + " may move from " + format(model.minPosition) + " to " +
+               format(model.maxPosition) + " (jog to " + format(target) + " refused)";
+    if (std::abs(target - machine_.position(axis)) < 1e-9 && machine_.idle())
+        return name + " is at its travel limit";
+    Motion move;
+    move.type = rapid ? MotionType::Rapid : MotionType::Linear;
+    move.axisCount = interpreter_.axes().count();
+    for (int a = 0; a < move.axisCount && a < kMaxAxes; ++a)
+        move.start[static_cast<std::size_t>(a)] =
+            machine_.idle() ? machine_.position(a) : machine_.lastMoveEnd()[static_cast<std::size_t>(a)];
+    move.end = move.start;
+    move.end[static_cast<std::size_t>(axis)] = target;
+    move.programmedEnd = move.end;
+    move.feed = rapid ? 0.0 : model.maxVelocity * kJogFeedShare;
+    move.exactStop = true;
+    machine_.motion(move);
+    moving_ = true;
+    return {};
+}
+
+void ManualJog::release() {
+    if (!moving_ || releasing_) return;
+    releasing_ = true;
+    machine_.hold();  // brakes on the path, at the axis's acceleration
+}
+
+void ManualJog::settle() {
+    if (!moving_) return;
+    if (releasing_) {
+        if (!machine_.discardAtRest()) return;  // still braking
+        releasing_ = false;
+    } else if (!machine_.idle()) {
+        return;
+    }
+    moving_ = false;
+    std::array<double, kMaxAxes> positions{};
+    for (int a = 0; a < interpreter_.axes().count() && a < kMaxAxes; ++a)
+        positions[static_cast<std::size_t>(a)] = machine_.position(a);
+    interpreter_.manualJogPerformed();  // Bxx.036 = Yes: the program's state is cancelled
+    interpreter_.takeMachinePositions(positions);
+}
+
+}  // namespace mtc::core

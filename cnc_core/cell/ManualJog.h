@@ -1,0 +1,53 @@
+#pragma once
+
+#include <array>
+#include <string>
+
+namespace mtc::core {
+
+class Interpreter;
+class ProcessControl;
+class SimulatedMachine;
+
+/// The jog increments of the panel, mm (degrees for rotary axes); one press
+/// of a jog key or one handwheel detent (times its factor) moves this far.
+inline constexpr std::array<double, 5> kJogIncrements = {0.001, 0.01, 0.1, 1.0, 10.0};
+
+/// Jogging in manual mode (issue 17 §2, docs/decisions/motion.md MOT-017):
+/// the axes move through the station's machine in time, at the jog feed
+/// (a fifth of the axis's max_velocity, under the feed override) or, with
+/// the rapid key, at its max_velocity (under the rapid override). A target
+/// beyond the travel limits is refused with the reason; a continuous jog
+/// runs to the limit at most and stops there. When the axes are at rest the
+/// interpreter takes their positions (the next program or MDI block starts
+/// there) and Bxx.036 = Yes cancels the program's state as the seed says
+/// (seed 000, 2.9). Every refusal is a sentence for the alarm line.
+class ManualJog {
+  public:
+    ManualJog(ProcessControl& control, Interpreter& interpreter, SimulatedMachine& machine);
+
+    /// Moves machine axis `axis` by `distance` ("" when the move is queued).
+    std::string moveBy(int axis, double distance, bool rapid);
+    /// A jog key held down: `axis` moves in `direction` (+1 / -1) until
+    /// release() or its travel limit.
+    std::string start(int axis, int direction, bool rapid);
+    /// The jog key is released: the axis brakes on its path and stops.
+    void release();
+    /// After the machine's time: ends a braked continuous jog and hands the
+    /// positions to the interpreter once the axes stand.
+    void settle();
+    /// A jog move is queued or running.
+    bool moving() const { return moving_; }
+
+  private:
+    std::string check(int axis) const;
+    std::string queue(int axis, double target, bool rapid);
+
+    ProcessControl& control_;
+    Interpreter& interpreter_;
+    SimulatedMachine& machine_;
+    bool moving_ = false;
+    bool releasing_ = false;  ///< a continuous jog brakes (hold) until at rest
+};
+
+}  // namespace mtc::core
