@@ -57,7 +57,7 @@ double RestartRun::actualPosition(int axis) const {
 }
 
 bool RestartRun::jog(int axis, double distance) {
-    const bool ok = station().jogRestart(axis, distance);
+    const bool ok = station().jogBy(axis, distance);
     if (ok) session_->notifyChanged(slot_);
     return ok;
 }
