@@ -20,7 +20,7 @@ MachineKeyBar::MachineKeyBar(QWidget* parent) : QWidget(parent) {
         button->setObjectName(QString("mkey-%1").arg(++n));
         button->setToolTip(machineKeyShortcut(key).toString(QKeySequence::NativeText));
         button->setFocusPolicy(Qt::NoFocus);
-        button->setMinimumSize(110, 40);
+        button->setMinimumSize(110, 36);
         button->setProperty("lamp", false);
         connect(button, &QPushButton::clicked, this, [this, key] { emit keyPressed(key); });
         buttons_.push_back({key, button});
@@ -42,17 +42,21 @@ MachineKeyBar::MachineKeyBar(QWidget* parent) : QWidget(parent) {
 }
 
 QLabel* MachineKeyBar::addOverride(const QString& name, const QString& title, bool rapid) {
-    auto* label = new QLabel(this);
-    label->setObjectName(name);
-    label->setAlignment(Qt::AlignCenter);
-    label->setToolTip(title);
+    // One row: the percentage, then − and + (the bar keeps the panel's
+    // 900x650 minimum window).
     auto* row = new QHBoxLayout;
     row->setSpacing(2);
+    auto* label = new QLabel(this);
+    label->setObjectName(name);
+    label->setToolTip(title);
+    // The percentage takes what the M keys leave; it never widens the bar.
+    label->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
+    row->addWidget(label, 1);
     const auto add = [&](const char* suffix, const QString& text, int direction) {
         auto* button = new QPushButton(text, this);
         button->setObjectName(name + suffix);
         button->setFocusPolicy(Qt::NoFocus);
-        button->setMinimumHeight(28);
+        button->setFixedWidth(button->fontMetrics().horizontalAdvance("+") * 5 / 2 + 8);
         const QKeySequence keys =
             rapid ? rapidOverrideShortcut(direction) : feedOverrideShortcut(direction);
         button->setToolTip(title + (direction > 0 ? " up (" : " down (") +
@@ -61,17 +65,15 @@ QLabel* MachineKeyBar::addOverride(const QString& name, const QString& title, bo
                 [this, rapid, direction] { emit overrideStep(rapid, direction); });
         row->addWidget(button);
     };
-    add("Down", QString::fromUtf8("−"), -1);
+    add("Down", QString::fromUtf8("\u2212"), -1);
     add("Up", "+", 1);
-    auto* box = qobject_cast<QVBoxLayout*>(layout());
-    box->addWidget(label);
-    box->addLayout(row);
+    qobject_cast<QVBoxLayout*>(layout())->addLayout(row);
     return label;
 }
 
 void MachineKeyBar::setOverrides(int feedPercent, int rapidPercent) {
-    feedOverride_->setText(QString("Feed %1 %").arg(feedPercent));
-    rapidOverride_->setText(QString("Rapid %1 %").arg(rapidPercent));
+    feedOverride_->setText(QString("F %1%").arg(feedPercent));
+    rapidOverride_->setText(QString("G0 %1%").arg(rapidPercent));
 }
 
 QPushButton* MachineKeyBar::button(mtc::core::ControlKey key) const {

@@ -30,7 +30,7 @@ class OverrideKeysTest : public QObject {
         panel.session->setTimerEnabled(false);
         panel.session->addProgram(0, 64, "override.nc", "N0001 G90 G1 X200 F600\nN0002 M30\n");
         QVERIFY(panel.session->selectProgram(0, 64));
-        QCOMPARE(text(panel, "feedOverrideSwitch"), QString("Feed 100 %"));
+        QCOMPARE(text(panel, "feedOverrideSwitch"), QString("F 100%"));
         panel.press(Qt::Key_F5, Qt::ShiftModifier);  // Start
         panel.session->advance(1.0);
         const mtc::core::Station& mill = panel.session->station(0);
@@ -39,7 +39,7 @@ class OverrideKeysTest : public QObject {
         for (int i = 0; i < 5; ++i)
             panel.press(Qt::Key_Down, Qt::AltModifier);  // 90, 80, 70, 60, 50 %
         QCOMPARE(mill.feedOverride(), 50);
-        QCOMPARE(text(panel, "feedOverrideSwitch"), QString("Feed 50 %"));
+        QCOMPARE(text(panel, "feedOverrideSwitch"), QString("F 50%"));
         panel.session->advance(1.0);
         QCOMPARE(mtc::core::describeStation(mill).actualFeed, 300.0);
 
@@ -61,13 +61,13 @@ class OverrideKeysTest : public QObject {
         PanelFixture panel;
         panel.press(Qt::Key_PageDown, Qt::AltModifier);
         QCOMPARE(panel.session->station(0).rapidOverride(), 50);
-        QCOMPARE(text(panel, "rapidOverrideSwitch"), QString("Rapid 50 %"));
+        QCOMPARE(text(panel, "rapidOverrideSwitch"), QString("G0 50%"));
         panel.press(Qt::Key_PageDown, Qt::ControlModifier);  // the lathe
-        QCOMPARE(text(panel, "rapidOverrideSwitch"), QString("Rapid 100 %"));
+        QCOMPARE(text(panel, "rapidOverrideSwitch"), QString("G0 100%"));
         panel.window->findChild<QPushButton*>("feedOverrideSwitchDown")->click();
         QCOMPARE(panel.session->station(1).feedOverride(), 90);
         QCOMPARE(panel.session->station(0).feedOverride(), 100);  // the mill keeps its own
-        QCOMPARE(text(panel, "feedOverrideSwitch"), QString("Feed 90 %"));
+        QCOMPARE(text(panel, "feedOverrideSwitch"), QString("F 90%"));
         panel.window->findChild<QPushButton*>("rapidOverrideSwitchUp")->click();
         QCOMPARE(panel.session->station(1).rapidOverride(), 100);
     }
