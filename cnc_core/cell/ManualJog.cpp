@@ -1,5 +1,6 @@
 #include "cnc_core/cell/ManualJog.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -79,6 +80,49 @@ std::string ManualJog::queue(int axis, double target, bool rapid) {
     machine_.motion(move);
     moving_ = true;
     return {};
+}
+
+std::string ManualJog::spindle(int spindle, int rotation, double rpm) {
+    if (control_.mode() != OperatingMode::Manual)
+        return "The spindle keys need manual mode (M key Manual)";
+    if (control_.programActive()) return "The spindle keys are refused while a program is active";
+    if (spindle < 1 || spindle > 3 || !machine_.hasSpindle(spindle)) return "No such spindle";
+    told_[static_cast<std::size_t>(spindle)] = {rotation, rpm >= 0.0 ? rpm : commandOf(spindle).rpm};
+    const SourceLocation manual;  // no block: the operator's keys
+    if (rpm >= 0.0) machine_.auxiliary({manual, 'S', spindle, rpm});
+    const int function = rotation > 0 ? 3 : rotation < 0 ? 4 : 5;
+    machine_.auxiliary({manual, 'M', spindle, spindle == 1 ? function : spindle * 100.0 + function});
+    return {};
+}
+
+ManualJog::SpindleCommand ManualJog::commandOf(int spindle) const {
+    if (!machine_.idle()) return told_[static_cast<std::size_t>(spindle)];
+    using Rotation = motion::SpindleSet::Rotation;
+    const motion::SpindleSet& spindles = machine_.spindles();
+    const Rotation rotation = spindles.rotation(spindle);
+    return {rotation == Rotation::Clockwise ? 1 : rotation == Rotation::CounterClockwise ? -1 : 0,
+            spindles.commandedSpeed(spindle)};
+}
+
+std::string ManualJog::spindleKey(int spindle, SpindleKey key) {
+    if (spindle < 1 || spindle > 3) return "No such spindle";
+    SpindleCommand next = commandOf(spindle);
+    switch (key) {
+        case SpindleKey::Clockwise:
+        case SpindleKey::CounterClockwise:
+            next.rotation = key == SpindleKey::Clockwise ? 1 : -1;
+            if (next.rpm <= 0.0) next.rpm = kManualSpindleStart;
+            break;
+        case SpindleKey::Stop:
+            next.rotation = 0;
+            break;
+        case SpindleKey::Faster:
+        case SpindleKey::Slower:
+            next.rpm = std::max(0.0, next.rpm + (key == SpindleKey::Faster ? kManualSpindleStep
+                                                                           : -kManualSpindleStep));
+            break;
+    }
+    return this->spindle(spindle, next.rotation, next.rpm);
 }
 
 void ManualJog::release() {

@@ -13,6 +13,12 @@ class SimulatedMachine;
 /// of a jog key or one handwheel detent (times its factor) moves this far.
 inline constexpr std::array<double, 5> kJogIncrements = {0.001, 0.01, 0.1, 1.0, 10.0};
 
+/// The spindle keys of manual mode (MOT-018).
+enum class SpindleKey { Clockwise, CounterClockwise, Stop, Faster, Slower };
+/// Speed of a manual start when none is commanded, and one Faster/Slower step (rpm).
+inline constexpr double kManualSpindleStart = 500.0;
+inline constexpr double kManualSpindleStep = 100.0;
+
 /// Jogging in manual mode (issue 17 §2, docs/decisions/motion.md MOT-017):
 /// the axes move through the station's machine in time, at the jog feed
 /// (a fifth of the axis's max_velocity, under the feed override) or, with
@@ -38,6 +44,15 @@ class ManualJog {
     void settle();
     /// A jog move is queued or running.
     bool moving() const { return moving_; }
+    /// Manual spindle (MOT-018): `rotation` +1 clockwise (M3), -1
+    /// counter-clockwise (M4), 0 stop (M5) of spindle `spindle` (1..3) at
+    /// `rpm` (kept when negative), through the machine and its SPS as the
+    /// M and S functions of a program would go.
+    std::string spindle(int spindle, int rotation, double rpm);
+    /// A spindle key: M3 / M4 (at the start speed when none is commanded),
+    /// M5, or the speed one step up or down in the present direction. Keys
+    /// pressed faster than the machine executes them build on each other.
+    std::string spindleKey(int spindle, SpindleKey key);
 
   private:
     std::string check(int axis) const;
@@ -46,6 +61,14 @@ class ManualJog {
     ProcessControl& control_;
     Interpreter& interpreter_;
     SimulatedMachine& machine_;
+    /// What each spindle was told last by the keys (+1 / -1 / 0, rpm), while
+    /// the machine has not yet executed it; the machine's own state otherwise.
+    struct SpindleCommand {
+        int rotation = 0;
+        double rpm = 0.0;
+    };
+    SpindleCommand commandOf(int spindle) const;
+    std::array<SpindleCommand, 4> told_{};
     bool moving_ = false;
     bool releasing_ = false;  ///< a continuous jog brakes (hold) until at rest
 };

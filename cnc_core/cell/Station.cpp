@@ -268,6 +268,14 @@ bool Station::jogStart(int axis, int direction, bool rapid) {
     return jogDone(jog_.start(axis, direction, rapid));
 }
 
+bool Station::manualSpindle(int spindle, int rotation, double rpm) {
+    return jogDone(jog_.spindle(spindle, rotation, rpm));
+}
+
+bool Station::manualSpindleKey(int spindle, SpindleKey key) {
+    return jogDone(jog_.spindleKey(spindle, key));
+}
+
 void Station::jogRelease() {
     jog_.release();
     ++revision_;

@@ -153,6 +153,11 @@ class Station : private ProgramRunner {
     /// A jog key held down: moves until jogRelease() or the travel limit.
     bool jogStart(int axis, int direction, bool rapid = false);
     void jogRelease();
+    /// Manual spindle keys: `rotation` +1 M3, -1 M4, 0 M5 of spindle
+    /// `spindle` at `rpm` (negative: the commanded speed stays).
+    bool manualSpindle(int spindle, int rotation, double rpm = -1.0);
+    /// A spindle key of manual mode (ManualJog::spindleKey).
+    bool manualSpindleKey(int spindle, SpindleKey key);
     /// A jog move is queued or running.
     bool jogging() const { return jog_.moving(); }
 

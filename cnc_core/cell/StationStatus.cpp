@@ -197,8 +197,17 @@ void describeSpindles(const Station& station, StationStatus& status) {
         SpindleStatus spindle;
         spindle.index = model.spindleIndex;
         spindle.name = model.configName;
-        spindle.programmed = modal.spindleSpeed[j];
-        spindle.turn = spindleTurn(station, groups, model.spindleIndex);
+        // What the machine's spindle was told last (a program's S and M3 once
+        // the axes reach them, or the manual spindle keys), the M19 of the
+        // program as such.
+        using Rotation = motion::SpindleSet::Rotation;
+        spindle.programmed = machineSpindles.commandedSpeed(model.spindleIndex);
+        const Rotation rotation = machineSpindles.rotation(model.spindleIndex);
+        const SpindleTurn programmed = spindleTurn(station, groups, model.spindleIndex);
+        spindle.turn = rotation == Rotation::Clockwise          ? SpindleTurn::Clockwise
+                       : rotation == Rotation::CounterClockwise ? SpindleTurn::CounterClockwise
+                       : programmed == SpindleTurn::Oriented    ? SpindleTurn::Oriented
+                                                                : SpindleTurn::Stopped;
         spindle.rotaryAxisMode = modal.rotaryAxisMode[j] != 0;
         // The machine's spindle ramps to its speed (motion::SpindleSet).
         spindle.actual = spindle.rotaryAxisMode

@@ -104,6 +104,11 @@ class SimulatedMachine : public MachineSink {
     const SourceLocation& currentLocation() const { return engine_.currentLocation(); }
     /// The spindles S1..S3 (actual speeds ramp in time).
     const motion::SpindleSet& spindles() const { return engine_.spindles(); }
+    /// Spindle `spindle` (1..3) is configured (in spindle mode).
+    bool hasSpindle(int spindle) const {
+        return spindle >= 1 && spindle <= 3 &&
+               engine_.limits().spindles[static_cast<std::size_t>(spindle)].present;
+    }
     /// The trajectory engine (its queue, for views and tests).
     const motion::TrajectoryEngine& engine() const { return engine_; }
     std::uint64_t motionCount() const { return motions_; }

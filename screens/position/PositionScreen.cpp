@@ -248,12 +248,18 @@ void PositionScreen::showJogLine() {
     if (!manual || status_.axes.empty()) return;
     const int row = std::clamp(jogRow_, 0, static_cast<int>(status_.axes.size()) - 1);
     const double step = jogStep();
+    const QString spindle =
+        status_.spindles.empty()
+            ? QString()
+            : QString("\n%1: 3 / 4 / 5 = M3 / M4 / M5, PgUp / PgDn = speed \u00b1100 rpm")
+                  .arg(QString::fromStdString(status_.spindles.front().name));
     jogLine_->setText(
-        QString("Manual: jog %1 with + / \u2212 (\u2191/\u2193 axis), %2%3; wheel = handwheel")
+        QString("Manual: jog %1 with + / \u2212 (\u2191/\u2193 axis), %2%3; wheel = handwheel%4")
             .arg(QString::fromStdString(status_.axes[static_cast<std::size_t>(row)].name))
             .arg(step == 0.0 ? QString("continuous while held")
                              : QString("step %1").arg(step, 0, 'f', 3))
-            .arg(rapid_ ? QString(", rapid") : QString()));
+            .arg(rapid_ ? QString(", rapid") : QString())
+            .arg(spindle));
 }
 
 void PositionScreen::keyPressEvent(QKeyEvent* event) {
@@ -266,6 +272,7 @@ void PositionScreen::keyPressEvent(QKeyEvent* event) {
         refresh();
         return;
     }
+    if (spindleKey(key)) return;
     if (key != Qt::Key_Plus && key != Qt::Key_Minus) return Screen::keyPressEvent(event);
     if (event->isAutoRepeat()) return;  // a held key is one continuous jog, not many steps
     const int direction = key == Qt::Key_Plus ? 1 : -1;
@@ -276,6 +283,26 @@ void PositionScreen::keyPressEvent(QKeyEvent* event) {
         station.jogBy(jogAxis(), direction * step, rapid_);
     }
     context().session->notifyChanged(context().process);
+}
+
+bool PositionScreen::spindleKey(int key) {
+    // 3 / 4 / 5: M3 / M4 / M5 of the station's first spindle; PgUp / PgDn:
+    // its speed (MOT-018). The station decides what each key does.
+    using mtc::core::SpindleKey;
+    if (status_.spindles.empty()) return false;
+    SpindleKey spindleKey;
+    switch (key) {
+        case Qt::Key_3: spindleKey = SpindleKey::Clockwise; break;
+        case Qt::Key_4: spindleKey = SpindleKey::CounterClockwise; break;
+        case Qt::Key_5: spindleKey = SpindleKey::Stop; break;
+        case Qt::Key_PageUp: spindleKey = SpindleKey::Faster; break;
+        case Qt::Key_PageDown: spindleKey = SpindleKey::Slower; break;
+        default: return false;
+    }
+    auto& station = context().session->station(context().process);
+    station.manualSpindleKey(status_.spindles.front().index, spindleKey);
+    context().session->notifyChanged(context().process);
+    return true;
 }
 
 void PositionScreen::keyReleaseEvent(QKeyEvent* event) {

@@ -54,6 +54,8 @@ class PositionScreen : public mtc::hmi::Screen {
     /// Adds the row of labels for axis `row` (name, workpiece, machine, to go).
     void addAxisRow(int row);
     void showJogLine();
+    /// A manual spindle key (3, 4, 5, PgUp, PgDn); false when `key` is none.
+    bool spindleKey(int key);
     bool manualMode() const;
     /// Machine axis index of the chosen jog axis (-1: none shown).
     int jogAxis() const;

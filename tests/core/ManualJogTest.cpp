@@ -102,6 +102,28 @@ TEST(ManualJog, TheNextProgramStartsWhereTheAxesWereJogged) {
     EXPECT_NEAR(mill.machine().position(0), 30.0, 1e-9);
 }
 
+TEST(ManualJog, TheSpindleKeysStartChangeAndStopTheSpindle) {
+    JogFixture f;
+    core::Station& mill = f.cell.station(0);
+    EXPECT_FALSE(mill.manualSpindle(1, 1, 800.0)) << "automatic mode";
+    ASSERT_TRUE(mill.press(ControlKey::Manual));
+    EXPECT_FALSE(mill.manualSpindle(3, 1, 800.0)) << "the mill has S1 only";
+    ASSERT_TRUE(mill.manualSpindle(1, 1, 800.0));
+    for (int i = 0; i < 500; ++i)
+        mill.advance(0.02);
+    const auto& spindles = mill.machine().spindles();
+    EXPECT_DOUBLE_EQ(spindles.actualSpeed(1), 800.0);
+    ASSERT_TRUE(mill.manualSpindle(1, -1, 900.0));
+    for (int i = 0; i < 1000; ++i)
+        mill.advance(0.02);
+    EXPECT_DOUBLE_EQ(spindles.actualSpeed(1), -900.0) << "counter-clockwise";
+    ASSERT_TRUE(mill.manualSpindle(1, 0));
+    for (int i = 0; i < 1000; ++i)
+        mill.advance(0.02);
+    EXPECT_DOUBLE_EQ(spindles.actualSpeed(1), 0.0);
+    EXPECT_DOUBLE_EQ(spindles.commandedSpeed(1), 900.0) << "M5 keeps the speed";
+}
+
 TEST(ManualJog, RefusedWhileAProgramRuns) {
     JogFixture f;
     f.cell.addProgram(0, 8, "long.nc", "N0001 G90 G1 X100 F600\nN0002 M30\n");

@@ -115,6 +115,24 @@ class ManualJogTest : public QObject {
         QCOMPARE(panel.session->station(0).machine().position(0), 400.0);
     }
 
+    void theSpindleKeysTurnTheFirstSpindle() {
+        PanelFixture panel;
+        manualBaseScreen(panel);
+        panel.press(Qt::Key_3);  // M3 at the 500 rpm start speed
+        panel.press(Qt::Key_PageUp);
+        panel.press(Qt::Key_PageUp);
+        for (int tick = 0; tick < 500; ++tick)
+            panel.session->advance(0.02);
+        QCOMPARE(panel.session->station(0).machine().spindles().actualSpeed(1), 700.0);
+        QVERIFY2(label(panel, "spindleValues").contains("700 / 700 rpm CW"),
+                 qPrintable(label(panel, "spindleValues")));
+        panel.press(Qt::Key_5);
+        for (int tick = 0; tick < 500; ++tick)
+            panel.session->advance(0.02);
+        QVERIFY2(label(panel, "spindleValues").contains("stopped"),
+                 qPrintable(label(panel, "spindleValues")));
+    }
+
     void automaticModeDoesNotJog() {
         PanelFixture panel;
         panel.session->setTimerEnabled(false);
