@@ -133,6 +133,24 @@ class ManualJogTest : public QObject {
                  qPrintable(label(panel, "spindleValues")));
     }
 
+    void theLatheJogsItsOwnAxes() {
+        PanelFixture panel;
+        panel.session->setTimerEnabled(false);
+        panel.press(Qt::Key_PageDown, Qt::ControlModifier);  // the lathe
+        panel.press(Qt::Key_F3, Qt::ShiftModifier);          // its M key Manual
+        panel.press(Qt::Key_F11);
+        QVERIFY2(label(panel, "jogLine").contains("jog X"), qPrintable(label(panel, "jogLine")));
+        panel.press(Qt::Key_Down);  // the lathe's second axis
+        const auto& lathe = panel.session->station(1);
+        const int axis = 1;
+        const double before = lathe.machine().position(axis);
+        panel.press(Qt::Key_Minus);  // 1 mm
+        settle(panel, 1);
+        QCOMPARE(lathe.machine().position(axis), before - 1.0);
+        QCOMPARE(panel.session->station(0).machine().position(0), 0.0);  // the mill stays
+        QCOMPARE(panel.session->station(0).control().mode(), mtc::core::OperatingMode::Automatic);
+    }
+
     void automaticModeDoesNotJog() {
         PanelFixture panel;
         panel.session->setTimerEnabled(false);
