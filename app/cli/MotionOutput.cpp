@@ -70,7 +70,7 @@ void MotionOutput::dwell(const core::SourceLocation&, double seconds) {
     dwellSeconds_ += seconds;
 }
 
-void MotionOutput::command(const core::SourceLocation&, const std::string&, const std::string&) {
+void MotionOutput::command(const core::MachineCommand&) {
     ++commands_;
 }
 

@@ -47,8 +47,7 @@ class MotionOutput : public core::MachineSink {
     void motion(const core::Motion& motion) override;
     void auxiliary(const core::AuxOutput& output) override;
     void dwell(const core::SourceLocation& where, double seconds) override;
-    void command(const core::SourceLocation& where, const std::string& keyword,
-                 const std::string& arguments) override;
+    void command(const core::MachineCommand& command) override;
 
     /// False with MotionMode::None: the run does not produce motion at all
     /// (--no-motion), so motionCount() means nothing.

@@ -27,9 +27,7 @@ class RestartRecorder : public core::MachineSink {
     /// Keeps every auxiliary function with the phase it came in.
     void auxiliary(const core::AuxOutput& output) override;
     void dwell(const core::SourceLocation&, double) override {}
-    void command(const core::SourceLocation&, const std::string&, const std::string&) override {
-        ++commands_;
-    }
+    void command(const core::MachineCommand&) override { ++commands_; }
 
     /// What was recorded, in order.
     const std::vector<Aux>& aux() const { return aux_; }

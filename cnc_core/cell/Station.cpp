@@ -68,11 +68,10 @@ void Station::Output::dwell(const SourceLocation& where, double seconds) {
     if (listener) listener->dwell(where, seconds);
 }
 
-void Station::Output::command(const SourceLocation& where, const std::string& keyword,
-                              const std::string& arguments) {
-    sent(where);
-    machine.command(where, keyword, arguments);
-    if (listener) listener->command(where, keyword, arguments);
+void Station::Output::command(const MachineCommand& command) {
+    sent(command.where);
+    machine.command(command);
+    if (listener) listener->command(command);
 }
 
 bool Station::press(ControlKey key) {

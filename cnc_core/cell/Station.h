@@ -198,8 +198,7 @@ class Station : private ProgramRunner {
         void motion(const Motion& m) override;
         void auxiliary(const AuxOutput& a) override;
         void dwell(const SourceLocation& where, double seconds) override;
-        void command(const SourceLocation& where, const std::string& keyword,
-                     const std::string& arguments) override;
+        void command(const MachineCommand& command) override;
         void sent(const SourceLocation& where);
         SimulatedMachine& machine;
         MachineSink* listener = nullptr;

@@ -60,7 +60,7 @@ class InsertionCollector : public MachineSink {
     }
     void auxiliary(const AuxOutput&) override {}
     void dwell(const SourceLocation&, double) override {}
-    void command(const SourceLocation&, const std::string&, const std::string&) override {}
+    void command(const MachineCommand&) override {}
 
   private:
     std::string text(const Motion& m) const {

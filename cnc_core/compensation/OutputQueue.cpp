@@ -27,7 +27,7 @@ void OutputQueue::release(const std::function<void(Motion&)>& adjust) {
                 downstream_.dwell(item.where, item.seconds);
                 break;
             case Kind::Command:
-                downstream_.command(item.where, item.keyword, item.arguments);
+                downstream_.command(item.command);
                 break;
         }
     }
@@ -56,13 +56,9 @@ void OutputQueue::dwell(const SourceLocation& where, double seconds) {
     item.seconds = seconds;
 }
 
-void OutputQueue::command(const SourceLocation& where, const std::string& keyword,
-                          const std::string& arguments) {
-    if (!holding_) return downstream_.command(where, keyword, arguments);
-    Item& item = push(Kind::Command);
-    item.where = where;
-    item.keyword = keyword;
-    item.arguments = arguments;
+void OutputQueue::command(const MachineCommand& command) {
+    if (!holding_) return downstream_.command(command);
+    push(Kind::Command).command = command;
 }
 
 }  // namespace mtc::core

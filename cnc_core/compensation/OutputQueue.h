@@ -30,8 +30,7 @@ class OutputQueue : public MachineSink {
     void motion(const Motion& motion) override;
     void auxiliary(const AuxOutput& output) override;
     void dwell(const SourceLocation& where, double seconds) override;
-    void command(const SourceLocation& where, const std::string& keyword,
-                 const std::string& arguments) override;
+    void command(const MachineCommand& command) override;
 
   private:
     enum class Kind : unsigned char { Motion, Auxiliary, Dwell, Command };
@@ -41,7 +40,7 @@ class OutputQueue : public MachineSink {
         AuxOutput aux;
         SourceLocation where;
         double seconds = 0.0;
-        std::string keyword, arguments;
+        MachineCommand command;
     };
     Item& push(Kind kind);
 

@@ -270,7 +270,7 @@ class Interpreter {
     /// axes; the move only of held axes (InterpreterAxisOwnership.cpp).
     bool planAxisOwnership(const BlockContext& context);
     /// Carries out GAX / FAX of the current block on the cell's ownership.
-    void commitAxisTransfer(const std::string& keyword, std::string_view arguments);
+    void commitAxisTransfer(const AxisTransferCommand& transfer);
     /// Axes of this process another process holds (or nobody), as a mask.
     std::uint32_t axesNotHeld();
     /// Index of this process's axis called `name` in a transfer, or -1.

@@ -44,14 +44,16 @@ bool Interpreter::planAxisOwnership(const BlockContext& context) {
     const Program& program = context.program;
     for (int c = 0; c < input_.commandCount; ++c) {
         const Word& word = program.words[input_.commands[static_cast<size_t>(c)]];
-        const std::string_view text = program.text(word.text);
-        const std::string keyword(text.substr(0, text.find_first_of(" (=")));
-        AxisTransferKind kind{};
-        std::vector<std::string> names;
-        if (keyword != "GAX" && keyword != "FAX") continue;
-        if (!parseAxisTransfer(keyword, std::string(program.text(word.args)), kind, names))
+        const std::optional<MachineCommand> command =
+            readMachineCommand(program.text(word.text), program.text(word.args));
+        const auto* transfer =
+            command ? std::get_if<AxisTransferCommand>(&command->action) : nullptr;
+        if (!transfer) continue;
+        const std::string keyword(keywordName(command->keyword));
+        const AxisTransferKind kind = transfer->kind;
+        if (transfer->axes.empty())
             return context.error("AXIS_TRANSFER", keyword + " names no axis", word.column);
-        for (const std::string& name : names) {
+        for (const std::string& name : transfer->axes) {
             const int axis = transferAxisIndex(name);
             if (axis < 0)
                 return context.error("AXIS_TRANSFER",
@@ -84,15 +86,12 @@ bool Interpreter::planAxisOwnership(const BlockContext& context) {
     return true;
 }
 
-void Interpreter::commitAxisTransfer(const std::string& keyword, std::string_view arguments) {
-    AxisTransferKind kind{};
-    std::vector<std::string> names;
-    if (!parseAxisTransfer(keyword, std::string(arguments), kind, names)) return;
-    for (const std::string& name : names) {
+void Interpreter::commitAxisTransfer(const AxisTransferCommand& transfer) {
+    for (const std::string& name : transfer.axes) {
         const int axis = transferAxisIndex(name);
         if (axis < 0) continue;  // refused while planning
         const std::string key = upper(axes_.axis(axis).displayName());
-        if (kind == AxisTransferKind::Free) {
+        if (transfer.kind == AxisTransferKind::Free) {
             axisTransfer_->release(config_.index, key);
             continue;
         }

@@ -52,19 +52,6 @@ void formatBlockId(const Block& block, std::string& out) {
     out.assign(text, static_cast<std::size_t>(end - text));
 }
 
-/// "TCH(2,1)" -> 1 (the SPI argument), default 1; clamped to 1..4.
-int spindleArgument(std::string_view args) {
-    const auto comma = args.find(',');
-    if (comma == std::string_view::npos) return 1;
-    int spindle = 0;
-    std::size_t first = comma + 1;
-    while (first < args.size() && args[first] == ' ')
-        ++first;  // "TCH(1, 2)": blanks after the comma
-    for (std::size_t i = first; i < args.size() && args[i] >= '0' && args[i] <= '9'; ++i)
-        spindle = spindle * 10 + (args[i] - '0');
-    return spindle >= 1 && spindle <= 4 ? spindle : 1;
-}
-
 }  // namespace
 
 SourceLocation Interpreter::sinkLocation(const Program& program, std::uint32_t /*index*/) const {
@@ -204,20 +191,21 @@ void Interpreter::runCommands(const Program& program, std::uint32_t index) {
     const SourceLocation where = sinkLocation(program, index);
     for (int i = 0; i < input_.commandCount; ++i) {
         const Word w = program.words[input_.commands[static_cast<size_t>(i)]];
-        const std::string_view text = program.text(w.text);
-        const std::string_view args = program.text(w.args);
-        std::string keyword(text.substr(0, text.find_first_of(" (=")));
+        std::optional<MachineCommand> command =
+            readMachineCommand(program.text(w.text), program.text(w.args));
+        if (!command) continue;  // the parser classifies only command keywords as commands
+        command->where = where;
         modalChanged();
-        if (keyword == "MTP" && config_.toolStorage == "turret")
+        if (const auto* transfer = std::get_if<ToolTransferCommand>(&command->action)) {
+            const auto spindle = static_cast<size_t>(transfer->spindle - 1);
+            state_.modal.toolSpindle[spindle] =
+                command->keyword == CommandKeyword::TSM ? 0 : state_.modal.tool;
+        } else if (command->keyword == CommandKeyword::MTP && config_.toolStorage == "turret") {
             state_.modal.toolSpindle[0] = state_.modal.tool;
-        else if (keyword == "TCH" || keyword == "TMS")
-            state_.modal.toolSpindle[static_cast<size_t>(spindleArgument(args) - 1)] =
-                state_.modal.tool;
-        else if (keyword == "TSM")
-            state_.modal.toolSpindle[static_cast<size_t>(spindleArgument(args) - 1)] = 0;
-        if (axisTransfer_ && (keyword == "GAX" || keyword == "FAX"))
-            commitAxisTransfer(keyword, args);
-        if (options_.output.commands) sink_.command(where, keyword, std::string(args));
+        }
+        if (const auto* transfer = std::get_if<AxisTransferCommand>(&command->action))
+            if (axisTransfer_) commitAxisTransfer(*transfer);
+        if (options_.output.commands) sink_.command(*command);
     }
 }
 

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "cnc_core/interp/MachineCommand.h"
 #include "cnc_core/language/Diagnostic.h"
 
 /// Everything that leaves the interpreter goes through this interface (the
@@ -77,8 +78,7 @@ class MachineSink {
     virtual void auxiliary(const AuxOutput& output) = 0;
     virtual void dwell(const SourceLocation& where, double seconds) = 0;
     /// A command the interpreter hands to the machine (AXD, MTP, TCH, GAX, ...).
-    virtual void command(const SourceLocation& where, const std::string& keyword,
-                         const std::string& arguments) = 0;
+    virtual void command(const MachineCommand& command) = 0;
 };
 
 /// Keeps everything in vectors: for tests and the CLI.
@@ -89,23 +89,16 @@ class RecordingSink : public MachineSink {
     void dwell(const SourceLocation& where, double seconds) override {
         dwells.push_back({where, seconds});
     }
-    void command(const SourceLocation& where, const std::string& keyword,
-                 const std::string& arguments) override {
-        commands.push_back({where, keyword, arguments});
-    }
+    void command(const MachineCommand& c) override { commands.push_back(c); }
 
     struct Dwell {
         SourceLocation where;
         double seconds;
     };
-    struct Command {
-        SourceLocation where;
-        std::string keyword, arguments;
-    };
     std::vector<Motion> motions;
     std::vector<AuxOutput> aux;
     std::vector<Dwell> dwells;
-    std::vector<Command> commands;
+    std::vector<MachineCommand> commands;
 };
 
 /// Discards everything (computing process, --no-motion).
@@ -114,7 +107,7 @@ class NullSink : public MachineSink {
     void motion(const Motion&) override {}
     void auxiliary(const AuxOutput&) override {}
     void dwell(const SourceLocation&, double) override {}
-    void command(const SourceLocation&, const std::string&, const std::string&) override {}
+    void command(const MachineCommand&) override {}
 };
 
 }  // namespace mtc::core

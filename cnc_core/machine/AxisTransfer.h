@@ -7,10 +7,9 @@
 #include <string>
 #include <vector>
 
-namespace mtc::core {
+#include "cnc_core/interp/MachineCommand.h"  // AxisTransferKind
 
-/// GAX / FAX of one process: request an axis or relinquish it.
-enum class AxisTransferKind { Get, Free };
+namespace mtc::core {
 
 /// The handshake of the axis transfer commands between the processes of a
 /// cell (seed 000, 5.4 "Axis transfer"): a process that relinquishes an axis
@@ -73,12 +72,5 @@ class AxisTransfer {
     std::atomic<std::uint64_t> revision_{0};
     Ticket next_ = 1;
 };
-
-/// The axes of an axis transfer command: keyword "GAX" / "FAX" (else false)
-/// and its arguments as the parser keeps them (the rest of the block):
-/// "(X1)" or "(X1, Z2) AXD ..." give the list in the parentheses, "X1 ..."
-/// the first word; names are upper case. False as well when no axis is named.
-bool parseAxisTransfer(const std::string& keyword, const std::string& arguments,
-                       AxisTransferKind& kind, std::vector<std::string>& axes);
 
 }  // namespace mtc::core

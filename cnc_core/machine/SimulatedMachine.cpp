@@ -168,10 +168,9 @@ void SimulatedMachine::dwell(const SourceLocation& where, double seconds) {
     if (afc_) afc_->setClock(afcClock_);
 }
 
-void SimulatedMachine::command(const SourceLocation& where, const std::string&,
-                               const std::string&) {
+void SimulatedMachine::command(const MachineCommand& command) {
     // AXD, MTP, TCH, GAX ...: the axes come to rest before it (MOT-007).
-    engine_.pushAction(where, motion::MachineAction{});
+    engine_.pushAction(command.where, motion::MachineAction{});
 }
 
 void SimulatedMachine::reset() {

@@ -58,8 +58,7 @@ class SimulatedMachine : public MachineSink {
     void motion(const Motion& motion) override;
     void auxiliary(const AuxOutput& output) override;
     void dwell(const SourceLocation& where, double seconds) override;
-    void command(const SourceLocation& where, const std::string& keyword,
-                 const std::string& arguments) override;
+    void command(const MachineCommand& command) override;
 
     // ---- time (driven by the station)
     /// True while the look-ahead queue has room for the next block's outputs.

@@ -36,9 +36,8 @@ class MachineAuxTracker : public MachineSink {
     void dwell(const SourceLocation& where, double seconds) override {
         if (next_) next_->dwell(where, seconds);
     }
-    void command(const SourceLocation& where, const std::string& keyword,
-                 const std::string& arguments) override {
-        if (next_) next_->command(where, keyword, arguments);
+    void command(const MachineCommand& command) override {
+        if (next_) next_->command(command);
     }
 
   private:

@@ -39,7 +39,7 @@ class CornerSink : public MachineSink {
     }
     void auxiliary(const AuxOutput&) override {}
     void dwell(const SourceLocation&, double) override {}
-    void command(const SourceLocation&, const std::string&, const std::string&) override {}
+    void command(const MachineCommand&) override {}
 
   private:
     ReposPreview& preview_;

@@ -34,12 +34,10 @@ class RestartOutputFilter : public MachineSink {
     void dwell(const SourceLocation&, double) override {}
     /// Auxiliary functions the interpreter forwards go to the SPS.
     void auxiliary(const AuxOutput& output) override { sps_.auxiliary(output); }
-    /// Passes the command to the SPS unless suppressed() says otherwise.
-    void command(const SourceLocation& where, const std::string& keyword,
-                 const std::string& arguments) override;
+    /// Passes the command to the SPS unless the computing process does not
+    /// perform it (performedWhileComputing()).
+    void command(const MachineCommand& command) override;
 
-    /// True for a command the computing process does not perform.
-    static bool suppressed(const std::string& keyword);
     /// Commands held back since construction or resetCounters().
     std::uint64_t suppressedCount() const { return suppressed_; }
     std::uint64_t passedCount() const { return passed_; }

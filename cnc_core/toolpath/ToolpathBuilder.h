@@ -43,7 +43,7 @@ class ToolpathBuilder : public MachineSink {
     void motion(const Motion& motion) override;
     void auxiliary(const AuxOutput&) override {}
     void dwell(const SourceLocation&, double) override {}
-    void command(const SourceLocation&, const std::string&, const std::string&) override {}
+    void command(const MachineCommand&) override {}
 
     const ToolpathGeometry& geometry() const { return geometry_; }
     /// Hands the geometry over (the builder starts empty again).

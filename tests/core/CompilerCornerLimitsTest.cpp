@@ -26,7 +26,7 @@ class MotionSink : public MachineSink {
     void motion(const Motion& m) override { motions.push_back(m); }
     void auxiliary(const AuxOutput&) override {}
     void dwell(const SourceLocation&, double) override {}
-    void command(const SourceLocation&, const std::string&, const std::string&) override {}
+    void command(const MachineCommand&) override {}
     std::vector<Motion> motions;
 };
 

@@ -91,9 +91,8 @@ void TranscriptSink::dwell(const SourceLocation& w, double seconds) {
     text += "dwell " + where(w) + " " + number(seconds) + "\n";
 }
 
-void TranscriptSink::command(const SourceLocation& w, const std::string& keyword,
-                             const std::string& arguments) {
-    text += "command " + where(w) + " " + keyword + " (" + arguments + ")\n";
+void TranscriptSink::command(const MachineCommand& c) {
+    text += "command " + where(c.where) + " " + commandText(c) + "\n";
 }
 
 std::string diagnosticsText(const DiagnosticList& diagnostics) {

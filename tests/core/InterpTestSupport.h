@@ -34,8 +34,7 @@ class TranscriptSink : public core::MachineSink {
     void motion(const core::Motion& m) override;
     void auxiliary(const core::AuxOutput& a) override;
     void dwell(const core::SourceLocation& where, double seconds) override;
-    void command(const core::SourceLocation& where, const std::string& keyword,
-                 const std::string& arguments) override;
+    void command(const core::MachineCommand& command) override;
     std::string text;
 
   private:

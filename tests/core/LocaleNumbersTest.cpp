@@ -43,7 +43,7 @@ struct RecordingSink : MachineSink {
     void motion(const Motion& m) override { motions.push_back(m); }
     void auxiliary(const AuxOutput&) override {}
     void dwell(const SourceLocation&, double) override {}
-    void command(const SourceLocation&, const std::string&, const std::string&) override {}
+    void command(const MachineCommand&) override {}
 };
 
 TEST_F(GermanLocale, NumberTextIsTheCLocales) {

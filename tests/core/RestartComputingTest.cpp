@@ -287,7 +287,7 @@ TEST(RestartComputing, ToolStorageAndPositionCommandsAreNotPerformed) {
         << diagnosticsText(c->diagnostics());
     std::vector<std::string> passed;
     for (const auto& command : mill.sps.commands)
-        passed.push_back(command.keyword);
+        passed.emplace_back(keywordName(command.keyword));
     EXPECT_EQ(passed, (std::vector<std::string>{"GAX", "FAX", "AXD", "DP", "WES", "POK"}));
     EXPECT_EQ(c->filter().suppressedCount(), 14u);
     const auto& spindles = c->state().modal.toolSpindle;

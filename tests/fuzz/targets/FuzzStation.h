@@ -19,7 +19,7 @@ class FiniteSink : public core::MachineSink {
     void motion(const core::Motion& m) override;
     void auxiliary(const core::AuxOutput& a) override;
     void dwell(const core::SourceLocation& where, double seconds) override;
-    void command(const core::SourceLocation&, const std::string&, const std::string&) override {}
+    void command(const core::MachineCommand&) override {}
 
   private:
     std::string_view input_;
