@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "cnc_core/geometry/ArcSweep.h"
+
 namespace mtc::core::comp {
 namespace {
 
@@ -20,9 +22,8 @@ double angleAlong(const PlanePath& p, const Vec2& from, const Vec2& to) {
 
 double PlanePath::sweep() const {
     if (!isArc()) return 0.0;
-    if (fullCircle) return 2.0 * kPi;
-    const double angle = angleAlong(*this, start, end);
-    return angle <= 1e-12 ? 2.0 * kPi : angle;
+    return std::fabs(arcSweep(start.x(), start.y(), end.x(), end.y(), centre.x(), centre.y(),
+                              kind == PathKind::ArcCw, fullCircle));
 }
 
 double PlanePath::length() const {

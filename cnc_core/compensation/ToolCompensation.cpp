@@ -371,12 +371,14 @@ void ToolCompensation::emitPiece(const comp::ToolPiece& piece, const Motion& sha
         frame_.centreToMotion(axes_, piece.path.centre, axisPosition_, c1, c2);
         m.center1 = c1 + m.toolOffset[a1];
         m.center2 = c2 + m.toolOffset[a2];
+        m.fullCircle = piece.path.fullCircle;
         if (piece.inserted && m.feed <= 0.0) m.feed = feed;
     } else {
         m.type = piece.inserted || shape.type == MotionType::Rapid ? MotionType::Rapid
                                                                    : MotionType::Linear;
         m.planeAxis1 = m.planeAxis2 = -1;
         m.center1 = m.center2 = 0.0;
+        m.fullCircle = false;
     }
     if (m.type == MotionType::Rapid) m.feed = 0.0;
     send(m);

@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <optional>
 
+#include "cnc_core/geometry/ArcSweep.h"
 #include "cnc_core/language/CheckedNumber.h"
 #include "cnc_core/text/Numbers.h"
 
@@ -244,6 +245,7 @@ void buildMotion(ScanState& state, ScannedBlock& out, const ScanResult& result) 
     }
     if (out.motionG == 2 || out.motionG == 3) {
         out.element = PathElement::circle(start, end, centre, out.motionG == 3);
+        out.element.fullCircle = closesCircle(start.x(), start.y(), end.x(), end.y());
         const double r1 = (start - centre).norm(), r2 = (end - centre).norm();
         if (r1 < 1e-9)
             out.elementProblem = "the circle's start point is its centre";

@@ -6,6 +6,8 @@
 #include <cmath>
 #include <cstdint>
 
+#include "cnc_core/geometry/ArcSweep.h"
+
 namespace mtc::core {
 
 namespace {
@@ -166,10 +168,8 @@ PathElement PathElement::circle(const Point2& from, const Point2& to, const Poin
 }
 
 double PathElement::sweep() const {
-    const double ccwAngle = angleBetween(start - center, end - center);
-    double angle = ccw ? ccwAngle : (ccwAngle == 0.0 ? 0.0 : 2.0 * kPi - ccwAngle);
-    if (angle < 1e-12) angle = 2.0 * kPi;
-    return angle;
+    return std::abs(
+        arcSweep(start.x(), start.y(), end.x(), end.y(), center.x(), center.y(), !ccw, fullCircle));
 }
 
 double PathElement::length() const {

@@ -18,13 +18,16 @@ struct PathElement {
     Point2 end = Point2::Zero();
     Point2 center = Point2::Zero();  ///< arcs
     double radius = 0.0;             ///< arcs: distance centre-start
+    /// Arcs: one whole turn (closesCircle() of a programmed block, D-016;
+    /// never set for a constructed rounding).
+    bool fullCircle = false;
 
     /// A line from `from` to `to`.
     static PathElement line(const Point2& from, const Point2& to);
     /// An arc from `from` to `to` around `centre` (radius from the start).
     static PathElement circle(const Point2& from, const Point2& to, const Point2& centre, bool ccw);
 
-    /// Swept angle of an arc in (0, 2 pi] (a closed arc is a full circle).
+    /// Swept angle of an arc in (0, 2 pi] (arcSweep(), D-016).
     double sweep() const;
     double length() const;
     /// The point at path length s.

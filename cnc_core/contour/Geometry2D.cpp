@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "cnc_core/geometry/ArcSweep.h"
 #include "cnc_core/language/CheckedNumber.h"
 
 namespace mtc::core::gne {
@@ -74,11 +75,10 @@ Point direction(double degrees) {
 
 double Segment::sweep() const {
     if (!isArc()) return 0.0;
-    const Point u = start - centre, v = end - centre;
-    double a = std::atan2(cross(u, v), u.dot(v));
-    if (kind == ArcCW) a = -a;
-    if (a <= 1e-12) a += 2.0 * kPi;
-    return a;
+    // Constructed contour geometry: a full circle only when the end lies in
+    // the start's direction (the contour's full circles end where they start).
+    return std::fabs(arcSweep(start.x(), start.y(), end.x(), end.y(), centre.x(), centre.y(),
+                              kind == ArcCW, false));
 }
 
 double Segment::length() const {

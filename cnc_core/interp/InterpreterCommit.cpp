@@ -173,6 +173,7 @@ void Interpreter::emitMotion(const Program& program, std::uint32_t index) {
     m.planeAxis2 = arc ? plan_.planeAxis2 : -1;
     m.center1 = arc ? plan_.center1 : 0.0;
     m.center2 = arc ? plan_.center2 : 0.0;
+    m.fullCircle = arc && plan_.fullCircle;
     m.feed = plan_.feedRate;
     m.exactStop = state_.modal.g[kGroupExactStop] == 9;
     m.blendCorners = state_.modal.g[kGroupAcceleration] == 7;

@@ -31,9 +31,12 @@ struct Motion {
     std::array<double, kMaxAxes> end{};
     int planeAxis1 = -1, planeAxis2 = -1;  ///< arcs: machine axis indices spanning the plane
     double center1 = 0.0, center2 = 0.0;   ///< arcs: centre in those two axes
-    double feed = 0.0;                     ///< mm/min (0 for rapid)
-    int transformation = 30;               ///< 30 none, 31 facing, 32 lateral cylinder
-    double effectiveRadius = 0.0;          ///< RI while G32 is active
+    /// Arcs: one whole turn (closesCircle() of the programmed arc, D-016);
+    /// the sweep of every receiver comes from arcSweep() with this flag.
+    bool fullCircle = false;
+    double feed = 0.0;             ///< mm/min (0 for rapid)
+    int transformation = 30;       ///< 30 none, 31 facing, 32 lateral cylinder
+    double effectiveRadius = 0.0;  ///< RI while G32 is active
     /// G31/G32: machine axis indices spanning the transformed plane (-1 otherwise).
     int transformAxis1 = -1, transformAxis2 = -1;
     std::uint32_t blockIndex = 0;  ///< index of the block in Program::blocks

@@ -3,10 +3,10 @@
 #include <algorithm>
 #include <cmath>
 
+#include "cnc_core/geometry/ArcSweep.h"
+
 namespace mtc::core {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 bool isArc(const Motion& m) {
     return (m.type == MotionType::ArcCW || m.type == MotionType::ArcCCW) && m.planeAxis1 >= 0 &&
@@ -17,12 +17,8 @@ bool isArc(const Motion& m) {
 
 double motionSweep(const Motion& m) {
     const int a = m.planeAxis1, b = m.planeAxis2;
-    const double a0 = std::atan2(m.start[b] - m.center2, m.start[a] - m.center1);
-    const double a1 = std::atan2(m.end[b] - m.center2, m.end[a] - m.center1);
-    double delta = m.type == MotionType::ArcCCW ? a1 - a0 : a0 - a1;
-    if (delta <= 1e-12) delta += 2 * kPi;  // atan2 differences lie in (-2 pi, 2 pi)
-    if (delta <= 1e-12) delta += 2 * kPi;  // equal angles: a full circle
-    return delta;
+    return std::fabs(arcSweep(m.start[a], m.start[b], m.end[a], m.end[b], m.center1, m.center2,
+                              m.type == MotionType::ArcCW, m.fullCircle));
 }
 
 double motionPathLength(const Motion& m) {

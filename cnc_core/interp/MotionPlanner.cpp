@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "cnc_core/geometry/ArcSweep.h"
 #include "cnc_core/machine/AxisNameTable.h"
 #include "cnc_core/motion/SegmentGeometry.h"
 #include "cnc_core/text/Numbers.h"
@@ -259,16 +260,10 @@ bool MotionPlanner::arc(const BlockContext& context, const BlockInput& input,
             {"radius at the start point " + format(r1) + " mm",
              "radius at the end point " + format(r2) + " mm",
              "difference " + format(r2 - r1) + " mm, tolerance " + format(arcTolerance) + " mm"});
-    const double chord1 = e1 - s1, chord2 = e2 - s2;
-    const bool full = chord1 * chord1 + chord2 * chord2 <= arcTolerance * arcTolerance;
-    double angle = 2.0 * kPi;
-    if (!full) {
-        const double u1 = s1 - centre[0], u2 = s2 - centre[1];     // centre -> start
-        const double v1 = e1 - centre[0], v2 = e2 - centre[1];     // centre -> end
-        angle = std::atan2(u1 * v2 - u2 * v1, u1 * v1 + u2 * v2);  // counter-clockwise, -pi..pi
-        if (plan.motionType == MotionType::ArcCW) angle = -angle;
-        if (angle <= 0.0) angle += 2.0 * kPi;
-    }
+    // D-016: an end within the radius tolerance of the start closes the circle.
+    const bool full = closesCircle(s1, s2, e1, e2, arcTolerance);
+    const double angle = std::fabs(
+        arcSweep(s1, s2, e1, e2, centre[0], centre[1], plan.motionType == MotionType::ArcCW, full));
     double helix = 0.0, helixSeconds = 0.0;
     const std::uint32_t others = input.axisMask & ~((1u << p1) | (1u << p2));
     for (int a = 0; others >> a; ++a) {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "cnc_core/geometry/ArcSweep.h"
 #include "cnc_core/toolpath/CurveMath.h"
 
 namespace mtc::core::motion {
@@ -62,7 +63,7 @@ SegmentGeometry SegmentGeometry::of(const Motion& m, const MotionLimits& limits)
         c1 = plane[static_cast<std::size_t>(g.p1_)];
         c2 = plane[static_cast<std::size_t>(g.p2_)];
     }
-    g.describeArc(c1, c2, m.type == MotionType::ArcCW);
+    g.describeArc(c1, c2, m.type == MotionType::ArcCW, m.fullCircle);
     return g;
 }
 
@@ -80,7 +81,7 @@ void SegmentGeometry::describeLine() {
     endTangent_ = startTangent_;
 }
 
-void SegmentGeometry::describeArc(double c1, double c2, bool clockwise) {
+void SegmentGeometry::describeArc(double c1, double c2, bool clockwise, bool fullCircle) {
     arc_ = true;
     center1_ = c1;
     center2_ = c2;
@@ -88,9 +89,8 @@ void SegmentGeometry::describeArc(double c1, double c2, bool clockwise) {
     radius0_ = std::hypot(start_[k1] - c1, start_[k2] - c2);
     radius1_ = std::hypot(end_[k1] - c1, end_[k2] - c2);
     angle0_ = std::atan2(start_[k2] - c2, start_[k1] - c1);
-    const double sweep = curve::arcSweep(start_[k1], start_[k2], end_[k1], end_[k2], c1, c2,
-                                         clockwise, kFullCircleTolerance);
-    sweep_ = clockwise ? -sweep : sweep;
+    sweep_ = arcSweep(start_[k1], start_[k2], end_[k1], end_[k2], c1, c2, clockwise, fullCircle);
+    const double sweep = std::fabs(sweep_);
     double helix = 0.0;
     for (int i = 0; i < axisCount_; ++i) {
         if (i == p1_ || i == p2_) continue;

@@ -11,8 +11,7 @@ namespace mtc::core::motion {
 class SegmentGeometry {
   public:
     /// Geometry of `motion` (G0/G1 lines, G2/G3 arcs and helices). The arc's
-    /// sweep follows the toolpath's rule (start = end within
-    /// kFullCircleTolerance: a full circle).
+    /// sweep is arcSweep() with Motion::fullCircle (D-016).
     static SegmentGeometry of(const Motion& motion, const MotionLimits& limits);
 
     bool arc() const { return arc_; }
@@ -45,7 +44,7 @@ class SegmentGeometry {
 
   private:
     void describeLine();
-    void describeArc(double c1, double c2, bool clockwise);
+    void describeArc(double c1, double c2, bool clockwise, bool fullCircle);
     void arcTangent(double u, Position& tangent) const;
 
     PlaneMapping mapping_;
@@ -64,8 +63,5 @@ class SegmentGeometry {
 /// the unit tangent of a circle swept from polar angle `angle0` by `sweep`
 /// radians (signed): max |sin| or max |cos| over the swept angles.
 double arcTangentExtreme(double angle0, double sweep, bool secondAxis);
-
-/// Start and end closer than this (plane units) make a G2/G3 a full circle.
-inline constexpr double kFullCircleTolerance = 0.002;
 
 }  // namespace mtc::core::motion

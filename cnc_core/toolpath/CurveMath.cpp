@@ -25,17 +25,6 @@ int arcChords(double radius, double sweep, double tolerance) {
     return std::max({1, static_cast<int>(count), static_cast<int>(quarter)});
 }
 
-double arcSweep(double s1, double s2, double e1, double e2, double c1, double c2, bool clockwise,
-                double fullCircle) {
-    const double d1 = e1 - s1, d2 = e2 - s2;
-    if (d1 * d1 + d2 * d2 <= fullCircle * fullCircle) return 2.0 * kPi;
-    const double u1 = s1 - c1, u2 = s2 - c2, v1 = e1 - c1, v2 = e2 - c2;
-    double angle = std::atan2(u1 * v2 - u2 * v1, u1 * v1 + u2 * v2);  // counter-clockwise
-    if (clockwise) angle = -angle;
-    if (angle <= 0.0) angle += 2.0 * kPi;
-    return angle;
-}
-
 double developedFromDegrees(double degrees, double radius, int polarDirection) {
     const double sign = polarDirection == 1 ? -1.0 : 1.0;
     return sign * degrees * kPi / 180.0 * radius;

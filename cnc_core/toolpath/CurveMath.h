@@ -25,11 +25,7 @@ inline constexpr double kMaxArcChords = 65536.0;
 /// 0.001 mm.
 int arcChords(double radius, double sweep, double tolerance);
 
-/// Angle in radians (> 0) swept from start (s1, s2) to end (e1, e2) around
-/// the centre (c1, c2), clockwise or counter-clockwise in the (1, 2) plane;
-/// a full circle (2 pi) when start and end are closer than `fullCircle`.
-double arcSweep(double s1, double s2, double e1, double e2, double c1, double c2, bool clockwise,
-                double fullCircle);
+// The sweep of an arc: arcSweep() in cnc_core/geometry/ArcSweep.h (D-016).
 
 /// Developed coordinate (mm on the cylinder surface) of a rotary axis at
 /// `degrees` with effective radius RI `radius`. The polar direction Cxx.076 = 1

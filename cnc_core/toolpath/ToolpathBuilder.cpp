@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "cnc_core/geometry/ArcSweep.h"
 #include "cnc_core/toolpath/CurveMath.h"
 
 namespace mtc::core {
@@ -185,8 +186,8 @@ void ToolpathBuilder::addArc(const Motion& m, double c1, double c2, const Transf
     const double r1 = std::hypot(start[k1] - c1, start[k2] - c2);
     const double r2 = std::hypot(end[k1] - c1, end[k2] - c2);
     const bool clockwise = m.type == MotionType::ArcCW;
-    const double sweep = curve::arcSweep(start[k1], start[k2], end[k1], end[k2], c1, c2, clockwise,
-                                         settings_.fullCircle);
+    const double sweep = std::fabs(
+        arcSweep(start[k1], start[k2], end[k1], end[k2], c1, c2, clockwise, m.fullCircle));
     const double radius = std::max(r1, r2);
     const double tolerance = t.kind == 32 ? settings_.tolerance / 2.0 : settings_.tolerance;
     int chords = curve::arcChords(radius, sweep, tolerance);

@@ -15,9 +15,6 @@ struct ToolpathSettings {
     /// a G32 move wrapped onto its cylinder, is farther than this from the
     /// true path. Arcs under G32 split it between the arc and the wrap.
     double tolerance = 0.01;
-    /// Start and end of an arc closer than this make a full circle (the
-    /// interpreter's arc tolerance, InterpreterOptions::arcTolerance).
-    double fullCircle = 0.002;
     /// The path stops growing at this many segments (both layers together);
     /// ToolpathGeometry::truncated then says so.
     std::size_t segmentLimit = 20'000'000;

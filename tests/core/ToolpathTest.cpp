@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "InterpTestSupport.h"
+#include "cnc_core/geometry/ArcSweep.h"
 #include "cnc_core/toolpath/CurveMath.h"
 #include "cnc_core/toolpath/ToolpathBuilder.h"
 #include "cnc_core/toolpath/ToolpathRun.h"
@@ -100,9 +101,9 @@ TEST(ToolpathBuilder, ArcChordsStayWithinTheTolerance) {
 
 TEST(ToolpathBuilder, ArcSweepDirectionAndFullCircle) {
     const double pi = curve::kPi;
-    EXPECT_NEAR(curve::arcSweep(1, 0, 0, 1, 0, 0, false, 1e-6), pi / 2, 1e-12);
-    EXPECT_NEAR(curve::arcSweep(1, 0, 0, 1, 0, 0, true, 1e-6), 1.5 * pi, 1e-12);
-    EXPECT_NEAR(curve::arcSweep(1, 0, 1, 0, 0, 0, true, 1e-6), 2 * pi, 1e-12);
+    EXPECT_NEAR(arcSweep(1, 0, 0, 1, 0, 0, false, false), pi / 2, 1e-12);
+    EXPECT_NEAR(arcSweep(1, 0, 0, 1, 0, 0, true, false), -1.5 * pi, 1e-12);
+    EXPECT_NEAR(arcSweep(1, 0, 1, 0, 0, 0, true, false), -2 * pi, 1e-12);
     for (double r : {0.5, 5.0, 500.0})
         for (double tol : {0.001, 0.01, 0.1}) {
             const int n = curve::arcChords(r, 2 * pi, tol);

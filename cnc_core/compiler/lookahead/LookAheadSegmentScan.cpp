@@ -4,6 +4,7 @@
 
 #include "cnc_core/compiler/CompilerText.h"
 #include "cnc_core/compiler/lookahead/LookAheadScan.h"
+#include "cnc_core/geometry/ArcSweep.h"
 #include "cnc_core/language/Keywords.h"
 
 namespace mtc::core::lookahead::detail {
@@ -219,6 +220,8 @@ void Analyzer::addElement(std::size_t i, int motion, const AxisVector& target,
     if (motion >= 2 && centerMask == 0)
         return void(report(i, "LA_ARC_CENTER", "circle without centre (I, J, K)"));
     if (motion >= 2 && !arcCenter(i, target, e.center, centerMask, plane)) return;
+    e.fullCircle = motion >= 2 && closesCircle(e.start[plane.first], e.start[plane.second],
+                                               e.end[plane.first], e.end[plane.second]);
     const int a = state_.axisFeedAxis;
     if (a >= 0 && std::abs(e.end[a] - e.start[a]) > 1e-12) {
         e.feed = kAxisFeedPath;

@@ -28,12 +28,13 @@ struct BlockRef {
 /// with the arc: helix). Units: mm (deg for rotary axes), feeds in mm/min.
 struct PathElement {
     ElementKind kind = ElementKind::Line;
-    AxisVector start;     ///< start point, every axis
-    AxisVector end;       ///< end point, every axis
-    AxisVector center;    ///< arcs: centre (only the two plane components are used)
-    int planeFirst = 0;   ///< arcs: axis index of the plane's first axis (X for G17)
-    int planeSecond = 1;  ///< arcs: axis index of the plane's second axis (Y for G17)
-    double feed = 0.0;    ///< programmed path velocity F, mm/min (> 0)
+    AxisVector start;         ///< start point, every axis
+    AxisVector end;           ///< end point, every axis
+    AxisVector center;        ///< arcs: centre (only the two plane components are used)
+    int planeFirst = 0;       ///< arcs: axis index of the plane's first axis (X for G17)
+    int planeSecond = 1;      ///< arcs: axis index of the plane's second axis (Y for G17)
+    bool fullCircle = false;  ///< arcs: one whole turn (closesCircle() of the block, D-016)
+    double feed = 0.0;        ///< programmed path velocity F, mm/min (> 0)
     /// Axis velocities programmed with F<axis>= (mm/min); 0 = none for that axis.
     AxisVector axisFeed;
     double accelerationFactor = 1.0;  ///< ACC_EFF / 100 (0.01 .. 2.0)

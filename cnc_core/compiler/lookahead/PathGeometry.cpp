@@ -3,11 +3,12 @@
 #include <algorithm>
 #include <cmath>
 
+#include "cnc_core/geometry/ArcSweep.h"
+
 namespace mtc::core::lookahead {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-constexpr double kFullCircleTolerance = 1e-9;
 
 /// Largest |cos| and |sin| of the angles between `from` and `from + sweep`.
 void trigExtremes(double from, double sweep, double& maxCos, double& maxSin) {
@@ -27,23 +28,6 @@ void trigExtremes(double from, double sweep, double& maxCos, double& maxSin) {
         else
             maxSin = 1.0;
     }
-}
-
-/// Signed sweep from the start angle to the end angle in the arc's sense.
-double arcSweep(ElementKind kind, double startAngle, double endAngle) {
-    double sweep = endAngle - startAngle;
-    if (kind == ElementKind::ArcCcw) {
-        while (sweep <= kFullCircleTolerance)
-            sweep += 2.0 * kPi;
-        while (sweep > 2.0 * kPi + kFullCircleTolerance)
-            sweep -= 2.0 * kPi;
-    } else {
-        while (sweep >= -kFullCircleTolerance)
-            sweep -= 2.0 * kPi;
-        while (sweep < -2.0 * kPi - kFullCircleTolerance)
-            sweep += 2.0 * kPi;
-    }
-    return sweep;
 }
 
 /// Linear motion of the axes outside the arc's plane.
@@ -72,7 +56,8 @@ ElementGeometry describeArc(const PathElement& e) {
     g.radiusStart = std::hypot(sp, sq);
     g.radiusEnd = std::hypot(ep, eq);
     g.angleStart = std::atan2(sq, sp);
-    g.sweep = arcSweep(e.kind, g.angleStart, std::atan2(eq, ep));
+    g.sweep = arcSweep(e.start[p], e.start[q], e.end[p], e.end[q], e.center[p], e.center[q],
+                       e.kind == ElementKind::ArcCw, e.fullCircle);
     const AxisVector other = offPlaneDelta(e);
     const double radius = 0.5 * (g.radiusStart + g.radiusEnd);
     const double planeLength = radius * std::abs(g.sweep);

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <optional>
 
+#include "cnc_core/geometry/ArcSweep.h"
+
 namespace mtc::core::lookahead {
 namespace {
 
@@ -59,8 +61,9 @@ double sweptAngle(const PathElement& e, const Planar& pl, const Vec2& from, cons
 double parameterOn(const PathElement& e, const Planar& pl, const Vec2& x) {
     const Vec2 s = pl.of(e.start), t = pl.of(e.end);
     if (!isArc(e)) return (x - s).dot(t - s) / (t - s).squaredNorm();
-    double sweep = sweptAngle(e, pl, s, t);
-    if (sweep < kEps) sweep = 2 * kPi;
+    const Vec2 c = pl.of(e.center);
+    const double sweep = std::abs(arcSweep(s.x(), s.y(), t.x(), t.y(), c.x(), c.y(),
+                                           e.kind == ElementKind::ArcCw, e.fullCircle));
     double at = sweptAngle(e, pl, s, x);
     if (at > sweep + 1e-9 && at > 2 * kPi - 1e-9) at -= 2 * kPi;  // just before the start
     return at / sweep;
@@ -175,6 +178,7 @@ class Corrector {
         pl_.set(arc.end, pl_.of(offset_[k + 1].start));
         arc.center = contour_[k].end;
         arc.generated = kCornerArc;
+        arc.fullCircle = false;
         corners_[k] = arc;
     }
 
@@ -193,6 +197,7 @@ class Corrector {
                            "TRC: block too short for tool radius");
         pl_.set(a.end, *best);
         pl_.set(b.start, *best);
+        a.fullCircle = b.fullCircle = false;  // trimmed: no longer a whole turn
     }
 
     /// Offset lines within BBTRC elements of each other must not cross.
