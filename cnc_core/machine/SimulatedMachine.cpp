@@ -140,17 +140,19 @@ void SimulatedMachine::collectReached() {
 
 void SimulatedMachine::stop() {
     engine_.stop();
+    standWhereStopped();
+    afcClock_ = seconds();
+}
+
+void SimulatedMachine::standWhereStopped() {
     for (int i = 0; i < kMaxAxes; ++i)  // the axes stand where they stopped
         lastEnd_[static_cast<std::size_t>(i)] = engine_.position(i);
     pendingAux_.clear();
-    afcClock_ = seconds();
 }
 
 bool SimulatedMachine::discardAtRest() {
     if (!engine_.discardAtRest()) return false;
-    for (int i = 0; i < kMaxAxes; ++i)
-        lastEnd_[static_cast<std::size_t>(i)] = engine_.position(i);
-    pendingAux_.clear();
+    standWhereStopped();
     return true;
 }
 

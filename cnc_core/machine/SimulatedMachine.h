@@ -137,6 +137,8 @@ class SimulatedMachine : public MachineSink {
     bool lastMoveReportsAfc() const { return lastReportsAfc_; }
 
   private:
+    /// After the queue was dropped: the queued ends and aux functions go.
+    void standWhereStopped();
     /// G26 / ITM: the move is worked out by adaptive feed control now and
     /// queued as a timed move.
     void adaptiveMove(const Motion& motion, double planned);

@@ -318,8 +318,7 @@ void TrajectoryEngine::setStopAtBlockEnds(bool on) {
     replanAll();
 }
 
-bool TrajectoryEngine::discardAtRest() {
-    if (std::abs(velocity_) > 1e-9) return false;
+void TrajectoryEngine::dropQueue() {
     if (!queue_.empty()) {
         lastWhere_ = queue_.front().where;
         lastBlock_ = queue_.front().blockIndex;
@@ -330,20 +329,16 @@ bool TrajectoryEngine::discardAtRest() {
     actionApplied_ = false;
     held_ = false;
     atBlockStop_ = false;
+}
+
+bool TrajectoryEngine::discardAtRest() {
+    if (std::abs(velocity_) > 1e-9) return false;
+    dropQueue();
     return true;
 }
 
 void TrajectoryEngine::stop() {
-    if (!queue_.empty()) {
-        lastWhere_ = queue_.front().where;
-        lastBlock_ = queue_.front().blockIndex;
-    }
-    queue_.clear();
-    planned_ = false;
-    pathS_ = velocity_ = dwelt_ = 0.0;
-    actionApplied_ = false;
-    held_ = false;
-    atBlockStop_ = false;
+    dropQueue();
     spindles_.stopAll();
 }
 

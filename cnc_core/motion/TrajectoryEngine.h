@@ -146,6 +146,8 @@ class TrajectoryEngine {
     /// Override of `item` as a factor (0 under feed hold).
     double rateOf(const QueueItem& item) const;
     void finishFront();
+    /// Empties the queue where the axes stand (stop(), discardAtRest()).
+    void dropQueue();
 
     MotionLimits limits_;
     MotionQueue queue_;
