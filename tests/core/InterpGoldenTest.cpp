@@ -11,6 +11,9 @@
 //   ; event: 1:15                  event set before the run (repeatable)
 //   ; expect-error: CODE           the run's errors, in order (repeatable)
 //   ; expect-warning: CODE         the run's warnings, in order (repeatable)
+//   ; tool: 1 radius 0.8 edge 5    sets tool T1 of the process's tool list
+//                                  (radius, length, cutting edge orientation;
+//                                  repeatable): cases the demo cell's tools lack
 // A line ";== program N ==" starts another program of the same process
 // (program 99 = label library, others for JSR/JMP); ";== cycle NAME ==" a cycle.
 #include <gtest/gtest.h>
@@ -58,6 +61,7 @@ struct GoldenProgram {
     std::uint64_t budget = kDefaultBlockBudget;
     std::vector<std::string> options, expectedErrors, expectedWarnings;
     std::vector<std::pair<int, int>> events;
+    std::vector<ToolConfig> tools;
     std::vector<std::pair<int, std::string>> programs;        // number -> source
     std::vector<std::pair<std::string, std::string>> cycles;  // name -> source
 };
@@ -71,6 +75,44 @@ std::string headerValue(const std::string& line, const std::string& key) {
     while (!value.empty() && (value.back() == ' ' || value.back() == '\r'))
         value.pop_back();
     return value.empty() ? " " : value;
+}
+
+/// "1 radius 0.8 length 61.5 edge 5" (number first, then key/value pairs).
+ToolConfig toolHeader(const std::string& value) {
+    ToolConfig tool;
+    std::istringstream words(value);
+    words >> tool.number;
+    tool.name = "golden" + std::to_string(tool.number);
+    for (std::string key; words >> key;) {
+        double v = 0.0;
+        words >> v;
+        if (key == "radius")
+            tool.radius = v;
+        else if (key == "length")
+            tool.length = v;
+        else if (key == "edge")
+            tool.edgeOrientation = static_cast<int>(v);
+        else
+            ADD_FAILURE() << "unknown '; tool:' key " << key;
+    }
+    return tool;
+}
+
+/// The demo cell with the golden program's '; tool:' lines in its tool list.
+MachineConfig cellFor(const GoldenProgram& g) {
+    MachineConfig cell = demoCell();
+    for (ProcessConfig& process : cell.processes) {
+        if (process.index != g.process) continue;
+        for (const ToolConfig& tool : g.tools) {
+            auto same = std::find_if(process.tools.begin(), process.tools.end(),
+                                     [&](const ToolConfig& t) { return t.number == tool.number; });
+            if (same != process.tools.end())
+                *same = tool;
+            else
+                process.tools.push_back(tool);
+        }
+    }
+    return cell;
 }
 
 GoldenProgram readGolden(const std::string& text) {
@@ -108,6 +150,7 @@ GoldenProgram readGolden(const std::string& text) {
         if (!(v = headerValue(line, "event")).empty())
             g.events.emplace_back(std::atoi(v.c_str()),
                                   std::atoi(v.substr(v.find(':') + 1).c_str()));
+        if (!(v = headerValue(line, "tool")).empty()) g.tools.push_back(toolHeader(v));
         if (!(v = headerValue(line, "options")).empty()) {
             std::istringstream words(v);
             for (std::string w; words >> w;)
@@ -124,7 +167,8 @@ bool hasOption(const GoldenProgram& g, const std::string& option) {
 }
 
 std::string runGolden(const GoldenProgram& g, DiagnosticList& diagnostics) {
-    Station station(demoCell(), g.process);
+    const MachineConfig cell = cellFor(g);
+    Station station(cell, g.process);
     for (const auto& [number, source] : g.programs)
         station.add(source, number);
     for (const auto& [name, source] : g.cycles) {
