@@ -159,6 +159,10 @@ class CellSession : public QObject {
     /// values) and of the last take-over of another program's changes.
     const QStringList& machineDataMessages() const { return machineDataMessages_; }
 
+    /// Announces every station whose revision changed since the last look
+    /// (after a screen forwarded an operator's action to a station).
+    void announceChanges();
+
   signals:
     void processChanged(int slot);
     /// Values of the machine data file another program changed were taken
@@ -174,8 +178,6 @@ class CellSession : public QObject {
     void tick();
     /// True when `state` holds for one of the stations.
     bool anyStation(bool (mtc::core::Station::*state)() const) const;
-    /// Announces every station whose revision changed since the last look.
-    void announceChanges();
 
     mtc::core::Cell cell_;
     QTimer timer_;

@@ -41,10 +41,35 @@ void ErrorLog::setCompilerErrors(int program, const QVector<ErrorEntry>& entries
     emit changed();
 }
 
+ErrorEntry entryFromDiagnostic(const mtc::core::Diagnostic& d, ErrorOrigin origin) {
+    ErrorEntry entry;
+    entry.origin = origin;
+    entry.warning = d.severity == mtc::core::Severity::Warning;
+    entry.program = d.where.program;
+    entry.block = QString::fromStdString(d.where.block);
+    entry.line = d.where.line;
+    entry.code = QString::fromStdString(d.code);
+    entry.message = QString::fromStdString(d.message);
+    for (const std::string& detail : d.details)
+        entry.details << QString::fromStdString(detail);
+    return entry;
+}
+
 void ErrorLog::add(const ErrorEntry& entry) {
+    if (append(entry)) emit changed();
+}
+
+void ErrorLog::addAll(const QVector<ErrorEntry>& entries) {
+    bool added = false;
+    for (const ErrorEntry& entry : entries)
+        added = append(entry) || added;
+    if (added) emit changed();
+}
+
+bool ErrorLog::append(const ErrorEntry& entry) {
     for (int i = entries_.size() - 1; i >= 0; --i) {
         if (entries_[i].origin != entry.origin) continue;
-        if (sameMessage(entries_[i], entry)) return;
+        if (sameMessage(entries_[i], entry)) return false;
         break;
     }
     entries_.push_back(entry);
@@ -55,7 +80,7 @@ void ErrorLog::add(const ErrorEntry& entry) {
                 break;
             }
     }
-    emit changed();
+    return true;
 }
 
 void ErrorLog::clear(ErrorOrigin origin) {

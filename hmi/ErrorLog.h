@@ -5,6 +5,8 @@
 #include <QStringList>
 #include <QVector>
 
+#include "cnc_core/language/Diagnostic.h"
+
 namespace mtc::hmi {
 
 /// Where an entry of the error window comes from (seed 001, ch. 9: the
@@ -28,6 +30,10 @@ struct ErrorEntry {
     QStringList details;  ///< additional text
 };
 
+/// The entry of a diagnostic (the data as it is: code, program, block,
+/// line, details), with `origin`.
+ErrorEntry entryFromDiagnostic(const mtc::core::Diagnostic& diagnostic, ErrorOrigin origin);
+
 /// The errors of one station for the error window, newest source last:
 /// the compiler's errors per program (replaced by every compile of that
 /// program), runtime errors of the interpreter and errors of the restart
@@ -42,6 +48,8 @@ class ErrorLog : public QObject {
     /// Appends a runtime or restart entry; an entry equal to the last one of
     /// the same origin is not repeated. At most kMaxEntries are kept per origin.
     void add(const ErrorEntry& entry);
+    /// Appends several entries as add() does, with one changed() signal.
+    void addAll(const QVector<ErrorEntry>& entries);
     /// Removes every entry of `origin`.
     void clear(ErrorOrigin origin);
     const QVector<ErrorEntry>& entries() const { return entries_; }
@@ -54,6 +62,9 @@ class ErrorLog : public QObject {
     void changed();
 
   private:
+    /// add() without the signal; false when the entry repeats the last one.
+    bool append(const ErrorEntry& entry);
+
     QVector<ErrorEntry> entries_;
 };
 

@@ -4,7 +4,6 @@
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
-#include <QRegularExpression>
 #include <QTemporaryDir>
 
 #include "cnc_core/compiler/CompilerFiles.h"
@@ -411,14 +410,21 @@ void ProgramWorkspace::requestEdit(int number, int line) {
 }
 
 void ProgramWorkspace::watchRuntime() {
-    const std::string& alarm = session_->control(slot_).alarm();
-    if (alarm == lastAlarm_) return;
-    lastAlarm_ = alarm;
-    ErrorEntry entry;
-    if (!entryFromRuntimeAlarm(QString::fromStdString(alarm), entry)) return;
-    if (entry.program == 0) entry.program = session_->control(slot_).selectedProgram();
-    mapToSource(entry);
-    errors_.add(entry);
+    const mtc::core::DiagnosticLog& log = session_->station(slot_).diagnostics();
+    if (log.lastSerial() == seenDiagnostic_) return;
+    QVector<ErrorEntry> entries;
+    log.forEachAfter(seenDiagnostic_, [&](const mtc::core::LoggedDiagnostic& record) {
+        ErrorEntry entry = entryFromDiagnostic(record.diagnostic, originOf(record.source));
+        if (record.source == mtc::core::DiagnosticSource::Mdi) {
+            entry.program = 0;  // the MDI entry is no program of the store
+        } else {
+            if (entry.program == 0) entry.program = session_->control(slot_).selectedProgram();
+            mapToSource(entry);
+        }
+        entries.push_back(entry);
+    });
+    seenDiagnostic_ = log.lastSerial();
+    errors_.addAll(entries);
 }
 
 void ProgramWorkspace::mapToSource(ErrorEntry& entry) const {
@@ -437,6 +443,18 @@ void ProgramWorkspace::mapToSource(ErrorEntry& entry) const {
                          .arg(sourceLine > 0 ? QString::number(sourceLine) : QString("unknown"));
 }
 
+ErrorOrigin originOf(mtc::core::DiagnosticSource source) {
+    switch (source) {
+        case mtc::core::DiagnosticSource::Run:
+            return ErrorOrigin::Runtime;
+        case mtc::core::DiagnosticSource::Mdi:
+            return ErrorOrigin::Mdi;
+        case mtc::core::DiagnosticSource::Restart:
+            return ErrorOrigin::Restart;
+    }
+    return ErrorOrigin::Runtime;
+}
+
 ErrorEntry entryFromCompilerError(const mtc::core::CompilerError& error) {
     ErrorEntry entry;
     entry.origin = ErrorOrigin::Compiler;
@@ -451,25 +469,6 @@ ErrorEntry entryFromCompilerError(const mtc::core::CompilerError& error) {
     for (const auto& line : error.details)
         entry.details << QString::fromStdString(line);
     return entry;
-}
-
-bool entryFromRuntimeAlarm(const QString& alarm, ErrorEntry& entry) {
-    // formatDiagnostic(): "error [CODE] program 1 N0012 line 13:4: message\n    detail"
-    static const QRegularExpression pattern(
-        R"(^(error|warning) \[([^\]]*)\]( program (\d+))?( (N\d+(:\d+)?))?( line (\d+)(:\d+)?)?: )");
-    const QStringList lines = alarm.split('\n');
-    const auto match = pattern.match(lines.value(0));
-    if (!match.hasMatch()) return false;
-    entry.origin = ErrorOrigin::Runtime;
-    entry.warning = match.captured(1) == "warning";
-    entry.code = match.captured(2);
-    entry.program = match.captured(4).toInt();
-    entry.block = match.captured(6);
-    entry.line = match.captured(9).toInt();
-    entry.message = lines.value(0).mid(match.capturedLength());
-    for (int i = 1; i < lines.size(); ++i)
-        entry.details << lines[i].trimmed();
-    return true;
 }
 
 }  // namespace mtc::hmi

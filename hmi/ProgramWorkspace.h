@@ -3,9 +3,11 @@
 #include <QMap>
 #include <QObject>
 #include <QString>
+#include <cstdint>
 #include <memory>
 
 #include "cnc_core/compiler/Compiler.h"
+#include "cnc_core/cell/DiagnosticLog.h"
 #include "cnc_core/compiler/CompilerTypes.h"
 #include "hmi/ErrorLog.h"
 #include "hmi/VelocityProfile.h"
@@ -151,15 +153,14 @@ class ProgramWorkspace : public QObject {
     QMap<int, std::shared_ptr<const mtc::core::CompileResult>> results_;
     QMap<int, VelocityProfile> profiles_;
     QMap<int, std::shared_ptr<const mtc::core::CompileResult>> running_;  ///< in the store
-    std::string lastAlarm_;
+    std::uint64_t seenDiagnostic_ = 0;  ///< serial of the station log read last
     int editProgram_ = 0;
     int editLine_ = 0;
 };
 
 /// The error-window entry of a compiler error.
 ErrorEntry entryFromCompilerError(const mtc::core::CompilerError& error);
-/// The error-window entry of a runtime alarm text ("error [CODE] program 1
-/// N0012 line 13: message"); false for alarms that are operator refusals.
-bool entryFromRuntimeAlarm(const QString& alarm, ErrorEntry& entry);
+/// The error-window origin of a station diagnostic's source.
+ErrorOrigin originOf(mtc::core::DiagnosticSource source);
 
 }  // namespace mtc::hmi

@@ -72,10 +72,9 @@ void registerAllScreens(mtc::hmi::ScreenRegistry& registry) {
     // The cell's NC options (compiler settings, global macros), NO-001.
     registry.add("nc-options", "NC options",
                  [](const ScreenContext& c) { return new NcOptionsScreen(c); });
-    // MDI uses the station's global macros and error log (docs/decisions/mdi.md).
-    registry.add("mdi", "MDI (manual data input)", [programming](const ScreenContext& c) {
-        return new MdiScreen(c, programming->forStation(c));
-    });
+    // MDI renders the station's MDI session (docs/decisions/mdi.md).
+    registry.add("mdi", "MDI (manual data input)",
+                 [](const ScreenContext& c) { return new MdiScreen(c); });
     registry.add("signals", "Interface signals",
                  [](const ScreenContext& c) { return new SignalsScreen(c); });
     registry.add("machine-data", "Machine data",

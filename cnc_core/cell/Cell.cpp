@@ -30,6 +30,7 @@ Cell::Cell(MachineConfig config)
         services.tools = setupData_.tools(process.index);
         services.zeroOffsets = setupData_.offsets(process.index);
         stations_.push_back(std::make_unique<Station>(process, store_, services, *machineData_));
+        stations_.back()->useNcOptions(&ncOptions_);
     }
 }
 

@@ -133,23 +133,72 @@ std::string Station::start(int number) {
     // of the run below has been touched yet when the preparer refuses.
     if (std::string alarm = prepare(number); !alarm.empty()) return alarm;
     DiagnosticList diagnostics;
-    if (!interpreter_.select(number, 0, &diagnostics))
+    if (!interpreter_.select(number, 0, &diagnostics)) {
+        log_.addAll(DiagnosticSource::Run, diagnostics);
         return firstProblem(diagnostics, "the program cannot be selected");
+    }
     machine_.reset();
     beginRun(Run::Program);
     return {};
 }
 
 std::string Station::startMdi() {
-    if (!mdiSource_) return "Start refused: this station has no MDI input";
+    static const std::vector<MacroDefinition> kNoMacros;
+    DiagnosticList refused;
     ProgramPtr program;
-    if (std::string alarm = mdiSource_(program); !alarm.empty()) return alarm;
-    DiagnosticList diagnostics;
-    if (!mdi_.begin(interpreter_, program, &diagnostics))
-        return firstProblem(diagnostics, "the MDI entry cannot be selected");
+    std::string alarm =
+        mdiSession_.take(ncOptions_ ? ncOptions_->globalMacros : kNoMacros, program, refused);
+    if (alarm.empty() && !mdi_.begin(interpreter_, program, &refused)) {
+        alarm = firstProblem(refused, "the MDI entry cannot be selected");
+        mdiSession_.ended(false, refused);
+    }
+    log_.addAll(DiagnosticSource::Mdi, refused);
+    if (!alarm.empty()) return alarm;
     mdiDiagnostics_.clear();
     beginRun(Run::Mdi);
     return {};
+}
+
+void Station::setMdiInput(std::string text) {
+    mdiSession_.setInput(std::move(text));
+    ++revision_;
+}
+
+bool Station::recallMdi(std::size_t row) {
+    ++revision_;
+    return mdiSession_.recall(row);
+}
+
+bool Station::checkMdi() {
+    static const std::vector<MacroDefinition> kNoMacros;
+    DiagnosticList refused;
+    const bool ok = mdiSession_.check(ncOptions_ ? ncOptions_->globalMacros : kNoMacros, refused);
+    log_.addAll(DiagnosticSource::Mdi, refused);
+    ++revision_;
+    return ok;
+}
+
+void Station::endMdi(bool completed) {
+    DiagnosticList diagnostics = mdiDiagnostics_;
+    mdiSession_.ended(completed, diagnostics);
+    mdiDiagnostics_ = std::move(diagnostics);
+    ++revision_;
+}
+
+void Station::logRunDiagnostics(const DiagnosticList& diagnostics) {
+    if (run_ != Run::Mdi) return log_.addAll(DiagnosticSource::Run, diagnostics);
+    for (Diagnostic d : diagnostics.items()) {
+        MdiSession::attachInputLine(d, mdiSession_.history().empty()
+                                           ? std::string()
+                                           : mdiSession_.history().back().text);
+        log_.add(DiagnosticSource::Mdi, d);
+    }
+}
+
+void Station::logRestartDiagnostics() {
+    const auto& items = restart_.diagnostics().items();
+    for (; restartLogged_ < items.size(); ++restartLogged_)
+        log_.add(DiagnosticSource::Restart, items[restartLogged_]);
 }
 
 void Station::beginRun(Run run) {
@@ -198,7 +247,7 @@ void Station::reset() {
     lastProgram_.reset();
     control_.setCurrentBlock({});
     ++revision_;
-    if (mdi && mdiEnded_) mdiEnded_(false);
+    if (mdi) endMdi(false);
 }
 
 void Station::continueAfterRestart() {
@@ -240,6 +289,8 @@ bool Station::acceptRestart(const RestartSelection& selection, DiagnosticList& d
                             std::uint64_t budget) {
     const InterpreterState snapshot = interpreter_.state();
     if (!restart_.accept(selection, diagnostics, budget)) return false;
+    restartLogged_ = 0;  // accept() began a new list
+    logRestartDiagnostics();
     restartBefore_ = snapshot;
     restartStarted_ = true;
     restartComputingMs_ = 0.0;
@@ -329,6 +380,7 @@ void Station::advanceRestart(std::uint64_t& blocks, std::uint64_t maxBlocks) {
 }
 
 void Station::followRestartPhase() {
+    logRestartDiagnostics();
     const RestartPhase phase = restart_.phase();
     if (phase == restartPhase_) return;
     const auto computingPhase = [](RestartPhase p) {
@@ -358,7 +410,10 @@ void Station::feed(std::uint64_t& blocks, std::uint64_t maxBlocks) {
         blocks += result.blocksInterpreted;
         runBlocks_ += result.blocksInterpreted;
         if (output_.outputs != outputsBefore) recordQueuedBlock(lastProgram_, lastBlock_, callLevel);
-        if (!result.diagnostics.empty()) runDiagnostics_.append(result.diagnostics);
+        if (!result.diagnostics.empty()) {
+            runDiagnostics_.append(result.diagnostics);
+            logRunDiagnostics(result.diagnostics);
+        }
         if (!waitingAxis_.empty() && result.blocksInterpreted > 0) {
             waitingAxis_.clear();  // the GAX was granted
             control_.setAlarm({});
@@ -470,7 +525,7 @@ void Station::finish(const RunResult& result) {
         alarm = firstProblem(result.diagnostics, "the program stopped with an error");
     }
     control_.programFinished(alarm);
-    if (mdi && mdiEnded_) mdiEnded_(alarm.empty());
+    if (mdi) endMdi(alarm.empty());
 }
 
 void Station::recordQueuedBlock(const ProgramPtr& program, std::uint32_t index, int callLevel) {

@@ -7,13 +7,16 @@
 #include <string>
 
 #include "cnc_core/afc/AfcTrendRecorder.h"
+#include "cnc_core/cell/DiagnosticLog.h"
 #include "cnc_core/cell/ManualJog.h"
 #include "cnc_core/cell/QueuedBlockStates.h"
 #include "cnc_core/interp/Interpreter.h"
 #include "cnc_core/machine/MachineConfig.h"
 #include "cnc_core/machine/ProcessControl.h"
 #include "cnc_core/machine/SimulatedMachine.h"
+#include "cnc_core/compiler/NcOptions.h"
 #include "cnc_core/mdi/MdiRun.h"
+#include "cnc_core/mdi/MdiSession.h"
 #include "cnc_core/restart/RestartSequence.h"
 #include "cnc_core/restart/SimulatedSps.h"
 
@@ -106,6 +109,9 @@ class Station : private ProgramRunner {
     void setBlockBudget(std::uint64_t blocks) { budget_ = blocks; }
     /// Warnings and errors of the current (or last) run since Start.
     const DiagnosticList& runDiagnostics() const { return runDiagnostics_; }
+    /// Every diagnostic of the station as it arose (runs, MDI, the restart),
+    /// as data: the error window reads the records after the last it saw.
+    const DiagnosticLog& diagnostics() const { return log_; }
     /// How the last run ended; Running while one runs or none ran yet.
     RunStatus runStatus() const { return runStatus_; }
     /// Held at M00 / M01 (or M01 with optional stop): Start continues.
@@ -133,12 +139,18 @@ class Station : private ProgramRunner {
     /// Runs the preparer for `number` ("" when none is installed).
     std::string prepare(int number) const { return preparer_ ? preparer_(number) : std::string(); }
 
-    /// Gives the program of the MDI entry for Start in MDI mode, or an alarm.
-    using MdiSource = std::function<std::string(ProgramPtr& program)>;
-    void setMdiSource(MdiSource source) { mdiSource_ = std::move(source); }
-    /// Told when an MDI entry ends (`completed` false after an error or reset).
-    using MdiEnded = std::function<void(bool completed)>;
-    void setMdiEnded(MdiEnded ended) { mdiEnded_ = std::move(ended); }
+    /// The NC options the station's MDI takes the global macros from (the
+    /// cell's; not owned, nullptr = no global macros).
+    void useNcOptions(const NcOptions* options) { ncOptions_ = options; }
+    /// Manual data input: the input, its history and the operator's message;
+    /// Start in MDI mode runs the input.
+    const MdiSession& mdi() const { return mdiSession_; }
+    /// The operator edited the MDI input.
+    void setMdiInput(std::string text);
+    /// Puts MDI history item `row` back into the input.
+    bool recallMdi(std::size_t row);
+    /// Checks the MDI input without running it (refusals go to the log).
+    bool checkMdi();
     /// True while an MDI entry runs (or is held).
     bool mdiRunning() const { return run_ == Run::Mdi; }
     /// Diagnostics of the last MDI run (lines = lines of the MDI input).
@@ -233,6 +245,12 @@ class Station : private ProgramRunner {
     void showCurrentBlock();
     /// A jog's refusal ("" = none) goes to the alarm line; true when none.
     bool jogDone(const std::string& refusal);
+    /// Puts a run's diagnostics into the log (MDI: with the input line).
+    void logRunDiagnostics(const DiagnosticList& diagnostics);
+    /// Logs the restart's diagnostics that arose since the last look.
+    void logRestartDiagnostics();
+    /// The MDI entry ended (`completed` false: error or reset).
+    void endMdi(bool completed);
     /// Keeps the interpreter's state after a block that queued work.
     void recordQueuedBlock(const ProgramPtr& program, std::uint32_t index, int callLevel);
 
@@ -251,8 +269,8 @@ class Station : private ProgramRunner {
     double restartComputingMs_ = 0.0;
     std::chrono::steady_clock::time_point computingSince_;
     ProgramPreparer preparer_;
-    MdiSource mdiSource_;
-    MdiEnded mdiEnded_;
+    const NcOptions* ncOptions_ = nullptr;
+    MdiSession mdiSession_;
     MdiRun mdi_;
     DiagnosticList mdiDiagnostics_;
 
@@ -273,6 +291,8 @@ class Station : private ProgramRunner {
     std::uint32_t lastBlock_ = 0;
     QueuedBlockStates queued_;
     ManualJog jog_;
+    DiagnosticLog log_;
+    std::size_t restartLogged_ = 0;  ///< restart diagnostics already in log_
 };
 
 }  // namespace mtc::core

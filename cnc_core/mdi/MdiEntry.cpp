@@ -57,7 +57,7 @@ std::vector<bool> expandLines(MdiEntry& entry, const std::vector<MacroDefinition
             refused[i] = true;
         } else if (!expandMdiLine(line, globals, expanded, problem)) {
             entry.diagnostics.error("MDI_KEYWORD_REFUSED", lineLocation(i), problem,
-                                    {"MDI input: " + line});
+                                    {mdiInputDetail(static_cast<int>(i) + 1, line)});
             refused[i] = true;
         }
         entry.expanded.push_back(refused[i] ? line : std::move(expanded));
@@ -109,7 +109,8 @@ void refuseCompilerWords(const Program& program, MdiEntry& entry) {
                 "MDI_KEYWORD_REFUSED", where,
                 "the compiler keyword " + keywordOf(program.text(word.text)) +
                     " is not allowed in MDI",
-                {"MDI input: " + (line < entry.lines.size() ? entry.lines[line] : std::string())});
+                {mdiInputDetail(where.line,
+                                line < entry.lines.size() ? entry.lines[line] : std::string())});
         }
     }
 }
@@ -138,7 +139,7 @@ MdiEntry prepareMdiEntry(const std::string& input, const std::vector<MacroDefini
         std::make_shared<Program>(parseProgram(parseText(entry.expanded, refused), options));
     for (Diagnostic d : program->diagnostics.items()) {
         if (d.where.line > 0 && static_cast<std::size_t>(d.where.line) <= entry.lines.size())
-            d.details.push_back("MDI input: " + entry.lines[d.where.line - 1]);
+            d.details.push_back(mdiInputDetail(d.where.line, entry.lines[d.where.line - 1]));
         entry.diagnostics.add(std::move(d));
     }
     if (program->usesCompilerKeywords) refuseCompilerWords(*program, entry);
@@ -152,6 +153,10 @@ std::string mdiRefusal(const ProcessControl& control) {
                " mode)";
     if (control.programActive()) return "MDI refused: a program is active (Control reset first)";
     return {};
+}
+
+std::string mdiInputDetail(int line, const std::string& text) {
+    return "MDI input line " + std::to_string(line) + ": " + text;
 }
 
 std::string formatMdiDiagnostic(const Diagnostic& d) {

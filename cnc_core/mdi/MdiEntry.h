@@ -49,6 +49,9 @@ MdiEntry prepareMdiEntry(const std::string& input, const std::vector<MacroDefini
 /// mode, or a program is active.
 std::string mdiRefusal(const ProcessControl& control);
 
+/// "MDI input line 2: G1 X5": the additional text that names an input line.
+std::string mdiInputDetail(int line, const std::string& text);
+
 /// "MDI line 2: error [CODE]: message" — one diagnostic of an MDI entry for
 /// the alarm line and logs (details on further lines).
 std::string formatMdiDiagnostic(const Diagnostic& diagnostic);

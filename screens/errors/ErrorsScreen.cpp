@@ -4,7 +4,6 @@
 #include <QKeyEvent>
 #include <QLabel>
 #include <QListWidget>
-#include <QRegularExpression>
 #include <QVBoxLayout>
 
 #include "hmi/CellSession.h"
@@ -15,23 +14,6 @@ namespace mtc::screens {
 
 using mtc::hmi::ErrorEntry;
 using mtc::hmi::ErrorOrigin;
-
-ErrorEntry entryFromRestartMessage(const QString& text) {
-    static const QRegularExpression where(R"(^(P(\d+))?\s*(N\d+(:\d+)?)?\s*(line (\d+))?: )");
-    ErrorEntry entry;
-    entry.origin = ErrorOrigin::Restart;
-    entry.code = "RESTART";
-    const auto match = where.match(text);
-    if (match.hasMatch() && match.capturedLength() > 2) {
-        entry.program = match.captured(2).toInt();
-        entry.block = match.captured(3);
-        entry.line = match.captured(6).toInt();
-        entry.message = text.mid(match.capturedLength());
-    } else {
-        entry.message = text;
-    }
-    return entry;
-}
 
 ErrorsScreen::ErrorsScreen(const mtc::hmi::ScreenContext& context,
                            std::shared_ptr<mtc::hmi::ProgramWorkspace> workspace,
@@ -61,10 +43,22 @@ ErrorsScreen::ErrorsScreen(const mtc::hmi::ScreenContext& context,
 void ErrorsScreen::collectRestartMessage() {
     const RestartMessage& message = restart_->message();
     if (message.level != RestartMessage::Level::Error || message.text.isEmpty()) return;
-    ErrorEntry entry = entryFromRestartMessage(message.text);
-    if (entry.program == 0)
-        entry.program = context().session->control(context().process).selectedProgram();
-    workspace_->errors().add(entry);
+    QVector<ErrorEntry> entries;
+    for (const mtc::core::Diagnostic& d : message.diagnostics)
+        if (d.severity == mtc::core::Severity::Error)
+            entries.push_back(mtc::hmi::entryFromDiagnostic(d, ErrorOrigin::Restart));
+    if (entries.isEmpty()) {  // the screen's own refusal: a plain text, no place
+        ErrorEntry entry;
+        entry.origin = ErrorOrigin::Restart;
+        entry.message = message.text;
+        entries.push_back(entry);
+    }
+    const int selected = context().session->control(context().process).selectedProgram();
+    for (ErrorEntry& entry : entries) {
+        if (entry.code.isEmpty()) entry.code = "RESTART";
+        if (entry.program == 0) entry.program = selected;
+    }
+    workspace_->errors().addAll(entries);
 }
 
 void ErrorsScreen::activated() {

@@ -51,7 +51,4 @@ class ErrorsScreen : public mtc::hmi::Screen {
     QSet<int> expanded_;  ///< entries whose additional text is shown
 };
 
-/// The error-window entry of a restart message ("P1 N0014 line 15: text").
-mtc::hmi::ErrorEntry entryFromRestartMessage(const QString& text);
-
 }  // namespace mtc::screens

@@ -3,31 +3,10 @@
 #include "cnc_core/interp/Interpreter.h"
 #include "cnc_core/mdi/MdiEntry.h"
 #include "hmi/CellSession.h"
-#include "hmi/ProgramWorkspace.h"
 
 namespace mtc::screens {
 
-using mtc::hmi::ErrorEntry;
-using mtc::hmi::ErrorOrigin;
-
 namespace {
-
-ErrorEntry entryOf(const mtc::core::Diagnostic& d, const QString& text) {
-    ErrorEntry entry;
-    entry.origin = ErrorOrigin::Mdi;
-    entry.warning = d.severity == mtc::core::Severity::Warning;
-    entry.block = QString::fromStdString(d.where.block);
-    entry.line = d.where.line;
-    entry.code = QString::fromStdString(d.code);
-    entry.message = QString::fromStdString(d.message);
-    const QStringList lines = text.split('\n');
-    if (d.where.line > 0 && d.where.line <= lines.size())
-        entry.details
-            << QString("MDI input line %1: %2").arg(d.where.line).arg(lines[d.where.line - 1]);
-    for (const std::string& detail : d.details)
-        if (detail.rfind("MDI input: ", 0) != 0) entry.details << QString::fromStdString(detail);
-    return entry;
-}
 
 QString format(double value) {
     return QString::number(value, 'f', 3);
@@ -35,102 +14,50 @@ QString format(double value) {
 
 }  // namespace
 
-MdiModel::MdiModel(mtc::hmi::CellSession* session, int slot,
-                   std::shared_ptr<mtc::hmi::ProgramWorkspace> workspace, QObject* parent)
-    : QObject(parent), session_(session), slot_(slot), workspace_(std::move(workspace)) {
-    auto& station = session_->station(slot_);
-    station.setMdiSource([this](mtc::core::ProgramPtr& program) { return provide(program); });
-    station.setMdiEnded([this](bool completed) { ended(completed); });
+MdiModel::MdiModel(mtc::hmi::CellSession* session, int slot, QObject* parent)
+    : QObject(parent), session_(session), slot_(slot) {
     connect(session_, &mtc::hmi::CellSession::processChanged, this, [this](int changed) {
         if (changed == slot_) emit this->changed();
     });
 }
 
-MdiModel::~MdiModel() {
-    session_->station(slot_).setMdiSource({});
-    session_->station(slot_).setMdiEnded({});
+const mtc::core::MdiSession& MdiModel::mdi() const {
+    return session_->station(slot_).mdi();
+}
+
+QString MdiModel::input() const {
+    return QString::fromStdString(mdi().input());
 }
 
 void MdiModel::setInput(const QString& text) {
-    if (text == input_) return;
-    input_ = text;
+    if (text == input()) return;
+    session_->station(slot_).setMdiInput(text.toStdString());
     emit changed();
 }
 
 bool MdiModel::check() {
-    const auto entry = mtc::core::prepareMdiEntry(input_.toStdString(), workspace_->globalMacros());
-    if (!entry.runnable()) {
-        report(entry.diagnostics, input_);
-        return false;
-    }
-    QString expanded;
-    for (const std::string& line : entry.expanded)
-        expanded += (expanded.isEmpty() ? "" : " | ") + QString::fromStdString(line).trimmed();
-    setMessage("Input correct: " + expanded, false);
-    return true;
+    const bool ok = session_->station(slot_).checkMdi();
+    session_->announceChanges();  // the error window takes the refusals from the log
+    return ok;
 }
 
 bool MdiModel::recall(int row) {
-    if (row < 0 || row >= history_.size()) return false;
-    input_ = history_[row].text;
-    setMessage(QString("Entry %1 recalled: Start runs it").arg(row + 1), false);
-    return true;
+    if (row < 0) return false;
+    const bool ok = session_->station(slot_).recallMdi(static_cast<std::size_t>(row));
+    session_->announceChanges();
+    return ok;
 }
 
-std::string MdiModel::provide(mtc::core::ProgramPtr& program) {
-    const auto entry = mtc::core::prepareMdiEntry(input_.toStdString(), workspace_->globalMacros());
-    if (!entry.runnable()) {
-        report(entry.diagnostics, input_);
-        for (const auto& d : entry.diagnostics.items())
-            if (d.severity == mtc::core::Severity::Error) return mtc::core::formatMdiDiagnostic(d);
-        return "MDI: the input cannot run";
-    }
-    program = entry.program;
-    running_ = input_;
-    history_.push_back({input_, "running"});
-    if (history_.size() > kMaxHistory) history_.removeFirst();
-    setMessage("Running the MDI entry", false);
-    return {};
+const std::deque<mtc::core::MdiHistoryItem>& MdiModel::history() const {
+    return mdi().history();
 }
 
-void MdiModel::ended(bool completed) {
-    const auto& diagnostics = session_->station(slot_).lastMdiDiagnostics();
-    QString outcome = completed ? "done" : "reset";
-    if (diagnostics.hasErrors()) {
-        report(diagnostics, running_);
-        for (const auto& d : diagnostics.items())
-            if (d.severity == mtc::core::Severity::Error) {
-                outcome = QString("error line %1: %2")
-                              .arg(d.where.line)
-                              .arg(QString::fromStdString(d.message));
-                break;
-            }
-    } else if (completed) {
-        setMessage("MDI entry done", false);
-        if (input_ == running_) input_.clear();  // MDI-004: ready for the next entry
-    } else {
-        setMessage("MDI entry abandoned (Control reset)", true);
-    }
-    if (!history_.isEmpty() && history_.back().outcome == "running")
-        history_.back().outcome = outcome;
-    running_.clear();
-    emit changed();
+QString MdiModel::message() const {
+    return QString::fromStdString(mdi().message());
 }
 
-void MdiModel::report(const mtc::core::DiagnosticList& diagnostics, const QString& text) {
-    QString first;
-    for (const auto& d : diagnostics.items()) {
-        workspace_->errors().add(entryOf(d, text));
-        if (first.isEmpty() && d.severity == mtc::core::Severity::Error)
-            first = QString::fromStdString(mtc::core::formatMdiDiagnostic(d)).section('\n', 0, 0);
-    }
-    setMessage(first.isEmpty() ? QString("MDI: the input cannot run") : first, true);
-}
-
-void MdiModel::setMessage(const QString& text, bool error) {
-    message_ = text;
-    messageIsError_ = error;
-    emit changed();
+bool MdiModel::messageIsError() const {
+    return mdi().messageIsError();
 }
 
 QString MdiModel::modeSummary() const {

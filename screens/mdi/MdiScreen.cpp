@@ -8,7 +8,6 @@
 #include <QVBoxLayout>
 
 #include "hmi/CellSession.h"
-#include "hmi/ProgramWorkspace.h"
 #include "screens/mdi/MdiModel.h"
 
 namespace mtc::screens {
@@ -34,10 +33,8 @@ QLabel* caption(QWidget* parent, const QString& text) {
 
 }  // namespace
 
-MdiScreen::MdiScreen(const mtc::hmi::ScreenContext& context,
-                     std::shared_ptr<mtc::hmi::ProgramWorkspace> workspace)
-    : Screen(context) {
-    model_ = new MdiModel(context.session, context.process, std::move(workspace), this);
+MdiScreen::MdiScreen(const mtc::hmi::ScreenContext& context) : Screen(context) {
+    model_ = new MdiModel(context.session, context.process, this);
     const QFont fixed = QFontDatabase::systemFont(QFontDatabase::FixedFont);
     mode_ = makeLabel(this, "mdiMode", font());
     position_ = makeLabel(this, "mdiPosition", fixed);
@@ -98,10 +95,12 @@ void MdiScreen::refresh() {
 void MdiScreen::refreshHistory() {
     QStringList rows;
     const auto& items = model_->history();
-    for (int i = 0; i < items.size(); ++i) {
-        QString text = items[i].text;
+    for (std::size_t i = 0; i < items.size(); ++i) {
+        QString text = QString::fromStdString(items[i].text);
         text.replace('\n', " | ");
-        rows << QString("%1  %2   [%3]").arg(i + 1, 2).arg(text, items[i].outcome);
+        rows << QString("%1  %2   [%3]")
+                    .arg(static_cast<int>(i) + 1, 2)
+                    .arg(text, QString::fromStdString(items[i].outcome));
     }
     bool same = rows.size() == history_->count();
     for (int i = 0; same && i < rows.size(); ++i)

@@ -1,16 +1,10 @@
 #pragma once
 
-#include <memory>
-
 #include "hmi/Screen.h"
 
 class QLabel;
 class QListWidget;
 class QPlainTextEdit;
-
-namespace mtc::hmi {
-class ProgramWorkspace;
-}
 
 namespace mtc::screens {
 
@@ -23,8 +17,7 @@ class MdiModel;
 class MdiScreen : public mtc::hmi::Screen {
     Q_OBJECT
   public:
-    MdiScreen(const mtc::hmi::ScreenContext& context,
-              std::shared_ptr<mtc::hmi::ProgramWorkspace> workspace);
+    explicit MdiScreen(const mtc::hmi::ScreenContext& context);
     QString screenName() const override { return "mdi"; }
     QString title() const override { return "MDI (manual data input)"; }
     mtc::hmi::SoftKeys softKeys() override;

@@ -90,15 +90,25 @@ QString RestartController::describe(const mtc::core::Diagnostic& d) {
     return where.isEmpty() ? text : where.trimmed() + ": " + text;
 }
 
-void RestartController::setMessage(RestartMessage::Level level, const QString& text) {
-    message_ = {level, text};
+void RestartController::setMessage(RestartMessage::Level level, const QString& text,
+                                   std::vector<mtc::core::Diagnostic> diagnostics) {
+    message_ = {level, text, std::move(diagnostics)};
+}
+
+void RestartController::setErrors(const mtc::core::DiagnosticList& diagnostics) {
+    QStringList reasons;
+    for (const auto& d : diagnostics.items())
+        reasons << describe(d);
+    setMessage(RestartMessage::Level::Error, reasons.join("  "), diagnostics.items());
 }
 
 void RestartController::reply(const mtc::core::SearchReply& reply) {
-    if (reply.note)
+    if (reply.note) {
+        mtc::core::Diagnostic note = *reply.note;
+        if (!reply.ok) note.severity = mtc::core::Severity::Error;  // the request was refused
         setMessage(reply.ok ? RestartMessage::Level::Warning : RestartMessage::Level::Error,
-                   describe(*reply.note));
-    else
+                   describe(note), {note});
+    } else
         setMessage(RestartMessage::Level::None, {});
 }
 
@@ -307,23 +317,20 @@ bool RestartController::accept() {
         return false;
     }
     mtc::core::AcceptResult result = pointer_.accept();
-    QStringList notes;
-    for (const auto& d : result.diagnostics.items())
-        notes << describe(d);
     if (!result.ok) {
-        setMessage(RestartMessage::Level::Error, notes.join("  "));
+        setErrors(result.diagnostics);
         emit changed();
         return false;
     }
     mtc::core::DiagnosticList refused;
     if (!run_->start(result.selection, refused)) {
-        QStringList reasons;
-        for (const auto& d : refused.items())
-            reasons << describe(d);
-        setMessage(RestartMessage::Level::Error, reasons.join("  "));
+        setErrors(refused);
         emit changed();
         return false;
     }
+    QStringList notes;
+    for (const auto& d : result.diagnostics.items())
+        notes << describe(d);
     for (const auto& d : refused.items())
         notes << describe(d);  // warnings of the NC
     accepted_ = std::move(result);

@@ -3,6 +3,7 @@
 #include <QObject>
 #include <QString>
 #include <memory>
+#include <vector>
 
 #include "cnc_core/restart/RestartSequence.h"
 #include "cnc_core/restart/SearchPointer.h"
@@ -22,6 +23,9 @@ struct RestartMessage {
     enum class Level { None, Info, Warning, Error };
     Level level = Level::None;
     QString text;
+    /// The diagnostics the text was made from, as data (the error window
+    /// takes them; empty for the screen's own texts).
+    std::vector<mtc::core::Diagnostic> diagnostics;
 };
 
 /// The model behind the restart screens of one station: the search pointer
@@ -124,7 +128,10 @@ class RestartController : public QObject {
 
   private:
     void reply(const mtc::core::SearchReply& reply);
-    void setMessage(RestartMessage::Level level, const QString& text);
+    void setMessage(RestartMessage::Level level, const QString& text,
+                    std::vector<mtc::core::Diagnostic> diagnostics = {});
+    /// An error message made of `diagnostics` (describe() each, joined).
+    void setErrors(const mtc::core::DiagnosticList& diagnostics);
     void showLevel();
     void cursorMoved();
     QString refusalReason() const;

@@ -85,7 +85,7 @@ TEST(MdiEntryTest, ParseErrorsCarryTheInputLine) {
     EXPECT_EQ(d.where.line, 2);
     EXPECT_EQ(d.where.program, 0);
     ASSERT_FALSE(d.details.empty());
-    EXPECT_EQ(d.details.back(), "MDI input: G1 X=(3+");
+    EXPECT_EQ(d.details.back(), "MDI input line 2: G1 X=(3+");
     EXPECT_EQ(formatMdiDiagnostic(d).rfind("MDI line 2: error [", 0), 0u) << formatMdiDiagnostic(d);
 }
 

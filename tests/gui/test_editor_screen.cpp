@@ -307,30 +307,6 @@ class EditorScreenTest : public QObject {
         QCOMPARE(list->count(), 0);
     }
 
-    void alarmAndRestartTextsBecomeEntries() {
-        mtc::hmi::ErrorEntry e;
-        QVERIFY(mtc::hmi::entryFromRuntimeAlarm(
-            "error [TOOL_RANGE] program 51 N0002 line 2: T999 is not a tool\n    detail one", e));
-        QCOMPARE(e.origin, mtc::hmi::ErrorOrigin::Runtime);
-        QCOMPARE(e.code, QString("TOOL_RANGE"));
-        QCOMPARE(e.program, 51);
-        QCOMPARE(e.block, QString("N0002"));
-        QCOMPARE(e.line, 2);
-        QCOMPARE(e.message, QString("T999 is not a tool"));
-        QCOMPARE(e.details, QStringList{"detail one"});
-        QVERIFY(!mtc::hmi::entryFromRuntimeAlarm("Start refused: no program selected", e));
-        const auto r =
-            mtc::screens::entryFromRestartMessage("P3 N0014:0001 line 15: target not found");
-        QCOMPARE(r.origin, mtc::hmi::ErrorOrigin::Restart);
-        QCOMPARE(r.program, 3);
-        QCOMPARE(r.block, QString("N0014:0001"));
-        QCOMPARE(r.line, 15);
-        QCOMPARE(r.message, QString("target not found"));
-        const auto plain = mtc::screens::entryFromRestartMessage("no program selected");
-        QCOMPARE(plain.message, QString("no program selected"));
-        QCOMPARE(plain.program, 0);
-    }
-
     void errorFilesOnDiskFillTheWindowAtStart() {
         mtc::hmi::PanelOptions o = options();
         {
