@@ -54,22 +54,24 @@ ProgramWorkspace::ProgramWorkspace(CellSession* session, int slot, QObject* pare
     connect(session_, &CellSession::processChanged, this, [this](int changed) {
         if (changed == slot_) watchRuntime();
     });
-    session_->station(slot_).setPreparer([this](int number) { return prepareRuntime(number); });
+    session_->station(slot_).setPreparer([this](int number, mtc::core::DiagnosticList& diagnostics) {
+        return prepareRuntime(number, diagnostics);
+    });
 }
 
 ProgramWorkspace::~ProgramWorkspace() {
     session_->station(slot_).setPreparer({});
 }
 
-std::string ProgramWorkspace::prepareRuntime(int number) {
+std::string ProgramWorkspace::prepareRuntime(int number, mtc::core::DiagnosticList& diagnostics) {
     if (!session_->program(slot_, number)) return {};  // the interpreter reports it
-    if (std::string alarm = prepareOne(number); !alarm.empty()) return alarm;
+    if (std::string alarm = prepareOne(number, diagnostics); !alarm.empty()) return alarm;
     // Program 99 holds the labels a program calls: it runs compiled as well.
-    if (number != 99 && session_->program(slot_, 99)) return prepareOne(99);
+    if (number != 99 && session_->program(slot_, 99)) return prepareOne(99, diagnostics);
     return {};
 }
 
-std::string ProgramWorkspace::prepareOne(int number) {
+std::string ProgramWorkspace::prepareOne(int number, mtc::core::DiagnosticList& diagnostics) {
     const int process = session_->processConfig(slot_).index;
     mtc::core::ProgramStore& store = session_->mutableStore();
     auto runSource = [&] {
@@ -82,8 +84,10 @@ std::string ProgramWorkspace::prepareOne(int number) {
         // error at download, before any block of the program runs.
         mtc::core::Diagnostic keyword;
         const auto source = session_->program(slot_, number);
-        if (source && mtc::core::findCompilerWord(*source, keyword))
+        if (source && mtc::core::findCompilerWord(*source, keyword)) {
+            diagnostics.add(keyword);
             return mtc::core::formatDiagnostic(keyword);
+        }
         return {};
     }
     CompileStatus current = status(number);

@@ -85,8 +85,10 @@ class ProgramWorkspace : public QObject {
     /// the runtime program (seed 001 ch. 10/11, C-013): with the compiler
     /// active and compiler keywords, status N is compiled first, status C
     /// puts the compiled object into the store; otherwise the source runs.
-    /// Returns the alarm that refuses Start (status E), "" when ready.
-    std::string prepareRuntime(int number);
+    /// Returns the alarm that refuses Start (status E), "" when ready; the
+    /// diagnostic behind a refusal (a compiler keyword with the compiler
+    /// off) goes to `diagnostics`.
+    std::string prepareRuntime(int number, mtc::core::DiagnosticList& diagnostics);
     /// The compile result the station runs for `number` (nullptr = source).
     std::shared_ptr<const mtc::core::CompileResult> running(int number) const {
         return running_.value(number);
@@ -128,7 +130,7 @@ class ProgramWorkspace : public QObject {
     /// Compiler keywords or a global macro in `program` (cached per version).
     bool needsCompiling(int number, const mtc::core::ProgramPtr& program) const;
     void watchRuntime();
-    std::string prepareOne(int number);
+    std::string prepareOne(int number, mtc::core::DiagnosticList& diagnostics);
     void mapToSource(ErrorEntry& entry) const;
     void setStatus(int number, mtc::core::CompileStatus status);
     void clearObjects(int number);

@@ -128,6 +128,14 @@ bool Station::selectProgram(int number) {
     return ok;
 }
 
+std::string Station::prepare(int number) {
+    if (!preparer_) return {};
+    DiagnosticList diagnostics;
+    std::string alarm = preparer_(number, diagnostics);
+    log_.addAll(DiagnosticSource::Run, diagnostics);
+    return alarm;
+}
+
 std::string Station::start(int number) {
     // Compile on demand / refuse a program with compiler errors: nothing
     // of the run below has been touched yet when the preparer refuses.

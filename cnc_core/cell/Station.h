@@ -132,12 +132,14 @@ class Station : private ProgramRunner {
     void setOutputListener(MachineSink* listener) { output_.listener = listener; }
 
     /// Makes the runtime program of a number ready before it runs or returns
-    /// an alarm that refuses Start ("" = ready).
-    using ProgramPreparer = std::function<std::string(int number)>;
+    /// an alarm that refuses Start ("" = ready); the diagnostics behind a
+    /// refusal go to `diagnostics`.
+    using ProgramPreparer = std::function<std::string(int number, DiagnosticList& diagnostics)>;
     /// Installs (empty function: removes) the preparer Start calls first.
     void setPreparer(ProgramPreparer preparer) { preparer_ = std::move(preparer); }
-    /// Runs the preparer for `number` ("" when none is installed).
-    std::string prepare(int number) const { return preparer_ ? preparer_(number) : std::string(); }
+    /// Runs the preparer for `number` ("" when none is installed); its
+    /// diagnostics go to the log.
+    std::string prepare(int number);
 
     /// The NC options the station's MDI takes the global macros from (the
     /// cell's; not owned, nullptr = no global macros).
