@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <iterator>
 
 #include "cnc_core/machine/MachineConfig.h"
 #include "cnc_core/text/Numbers.h"
@@ -12,7 +13,8 @@ namespace {
 
 // Seed 002, 4.2 (value range of each process parameter).
 constexpr AfcParameterRange kRanges[] = {
-    {"B063", 0.0, 12.0, true, "reference axis for adaptive feed control", ""},
+    {"B063", 0.0, 12.0, true,
+     "reference axis of adaptive feed control (1..9 X..C, 10..12 S1..S3, 0 none)", ""},
     {"B064", 0.0, 500.0, false, "limiting machining torque", "%"},
     {"B065", 0.0, 500.0, false, "minimum machining torque", "%"},
     {"B066", 0.0, 500.0, false, "maximum idling torque", "%"},
@@ -31,6 +33,14 @@ std::string number(double value, bool whole) {
 }
 
 }  // namespace
+
+const AfcParameterRange* afcParameterRangesBegin() {
+    return std::begin(kRanges);
+}
+
+const AfcParameterRange* afcParameterRangesEnd() {
+    return std::end(kRanges);
+}
 
 const AfcParameterRange* afcParameterRange(std::string_view key) {
     for (const AfcParameterRange& range : kRanges)

@@ -16,6 +16,11 @@ struct AfcParameterRange {
     const char* unit;     ///< "%", "1/s", "ms" or ""
 };
 
+/// Every range, B063 first: the one table of these limits (the machine
+/// configuration's schema takes its B063..B069 rules from here).
+const AfcParameterRange* afcParameterRangesBegin();
+const AfcParameterRange* afcParameterRangesEnd();
+
 /// The range of `key` (B063..B069), nullptr for any other key.
 const AfcParameterRange* afcParameterRange(std::string_view key);
 

@@ -2,6 +2,7 @@
 
 #include <cctype>
 
+#include "cnc_core/afc/AfcParameterRanges.h"
 #include "cnc_core/machine/ConfigText.h"
 #include "cnc_core/machine/MachineConfig.h"
 
@@ -16,12 +17,12 @@ constexpr const char* kDesignation = "X Y Z U V W A B C, optionally with index 1
 constexpr const char* kDefinitions = "1 … 4 of X Y Z U V W A B C, comma-separated";
 
 /// The table. Ranges come from the seeds where they give one (seed 002 4.2
-/// for Bxx.063..069, seed 001 ch. 6 / lookahead.md LA-010 for B070..B072,
+/// for Bxx.063..069, from AfcParameterRanges, seed 001 ch. 6 / lookahead.md LA-010 for B070..B072,
 /// seed 003 for Cxx.076); the others are this project's limits (docs/decisions/
 /// config-files.md CF-002): generous for any real machine, tight enough that no
 /// value can switch a check off or make a loop or a simulated duration explode.
 std::vector<ConfigRule> buildRules() {
-    return {
+    std::vector<ConfigRule> rules = {
         {S::Cell, "name", T::Text, 1, 80, "", "", "name of the cell (machine data file name)"},
         {S::Cell, "md_password", T::Word, 1, 32, "", "",
          "password of password-protected machine data (default MTC200)"},
@@ -43,14 +44,7 @@ std::vector<ConfigRule> buildRules() {
         {S::Process, "B060", T::Choice, 0, 0, "yes no", "", "S output during NC program restart"},
         {S::Process, "B061", T::Choice, 0, 0, "yes no", "", "T/E output during NC program restart"},
         {S::Process, "B062", T::Choice, 0, 0, "yes no", "", "adaptive feed control available"},
-        {S::Process, "B063", T::Whole, 0, 12, "", "",
-         "reference axis of adaptive feed control (1..9 X..C, 10..12 S1..S3, 0 none)"},
-        {S::Process, "B064", T::Number, 0, 500, "", "%", "limiting machining torque"},
-        {S::Process, "B065", T::Number, 0, 500, "", "%", "minimum machining torque"},
-        {S::Process, "B066", T::Number, 0, 500, "", "%", "maximum idling torque"},
-        {S::Process, "B067", T::Number, 0, 100, "", "%", "maximum feed reduction"},
-        {S::Process, "B068", T::Number, 0.01, 100, "", "1/s", "amplification"},
-        {S::Process, "B069", T::Whole, 2, 60000, "", "ms", "measuring period"},
+        // B063..B069: inserted from the adaptive feed control's own table below.
         {S::Process, "B070", T::Number, 3, 30, "", "ms", "METB preset (look-ahead)"},
         {S::Process, "B071", T::Number, 1, 10, "", "", "VFBT preset (look-ahead)"},
         {S::Process, "B072", T::Whole, 1, 10, "", "", "BBTRC preset (look-ahead)"},
@@ -129,6 +123,18 @@ std::vector<ConfigRule> buildRules() {
         {S::Page, "protection", T::Form, 0, 0, "any of: nc sps gui password", "",
          "write protection"},
     };
+    // Seed 002 4.2: one table of the adaptive feed control's ranges, used by
+    // its own reader (AfcSettings) and by the schema, after B062.
+    auto at = rules.begin();
+    while (at != rules.end() && !(at->section == S::Process && at->key == "B062"))
+        ++at;
+    if (at != rules.end()) ++at;
+    std::vector<ConfigRule> afc;
+    for (const AfcParameterRange* r = afcParameterRangesBegin(); r != afcParameterRangesEnd(); ++r)
+        afc.push_back({S::Process, r->key, r->whole ? T::Whole : T::Number, r->minimum,
+                       r->maximum, "", r->unit, r->meaning});
+    rules.insert(at, afc.begin(), afc.end());
+    return rules;
 }
 
 bool sameWord(std::string_view a, std::string_view b) {

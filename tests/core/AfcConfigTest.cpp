@@ -4,9 +4,13 @@
 // made in code with bad values reports them instead of crashing.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <string_view>
+
 #include "InterpTestSupport.h"
 #include "cnc_core/afc/AdaptiveFeedControl.h"
 #include "cnc_core/afc/AfcParameterRanges.h"
+#include "cnc_core/machine/ConfigSchema.h"
 #include "cnc_core/machine/MachineConfigReader.h"
 #include "cnc_core/machine_data/MachineDataStore.h"
 
@@ -85,3 +89,34 @@ TEST(AfcConfig, B062OnlyYesOrNo) {
 }
 
 }  // namespace
+
+namespace mtc::test {
+namespace {
+
+// One table of the AFC parameter ranges (issue 22 §1): the configuration's
+// schema holds exactly the AFC reader's ranges, once each, right after B062.
+TEST(AfcParameterRanges, TheConfigurationSchemaUsesTheSameTable) {
+    const auto& rules = core::configRules();
+    for (const core::AfcParameterRange* r = core::afcParameterRangesBegin();
+         r != core::afcParameterRangesEnd(); ++r) {
+        int found = 0;
+        for (const core::ConfigRule& rule : rules)
+            if (rule.section == core::ConfigSection::Process && rule.key == r->key) {
+                ++found;
+                EXPECT_EQ(rule.minimum, r->minimum) << r->key;
+                EXPECT_EQ(rule.maximum, r->maximum) << r->key;
+                EXPECT_EQ(rule.type == core::ConfigValueType::Whole, r->whole) << r->key;
+                EXPECT_EQ(rule.unit, std::string_view(r->unit)) << r->key;
+            }
+        EXPECT_EQ(found, 1) << r->key;
+    }
+    EXPECT_EQ(core::afcParameterRangesEnd() - core::afcParameterRangesBegin(), 7);
+    const auto b062 = std::find_if(rules.begin(), rules.end(),
+                                   [](const core::ConfigRule& rule) { return rule.key == "B062"; });
+    ASSERT_NE(b062, rules.end());
+    ASSERT_NE(b062 + 1, rules.end());
+    EXPECT_EQ((b062 + 1)->key, "B063");
+}
+
+}  // namespace
+}  // namespace mtc::test
