@@ -8,6 +8,10 @@
 namespace mtc::core::comp {
 namespace {
 
+/// A re-entry point on a tool path: the restart computed it from the same
+/// numbers, so only rounding separates them (mm).
+constexpr double kOnPath = 1e-6;
+
 double sideSign(Side side) {
     return static_cast<double>(static_cast<signed char>(side));
 }
@@ -114,6 +118,9 @@ bool RadiusCompensation::off(State& s, const ContourMove& m, Release& r, Problem
 }
 
 bool RadiusCompensation::startup(State& s, const ContourMove& m, Problem& p) const {
+    const bool reentry = s.reentry;
+    s.reentry = false;
+    if (reentry && reenter(s, m)) return true;
     if (m.path.isArc()) {
         p = problem("COMP_STARTUP_ARC",
                     "G41/G42 start up with a straight move (G0/G1); a circle cannot be the "
@@ -124,6 +131,33 @@ bool RadiusCompensation::startup(State& s, const ContourMove& m, Problem& p) con
     s.windowCount = 0;
     s.windowNext = 0;
     hold(s, m, straight(s.tool, s.tool), true);
+    return true;
+}
+
+bool RadiusCompensation::reenter(State& s, const ContourMove& m) const {
+    PlanePath element;
+    Problem ignored;
+    if (!offsetElement(m, element, ignored)) return false;
+    const Vec2& tool = s.tool;
+    double off = 0.0;  // distance of the tool from the element's carrier
+    if (element.isArc()) {
+        off = std::abs((tool - element.centre).norm() - element.radius());
+    } else {
+        const Vec2 d = element.end - element.start;
+        if (d.norm() < kSamePoint) return false;
+        off = std::abs(cross(d.normalized(), tool - element.start));
+    }
+    if (off > kOnPath) return false;
+    const bool atStart = (tool - element.start).norm() < kOnPath;
+    if (!atStart) {
+        const double u = element.parameterOf(tool);
+        if (!(u >= 0.0 && u < 1.0 - 1e-9)) return false;
+        element.fullCircle = false;
+    }
+    element.start = tool;
+    s.windowCount = 0;
+    s.windowNext = 0;
+    hold(s, m, element, false);
     return true;
 }
 
@@ -260,11 +294,12 @@ Release RadiusCompensation::stop(Problem* problem) {
     return r;
 }
 
-void RadiusCompensation::relocate(const Vec2& tool, bool compensationOn) {
+void RadiusCompensation::relocate(const Vec2& tool, bool compensationOn, bool reentry) {
     state_ = State{};
     state_.tool = tool;
     state_.toolKnown = true;
     state_.phase = compensationOn ? Phase::Startup : Phase::Off;
+    state_.reentry = compensationOn && reentry;
 }
 
 bool RadiusCompensation::offsetElement(const ContourMove& m, PlanePath& out, Problem& p) const {

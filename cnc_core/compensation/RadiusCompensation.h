@@ -90,8 +90,10 @@ class RadiusCompensation {
     /// After a change of the coordinate frame (transformation, axis
     /// functions, restored state): nothing held, the tool centre at `tool`
     /// (plane coordinates of the new frame); the next plane move starts up
-    /// when compensation is on.
-    void relocate(const Vec2& tool, bool compensationOn);
+    /// when compensation is on. `reentry` (REPOS, TC-013): when the tool
+    /// stands on the tool path of the next plane move, that move continues
+    /// the contour from there instead of starting up.
+    void relocate(const Vec2& tool, bool compensationOn, bool reentry = false);
     /// Off, nothing held, no displacement.
     void reset() { state_ = State{}; }
 
@@ -121,7 +123,8 @@ class RadiusCompensation {
         Vec2 tool = Vec2::Zero();
         bool toolKnown = false;  ///< Off: the tool is not where the programmed path starts
         bool holding = false;
-        Held held;  ///< Active: the held move; Resume: the last move (already released)
+        bool reentry = false;  ///< Startup after REPOS: the tool may stand on the next tool path
+        Held held;             ///< Active: the held move; Resume: the last move (already released)
         std::array<WindowEntry, kWindow> window{};
         int windowCount = 0, windowNext = 0;
     };
@@ -129,6 +132,9 @@ class RadiusCompensation {
     bool step(State& s, const ContourMove& m, Release& r, Problem& p) const;
     bool off(State& s, const ContourMove& m, Release& r, Problem& p) const;
     bool startup(State& s, const ContourMove& m, Problem& p) const;
+    /// Re-entry (TC-013): the tool stands on the tool path of `m`, which is
+    /// held from there on as a contour element. False: it does not.
+    bool reenter(State& s, const ContourMove& m) const;
     bool firstElement(State& s, const ContourMove& m, Release& r, Problem& p) const;
     bool join(State& s, const ContourMove& m, Release& r, Problem& p) const;
     bool resume(State& s, const ContourMove& m, Release& r, Problem& p) const;

@@ -81,6 +81,9 @@ bool ToolCompensation::plan(const BlockContext& context, const CompensationBlock
     p.compensationOn = sideOf(block.next) != comp::Side::None;
     p.applied = applied_;
     p.movedAxes = block.programmedAxes;
+    p.reentry = block.machineMove && block.reentry != nullptr;
+    p.reentryCompensated = p.reentry && block.reentry->compensated;
+    if (p.reentryCompensated) p.reentryAxes = block.reentry->axes;
     p.id = nextId_ + 1;
     if (!planFrameChange(context, block) || !planMove(context, block) ||
         !planLengths(context, block))
@@ -108,7 +111,11 @@ bool ToolCompensation::planFrameChange(const BlockContext& context,
                                  mm(frame_.radius) + " to " + mm(p.frame.radius) +
                                  "): change tools with G40");
     p.frameChange = true;
-    if (p.engine.idle()) return true;
+    if (p.engine.idle()) {
+        // REPOS: the tool is found again where G77 puts it (TC-013).
+        p.relocateAfterMove = p.reentry;
+        return true;
+    }
     comp::Problem problem;
     p.before = p.engine.interrupt(&problem);  // the held move ends at its perpendicular
     if (problem.code) return report(context, problem);
@@ -157,6 +164,9 @@ bool ToolCompensation::planLengths(const BlockContext& context, const Compensati
         if (!((block.programmedAxes >> a) & 1u)) continue;
         const auto i = static_cast<std::size_t>(a);
         p.applied[i] = on && a == p.frame.lengthAxis ? p.frame.length : 0.0;
+        // REPOS to a compensated re-entry point: the axis takes the tool
+        // length it had there (TC-013).
+        if (p.reentryCompensated) p.applied[i] = block.reentry->lengthOffsets[i];
         const AxisModel& model = axes_.axis(a);
         const double position = block.next.machine[i] + p.applied[i];
         if (p.applied[i] != 0.0 && model.limited() &&
@@ -214,6 +224,41 @@ SourceLocation ToolCompensation::locationOf(int id, const BlockContext& context)
     return locations_[static_cast<std::size_t>(id % kLocations)];
 }
 
+CompensatedPosition ToolCompensation::entryOfPlannedBlock(const ModalState& current,
+                                                          bool planned) const {
+    CompensatedPosition entry;
+    entry.axes = current.machine;
+    if (!tracking_) return entry;
+    entry.compensated = true;
+    entry.lengthOffsets = applied_;
+    if (!engine_.holding()) {
+        entry.axes = axisPosition_;
+        return entry;
+    }
+    // A move is held: its end is where the block's own move begins. The
+    // axes outside the plane stand at their programmed point (+ length).
+    for (std::size_t a = 0; a < kMaxAxes; ++a)
+        entry.axes[a] = current.machine[a] + applied_[a];
+    const Planned& p = planned_;
+    comp::Release release;
+    int own = -1;  // pieces of the block's own move are not before it
+    if (planned && p.valid && p.frameChange && p.before.count > 0) {
+        release = p.before;
+    } else if (planned && p.valid && p.viaEngine) {
+        release = p.release;
+        own = p.id;
+    } else {  // no plane move follows in this block: as at a programmed stop
+        comp::RadiusCompensation engine = engine_;
+        release = engine.interrupt();
+    }
+    const comp::Vec2* end = nullptr;
+    for (int i = 0; i < release.count; ++i)
+        if (release.pieces[static_cast<std::size_t>(i)].id != own)
+            end = &release.pieces[static_cast<std::size_t>(i)].path.end;
+    placePlaneAxes(entry.axes, end ? *end : engine_.tool(), applied_);
+    return entry;
+}
+
 // -------------------------------------------------------------- commit stage
 
 void ToolCompensation::beginOutputs(bool output) {
@@ -242,12 +287,16 @@ void ToolCompensation::motion(Motion& m, bool output) {
         m.end[a] += p.applied[a];
     if (p.relocateAfterMove) {  // G74 / G75 / G77: machine positions, other axes stay
         m.start = axisPosition_;
-        for (int a = 0; a < axes_.count(); ++a)
+        for (int a = 0; a < axes_.count(); ++a) {
+            const auto i = static_cast<std::size_t>(a);
             if (!((p.movedAxes >> a) & 1u))
-                m.end[static_cast<std::size_t>(a)] = axisPosition_[static_cast<std::size_t>(a)];
+                m.end[i] = axisPosition_[i];
+            else if (p.reentryCompensated)  // REPOS: to the compensated re-entry point
+                m.end[i] = p.reentryAxes[i];
+        }
         send(m);
         applied_ = p.applied;
-        engine_.relocate(toolCentre(), p.compensationOn);
+        engine_.relocate(toolCentre(), p.compensationOn, p.reentry);
         return;
     }
     if (p.viaEngine) {

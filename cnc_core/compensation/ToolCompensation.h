@@ -24,6 +24,16 @@ struct CompensationBlock {
     bool machineMove = false;             ///< G74 / G75 / G77: the axes go to machine positions
     double centre1 = 0.0, centre2 = 0.0;  ///< arcs: centre in plane coordinates
     bool fullCircle = false;              ///< arcs: one whole turn
+    /// G77 (REPOS): the re-entry point the axes go to (TC-013); else nullptr.
+    const ReentryPoint* reentry = nullptr;
+};
+
+/// Axis positions with tool compensation applied (tool reference: radius,
+/// cutting edge and length), and the G48 length offsets they contain.
+struct CompensatedPosition {
+    std::array<double, kMaxAxes> axes{};
+    std::array<double, kMaxAxes> lengthOffsets{};
+    bool compensated = false;  ///< the stage followed the axes (else `axes` = programmed)
 };
 
 /// The tool compensation stage between the interpreter and the machine
@@ -91,6 +101,15 @@ class ToolCompensation {
     /// plan() accepted the block being committed.
     bool planned() const { return planned_.valid; }
 
+    /// Where the axes stand when a block's own move begins in an
+    /// uninterrupted run (the restart's re-entry point, TC-013), after plan()
+    /// of that block (`planned`) or without it (false: the block could not be
+    /// planned; a held move then ends at its perpendicular). `current`: the
+    /// state before the block. Changes nothing; call discardPlan() after it.
+    CompensatedPosition entryOfPlannedBlock(const ModalState& current, bool planned) const;
+    /// Forgets a plan() that will not be committed.
+    void discardPlan() { planned_.valid = false; }
+
   private:
     static constexpr int kLocations = 16;
 
@@ -108,6 +127,9 @@ class ToolCompensation {
         bool relocateAfterMove = false;          ///< machine move: the tool is found again after it
         bool compensationOn = false;             ///< G41/G42 after the block
         std::uint32_t movedAxes = 0;             ///< axis words of the block
+        bool reentry = false;                    ///< G77 to a re-entry point (TC-013)
+        bool reentryCompensated = false;         ///< ... where compensation was in effect
+        std::array<double, kMaxAxes> reentryAxes{};  ///< its axis positions
     };
 
     bool report(const BlockContext& context, const comp::Problem& problem) const;

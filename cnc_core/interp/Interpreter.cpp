@@ -289,10 +289,29 @@ bool Interpreter::checkedBlock(const Program& program, std::uint32_t index,
 }
 
 bool Interpreter::planCompensation(const BlockContext& context) {
-    const CompensationBlock block{state_.modal,       plan_.next,         plan_.hasMotion,
-                                  plan_.motionType,   input_.axisMask,    input_.axisFunction != 0,
-                                  plan_.planeCenter1, plan_.planeCenter2, plan_.fullCircle};
+    const CompensationBlock block{
+        state_.modal,       plan_.next,
+        plan_.hasMotion,    plan_.motionType,
+        input_.axisMask,    input_.axisFunction != 0,
+        plan_.planeCenter1, plan_.planeCenter2,
+        plan_.fullCircle,   input_.axisFunction == 77 ? &state_.reentry : nullptr};
     return compensation_.plan(context, block);
+}
+
+CompensatedPosition Interpreter::entryOfNextBlock() {
+    bool planned = false;
+    if (compensation_.tracking() && compensation_.holding() && state_.program) {
+        const Program& program = *state_.program;
+        const std::uint32_t index = state_.block;
+        if (index < program.blocks.size()) program.blocks.read(index, block_);
+        const bool executes = index < program.blocks.size() && !(block_.flags & kBlockProgramEnd) &&
+                              !((block_.flags & kBlockSkip) && options_.skipBlocks);
+        DiagnosticList ignored;  // a block that cannot run: the held move ends as at a stop
+        if (executes) planned = checkedBlock(program, index, ignored);
+    }
+    const CompensatedPosition entry = compensation_.entryOfPlannedBlock(state_.modal, planned);
+    compensation_.discardPlan();
+    return entry;
 }
 
 bool Interpreter::planFlow(const BlockContext& context) {

@@ -209,6 +209,12 @@ class Interpreter {
     std::array<double, kMaxAxes> axisPositions() const {
         return compensation_.tracking() ? compensation_.axisPositions() : state_.modal.machine;
     }
+    /// Where the axes stand when the block at the program pointer begins in
+    /// an uninterrupted run (the restart's re-entry point, compensation.md
+    /// TC-013): with tool compensation, a held move is joined to that
+    /// block's move, which is planned for it (nothing changes). Without
+    /// compensation: the commanded machine positions.
+    CompensatedPosition entryOfNextBlock();
     /// Machine positions `machine` as the program would write them now: zero
     /// offsets and transformation undone, diameter and inch applied (the
     /// inverse of MotionPlanner). E.g. the runtime program's inserted blocks.

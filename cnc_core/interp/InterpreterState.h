@@ -85,6 +85,13 @@ struct ReentryPoint {
     std::array<double, kMaxAxes> machine{};                   ///< machine positions (mm, degrees)
     std::array<double, kSpindleSlots> spindleSpeed{};         ///< S per spindle
     std::array<std::int8_t, kSpindleSlots> rotaryAxisMode{};  ///< page 60 el. 1..3
+    /// Tool compensation was in effect at the target (compensation.md
+    /// TC-013): G77 brings the axes to `axes`, where they stood before the
+    /// target block in an uninterrupted run (radius, cutting edge and length
+    /// applied), while `machine` stays the programmed point.
+    bool compensated = false;
+    std::array<double, kMaxAxes> axes{};           ///< axis positions (compensated)
+    std::array<double, kMaxAxes> lengthOffsets{};  ///< G48 offsets contained in `axes`
 };
 
 /// The complete state of one interpreter: copy it to snapshot a run, assign

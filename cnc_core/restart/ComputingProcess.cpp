@@ -153,6 +153,7 @@ void ComputingProcess::start(const RestartSelection& selection, RestartRoute rou
     diagnostics_ = std::move(diagnostics);
     progress_ = {ComputingStatus::Running, 0, 0};
     survey_ = false;
+    resumedEntry_.reset();
     abortRequested_.store(false);
     blocksSoFar_.store(0);
 
@@ -183,9 +184,14 @@ void ComputingProcess::start(const RestartSelection& selection, RestartRoute rou
     publishBuffers();  // zeroed at the start (seed 000, 4.2)
 }
 
-ComputingCheckpoint ComputingProcess::checkpoint() const {
-    return {interpreter_.state(), collector_.m16(), collector_.q(), progress_.arrivals,
-            progress_.blocksInterpreted};
+ComputingCheckpoint ComputingProcess::checkpoint() {
+    return {interpreter_.state(),        collector_.m16(), collector_.q(), progress_.arrivals,
+            progress_.blocksInterpreted, entry()};
+}
+
+CompensatedPosition ComputingProcess::entry() {
+    if (resumedEntry_ && progress_.blocksInterpreted == resumedAt_) return *resumedEntry_;
+    return interpreter_.entryOfNextBlock();
 }
 
 void ComputingProcess::resume(const ComputingCheckpoint& checkpoint) {
@@ -193,6 +199,8 @@ void ComputingProcess::resume(const ComputingCheckpoint& checkpoint) {
     collector_.restore(checkpoint.m16, checkpoint.q);
     progress_.arrivals = checkpoint.arrivals;
     count(checkpoint.blocks - progress_.blocksInterpreted);
+    resumedEntry_ = checkpoint.entry;
+    resumedAt_ = progress_.blocksInterpreted;
 }
 
 ComputingProgress ComputingProcess::step() {

@@ -3,6 +3,7 @@
 #include <atomic>
 #include <cstdint>
 #include <memory>
+#include <optional>
 
 #include "cnc_core/interp/Interpreter.h"
 #include "cnc_core/restart/RestartAuxCollector.h"
@@ -43,6 +44,9 @@ struct ComputingCheckpoint {
     FunctionBuffer q;
     std::uint32_t arrivals = 0;  ///< arrivals at the target with its call chain before this one
     std::uint64_t blocks = 0;    ///< blocks interpreted so far
+    /// Where the axes stand before the block arrived at (entry()); the tool
+    /// compensation that found it is not part of `state`.
+    CompensatedPosition entry;
 };
 
 /// The computing process of NC program restart (seed 000, 2.7, 2.8, 3.1, 4,
@@ -89,7 +93,12 @@ class ComputingProcess {
     /// state() between two steps.
     ComputingProgress step();
     /// The state at the current arrival (see ComputingCheckpoint).
-    ComputingCheckpoint checkpoint() const;
+    ComputingCheckpoint checkpoint();
+    /// Where the axes stand before the block the pointer is on in an
+    /// uninterrupted run (compensation.md TC-013): the compensated re-entry
+    /// point at TargetReached. After resume() and before any block, the
+    /// checkpoint's.
+    CompensatedPosition entry();
     /// After begin(): goes on from `checkpoint`, taken at an arrival of the
     /// same program and start by another computing process, as if the blocks
     /// before had been interpreted here (the machine data they wrote must
@@ -177,6 +186,9 @@ class ComputingProcess {
     std::atomic<bool> abortRequested_{false};
     std::atomic<bool> singleBlock_{false};
     std::atomic<std::uint64_t> blocksSoFar_{0};
+    /// resume(): the checkpoint's entry, valid while no block was interpreted since.
+    std::optional<CompensatedPosition> resumedEntry_;
+    std::uint64_t resumedAt_ = 0;
 };
 
 }  // namespace mtc::core

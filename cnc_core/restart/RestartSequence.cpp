@@ -214,6 +214,12 @@ void RestartSequence::targetReached() {
     reentry_.machine = state.modal.machine;
     reentry_.spindleSpeed = state.modal.spindleSpeed;
     reentry_.rotaryAxisMode = state.modal.rotaryAxisMode;
+    // With tool compensation the axes stood elsewhere than the programmed
+    // point when the target block began: REPOS goes there (TC-013).
+    const CompensatedPosition entry = computing_.entry();
+    reentry_.compensated = entry.compensated;
+    reentry_.axes = entry.axes;
+    reentry_.lengthOffsets = entry.lengthOffsets;
     state.reentry = reentry_;
     // G31 / G32 is selected again by ADJUST from page 60 element 4 (seed 000,
     // 4.1 and 5.4): the NC leaves the computing process with G30; the other

@@ -157,6 +157,17 @@ class Comparison {
         }
     }
 
+    /// The axes themselves (tool compensation applied), where both sides know them.
+    void axisPositions() {
+        if (!e_.axes || !a_.axes) return;
+        for (int axis = 0; axis < axes_.count(); ++axis) {
+            const AxisModel& model = axes_.axis(axis);
+            if (model.spindle) continue;  // positions() covers the spindles' angles
+            const auto i = static_cast<std::size_t>(axis);
+            number("axis." + model.displayName(), (*e_.axes)[i], (*a_.axes)[i], kTolerance);
+        }
+    }
+
     void variables() {
         for (int v = 0; v < kVariableCount; ++v) {
             const auto i = static_cast<std::size_t>(v);
@@ -215,6 +226,7 @@ std::vector<StateDifference> compareRestartStates(const RestartStateView& expect
         c.tools();
         c.number("f", c.e().modal.feed, c.a().modal.feed, kTolerance);
         c.positions(true);
+        c.axisPositions();
     }
     return c.take();
 }
@@ -236,6 +248,7 @@ std::string describeStateItem(const std::string& what) {
         return "rotary axis mode of S" + after(16) + " (page 60)";
     if (what.rfind("tool_spindle", 0) == 0) return "tool in tool spindle " + after(12);
     if (what.rfind("position.", 0) == 0) return "position of " + after(9);
+    if (what.rfind("axis.", 0) == 0) return "axis " + after(5) + " (tool compensation applied)";
     if (what.rfind("plane.", 0) == 0) return "axis definition of " + after(6) + " (plane)";
     if (what[0] == '@') return "variable " + what;
     if (what == "q") return "Q, last output";

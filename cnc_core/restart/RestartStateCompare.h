@@ -29,6 +29,10 @@ struct RestartStateView {
     /// The machine's M groups and spindle speeds; nullptr = the NC's memory
     /// stands for them (a normal run executes everything it outputs).
     const MachineAuxState* machine = nullptr;
+    /// Where the axes stand with tool compensation applied (radius, cutting
+    /// edge, length; compensation.md TC-013), compared in the Cutting scope
+    /// when both sides have them; nullptr = not compared.
+    const std::array<double, kMaxAxes>* axes = nullptr;
 };
 
 /// What a comparison covers (restart.md R-028).
@@ -42,13 +46,14 @@ enum class CompareScope {
     /// G groups (interpolation, plane, zero offset, dimension, ...), plane
     /// allocation and RI, T, E, D, the tools in the tool spindles, spindle
     /// modes and speeds, M groups 2..15 (spindles, gears, coolant, clamps)
-    /// as the machine executed them, F, adaptive feed on/off, axis positions.
+    /// as the machine executed them, F, adaptive feed on/off, commanded
+    /// positions and where the axes stand (tool compensation applied).
     Cutting,
 };
 
 /// One item that differs. `what` is a stable key ("g1", "m5", "s1", "t",
 /// "tool_spindle1", "rotary_axis_mode1", "f", "@100", "position.X",
-/// "page61.m16", "call_stack", ...); numbers when the item is a number.
+/// "page61.m16", "call_stack", "axis.X", ...); numbers when the item is a number.
 struct StateDifference {
     std::string what;
     std::string label;  ///< for people: "G group 1 (interpolation)"

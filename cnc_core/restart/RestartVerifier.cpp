@@ -198,7 +198,7 @@ bool RestartVerifier::arrival() {
         surveyRevision_ = surveyData_->revision();
         surveyEntries_ = surveyData_->entries();
     }
-    record(verify(selectionAt(pass), *normal_, &checkpoint,
+    record(verify(selectionAt(pass), *normal_, normal_->interpreter.entryOfNextBlock(), &checkpoint,
                   surveyEntries_.empty() ? nullptr : &surveyEntries_));
     return true;
 }
@@ -274,6 +274,7 @@ RestartSelection RestartVerifier::selectionAt(std::uint32_t pass) const {
 }
 
 VerifiedTarget RestartVerifier::verify(const RestartSelection& selection, const NormalRun& normal,
+                                       const CompensatedPosition& entry,
                                        const ComputingCheckpoint* checkpoint,
                                        const std::vector<MachineDataStore::Entry>* data) {
     VerifiedTarget result;
@@ -334,8 +335,11 @@ VerifiedTarget RestartVerifier::verify(const RestartSelection& selection, const 
                                          "the operator's key was refused: " + cell.control.alarm());
             return result;
         }
-        const RestartStateView target{&normal.interpreter.state(), nullptr, nullptr, nullptr};
-        const RestartStateView after{&cell.live.state(), nullptr, nullptr, &cell.tracker.state()};
+        const std::array<double, kMaxAxes> standing = cell.live.axisPositions();
+        const RestartStateView target{&normal.interpreter.state(), nullptr, nullptr, nullptr,
+                                      &entry.axes};
+        const RestartStateView after{&cell.live.state(), nullptr, nullptr, &cell.tracker.state(),
+                                     &standing};
         result.cutting =
             compareRestartStates(target, after, CompareScope::Cutting, cell.live.axes());
     }
@@ -412,7 +416,7 @@ VerifiedTarget RestartVerifier::verifySelection(const RestartSelection& selectio
     }
     const InterpreterState saved = start_;
     start_ = begin;
-    VerifiedTarget result = verify(selection, normal, nullptr, nullptr);
+    VerifiedTarget result = verify(selection, normal, n.entryOfNextBlock(), nullptr, nullptr);
     start_ = saved;
     return result;
 }

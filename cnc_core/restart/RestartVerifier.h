@@ -108,8 +108,9 @@ class RestartVerifier {
     /// After the normal run executed `block`: a JMP extends the path to the program of level 0.
     void trackJump(const ProgramPtr& program, std::uint32_t block);
     RestartSelection selectionAt(std::uint32_t pass) const;
+    /// `entry`: where the normal run's axes stand before the target block.
     VerifiedTarget verify(const RestartSelection& selection, const NormalRun& normal,
-                          const ComputingCheckpoint* checkpoint,
+                          const CompensatedPosition& entry, const ComputingCheckpoint* checkpoint,
                           const std::vector<MachineDataStore::Entry>* data);
     void record(VerifiedTarget target);
     void stop(const char* code, const SourceLocation& where, const std::string& message);
