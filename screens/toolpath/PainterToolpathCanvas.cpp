@@ -161,6 +161,7 @@ void PainterToolpathCanvas::drawView(QPainter& painter, const View& view) {
     painter.setClipRect(view.rect);
     painter.setRenderHint(QPainter::Antialiasing, false);
     if (!view.developed) drawStock(painter, view);
+    drawContour(painter, view);
     drawLayer(painter, view);
     drawHighlight(painter, view);
     if (!view.developed) drawMarks(painter, view);
@@ -200,6 +201,24 @@ void PainterToolpathCanvas::drawLayer(QPainter& painter, const View& view) {
         painter.setPen(QPen(model_->palette().colour(static_cast<mtc::core::ToolpathKind>(k)), 1));
         painter.drawLines(lines[k]);
     }
+}
+
+void PainterToolpathCanvas::drawContour(QPainter& painter, const View& view) {
+    const auto g = model_->geometry();
+    if (!g) return;
+    const auto& layer = view.developed ? g->developedContour : g->contour;
+    const std::size_t count = layer.segmentCount();
+    if (count == 0) return;
+    const std::size_t stride = std::max<std::size_t>(1, count / kMaxDrawnSegments);
+    QVector<QLineF> lines;
+    lines.reserve(static_cast<int>(count / stride + 1));
+    for (std::size_t s = 0; s < count; s += stride) {
+        const std::uint32_t v = layer.segmentStart[s];
+        lines.push_back({project(view, layer.vertex(v)), project(view, layer.vertex(v + 1))});
+    }
+    // Dashed and thin: the tool-centre path in the motion colours stays on top.
+    painter.setPen(QPen(model_->palette().contour, 1, Qt::DashLine));
+    painter.drawLines(lines);
 }
 
 void PainterToolpathCanvas::drawHighlight(QPainter& painter, const View& view) {

@@ -49,6 +49,8 @@ class PainterToolpathCanvas : public ToolpathCanvas {
     const mtc::core::ToolpathLayer* layerOf(const View& view) const;
     void drawView(QPainter& painter, const View& view);
     void drawLayer(QPainter& painter, const View& view);
+    /// The programmed contour of compensated moves (TC-012), under the path.
+    void drawContour(QPainter& painter, const View& view);
     void drawHighlight(QPainter& painter, const View& view);
     void drawMarks(QPainter& painter, const View& view);
     void drawStock(QPainter& painter, const View& view);

@@ -21,6 +21,9 @@ struct ToolpathPalette {
     QColor stock{150, 150, 170};    ///< stock (translucent)
     QColor background{26, 32, 44};  ///< view background (dark)
     QColor grid{70, 80, 100};       ///< grid and extents
+    /// Programmed contour of compensated moves (the tool-centre path keeps
+    /// the motion colours): lavender, drawn under the path.
+    QColor contour{180, 120, 255};
 
     /// Colour of a move kind.
     QColor colour(mtc::core::ToolpathKind kind) const {

@@ -59,6 +59,11 @@ ToolpathScreen::ToolpathScreen(const mtc::hmi::ScreenContext& context,
         canvas_ = new VtkToolpathCanvas(model_, this);
     else
         canvas_ = new PainterToolpathCanvas(model_, this);
+    legend_ = new QLabel(this);
+    legend_->setObjectName("toolpathLegend");
+    legend_->setTextFormat(Qt::RichText);
+    legend_->setStyleSheet(QString("background: %1; color: white; padding: 2px 4px;")
+                               .arg(model_->palette().background.name()));
     message_ = new QLabel(this);
     message_->setObjectName("toolpathMessage");
     message_->setWordWrap(true);
@@ -66,6 +71,7 @@ ToolpathScreen::ToolpathScreen(const mtc::hmi::ScreenContext& context,
     layout->setContentsMargins(0, 0, 0, 0);
     layout->addWidget(summary_);
     layout->addWidget(canvas_, 1);
+    layout->addWidget(legend_);
     layout->addWidget(message_);
     setFocusPolicy(Qt::StrongFocus);
     connect(model_, &ToolpathModel::marksChanged, this, &ToolpathScreen::renderText);
@@ -84,8 +90,22 @@ void ToolpathScreen::activated() {
     renderText();
 }
 
+QString ToolpathScreen::legendText() const {
+    const ToolpathPalette& p = model_->palette();
+    auto swatch = [](const QColor& colour, const QString& text) {
+        return QString("<span style='color:%1'>&#9632;</span> %2").arg(colour.name(), text);
+    };
+    QString text = "Tool centre path: " + swatch(p.rapid, "G0") + " &nbsp;" + swatch(p.feed, "G1") +
+                   " &nbsp;" + swatch(p.arc, "G2/G3");
+    const auto g = model_->geometry();
+    if (g && g->contour.segmentCount() + g->developedContour.segmentCount() > 0)
+        text += " &nbsp;&nbsp; " + swatch(p.contour, "programmed contour (G41/G42, edge, G48)");
+    return text;
+}
+
 void ToolpathScreen::renderText() {
     summary_->setText(model_->summary());
+    legend_->setText(legendText());
     QString line = "Linked to the " + model_->partnerName();
     if (!model_->highlightText().isEmpty()) line += " · highlighted: " + model_->highlightText();
     if (!model_->problem().isEmpty()) line += (line.isEmpty() ? "" : " · ") + model_->problem();

@@ -52,12 +52,16 @@ class ToolpathScreen : public mtc::hmi::Screen {
   private:
     void preset(ToolpathPreset preset);
     void renderText();
+    /// The legend line: the motion colours of the tool-centre path, and the
+    /// programmed contour when the program has compensated moves.
+    QString legendText() const;
     QString defaultExportPath() const;
 
     std::shared_ptr<RestartController> restart_;
     ToolpathModel* model_;
     ToolpathCanvas* canvas_;
     QLabel* summary_;
+    QLabel* legend_;  ///< what the colours mean (tool-centre path, programmed contour)
     QLabel* message_;
     QString glReason_;
 };

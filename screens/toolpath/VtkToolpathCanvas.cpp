@@ -40,7 +40,8 @@ constexpr int kStillMs = 250;  ///< full detail again after this pause
 /// Line width of the path in pixels: 1, because VTK 9.1 draws wider lines
 /// with a geometry shader, which is slow on Mesa llvmpipe (TP-010).
 constexpr float kPathWidth = 1.0f;
-constexpr double kPickPixels = 6.0;  ///< a click this close to a segment picks it
+constexpr float kContourWidth = 1.0f;  // told apart by its colour (legend under the view)
+constexpr double kPickPixels = 6.0;    ///< a click this close to a segment picks it
 
 void setColour(vtkProperty* property, const QColor& colour) {
     property->SetColor(colour.redF(), colour.greenF(), colour.blueF());
@@ -60,6 +61,10 @@ struct Part {
     mtc::core::DecimatedLayer decimated;  ///< what the coarse cells stand for
     vtkNew<vtkPolyDataMapper> highlightMapper;
     vtkNew<vtkActor> highlight;
+    /// The programmed contour where compensation moves the tool off it
+    /// (TC-012): thin, one colour, under the tool-centre path.
+    vtkNew<vtkPolyDataMapper> contourMapper;
+    vtkNew<vtkActor> contour;
     vtkNew<vtkCubeAxesActor> axes;
     vtkNew<vtkTextActor> caption;
 
@@ -75,6 +80,13 @@ struct Part {
             actor->GetProperty()->SetLighting(false);
         }
         coarsePath->VisibilityOff();
+        contourMapper->ScalarVisibilityOff();
+        contour->SetMapper(contourMapper);
+        contour->GetProperty()->SetLineWidth(kContourWidth);
+        contour->GetProperty()->SetLighting(false);
+        setColour(contour->GetProperty(), palette.contour);
+        contour->PickableOff();
+        contour->VisibilityOff();
         highlightMapper->ScalarVisibilityOff();
         highlight->SetMapper(highlightMapper);
         highlight->GetProperty()->SetLineWidth(6.0f);
@@ -98,6 +110,7 @@ struct Part {
         caption->GetTextProperty()->SetFontSize(14);
         caption->GetTextProperty()->SetColor(1, 1, 1);
         caption->SetPosition(8, 8);
+        renderer->AddActor(contour);
         renderer->AddActor(path);
         renderer->AddActor(coarsePath);
         renderer->AddActor(highlight);
@@ -291,6 +304,11 @@ void VtkToolpathCanvas::rebuild() {
         part->coarse = nullptr;
         part->decimated = {};
         part->coarseMapper->SetInputData(vtkNew<vtkPolyData>());
+        const bool contour =
+            shown && (part->developed ? g->developedContour : g->contour).segmentCount() > 0;
+        part->contour->SetVisibility(contour);
+        part->contourMapper->SetInputData(contour ? toolpathContour(*g, part->developed)
+                                                  : vtkSmartPointer<vtkPolyData>::New());
         if (!shown) {
             part->full = nullptr;
             part->mapper->SetInputData(vtkNew<vtkPolyData>());

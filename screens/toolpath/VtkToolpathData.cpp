@@ -160,4 +160,19 @@ vtkSmartPointer<vtkPolyData> toolpathMoves(const ToolpathGeometry& geometry, boo
     return b.finish(false);
 }
 
+vtkSmartPointer<vtkPolyData> toolpathContour(const ToolpathGeometry& geometry, bool developed) {
+    const ToolpathLayer& layer = developed ? geometry.developedContour : geometry.contour;
+    const std::size_t count = layer.segmentCount();
+    Builder b(2 * count, count);
+    std::int32_t last = -1;
+    for (std::size_t s = 0; s < count; ++s) {
+        const std::uint32_t v = layer.segmentStart[s];
+        const bool chained = s > 0 && v == layer.segmentStart[s - 1] + 1;
+        const std::int32_t from = chained ? last : b.point(layer, v, Rgb{});
+        last = b.point(layer, v + 1, Rgb{});
+        b.line(from, last);
+    }
+    return b.finish(false);
+}
+
 }  // namespace mtc::screens

@@ -40,4 +40,10 @@ vtkSmartPointer<vtkPolyData> toolpathLevelOfDetail(const mtc::core::ToolpathGeom
 vtkSmartPointer<vtkPolyData> toolpathMoves(const mtc::core::ToolpathGeometry& geometry,
                                            bool developed, const std::vector<std::uint32_t>& moves);
 
+/// The programmed contour of the compensated moves (the `contour` or
+/// `developedContour` layer, compensation.md TC-012), without colours: the
+/// view draws it in one colour beside the tool-centre path.
+vtkSmartPointer<vtkPolyData> toolpathContour(const mtc::core::ToolpathGeometry& geometry,
+                                             bool developed);
+
 }  // namespace mtc::screens

@@ -3,8 +3,9 @@
 // the motion types), the highlighted block's colour appears, picking a
 // segment with the mouse selects its block and back, the G32 program shows
 // the developed plane and the wrapped cylinder side by side, and renders
-// are coalesced. A 200,000-segment program moves with a coarse copy within
-// the cell budget, and picking on that copy still selects the right block.
+// are coalesced. A compensated program shows its programmed contour beside
+// the tool-centre path, with a legend entry. A 200,000-segment program moves with a coarse copy
+// within the cell budget, and picking on that copy still selects the right block.
 #include <QDir>
 #include <QLabel>
 #include <QSet>
@@ -76,6 +77,19 @@ QString largeProgram(int number, int segments) {
     return text + QString::fromStdString(blocks) + "N9999 M30\n";
 }
 
+/// Program `number`: an 80 x 50 rectangle milled outside with T4 (radius 8)
+/// under G41, clockwise: the tool centre runs 8 mm outside the contour.
+QString compensatedProgram(int number) {
+    return QString(
+               "iMTc/01%1/01.00/0000000000/26.11.2026/03:00:00/N1010%1.DAT/1\n"
+               "%NPG:1:01:0:%1\n!01.00\n#01Compensated\n$\n$\n$\n$\n*Compensated\n"
+               "%NPG\n")
+               .arg(number, 3, 10, QChar('0')) +
+           "N0001 T4 S1000 M3\nN0002 G0 G17 G90 G54 X0 Y-20 Z5\nN0003 G1 Z-2 F500\n"
+           "N0004 G41 X10 Y0\nN0005 Y50\nN0006 X90\nN0007 Y0\nN0008 X10\n"
+           "N0009 G40 X0 Y-20\nN0010 G0 Z5\nN0011 M30\n";
+}
+
 }  // namespace
 
 class ToolpathGlTest : public QObject {
@@ -102,6 +116,41 @@ class ToolpathGlTest : public QObject {
         panel.press(Qt::Key_PageDown);
         QVERIFY(!screen->model()->highlighted().empty());
         QVERIFY2(count(canvas->picture(), palette.highlight) > 20, "highlighted block shown");
+    }
+
+    void compensatedProgramShowsContourAndToolCentrePath() {
+        QTemporaryDir dir;
+        writeProgram(QDir(dir.path()), 8, compensatedProgram(8));
+        writeProgram(QDir(dir.path()), 7, largeProgram(7, 20));  // the same, uncompensated
+        mtc::hmi::PanelOptions options;
+        options.programsDir = dir.path();
+        PanelFixture panel(options);
+        panel.session->selectProgram(0, 8);
+        QVERIFY(panel.window->showScreen("toolpath"));
+        ToolpathScreen* screen = toolpath(panel);
+        VtkToolpathCanvas* canvas = vtkCanvas(screen);
+        QVERIFY(canvas);
+        auto* model = screen->model();
+        QVERIFY2(model->geometry(), qPrintable(model->summary()));
+        QVERIFY(model->geometry()->contour.segmentCount() >= 4);
+        QTest::keyClick(screen, Qt::Key_1);  // from above
+        canvas->renderNow();
+        const QImage picture = canvas->picture();
+        const auto& palette = model->palette();
+        QVERIFY2(count(picture, palette.contour) > 100, "the programmed contour is drawn");
+        QVERIFY2(count(picture, palette.feed) > 100, "the tool-centre path is drawn");
+        auto* legend = screen->findChild<QLabel*>("toolpathLegend");
+        QVERIFY(legend);
+        QVERIFY2(legend->text().contains("programmed contour"), qPrintable(legend->text()));
+        QVERIFY(legend->text().contains(palette.contour.name()));
+        // Without compensation: no contour layer, no contour colour, no legend entry.
+        panel.session->selectProgram(0, 7);
+        model->refresh();
+        QVERIFY(model->geometry());
+        QCOMPARE(model->geometry()->contour.segmentCount(), std::size_t{0});
+        canvas->renderNow();
+        QCOMPARE(count(canvas->picture(), palette.contour), 0);
+        QVERIFY(!legend->text().contains("programmed contour"));
     }
 
     void pickingSelectsTheBlockAndTheRestartCursor() {
