@@ -17,7 +17,7 @@ namespace mtc::cli {
 
 namespace {
 
-constexpr const char* kVersion = "mtc200-cli 0.1.0";
+constexpr const char* kVersion = "mtc200-cli " MTC_CLI_VERSION;  // the project version (CMake)
 
 }  // namespace
 
