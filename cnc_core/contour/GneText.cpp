@@ -37,12 +37,23 @@ const char* centreLetters(GnePlane plane) {
     return plane == GnePlane::Turning ? "KI" : "IJ";
 }
 
+/// Longest number the reader takes (GneReader toNumber): plain decimals.
+constexpr int kMostDecimals = 38;
+
 std::string formatValue(double value) {
     if (value == 0.0) return "0";
+    // Plain decimals only, the fewest that read back as the same double: the
+    // reader takes digits, sign and point, no exponent (a value read from
+    // 0.0000000001 must not be written as 1e-10, fuzz finding gne 26f6fef).
     std::string text;
-    for (int digits = 6; digits <= 17; ++digits) {
-        text = formatGeneral(value, digits);
+    for (int decimals = 0; decimals <= kMostDecimals; ++decimals) {
+        text = formatFixed(value, decimals);
         if (leadingNumber(text) == value) break;
+    }
+    if (text.find('.') != std::string::npos) {
+        while (text.back() == '0')
+            text.pop_back();
+        if (text.back() == '.') text.pop_back();
     }
     return text;
 }

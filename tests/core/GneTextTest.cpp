@@ -143,6 +143,21 @@ TEST(GneText, ValuesRoundTripExactly) {
         EXPECT_EQ(std::stod(formatValue(v)), v);
     EXPECT_EQ(formatValue(0.1), "0.1");
     EXPECT_EQ(formatValue(-0.0), "0");
+    // Plain decimals, never an exponent: the reader takes no exponent, so a
+    // tiny value read from the text must be written the same way.
+    EXPECT_EQ(formatValue(1e-10), "0.0000000001");
+    EXPECT_EQ(formatValue(-2.5e-5), "-0.000025");
+    EXPECT_EQ(formatValue(1e7), "10000000");
+}
+
+TEST(GneText, ATinyValueReadsBackAfterWriting) {  // fuzz finding gne 26f6fef
+    const GneDocument doc = readGne("WINDOW_02 (0, 0, 100, 70, 0, -15)\n"
+                                    "FORM_51 (2, 60, 35, 20, 0, 0.0000000001, 5)\n");
+    ASSERT_TRUE(doc.ok());
+    const std::string written = writeGne(doc);
+    const GneDocument again = readGne(written);
+    EXPECT_TRUE(again.ok()) << written;
+    EXPECT_EQ(writeGne(again), written);
 }
 
 /// Random edits of valid GNE texts: reading, writing, solving and expanding
