@@ -250,6 +250,7 @@ CompensatedPosition ToolCompensation::entryOfPlannedBlock(const ModalState& curr
     } else {  // no plane move follows in this block: as at a programmed stop
         comp::RadiusCompensation engine = engine_;
         release = engine.interrupt();
+        entry.interrupted = true;
     }
     const comp::Vec2* end = nullptr;
     for (int i = 0; i < release.count; ++i)

@@ -34,6 +34,9 @@ struct CompensatedPosition {
     std::array<double, kMaxAxes> axes{};
     std::array<double, kMaxAxes> lengthOffsets{};
     bool compensated = false;  ///< the stage followed the axes (else `axes` = programmed)
+    /// The block does not move in the plane while an element is held: that
+    /// element ends at its perpendicular, as at a programmed stop (TC-013).
+    bool interrupted = false;
 };
 
 /// The tool compensation stage between the interpreter and the machine

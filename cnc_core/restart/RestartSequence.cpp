@@ -220,6 +220,14 @@ void RestartSequence::targetReached() {
     reentry_.compensated = entry.compensated;
     reentry_.axes = entry.axes;
     reentry_.lengthOffsets = entry.lengthOffsets;
+    if (entry.interrupted)
+        diagnostics_.warning(
+            "RESTART_COMP_INTERRUPTED",
+            locationOf(*computing_.route().targetProgram, computing_.selection().target.block),
+            "the target block does not move in the working plane while radius compensation "
+            "holds the element before it: REPOS goes to the perpendicular of that element's end "
+            "(as after a programmed stop), not to the corner of the uninterrupted tool path; "
+            "choose the next block that moves in the plane as the target");
     state.reentry = reentry_;
     // G31 / G32 is selected again by ADJUST from page 60 element 4 (seed 000,
     // 4.1 and 5.4): the NC leaves the computing process with G30; the other

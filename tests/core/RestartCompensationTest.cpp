@@ -217,6 +217,25 @@ TEST(RestartCompensation, LatheReentersOnTheChamferAfterTheStartUp) {
                     lathe.station.cell.sps.motions, 2);
 }
 
+TEST(RestartCompensation, ATargetWithoutPlaneMotionReentersAsAfterAStopAndWarns) {
+    // Coolant on between two walls: the restart at that block cannot know
+    // the corner yet. The held wall ends at its perpendicular (60, 15), as
+    // at M00; the operator is told (TC-013).
+    std::string pocket = kPocket;
+    pocket.replace(pocket.find("N0005 Y50"), 0, "N0045 M8\n");
+    Restart mill(0);
+    mill.station.cell.add(kMillRepos, 99);
+    mill.station.cell.add(pocket, 1);
+    mill.reestablish(45);
+    ASSERT_EQ(mill.repos.size(), 2u);
+    EXPECT_NEAR(mill.end(mill.repos[0], "X"), 60.0, kTol);
+    EXPECT_NEAR(mill.end(mill.repos[0], "Y"), 15.0, kTol);
+    bool warned = false;
+    for (const Diagnostic& d : mill.station.sequence.diagnostics().items())
+        warned = warned || (d.code == "RESTART_COMP_INTERRUPTED" && d.where.block == "N0045");
+    EXPECT_TRUE(warned) << diagnosticsText(mill.station.sequence.diagnostics());
+}
+
 TEST(RestartCompensation, TheReposPreviewEndsAtTheCompensatedPoint) {
     Restart mill(0);
     mill.station.cell.add(kMillRepos, 99);
