@@ -5,46 +5,13 @@
 
 #include "cnc_core/cell/Station.h"
 #include "cnc_core/interp/AuxFunctionGroups.h"
+#include "cnc_core/interp/ModalGroups.h"
 #include "cnc_core/interp/MotionPlanner.h"
 #include "cnc_core/machine/AxisNameTable.h"
 
 namespace mtc::core {
 
 namespace {
-
-/// What each G group is about (docs/decisions/interpreter.md).
-const char* groupTopic(int group) {
-    switch (group) {
-        case kGroupInterpolation:
-            return "interpolation";
-        case kGroupPlane:
-            return "plane";
-        case kGroupToolPath:
-            return "radius comp.";
-        case kGroupZeroOffset:
-            return "zero offset";
-        case kGroupFeedType:
-            return "feed type";
-        case kGroupDimension:
-            return "dimensions";
-        case kGroupRadiusDiameter:
-            return "radius/diameter";
-        case kGroupUnits:
-            return "units";
-        case kGroupSurfaceSpeed:
-            return "spindle speed";
-        case kGroupAcceleration:
-            return "acceleration";
-        case kGroupExactStop:
-            return "exact stop";
-        case kGroupToolLength:
-            return "length comp.";
-        case kGroupTransformation:
-            return "transformation";
-        default:
-            return "";
-    }
-}
 
 /// The block's source text on one line, at most `limit` characters.
 std::string oneLine(std::string_view text, std::size_t limit = 160) {
@@ -395,7 +362,7 @@ StationStatus describeStation(const Station& station, int around) {
     status.rapidOverride = station.machine().rapidOverride();
     for (int group : usedGGroups()) {
         const int code = modal.g[static_cast<std::size_t>(group)];
-        if (code >= 0) status.gFunctions.push_back({group, code, groupTopic(group)});
+        if (code >= 0) status.gFunctions.push_back({group, code, gGroupName(group).brief});
     }
     describeTool(station, status);
     status.zeroOffset = modal.g[kGroupZeroOffset];

@@ -130,4 +130,37 @@ const std::array<int, 13>& usedGGroups() {
     return kGroups;
 }
 
+GGroupName gGroupName(int group) {
+    switch (group) {
+        case kGroupInterpolation:
+            return {"interpolation", "interpolation"};
+        case kGroupPlane:
+            return {"plane", "plane"};
+        case kGroupToolPath:
+            return {"radius comp.", "tool path compensation"};
+        case kGroupZeroOffset:
+            return {"zero offset", "zero offset"};
+        case kGroupFeedType:
+            return {"feed type", "feed type"};
+        case kGroupDimension:
+            return {"dimensions", "dimension"};
+        case kGroupRadiusDiameter:
+            return {"radius/diameter", "radius / diameter"};
+        case kGroupUnits:
+            return {"units", "units"};
+        case kGroupSurfaceSpeed:
+            return {"spindle speed", "surface speed"};
+        case kGroupAcceleration:
+            return {"acceleration", "G6 / G7"};
+        case kGroupExactStop:
+            return {"exact stop", "G8 / G9"};
+        case kGroupToolLength:
+            return {"length comp.", "tool length compensation"};
+        case kGroupTransformation:
+            return {"transformation", "transformation"};
+        default:
+            return {};
+    }
+}
+
 }  // namespace mtc::core

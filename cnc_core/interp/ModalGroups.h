@@ -63,4 +63,14 @@ GGroupValues defaultGGroups(const ProcessConfig& config);
 /// The group numbers in use, ascending (for state listings).
 const std::array<int, 13>& usedGGroups();
 
+/// Names of a G group: `brief` for the base screen's narrow column
+/// ("radius comp."), `full` for reports ("tool path compensation").
+struct GGroupName {
+    const char* brief = "";
+    const char* full = "";
+};
+
+/// The names of group `group` (both "" for a number no group has).
+GGroupName gGroupName(int group);
+
 }  // namespace mtc::core

@@ -14,39 +14,6 @@ namespace {
 
 constexpr double kTolerance = 1e-6;
 
-const char* gGroupName(int group) {
-    switch (group) {
-        case kGroupInterpolation:
-            return "interpolation";
-        case kGroupPlane:
-            return "plane";
-        case kGroupToolPath:
-            return "tool path compensation";
-        case kGroupZeroOffset:
-            return "zero offset";
-        case kGroupFeedType:
-            return "feed type";
-        case kGroupDimension:
-            return "dimension";
-        case kGroupRadiusDiameter:
-            return "radius / diameter";
-        case kGroupUnits:
-            return "units";
-        case kGroupSurfaceSpeed:
-            return "surface speed";
-        case kGroupAcceleration:
-            return "G6 / G7";
-        case kGroupExactStop:
-            return "G8 / G9";
-        case kGroupToolLength:
-            return "tool length compensation";
-        case kGroupTransformation:
-            return "transformation";
-        default:
-            return "";
-    }
-}
-
 std::string numberText(double value) {
     return formatGeneral(value, 10);
 }
@@ -236,7 +203,7 @@ std::string describeStateItem(const std::string& what) {
     const auto after = [&](std::size_t n) { return what.substr(n); };
     if (what.size() > 1 && what[0] == 'g' && std::isdigit(static_cast<unsigned char>(what[1]))) {
         const int group = std::atoi(what.c_str() + 1);
-        const std::string name = gGroupName(group);
+        const std::string name = gGroupName(group).full;
         return "G group " + std::to_string(group) + (name.empty() ? "" : " (" + name + ")");
     }
     if (what.size() > 1 && what[0] == 'm' && std::isdigit(static_cast<unsigned char>(what[1])))
