@@ -102,9 +102,10 @@ void ErrorsScreen::rebuild() {
     if (entries.isEmpty()) {
         hint_->setText("No errors.");
     } else {
-        hint_->setText(QString("%1 messages. Enter: go to the block in the editor; "
+        hint_->setText(QString("%1 %2. Enter: go to the block in the editor; "
                                "F2: additional text")
-                           .arg(entries.size()));
+                           .arg(entries.size())
+                           .arg(entries.size() == 1 ? "message" : "messages"));
         list_->setCurrentRow(qBound(0, row, entries.size() - 1));
     }
 }
