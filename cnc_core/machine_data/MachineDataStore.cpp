@@ -117,6 +117,10 @@ MachineDataStatus MachineDataStore::store(const MachineDataAddress& address, dou
     const MachineDataStatus status =
         validate(address, value, writer, password, ignoreProtection, normalized);
     if (status != MachineDataStatus::Ok) return status;
+    // -0 is kept as 0: otherwise a -0 over a 1 stays -0 while a -0 over the
+    // default 0 does not, and the file text depends on the order of writes
+    // (fuzz finding machine_data 32bf168).
+    if (normalized == 0.0) normalized = 0.0;
     PageData* page = nullptr;
     std::size_t index = 0;
     locateIn(processes_, address, page, index);

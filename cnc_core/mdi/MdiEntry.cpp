@@ -36,6 +36,12 @@ bool hasBlock(const std::string& line) {
     return false;
 }
 
+/// A line a program file's header begins or ends with ('%' first).
+bool isFileHeaderLine(const std::string& line) {
+    const std::size_t first = line.find_first_not_of(" \t");
+    return first != std::string::npos && line[first] == '%';
+}
+
 SourceLocation lineLocation(std::size_t index) {
     SourceLocation where;
     where.line = static_cast<int>(index + 1);
@@ -50,7 +56,16 @@ std::vector<bool> expandLines(MdiEntry& entry, const std::vector<MacroDefinition
         const std::string& line = entry.lines[i];
         std::string expanded;
         std::string problem;
-        if (line.size() > kMaxMdiLineLength) {
+        if (isFileHeaderLine(line)) {
+            // A %NPG / %MAC line would make the parser read the entry as a
+            // program file, whose problems name no input line (fuzz finding
+            // mdi ba78da4).
+            entry.diagnostics.error("MDI_HEADER_REFUSED", lineLocation(i),
+                                    "a program file's header line (%...) is not an NC block; "
+                                    "MDI takes blocks only",
+                                    {mdiInputDetail(static_cast<int>(i) + 1, line)});
+            refused[i] = true;
+        } else if (line.size() > kMaxMdiLineLength) {
             entry.diagnostics.error(
                 "MDI_TOO_LONG", lineLocation(i),
                 "an MDI line has at most " + std::to_string(kMaxMdiLineLength) + " characters");

@@ -4,6 +4,8 @@
 #include <cmath>
 
 #include "cnc_core/interp/ExpressionEvaluator.h"
+#include "cnc_core/language/CheckedNumber.h"
+#include "cnc_core/text/Numbers.h"
 #include "cnc_core/restart/RestartRoute.h"
 
 namespace mtc::core {
@@ -178,7 +180,10 @@ class PathFollower {
         if (!evaluator.evaluate(program, word.expr, number, error))
             return fail("RESTART_PATH_PROGRAM_NOT_FOUND", where,
                         "the program number cannot be evaluated: " + error.message);
-        shown = std::to_string(static_cast<long long>(number));
+        // Any double may come out (@1=-1E308): shown as it is, never cast
+        // blindly (fuzz finding target_path e0dea8c).
+        const auto whole = exactInteger<long long>(number);
+        shown = whole ? std::to_string(*whole) : formatGeneral(number, 10);
         if (single) shown += " (the value of @" + std::to_string(node.index) + ")";
         return true;
     }

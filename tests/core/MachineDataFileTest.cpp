@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -93,6 +94,19 @@ TEST(MachineDataFile, RoundTripKeepsEveryValue) {
     EXPECT_EQ(valueOf(copy, {180, 1, 0, 2}), 42.125);
     EXPECT_EQ(valueOf(copy, {30, 1, 0, 7}), 21);
     EXPECT_EQ(dir.names(), std::vector<std::string>{"cell.mdt"}) << "no temporary file left";
+}
+
+// Fuzz finding machine_data 32bf168: -0 written over 1 stayed -0 and was
+// written "-0", while the same -0 over the default 0 stayed 0.
+TEST(MachineDataFile, MinusZeroIsStoredAsZeroWhateverWasThereBefore) {
+    MachineDataStore store(demoCell());
+    const MachineDataAddress address{60, 1, 0, 1};
+    ASSERT_EQ(store.update(address, 1.0), MachineDataStatus::Ok);
+    ASSERT_EQ(store.update(address, -0.0), MachineDataStatus::Ok);
+    EXPECT_FALSE(std::signbit(valueOf(store, address)));
+    MachineDataStore fresh(demoCell());
+    ASSERT_EQ(fresh.update(address, -0.0), MachineDataStatus::Ok);
+    EXPECT_EQ(MachineDataFile::serialize(store), MachineDataFile::serialize(fresh));
 }
 
 TEST(MachineDataFile, MissingFileMeansDefaultsWithoutWarning) {

@@ -77,6 +77,18 @@ TEST(MdiEntryTest, AMacroThatExpandsToAKeywordIsRefused) {
     EXPECT_EQ(entry.diagnostics.items()[0].code, "MDI_KEYWORD_REFUSED");
 }
 
+// Fuzz finding mdi ba78da4: a header line made the parser read the entry as
+// a program file, whose problems named no input line.
+TEST(MdiEntryTest, AProgramFileHeaderLineIsRefusedWithItsLine) {
+    const MdiEntry entry = prepareMdiEntry("G1 X5 F100\n%MAC2.5 @6=-3\nG1 X6\n", kMacros);
+    EXPECT_FALSE(entry.runnable());
+    ASSERT_FALSE(entry.diagnostics.items().empty());
+    for (const Diagnostic& d : entry.diagnostics.items())
+        EXPECT_GE(d.where.line, 1) << d.code << ": " << d.message;
+    EXPECT_EQ(entry.diagnostics.items()[0].code, "MDI_HEADER_REFUSED");
+    EXPECT_EQ(entry.diagnostics.items()[0].where.line, 2);
+}
+
 TEST(MdiEntryTest, ParseErrorsCarryTheInputLine) {
     const MdiEntry entry = prepareMdiEntry("G1 X5 F100\nG1 X=(3+\n", kMacros);
     EXPECT_FALSE(entry.runnable());
