@@ -56,7 +56,7 @@ QVector<KeyAssignment> globalKeyAssignments() {
         {"Esc", "Back to the main menu of the station"},
         {"Ctrl+PgUp / Ctrl+PgDn", "Previous / next station (process); each keeps its screen"},
         {"F11", "Base screen of the station: positions, feed, spindles, running block"},
-        {"F12", "This help: every key assignment"},
+        {"F12", "Help for the screen shown, and every key"},
         {"Tab / Shift+Tab", "Move the focus between fields of a screen"},
     };
     for (ControlKey key : machineKeys())

@@ -98,12 +98,15 @@ void PanelWindow::buildStations() {
         stationPages_.push_back(page);
         screens_.push_back({});
         currentScreen_.push_back(kMenuScreen);
-        ScreenContext context{session_, slot, [this, slot] {
+        previousScreen_.push_back({});
+        ScreenContext context{session_, slot,
+                              [this, slot] {
                                   QVector<Screen*> list;
                                   for (Screen* s : screens_[slot])
                                       list.push_back(s);
                                   return list;
-                              }};
+                              },
+                              [this, slot] { return previousScreen_.value(slot); }};
         for (const auto& entry : registry_->entries()) {
             Screen* screen = entry.factory(context);
             screen->setObjectName(entry.name);
@@ -144,6 +147,7 @@ void PanelWindow::installShortcuts() {
 bool PanelWindow::showScreen(const QString& name) {
     Screen* target = screen(station_, name);
     if (!target) return false;
+    if (currentScreen_[station_] != name) previousScreen_[station_] = currentScreen_[station_];
     currentScreen_[station_] = name;
     stationPages_[station_]->setCurrentWidget(target);
     target->activated();

@@ -66,6 +66,7 @@ class PanelWindow : public QMainWindow {
     QVector<QStackedWidget*> stationPages_;
     QVector<QMap<QString, Screen*>> screens_;
     QVector<QString> currentScreen_;
+    QVector<QString> previousScreen_;  ///< per station: the screen before the current one
     int station_ = 0;
 };
 

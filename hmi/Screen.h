@@ -18,6 +18,9 @@ struct ScreenContext {
     int process = 0;  ///< station slot (index into the cell's processes)
     /// All screens of the same station (for the help screen's key list).
     std::function<QVector<Screen*>()> stationScreens;
+    /// Name of the screen shown before the current one on this station ("" =
+    /// none): F12 opens the help of the screen the operator was on.
+    std::function<QString()> previousScreen;
 };
 
 /// Base of every screen: a widget with a stable name, a title and its soft

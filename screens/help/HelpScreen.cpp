@@ -4,8 +4,30 @@
 #include <QVBoxLayout>
 
 #include "hmi/KeyMap.h"
+#include "screens/help/ScreenHelpTexts.h"
 
 namespace mtc::screens {
+
+namespace {
+
+QString softKeyRows(mtc::hmi::Screen& screen) {
+    QString rows;
+    const auto keys = screen.softKeys();
+    for (int i = 0; i < keys.size(); ++i) {
+        if (keys[i].label.isEmpty()) continue;
+        rows += QString("<tr><td><b>F%1</b></td><td>%2</td></tr>")
+                    .arg(i + 1)
+                    .arg(QString(keys[i].label).replace('\n', ' ').toHtmlEscaped());
+    }
+    return rows;
+}
+
+QString row(const QString& keys, const QString& meaning) {
+    return QString("<tr><td><b>%1</b></td><td>%2</td></tr>")
+        .arg(keys.toHtmlEscaped(), meaning.toHtmlEscaped());
+}
+
+}  // namespace
 
 HelpScreen::HelpScreen(const mtc::hmi::ScreenContext& context) : Screen(context) {
     auto* layout = new QVBoxLayout(this);
@@ -15,36 +37,61 @@ HelpScreen::HelpScreen(const mtc::hmi::ScreenContext& context) : Screen(context)
     setFocusProxy(text_);
 }
 
-QString HelpScreen::helpHtml() const {
-    QString html = "<h3>Panel keys</h3><table cellpadding='3'>";
-    for (const auto& a : mtc::hmi::globalKeyAssignments())
-        html += QString("<tr><td><b>%1</b></td><td>%2</td></tr>")
-                    .arg(a.keys.toHtmlEscaped(), a.meaning.toHtmlEscaped());
-    html += "</table>";
+mtc::hmi::Screen* HelpScreen::stationScreen(const QString& name) const {
+    if (name.isEmpty() || !context().stationScreens) return nullptr;
+    for (mtc::hmi::Screen* screen : context().stationScreens())
+        if (screen != this && screen->screenName() == name) return screen;
+    return nullptr;
+}
+
+QString HelpScreen::screenHelpHtml(mtc::hmi::Screen& screen) const {
+    QString html = QString("<h3>%1</h3>").arg(screen.title().toHtmlEscaped());
+    if (const ScreenHelpText* help = screenHelpText(screen.screenName())) {
+        html += "<p>" + QString::fromUtf8(help->purpose).toHtmlEscaped() + "</p>";
+        if (*help->seed)
+            html += "<p><i>Reproduces: " + QString::fromUtf8(help->seed).toHtmlEscaped() +
+                    "</i></p>";
+        html += "<table cellpadding='3'>" + softKeyRows(screen);
+        for (const HelpKey& key : help->keys)
+            html += row(QString::fromUtf8(key.keys), QString::fromUtf8(key.meaning));
+        return html + "</table>";
+    }
+    return html + "<table cellpadding='3'>" + softKeyRows(screen) + "</table>";
+}
+
+QString HelpScreen::overviewHtml() const {
+    QString html;
     if (!context().stationScreens) return html;
     for (mtc::hmi::Screen* screen : context().stationScreens()) {
         if (screen == this) continue;
         html += QString("<h4>%1 (%2)</h4><table cellpadding='2'>")
                     .arg(screen->title().toHtmlEscaped(), screen->screenName());
-        const auto keys = screen->softKeys();
-        for (int i = 0; i < keys.size(); ++i) {
-            if (keys[i].label.isEmpty()) continue;
-            html += QString("<tr><td><b>F%1</b></td><td>%2</td></tr>")
-                        .arg(i + 1)
-                        .arg(QString(keys[i].label).replace('\n', ' ').toHtmlEscaped());
-        }
-        html += "</table>";
+        html += softKeyRows(*screen) + "</table>";
     }
     return html;
 }
 
+QString HelpScreen::helpHtml() const {
+    QString html;
+    if (mtc::hmi::Screen* screen = stationScreen(subject_)) html += screenHelpHtml(*screen);
+    html += "<h3>Panel keys</h3><table cellpadding='3'>";
+    for (const auto& a : mtc::hmi::globalKeyAssignments())
+        html += row(a.keys, a.meaning);
+    html += "</table>";
+    if (subject_.isEmpty()) html += overviewHtml();
+    return html;
+}
+
 void HelpScreen::activated() {
+    // The screen the operator pressed F12 on; from the menu, every screen.
+    const QString previous = context().previousScreen ? context().previousScreen() : QString();
+    subject_ = previous == "menu" || !stationScreen(previous) ? QString() : previous;
     text_->setHtml(helpHtml());
 }
 
 mtc::hmi::SoftKeys HelpScreen::softKeys() {
     mtc::hmi::SoftKeys keys(8);
-    keys[7] = {"Back", [this] { emit navigateTo("menu"); }};
+    keys[7] = {"Back", [this] { emit navigateTo(subject_.isEmpty() ? "menu" : subject_); }};
     return keys;
 }
 

@@ -6,21 +6,30 @@ class QTextBrowser;
 
 namespace mtc::screens {
 
-/// Lists every key assignment: the panel's global keys, the machine control
-/// keys and the soft keys of each screen of the station, as they are now.
+/// F12: the help of the screen the operator was on (what it is for, the
+/// seed section it reproduces, its soft keys as they are now and its other
+/// keys; issue 20 §4), then the panel's global keys. Opened from the main
+/// menu it lists every screen's soft keys instead. F8 goes back.
 class HelpScreen : public mtc::hmi::Screen {
     Q_OBJECT
   public:
     explicit HelpScreen(const mtc::hmi::ScreenContext& context);
     QString screenName() const override { return "help"; }
-    QString title() const override { return "Key assignments"; }
+    QString title() const override { return "Help"; }
     mtc::hmi::SoftKeys softKeys() override;
     void activated() override;
     /// The text shown (HTML); rebuilt by activated().
     QString helpHtml() const;
+    /// The screen the help is about ("" = the overview of every screen).
+    const QString& subject() const { return subject_; }
 
   private:
+    mtc::hmi::Screen* stationScreen(const QString& name) const;
+    QString screenHelpHtml(mtc::hmi::Screen& screen) const;
+    QString overviewHtml() const;
+
     QTextBrowser* text_;
+    QString subject_;
 };
 
 }  // namespace mtc::screens
