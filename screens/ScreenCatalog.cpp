@@ -86,8 +86,7 @@ void registerAllScreens(mtc::hmi::ScreenRegistry& registry) {
                  [](const ScreenContext& c) { return new ZeroOffsetScreen(c); });
     registry.add("afc-trend", "Adaptive feed trend",
                  [](const ScreenContext& c) { return new AfcTrendScreen(c); });
-    registry.add("help", "Help",
-                 [](const ScreenContext& c) { return new HelpScreen(c); });
+    registry.add("help", "Help", [](const ScreenContext& c) { return new HelpScreen(c); });
     // The restart screens of a station share one controller (selection,
     // computing process, result).
     registry.add("restart", "NC program restart", [restart, links](const ScreenContext& c) {

@@ -49,8 +49,8 @@ QString HelpScreen::screenHelpHtml(mtc::hmi::Screen& screen) const {
     if (const ScreenHelpText* help = screenHelpText(screen.screenName())) {
         html += "<p>" + QString::fromUtf8(help->purpose).toHtmlEscaped() + "</p>";
         if (*help->seed)
-            html += "<p><i>Reproduces: " + QString::fromUtf8(help->seed).toHtmlEscaped() +
-                    "</i></p>";
+            html +=
+                "<p><i>Reproduces: " + QString::fromUtf8(help->seed).toHtmlEscaped() + "</i></p>";
         html += "<table cellpadding='3'>" + softKeyRows(screen);
         for (const HelpKey& key : help->keys)
             html += row(QString::fromUtf8(key.keys), QString::fromUtf8(key.meaning));

@@ -8,7 +8,10 @@ namespace {
 // (issue 20 §1) finds them in one place.
 std::vector<ScreenHelpText> buildTexts() {
     return {
-        {"menu", "Leads to every screen of the station.", "", {{"↑ / ↓, Enter", "choose a screen"}}},
+        {"menu",
+         "Leads to every screen of the station.",
+         "",
+         {{"↑ / ↓, Enter", "choose a screen"}}},
         {"position",
          "The base screen: where every axis is (workpiece and machine coordinates, distance "
          "to go), feeds and overrides, spindles, the tool and its edge, the active G "
@@ -23,7 +26,8 @@ std::vector<ScreenHelpText> buildTexts() {
         {"programs",
          "The station's programs with the compiler status bit ( , N, C, E) and the listing "
          "of the one under the cursor; selects the program to run.",
-         "seed 001 ch. 7", {{"↑ / ↓", "move the cursor"}, {"Enter", "select the program"}}},
+         "seed 001 ch. 7",
+         {{"↑ / ↓", "move the cursor"}, {"Enter", "select the program"}}},
         {"nc-options",
          "The cell's NC options: compiler active, user compilers 1–4, syntax check and the "
          "global macros, written at once to NC_OPTIONS.CFG and GLOBAL_MACROS.MAC.",
@@ -39,22 +43,28 @@ std::vector<ScreenHelpText> buildTexts() {
         {"errors",
          "The error window: one brief message per line (compiler, runtime, restart, MDI) "
          "with program and block; the additional text on request.",
-         "seed 001 ch. 9", {{"Enter", "open the editor at the message's line"}}},
+         "seed 001 ch. 9",
+         {{"Enter", "open the editor at the message's line"}}},
         {"gne",
          "The graphical NC editor: contours, forms and cycles as rows with their values and "
          "a live drawing; Exit writes them back into the program.",
-         "seed 001 ch. 3", {{"↑ / ↓", "choose a row"}, {"Enter", "take the value"}}},
+         "seed 001 ch. 3",
+         {{"↑ / ↓", "choose a row"}, {"Enter", "take the value"}}},
         {"runtime",
          "The source program beside the compiled runtime program; inserted blocks keep "
          "their numbers, compensation corners are marked →.",
-         "seed 001 ch. 1, 10, 11", {{"↑ / ↓", "move through the compiled program"}}},
+         "seed 001 ch. 1, 10, 11",
+         {{"↑ / ↓", "move through the compiled program"}}},
         {"mdi",
          "Manual data input: a few NC blocks typed here run from the station's current "
          "state when Start is pressed in MDI mode (Shift+F9). The input stays until an entry "
          "ran to its end.",
-         "seed 001 ch. 4, 12", {{"Shift+F9, Shift+F5", "MDI mode, then Start runs the input"}}},
-        {"signals", "The station's NC and SPS interface signals and a log of every change.",
-         "seed 000 ch. 6", {}},
+         "seed 001 ch. 4, 12",
+         {{"Shift+F9, Shift+F5", "MDI mode, then Start runs the input"}}},
+        {"signals",
+         "The station's NC and SPS interface signals and a log of every change.",
+         "seed 000 ch. 6",
+         {}},
         {"machine-data",
          "Machine data pages 30, 60, 61 and the user pages with number, title, value and "
          "unit; values are checked against range, type and write protection.",
@@ -68,11 +78,13 @@ std::vector<ScreenHelpText> buildTexts() {
         {"offsets",
          "The zero offsets G54..G59 of the station's process, one column per axis "
          "definition.",
-         "seed 003, 3.5", {{"cursor keys", "move the cell"}, {"Enter", "edit the cell"}}},
+         "seed 003, 3.5",
+         {{"cursor keys", "move the cell"}, {"Enter", "edit the cell"}}},
         {"afc-trend",
          "The adaptive feed control's trend over simulated time: torques, limits, feed "
          "reduction and the signals.",
-         "seed 002 Fig. 2-1, 6-1", {}},
+         "seed 002 Fig. 2-1, 6-1",
+         {}},
         {"help", "Every key of the panel and the soft keys of each screen.", "", {}},
         {"restart",
          "NC program restart: choose the target block anywhere in the program tree, follow "
@@ -82,11 +94,13 @@ std::vector<ScreenHelpText> buildTexts() {
         {"restart-result",
          "The state the computing process computed for the target beside the machine's "
          "state before, with the differences and the verification of the target.",
-         "seed 000 ch. 2.7, 2.8", {}},
+         "seed 000 ch. 2.7, 2.8",
+         {}},
         {"repos",
          "Distance of every axis to the re-entry point while ADJUST and REPOS run; jogging "
          "in manual mode between them.",
-         "seed 000 ch. 2.8, 2.9, Fig. 2-4", {}},
+         "seed 000 ch. 2.8, 2.9, Fig. 2-4",
+         {}},
         {"toolpath",
          "The selected program's path in 3D (2D without OpenGL): rapid, feed and arcs, the "
          "running block, the restart's target and REPOS path, the programmed contour beside "

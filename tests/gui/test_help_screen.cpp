@@ -46,8 +46,9 @@ class HelpScreenTest : public QObject {
         QVERIFY(help);
         QVERIFY2(shown.contains(QString::fromUtf8(help->purpose)), qPrintable(shown));
         QVERIFY2(shown.contains("Reproduces: " + QString::fromUtf8(help->seed)), qPrintable(shown));
-        QVERIFY2(shown.contains("F1") && shown.contains("Edit"), qPrintable(shown));  // its soft keys
-        QVERIFY2(shown.contains("Home / End"), qPrintable(shown));               // its other keys
+        QVERIFY2(shown.contains("F1") && shown.contains("Edit"),
+                 qPrintable(shown));                                // its soft keys
+        QVERIFY2(shown.contains("Home / End"), qPrintable(shown));  // its other keys
         QVERIFY2(!shown.contains("Interface signals"), "only the tool table's help, no overview");
         panel.press(Qt::Key_F8);  // Back to where F12 was pressed
         QCOMPARE(panel.window->currentScreenName(), QString("tools"));
