@@ -7,12 +7,20 @@
 #include "cnc_core/program/AtomicWrite.h"
 #include "hmi/CellSession.h"
 #include "hmi/NcOptionsHolder.h"
+#include "hmi/PanelLanguage.h"
 #include "hmi/PanelStartup.h"
 #include "hmi/PanelWindow.h"
 #include "hmi/ScreenRegistry.h"
 #include "screens/ScreenCatalog.h"
 
 namespace {
+/// The panel's language (--lang, the desk's setting or its locale; D-018)
+/// before any text is made: the option texts and errors are translated too.
+bool useLanguage(QString& error) {
+    const QString option = mtc::hmi::languageArgument(QCoreApplication::arguments());
+    return mtc::hmi::installPanelTranslation(mtc::hmi::panelLanguageFor(option), error);
+}
+
 int fail(const QString& message) {
     QTextStream(stderr) << "mtc200-panel: " << message << "\n";
     return 2;
@@ -51,6 +59,7 @@ int answerHelp(int argc, char** argv) {
     mtc::hmi::PanelOptions options;
     QString text;
     bool exitNow = false;
+    if (!useLanguage(text)) return fail(text);
     if (!mtc::hmi::parsePanelOptions(QCoreApplication::arguments(), options, text, exitNow))
         return fail(text);
     QTextStream(stdout) << text;
@@ -72,6 +81,7 @@ int main(int argc, char** argv) {
     mtc::hmi::PanelOptions options;
     QString error;
     bool exitNow = false;
+    if (!useLanguage(error)) return fail(error);
     if (!mtc::hmi::parsePanelOptions(QApplication::arguments(), options, error, exitNow))
         return fail(error);
     if (exitNow) {

@@ -5,13 +5,13 @@ namespace mtc::hmi {
 QString originName(ErrorOrigin origin) {
     switch (origin) {
         case ErrorOrigin::Compiler:
-            return "compiler";
+            return ErrorLog::tr("compiler");
         case ErrorOrigin::Runtime:
-            return "runtime";
+            return ErrorLog::tr("runtime");
         case ErrorOrigin::Restart:
-            return "restart";
+            return ErrorLog::tr("restart");
         case ErrorOrigin::Mdi:
-            return "MDI";
+            return ErrorLog::tr("MDI");
     }
     return "?";
 }

@@ -1,6 +1,17 @@
 #include "hmi/KeyMap.h"
 
+#include <QCoreApplication>
+
+#include "hmi/CoreTerms.h"
+
 namespace mtc::hmi {
+
+namespace {
+/// The key list's texts, context "KeyMap" of the catalogues.
+struct Text {
+    Q_DECLARE_TR_FUNCTIONS(KeyMap)
+};
+}  // namespace
 
 using mtc::core::ControlKey;
 
@@ -52,28 +63,30 @@ QKeySequence baseScreenShortcut() {
 
 QVector<KeyAssignment> globalKeyAssignments() {
     QVector<KeyAssignment> list = {
-        {"F1 … F8", "Soft keys of the current screen (labels in the bar at the bottom)"},
-        {"Esc", "Back to the main menu of the station"},
-        {"Ctrl+PgUp / Ctrl+PgDn", "Previous / next station (process); each keeps its screen"},
-        {"F11", "Base screen of the station: positions, feed, spindles, running block"},
-        {"F12", "Help for the screen shown, and every key"},
-        {"Tab / Shift+Tab", "Move the focus between fields of a screen"},
+        {"F1 … F8", Text::tr("Soft keys of the current screen (labels in the bar at the bottom)")},
+        {"Esc", Text::tr("Back to the main menu of the station")},
+        {Text::tr("Ctrl+PgUp / Ctrl+PgDn"),
+         Text::tr("Previous / next station (process); each keeps its screen")},
+        {"F11", Text::tr("Base screen of the station: positions, feed, spindles, running block")},
+        {"F12", Text::tr("Help for the screen shown, and every key")},
+        {Text::tr("Tab / Shift+Tab"), Text::tr("Move the focus between fields of a screen")},
     };
     for (ControlKey key : machineKeys())
         list.push_back({machineKeyShortcut(key).toString(QKeySequence::NativeText),
-                        QString("Machine control key '%1'").arg(mtc::core::keyName(key))});
+                        Text::tr("Machine control key '%1'").arg(keyLabel(key))});
     const auto pair = [](const QKeySequence& up, const QKeySequence& down) {
         return up.toString(QKeySequence::NativeText) + " / " +
                down.toString(QKeySequence::NativeText);
     };
     list.push_back({pair(feedOverrideShortcut(1), feedOverrideShortcut(-1)),
-                    "Feed override one step up / down (0 … the machine's maximum, "
-                    "shown under the M keys)"});
+                    Text::tr("Feed override one step up / down (0 … the machine's maximum, "
+                             "shown under the M keys)")});
     list.push_back({pair(rapidOverrideShortcut(1), rapidOverrideShortcut(-1)),
-                    "Rapid traverse override one step up / down (0, 1, 10, 25, 50, 100 %)"});
+                    Text::tr("Rapid traverse override one step up / down (0, 1, 10, 25, 50, "
+                             "100 %)")});
     list.push_back({speedKeyShortcut().toString(QKeySequence::NativeText),
-                    "Simulation speed: \u00d71 \u2192 \u00d710 \u2192 as fast as possible "
-                    "(shown in the header)"});
+                    Text::tr("Simulation speed: ×1 → ×10 → as fast as possible (shown in "
+                             "the header)")});
     return list;
 }
 

@@ -4,9 +4,10 @@
 #include <QLabel>
 #include <QPushButton>
 #include <QStyle>
-#include <QVariant>
 #include <QVBoxLayout>
+#include <QVariant>
 
+#include "hmi/CoreTerms.h"
 #include "hmi/KeyMap.h"
 
 namespace mtc::hmi {
@@ -16,7 +17,7 @@ MachineKeyBar::MachineKeyBar(QWidget* parent) : QWidget(parent) {
     layout->setContentsMargins(2, 2, 2, 2);
     int n = 0;
     for (mtc::core::ControlKey key : machineKeys()) {
-        auto* button = new QPushButton(QString::fromUtf8(mtc::core::keyName(key)), this);
+        auto* button = new QPushButton(keyLabel(key), this);
         button->setObjectName(QString("mkey-%1").arg(++n));
         button->setToolTip(machineKeyShortcut(key).toString(QKeySequence::NativeText));
         button->setFocusPolicy(Qt::NoFocus);
@@ -27,13 +28,13 @@ MachineKeyBar::MachineKeyBar(QWidget* parent) : QWidget(parent) {
         layout->addWidget(button);
     }
     layout->addStretch();
-    feedOverride_ = addOverride("feedOverrideSwitch", "Feed override", false);
-    rapidOverride_ = addOverride("rapidOverrideSwitch", "Rapid override", true);
+    feedOverride_ = addOverride("feedOverrideSwitch", tr("Feed override"), false);
+    rapidOverride_ = addOverride("rapidOverrideSwitch", tr("Rapid override"), true);
     setOverrides(100, 100);
     speed_ = new QPushButton(this);
     speed_->setObjectName("speedKey");
-    speed_->setToolTip(speedKeyShortcut().toString(QKeySequence::NativeText) +
-                       ": simulation speed");
+    speed_->setToolTip(
+        tr("%1: simulation speed").arg(speedKeyShortcut().toString(QKeySequence::NativeText)));
     speed_->setFocusPolicy(Qt::NoFocus);
     speed_->setMinimumSize(110, 32);
     connect(speed_, &QPushButton::clicked, this, &MachineKeyBar::speedPressed);
@@ -59,8 +60,9 @@ QLabel* MachineKeyBar::addOverride(const QString& name, const QString& title, bo
         button->setFixedWidth(button->fontMetrics().horizontalAdvance("+") * 5 / 2 + 8);
         const QKeySequence keys =
             rapid ? rapidOverrideShortcut(direction) : feedOverrideShortcut(direction);
-        button->setToolTip(title + (direction > 0 ? " up (" : " down (") +
-                           keys.toString(QKeySequence::NativeText) + ")");
+        const QString shortcut = keys.toString(QKeySequence::NativeText);
+        button->setToolTip(direction > 0 ? tr("%1 up (%2)").arg(title, shortcut)
+                                         : tr("%1 down (%2)").arg(title, shortcut));
         connect(button, &QPushButton::clicked, this,
                 [this, rapid, direction] { emit overrideStep(rapid, direction); });
         row->addWidget(button);
@@ -92,7 +94,7 @@ void MachineKeyBar::setLamp(mtc::core::ControlKey key, bool on) {
 }
 
 void MachineKeyBar::setSpeedText(const QString& text) {
-    speed_->setText("Speed " + text);
+    speed_->setText(tr("Speed %1").arg(text));
 }
 
 }  // namespace mtc::hmi

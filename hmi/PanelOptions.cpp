@@ -5,31 +5,44 @@
 
 namespace mtc::hmi {
 
+namespace {
+/// The options' texts, context "PanelOptions" of the catalogues.
+struct Text {
+    Q_DECLARE_TR_FUNCTIONS(PanelOptions)
+};
+}  // namespace
+
 bool parsePanelOptions(const QStringList& arguments, PanelOptions& options, QString& error,
                        bool& exitNow) {
     exitNow = false;
     QCommandLineParser parser;
-    parser.setApplicationDescription("MTC200 operator panel simulator");
+    parser.setApplicationDescription(Text::tr("MTC200 operator panel simulator"));
     auto help = parser.addHelpOption();
     auto version = parser.addVersionOption();
     parser.addOptions({
-        {"machine", "Machine configuration file (default: built-in demo cell).", "FILE"},
-        {"programs", "Program directory with NuxxYzzz.DAT files (default: demo programs).", "DIR"},
-        {"process", "Station (process) shown first.", "N"},
-        {"program", "Program to select: a number or a source file.", "FILE|NUM"},
-        {"screen", "Screen shown first (restart, programs, signals, help, ...).", "NAME"},
-        {"screenshot", "Render the screen once, write a PNG to FILE and exit.", "FILE"},
+        {"machine", Text::tr("Machine configuration file (default: built-in demo cell)."), "FILE"},
+        {"programs",
+         Text::tr("Program directory with NuxxYzzz.DAT files (default: demo programs)."), "DIR"},
+        {"process", Text::tr("Station (process) shown first."), "N"},
+        {"program", Text::tr("Program to select: a number or a source file."), "FILE|NUM"},
+        {"screen", Text::tr("Screen shown first (restart, programs, signals, help, ...)."), "NAME"},
+        {"screenshot", Text::tr("Render the screen once, write a PNG to FILE and exit."), "FILE"},
         {"run",
-         "Run the selected program of the station to its end in simulated time before the "
-         "window appears (e.g. a trend for --screenshot)."},
+         Text::tr("Run the selected program of the station to its end in simulated time before "
+                  "the window appears (e.g. a trend for --screenshot).")},
         {"speed",
-         "Simulation speed: 1 (real time, default), 10 (ten times) or max (as fast as "
-         "possible); the Speed key changes it.",
+         Text::tr("Simulation speed: 1 (real time, default), 10 (ten times) or max (as fast as "
+                  "possible); the Speed key changes it."),
          "1|10|max"},
         {"data",
-         "Machine data file (default: $XDG_STATE_HOME/mtc200/machine-data/<cell>.mdt; "
-         "'-' keeps nothing).",
+         Text::tr("Machine data file (default: $XDG_STATE_HOME/mtc200/machine-data/<cell>.mdt; "
+                  "'-' keeps nothing)."),
          "FILE"},
+        {"lang",
+         Text::tr(
+             "Language of the panel: de (German) or en (English). Default: the language chosen "
+             "on the help screen, else the desk's locale (German for de_*)."),
+         "de|en"},
     });
     if (!parser.parse(arguments)) {
         error = parser.errorText();
@@ -47,7 +60,7 @@ bool parsePanelOptions(const QStringList& arguments, PanelOptions& options, QStr
         return true;
     }
     if (!parser.positionalArguments().isEmpty()) {
-        error = "unexpected argument: " + parser.positionalArguments().first();
+        error = Text::tr("unexpected argument: %1").arg(parser.positionalArguments().first());
         return false;
     }
     options.machineFile = parser.value("machine");
@@ -59,7 +72,7 @@ bool parsePanelOptions(const QStringList& arguments, PanelOptions& options, QStr
     options.dataFile = parser.value("data");
     options.dataDefault = !parser.isSet("data");
     if (parser.isSet("data") && options.dataFile.isEmpty()) {
-        error = "--data needs a file (or '-' for none)";
+        error = Text::tr("--data needs a file (or '-' for none)");
         return false;
     }
     if (parser.isSet("speed")) {
@@ -69,7 +82,14 @@ bool parsePanelOptions(const QStringList& arguments, PanelOptions& options, QStr
         } else if (speed == "1" || speed == "10") {
             options.speed = speed.toDouble();
         } else {
-            error = "--speed needs 1, 10 or max, got '" + parser.value("speed") + "'";
+            error = Text::tr("--speed needs 1, 10 or max, got '%1'").arg(parser.value("speed"));
+            return false;
+        }
+    }
+    if (parser.isSet("lang")) {
+        options.language = parser.value("lang").trimmed().toLower();
+        if (options.language != "de" && options.language != "en") {
+            error = Text::tr("--lang needs de or en, got '%1'").arg(parser.value("lang"));
             return false;
         }
     }
@@ -77,11 +97,21 @@ bool parsePanelOptions(const QStringList& arguments, PanelOptions& options, QStr
         bool ok = false;
         options.process = parser.value("process").toInt(&ok);
         if (!ok || options.process < 0) {
-            error = "--process needs a process number >= 0, got '" + parser.value("process") + "'";
+            error = Text::tr("--process needs a process number >= 0, got '%1'")
+                        .arg(parser.value("process"));
             return false;
         }
     }
     return true;
+}
+
+QString languageArgument(const QStringList& arguments) {
+    for (int i = 1; i < arguments.size(); ++i) {
+        if (arguments[i] == "--lang" || arguments[i] == "-lang")
+            return arguments.value(i + 1).trimmed().toLower();
+        if (arguments[i].startsWith("--lang=")) return arguments[i].mid(7).trimmed().toLower();
+    }
+    return {};
 }
 
 bool onlyAsksForHelp(int argc, const char* const* argv) {

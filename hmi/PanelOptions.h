@@ -22,7 +22,13 @@ struct PanelOptions {
     /// PanelOptions (tests) keeps nothing.
     QString dataFile;
     bool dataDefault = false;
+    /// --lang de|en ("" = the desk's setting or locale, docs/DECISIONS.md D-018).
+    QString language;
 };
+
+/// The value of --lang in `arguments` ("" = none), read before the options
+/// are parsed: their own texts (--help, errors) are shown in that language.
+QString languageArgument(const QStringList& arguments);
 
 /// True when the command line asks for --help or --version: main() answers
 /// those with a QCoreApplication, before any display is opened.

@@ -33,7 +33,7 @@ const QString kProgramsScreen = "programs";
 PanelWindow::PanelWindow(CellSession* session, const ScreenRegistry* registry, QWidget* parent)
     : QMainWindow(parent), session_(session), registry_(registry) {
     setObjectName("panelWindow");
-    setWindowTitle("MTC200 panel simulator");
+    setWindowTitle(tr("MTC200 panel simulator"));
     setStyleSheet(panelStyleSheet());
     auto* central = new QWidget(this);
     auto* outer = new QVBoxLayout(central);
@@ -77,10 +77,10 @@ PanelWindow::PanelWindow(CellSession* session, const ScreenRegistry* registry, Q
 bool PanelWindow::askToRunUserCompiler(int slot, const QString& command, const QString& folder) {
     // D-010: the operator sees the whole command before anything of a
     // program folder runs with their rights; No is the default and Escape.
-    QMessageBox box(QMessageBox::Warning, "User compiler from the program folder",
-                    QString("User compiler %1 of the program folder\n%2\nwants to run this "
-                            "command (from its %3):\n\n%4\n\nIt did not come from this desk. "
-                            "Run it now and from now on for this folder?")
+    QMessageBox box(QMessageBox::Warning, tr("User compiler from the program folder"),
+                    tr("User compiler %1 of the program folder\n%2\nwants to run this "
+                       "command (from its %3):\n\n%4\n\nIt did not come from this desk. "
+                       "Run it now and from now on for this folder?")
                         .arg(slot)
                         .arg(folder, "NC_OPTIONS.CFG", command),
                     QMessageBox::Yes | QMessageBox::No, this);

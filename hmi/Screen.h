@@ -1,5 +1,6 @@
 #pragma once
 
+#include <QCoreApplication>
 #include <QVector>
 #include <QWidget>
 #include <functional>

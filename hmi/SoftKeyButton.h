@@ -6,7 +6,9 @@ namespace mtc::hmi {
 
 /// One soft key button: the key name ("F4") on the first line and the label
 /// below it, broken into lines at blanks so that it fits the button's width
-/// (issue 20 §3: no label may be clipped, at any size or dpi). A label that
+/// (issue 20 §3: no label may be clipped, at any size or dpi); a word too
+/// wide for the button breaks at its soft hyphens (U+00AD, e.g. the German
+/// "Programm\u00ADverzeichnis" as "Programm-" / "verzeichnis"). A label that
 /// cannot fit even so (a word wider than the button, more lines than the
 /// button has room for) is shortened with "…" and the full text becomes the
 /// tooltip.

@@ -5,6 +5,7 @@
 
 #include "cnc_core/cell/StationStatus.h"
 #include "hmi/CellSession.h"
+#include "hmi/CoreTerms.h"
 
 namespace mtc::hmi {
 
@@ -45,31 +46,30 @@ void StatusHeader::show(const CellSession& session, int slot, const QString& tit
     const auto& control = session.control(slot);
     const auto& process = session.processConfig(slot);
     station_->setText(
-        QString("Station %1: %2").arg(process.index).arg(QString::fromStdString(process.name)));
-    mode_->setText(QString("Mode: %1").arg(mtc::core::modeName(control.mode())));
+        tr("Station %1: %2").arg(process.index).arg(QString::fromStdString(process.name)));
+    mode_->setText(tr("Mode: %1").arg(modeLabel(control.mode())));
     QString program = control.selectedProgram() == 0
-                          ? QString("Program: none")
-                          : QString("Program: %1").arg(control.selectedProgram());
+                          ? tr("Program: none")
+                          : tr("Program: %1").arg(control.selectedProgram());
     if (!control.currentBlock().empty())
-        program += QString("  Block: %1").arg(QString::fromStdString(control.currentBlock()));
-    const char* state =
-        mtc::core::programStateWord(mtc::core::programStateOf(session.station(slot)));
-    if (*state != '\0') program += QString("  (%1)").arg(state);
+        program += "  " + tr("Block: %1").arg(QString::fromStdString(control.currentBlock()));
+    const QString state = programStateLabel(mtc::core::programStateOf(session.station(slot)));
+    if (!state.isEmpty()) program += QString("  (%1)").arg(state);
     program_->setText(program);
     screen_->setText(title);
-    speed_->setText("Speed " + session.speedText());
+    speed_->setText(tr("Speed %1").arg(session.speedText()));
     // An alarm says what went wrong; a prompt what the operator does next
     // in an ordinary state (single block, programmed stop): not an alarm.
     const QString alarm = QString::fromStdString(control.alarm());
     const QString prompt = QString::fromStdString(control.prompt());
     if (!alarm.isEmpty()) {
-        alarm_->setText(QString("Alarm: %1").arg(alarm));
+        alarm_->setText(tr("Alarm: %1").arg(alarm));
         alarm_->setStyleSheet("color: #ffd000; font-weight: bold;");
     } else if (!prompt.isEmpty()) {
         alarm_->setText(prompt);
         alarm_->setStyleSheet("color: #b8e0ff; font-weight: normal;");
     } else {
-        alarm_->setText("No alarm");
+        alarm_->setText(tr("No alarm"));
         alarm_->setStyleSheet("");
     }
 }

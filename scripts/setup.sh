@@ -9,7 +9,8 @@ here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 preset="${1:-release}"
 
 packages=(build-essential cmake ninja-build qtbase5-dev libvtk9-dev libvtk9-qt-dev
-          libeigen3-dev libgtest-dev libgmock-dev libbenchmark-dev xvfb xauth python3 locales)
+          qttools5-dev qttools5-dev-tools libeigen3-dev libgtest-dev libgmock-dev
+          libbenchmark-dev xvfb xauth python3 locales)
 # fuzzing (libFuzzer), lint (clang-tidy, clang-query) and memcheck: not
 # needed by the build or the suite (docs/FUZZING.md, docs/DECISIONS.md)
 tools=(clang clang-tidy clang-tools valgrind)

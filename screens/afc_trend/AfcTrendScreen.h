@@ -21,7 +21,9 @@ class AfcTrendScreen : public mtc::hmi::Screen {
   public:
     explicit AfcTrendScreen(const mtc::hmi::ScreenContext& context);
     QString screenName() const override { return "afc-trend"; }
-    QString title() const override { return "Adaptive feed trend"; }
+    QString title() const override {
+        return QCoreApplication::translate("ScreenTitle", "Adaptive feed trend");
+    }
     mtc::hmi::SoftKeys softKeys() override;
     void activated() override;
 

@@ -51,7 +51,7 @@ EditorScreen::EditorScreen(const mtc::hmi::ScreenContext& context,
 }
 
 QString EditorScreen::title() const {
-    return "Program editor";
+    return QCoreApplication::translate("ScreenTitle", "Program editor");
 }
 
 void EditorScreen::activated() {

@@ -76,16 +76,16 @@ void ErrorsScreen::activated() {
 
 QString ErrorsScreen::itemText(const ErrorEntry& entry, bool expanded) const {
     QString text = QString("%1 %2  P%3 %4  %5")
-                       .arg(entry.warning ? "W" : "E")
+                       .arg(entry.warning ? tr("W", "warning") : tr("E", "error"))
                        .arg(mtc::hmi::originName(entry.origin), -8)
                        .arg(entry.program, 3, 10, QChar('0'))
                        .arg(entry.block.isEmpty() ? QString("-") : entry.block, -10)
                        .arg(entry.message);
     if (expanded) {
         if (entry.line > 0)
-            text += QString("\n      %1 line %2")
-                        .arg(entry.origin == ErrorOrigin::Mdi ? "MDI input" : "source")
-                        .arg(entry.line);
+            text += "\n      " + (entry.origin == ErrorOrigin::Mdi
+                                      ? tr("MDI input line %1").arg(entry.line)
+                                      : tr("source line %1").arg(entry.line));
         if (!entry.code.isEmpty()) text += "\n      [" + entry.code + "]";
         for (const QString& line : entry.details)
             text += "\n      " + line;
@@ -100,12 +100,12 @@ void ErrorsScreen::rebuild() {
     for (int i = 0; i < entries.size(); ++i)
         list_->addItem(itemText(entries[i], expanded_.contains(i)));
     if (entries.isEmpty()) {
-        hint_->setText("No errors.");
+        hint_->setText(tr("No errors."));
     } else {
-        hint_->setText(QString("%1 %2. Enter: go to the block in the editor; "
-                               "F2: additional text")
-                           .arg(entries.size())
-                           .arg(entries.size() == 1 ? "message" : "messages"));
+        hint_->setText(
+            tr("%n message(s). Enter: go to the block in the editor; F2: additional "
+               "text",
+               nullptr, entries.size()));
         list_->setCurrentRow(qBound(0, row, entries.size() - 1));
     }
 }
@@ -127,7 +127,7 @@ void ErrorsScreen::jumpToSource() {
     if (row < 0 || row >= entries.size()) return;
     const ErrorEntry& entry = entries[row];
     if (entry.program == 0 || !context().session->program(context().process, entry.program)) {
-        hint_->setText("This message belongs to no program of this station.");
+        hint_->setText(tr("This message belongs to no program of this station."));
         return;
     }
     int line = entry.line;
@@ -149,14 +149,14 @@ bool ErrorsScreen::eventFilter(QObject* watched, QEvent* event) {
 
 mtc::hmi::SoftKeys ErrorsScreen::softKeys() {
     mtc::hmi::SoftKeys keys(8);
-    keys[0] = {"Go to\nblock", [this] { jumpToSource(); }};
-    keys[1] = {"Additional\ntext", [this] { toggleDetails(); }};
-    keys[5] = {"Clear\nruntime", [this] {
+    keys[0] = {tr("Go to\nblock"), [this] { jumpToSource(); }};
+    keys[1] = {tr("Additional\ntext"), [this] { toggleDetails(); }};
+    keys[5] = {tr("Clear\nruntime"), [this] {
                    workspace_->errors().clear(ErrorOrigin::Runtime);
                    workspace_->errors().clear(ErrorOrigin::Restart);
                    workspace_->errors().clear(ErrorOrigin::Mdi);
                }};
-    keys[7] = {"Back",
+    keys[7] = {tr("Back"),
                [this] { emit navigateTo(workspace_->editProgram() ? "editor" : "programs"); }};
     return keys;
 }

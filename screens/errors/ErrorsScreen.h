@@ -30,7 +30,9 @@ class ErrorsScreen : public mtc::hmi::Screen {
                  std::shared_ptr<mtc::hmi::ProgramWorkspace> workspace,
                  std::shared_ptr<RestartController> restart);
     QString screenName() const override { return "errors"; }
-    QString title() const override { return "Error display"; }
+    QString title() const override {
+        return QCoreApplication::translate("ScreenTitle", "Error display");
+    }
     mtc::hmi::SoftKeys softKeys() override;
     void activated() override;
 

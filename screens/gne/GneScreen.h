@@ -35,7 +35,9 @@ class GneScreen : public mtc::hmi::Screen {
     GneScreen(const mtc::hmi::ScreenContext& context,
               std::shared_ptr<mtc::hmi::ProgramWorkspace> workspace);
     QString screenName() const override { return "gne"; }
-    QString title() const override { return "Graphical NC editor (GNE)"; }
+    QString title() const override {
+        return QCoreApplication::translate("ScreenTitle", "Graphical NC editor (GNE)");
+    }
     mtc::hmi::SoftKeys softKeys() override;
     void activated() override;
 

@@ -4,6 +4,7 @@
 #include <QVBoxLayout>
 
 #include "hmi/KeyMap.h"
+#include "hmi/PanelLanguage.h"
 #include "screens/help/ScreenHelpTexts.h"
 
 namespace mtc::screens {
@@ -20,6 +21,16 @@ QString softKeyRows(mtc::hmi::Screen& screen) {
                     .arg(QString(keys[i].label).replace('\n', ' ').toHtmlEscaped());
     }
     return rows;
+}
+
+/// A text of the help table in the language of the panel.
+QString helpText(const char* english) {
+    return QCoreApplication::translate("ScreenHelp", english);
+}
+
+/// The name of a panel language in that language (never translated).
+QString nativeName(const QString& language) {
+    return language == "de" ? QString::fromUtf8("Deutsch") : QString("English");
 }
 
 QString row(const QString& keys, const QString& meaning) {
@@ -47,13 +58,13 @@ mtc::hmi::Screen* HelpScreen::stationScreen(const QString& name) const {
 QString HelpScreen::screenHelpHtml(mtc::hmi::Screen& screen) const {
     QString html = QString("<h3>%1</h3>").arg(screen.title().toHtmlEscaped());
     if (const ScreenHelpText* help = screenHelpText(screen.screenName())) {
-        html += "<p>" + QString::fromUtf8(help->purpose).toHtmlEscaped() + "</p>";
+        html += "<p>" + helpText(help->purpose).toHtmlEscaped() + "</p>";
         if (*help->seed)
-            html +=
-                "<p><i>Reproduces: " + QString::fromUtf8(help->seed).toHtmlEscaped() + "</i></p>";
+            html += "<p><i>" + tr("Reproduces: %1").arg(helpText(help->seed)).toHtmlEscaped() +
+                    "</i></p>";
         html += "<table cellpadding='3'>" + softKeyRows(screen);
         for (const HelpKey& key : help->keys)
-            html += row(QString::fromUtf8(key.keys), QString::fromUtf8(key.meaning));
+            html += row(helpText(key.keys), helpText(key.meaning));
         return html + "</table>";
     }
     return html + "<table cellpadding='3'>" + softKeyRows(screen) + "</table>";
@@ -74,12 +85,32 @@ QString HelpScreen::overviewHtml() const {
 QString HelpScreen::helpHtml() const {
     QString html;
     if (mtc::hmi::Screen* screen = stationScreen(subject_)) html += screenHelpHtml(*screen);
-    html += "<h3>Panel keys</h3><table cellpadding='3'>";
+    html += "<h3>" + tr("Panel keys") + "</h3><table cellpadding='3'>";
     for (const auto& a : mtc::hmi::globalKeyAssignments())
         html += row(a.keys, a.meaning);
     html += "</table>";
     if (subject_.isEmpty()) html += overviewHtml();
-    return html;
+    return html + languageHtml();
+}
+
+QString HelpScreen::languageHtml() const {
+    const QString stored = mtc::hmi::storedPanelLanguage();
+    QString html =
+        "<h3>" + tr("Language") + "</h3><p>" +
+        tr("The panel is shown in %1.").arg(nativeName(mtc::hmi::installedPanelLanguage())) + " ";
+    if (stored.isEmpty())
+        html +=
+            tr("This desk has no language of its own: the panel follows the desk's locale "
+               "(German for de_*) unless started with --lang de|en.");
+    else
+        html += tr("This desk starts the panel in %1 (unless started with --lang de|en).")
+                    .arg(nativeName(stored));
+    return html + " " + tr("F6 and F7 store the language for the next start.") + "</p>";
+}
+
+void HelpScreen::storeLanguage(const QString& language) {
+    mtc::hmi::storePanelLanguage(language);
+    text_->setHtml(helpHtml());
 }
 
 void HelpScreen::activated() {
@@ -91,7 +122,11 @@ void HelpScreen::activated() {
 
 mtc::hmi::SoftKeys HelpScreen::softKeys() {
     mtc::hmi::SoftKeys keys(8);
-    keys[7] = {"Back", [this] { emit navigateTo(subject_.isEmpty() ? "menu" : subject_); }};
+    // The desk's language for the next start (D-018); the screens keep the
+    // language they were built in until then.
+    keys[5] = {nativeName("de"), [this] { storeLanguage("de"); }};
+    keys[6] = {nativeName("en"), [this] { storeLanguage("en"); }};
+    keys[7] = {tr("Back"), [this] { emit navigateTo(subject_.isEmpty() ? "menu" : subject_); }};
     return keys;
 }
 

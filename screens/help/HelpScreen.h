@@ -15,7 +15,7 @@ class HelpScreen : public mtc::hmi::Screen {
   public:
     explicit HelpScreen(const mtc::hmi::ScreenContext& context);
     QString screenName() const override { return "help"; }
-    QString title() const override { return "Help"; }
+    QString title() const override { return QCoreApplication::translate("ScreenTitle", "Help"); }
     mtc::hmi::SoftKeys softKeys() override;
     void activated() override;
     /// The text shown (HTML); rebuilt by activated().
@@ -27,6 +27,10 @@ class HelpScreen : public mtc::hmi::Screen {
     mtc::hmi::Screen* stationScreen(const QString& name) const;
     QString screenHelpHtml(mtc::hmi::Screen& screen) const;
     QString overviewHtml() const;
+    /// The language shown, the desk's stored one and how to change it.
+    QString languageHtml() const;
+    /// F6 / F7: stores `language` as the desk's language for the next start.
+    void storeLanguage(const QString& language);
 
     QTextBrowser* text_;
     QString subject_;

@@ -29,7 +29,9 @@ class MachineDataScreen : public mtc::hmi::Screen {
   public:
     explicit MachineDataScreen(const mtc::hmi::ScreenContext& context);
     QString screenName() const override { return "machine-data"; }
-    QString title() const override { return "Machine data"; }
+    QString title() const override {
+        return QCoreApplication::translate("ScreenTitle", "Machine data");
+    }
     mtc::hmi::SoftKeys softKeys() override;
     void activated() override;
 

@@ -19,7 +19,9 @@ class MdiScreen : public mtc::hmi::Screen {
   public:
     explicit MdiScreen(const mtc::hmi::ScreenContext& context);
     QString screenName() const override { return "mdi"; }
-    QString title() const override { return "MDI (manual data input)"; }
+    QString title() const override {
+        return QCoreApplication::translate("ScreenTitle", "MDI (manual data input)");
+    }
     mtc::hmi::SoftKeys softKeys() override;
     void activated() override;
     /// The station's MDI model (input, history).

@@ -17,7 +17,8 @@ MenuScreen::MenuScreen(const mtc::hmi::ScreenContext& context,
                        const mtc::hmi::ScreenRegistry* registry)
     : Screen(context), registry_(registry) {
     auto* layout = new QVBoxLayout(this);
-    layout->addWidget(new QLabel("Select a screen (cursor keys + Enter, or its soft key):", this));
+    layout->addWidget(
+        new QLabel(tr("Select a screen (cursor keys + Enter, or its soft key):"), this));
     list_ = new QListWidget(this);
     list_->setObjectName("menuList");
     layout->addWidget(list_);
@@ -49,7 +50,7 @@ mtc::hmi::SoftKeys MenuScreen::softKeys() {
         keys[i] = {entry ? entry->title : name, [this, name] { emit navigateTo(name); }};
     }
     if (targets_.size() > kKeysPerPage) {
-        keys[7] = {"More…", [this] {
+        keys[7] = {tr("More…"), [this] {
                        const int pages = (targets_.size() + kKeysPerPage - 1) / kKeysPerPage;
                        page_ = (page_ + 1) % pages;
                        emit softKeysChanged();

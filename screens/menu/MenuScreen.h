@@ -18,7 +18,9 @@ class MenuScreen : public mtc::hmi::Screen {
   public:
     MenuScreen(const mtc::hmi::ScreenContext& context, const mtc::hmi::ScreenRegistry* registry);
     QString screenName() const override { return "menu"; }
-    QString title() const override { return "Main menu"; }
+    QString title() const override {
+        return QCoreApplication::translate("ScreenTitle", "Main menu");
+    }
     mtc::hmi::SoftKeys softKeys() override;
     void activated() override;
 

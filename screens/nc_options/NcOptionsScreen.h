@@ -28,7 +28,9 @@ class NcOptionsScreen : public mtc::hmi::Screen {
   public:
     explicit NcOptionsScreen(const mtc::hmi::ScreenContext& context);
     QString screenName() const override { return "nc-options"; }
-    QString title() const override { return "NC options"; }
+    QString title() const override {
+        return QCoreApplication::translate("ScreenTitle", "NC options");
+    }
     mtc::hmi::SoftKeys softKeys() override;
     void activated() override;
 

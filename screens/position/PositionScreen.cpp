@@ -13,6 +13,7 @@
 #include <QWheelEvent>
 
 #include "hmi/CellSession.h"
+#include "hmi/CoreTerms.h"
 
 namespace mtc::screens {
 
@@ -66,7 +67,7 @@ QString percent(double value) {
 }
 
 QString stateText(ProgramState state) {
-    QString text = QString::fromUtf8(mtc::core::programStateName(state));
+    QString text = mtc::hmi::programStateDescription(state);
     if (!text.isEmpty()) text[0] = text[0].toUpper();
     return text;
 }
@@ -117,7 +118,8 @@ PositionScreen::PositionScreen(const mtc::hmi::ScreenContext& context) : Screen(
     axisGrid_->setHorizontalSpacing(12);
     axisGrid_->setVerticalSpacing(2);
     axisGrid_->setContentsMargins(8, 4, 8, 4);
-    const char* headings[kAxisColumns] = {"Axis", "Workpiece", "Machine", "To go"};
+    const QString headings[kAxisColumns] = {tr("Axis"), tr("Workpiece"), tr("Machine"),
+                                            tr("To go")};
     for (int column = 0; column < kAxisColumns; ++column) {
         auto* heading = new QLabel(headings[column], axes);
         heading->setStyleSheet("color: #00307a; font-weight: bold;");
@@ -144,18 +146,18 @@ PositionScreen::PositionScreen(const mtc::hmi::ScreenContext& context) : Screen(
     overrides->addWidget(feedOverride_);
     overrides->addWidget(rapidOverride_);
     feedLayout->addLayout(overrides);
-    side->addWidget(makeBox(this, "Feed and override", feedBox));
+    side->addWidget(makeBox(this, tr("Feed and override"), feedBox));
     spindles_ = makeLabel(this, "spindleValues", normal);
-    side->addWidget(makeBox(this, "Spindles (programmed / actual)", spindles_));
+    side->addWidget(makeBox(this, tr("Spindles (programmed / actual)"), spindles_));
     tool_ = makeLabel(this, "toolValues", normal);
-    side->addWidget(makeBox(this, "Tool and edge", tool_));
+    side->addWidget(makeBox(this, tr("Tool and edge"), tool_));
     middle->addLayout(side, 2);
     outer->addLayout(middle, 3);
 
     auto* bottom = new QHBoxLayout;
     blocks_ = makeLabel(this, "blockList", normal);
     blocks_->setTextFormat(Qt::RichText);
-    bottom->addWidget(makeBox(this, "Program", blocks_), 1);
+    bottom->addWidget(makeBox(this, tr("Program"), blocks_), 1);
     gFunctions_ = makeLabel(this, "gFunctions", normal);
     zeroOffset_ = makeLabel(this, "zeroOffset", normal);
     auto* modal = new QWidget(this);
@@ -163,7 +165,7 @@ PositionScreen::PositionScreen(const mtc::hmi::ScreenContext& context) : Screen(
     modalLayout->setContentsMargins(0, 0, 0, 0);
     modalLayout->addWidget(gFunctions_);
     modalLayout->addWidget(zeroOffset_);
-    bottom->addWidget(makeBox(this, "Active G functions and zero offset", modal), 1);
+    bottom->addWidget(makeBox(this, tr("Active G functions and zero offset"), modal), 1);
     outer->addLayout(bottom, 2);
 
     // Long block texts and offset lines are cut at the right edge instead
@@ -190,28 +192,28 @@ mtc::hmi::SoftKeys PositionScreen::softKeys() {
     mtc::hmi::SoftKeys keys(8);
     if (manualMode()) {
         const double step = jogStep();
-        keys[5] = {step == 0.0 ? QString("Jog step\ncontinuous")
-                               : QString("Jog step\n%1").arg(step, 0, 'f', step < 1 ? 3 : 0),
+        keys[5] = {step == 0.0 ? tr("Jog step\ncontinuous")
+                               : tr("Jog step\n%1").arg(step, 0, 'f', step < 1 ? 3 : 0),
                    [this] {
-                       stepIndex_ = stepIndex_ + 1 >=
-                                            static_cast<int>(mtc::core::kJogIncrements.size())
-                                        ? -1
-                                        : stepIndex_ + 1;
+                       stepIndex_ =
+                           stepIndex_ + 1 >= static_cast<int>(mtc::core::kJogIncrements.size())
+                               ? -1
+                               : stepIndex_ + 1;
                        refresh();
                        emit softKeysChanged();
                    }};
-        keys[6] = {rapid_ ? QString("Rapid\non") : QString("Rapid\noff"), [this] {
+        keys[6] = {rapid_ ? tr("Rapid\non") : tr("Rapid\noff"), [this] {
                        rapid_ = !rapid_;
                        refresh();
                        emit softKeysChanged();
                    }};
     }
-    keys[0] = {"Program\ndirectory", [this] { emit navigateTo("programs"); }};
-    keys[1] = {"Error\ndisplay", [this] { emit navigateTo("errors"); }};
-    keys[2] = {"MDI", [this] { emit navigateTo("mdi"); }};
-    keys[3] = {"Toolpath", [this] { emit navigateTo("toolpath"); }};
-    keys[4] = {"NC program\nrestart", [this] { emit navigateTo("restart"); }};
-    keys[7] = {"Main menu", [this] { emit navigateTo("menu"); }};
+    keys[0] = {tr("Program\ndirectory"), [this] { emit navigateTo("programs"); }};
+    keys[1] = {tr("Error\ndisplay"), [this] { emit navigateTo("errors"); }};
+    keys[2] = {tr("MDI"), [this] { emit navigateTo("mdi"); }};
+    keys[3] = {tr("Toolpath"), [this] { emit navigateTo("toolpath"); }};
+    keys[4] = {tr("NC program\nrestart"), [this] { emit navigateTo("restart"); }};
+    keys[7] = {tr("Main menu"), [this] { emit navigateTo("menu"); }};
     return keys;
 }
 
@@ -251,14 +253,13 @@ void PositionScreen::showJogLine() {
     const QString spindle =
         status_.spindles.empty()
             ? QString()
-            : QString("\n%1: 3 / 4 / 5 = M3 / M4 / M5, PgUp / PgDn = speed \u00b1100 rpm")
-                  .arg(QString::fromStdString(status_.spindles.front().name));
+            : "\n" + tr("%1: 3 / 4 / 5 = M3 / M4 / M5, PgUp / PgDn = speed ±100 rpm")
+                         .arg(QString::fromStdString(status_.spindles.front().name));
     jogLine_->setText(
-        QString("Manual: jog %1 with + / \u2212 (\u2191/\u2193 axis), %2%3; wheel = handwheel%4")
+        tr("Manual: jog %1 with + / − (↑/↓ axis), %2%3; wheel = handwheel%4")
             .arg(QString::fromStdString(status_.axes[static_cast<std::size_t>(row)].name))
-            .arg(step == 0.0 ? QString("continuous while held")
-                             : QString("step %1").arg(step, 0, 'f', 3))
-            .arg(rapid_ ? QString(", rapid") : QString())
+            .arg(step == 0.0 ? tr("continuous while held") : tr("step %1").arg(step, 0, 'f', 3))
+            .arg(rapid_ ? tr(", rapid") : QString())
             .arg(spindle));
 }
 
@@ -292,12 +293,23 @@ bool PositionScreen::spindleKey(int key) {
     if (status_.spindles.empty()) return false;
     SpindleKey spindleKey;
     switch (key) {
-        case Qt::Key_3: spindleKey = SpindleKey::Clockwise; break;
-        case Qt::Key_4: spindleKey = SpindleKey::CounterClockwise; break;
-        case Qt::Key_5: spindleKey = SpindleKey::Stop; break;
-        case Qt::Key_PageUp: spindleKey = SpindleKey::Faster; break;
-        case Qt::Key_PageDown: spindleKey = SpindleKey::Slower; break;
-        default: return false;
+        case Qt::Key_3:
+            spindleKey = SpindleKey::Clockwise;
+            break;
+        case Qt::Key_4:
+            spindleKey = SpindleKey::CounterClockwise;
+            break;
+        case Qt::Key_5:
+            spindleKey = SpindleKey::Stop;
+            break;
+        case Qt::Key_PageUp:
+            spindleKey = SpindleKey::Faster;
+            break;
+        case Qt::Key_PageDown:
+            spindleKey = SpindleKey::Slower;
+            break;
+        default:
+            return false;
     }
     auto& station = context().session->station(context().process);
     station.manualSpindleKey(status_.spindles.front().index, spindleKey);
@@ -362,43 +374,43 @@ void PositionScreen::showAxes() {
 }
 
 void PositionScreen::showFeedsAndSpindles() {
-    const QString unit = status_.feedPerRevolution ? "mm/rev" : "mm/min";
-    feeds_->setText(QString("F programmed %1 %2\nF actual     %3 mm/min")
+    const QString unit = status_.feedPerRevolution ? tr("mm/rev") : QString("mm/min");
+    feeds_->setText(tr("F programmed %1 %2\nF actual     %3 mm/min")
                         .arg(status_.programmedFeed, 9, 'f', status_.feedPerRevolution ? 3 : 1)
                         .arg(unit)
                         .arg(status_.actualFeed, 9, 'f', 1));
-    feedOverride_->setText("Override F " + percent(status_.feedOverride));
+    feedOverride_->setText(tr("Override F %1").arg(percent(status_.feedOverride)));
     rapidOverride_->setText("G0 " + percent(status_.rapidOverride));
     QStringList spindles;
     for (const auto& s : status_.spindles) {
-        QString line = QString("%1 %2 / %3 rpm %4")
+        QString line = tr("%1 %2 / %3 rpm %4")
                            .arg(QString::fromStdString(s.name))
                            .arg(s.programmed, 0, 'f', 0)
                            .arg(s.actual, 0, 'f', 0)
-                           .arg(QString::fromUtf8(mtc::core::spindleTurnName(s.turn)));
-        if (s.rotaryAxisMode) line += " (rotary axis)";
+                           .arg(mtc::hmi::coreTerm(mtc::core::spindleTurnName(s.turn)));
+        if (s.rotaryAxisMode) line += " " + tr("(rotary axis)");
         spindles << line;
     }
-    spindles_->setText(spindles.isEmpty() ? QString("none") : spindles.join('\n'));
+    spindles_->setText(spindles.isEmpty() ? tr("none") : spindles.join('\n'));
     QString tool = QString("T%1  E%2").arg(status_.tool).arg(status_.edge);
     if (status_.tool <= 0)
-        tool = "no tool (T0)";
+        tool = tr("no tool (T0)");
     else if (!status_.edgeKnown)
-        tool += "  (not in the tool list)";
+        tool += "  " + tr("(not in the tool list)");
     else
-        tool += QString("  R %1  position %5\nL1 %2  L2 %3  L3 %4")
-                    .arg(status_.edgeRadius, 0, 'f', 3)
-                    .arg(status_.edgeLength[0], 0, 'f', 3)
-                    .arg(status_.edgeLength[1], 0, 'f', 3)
-                    .arg(status_.edgeLength[2], 0, 'f', 3)
-                    .arg(status_.edgeOrientation);
+        tool += "  " + tr("R %1  position %5\nL1 %2  L2 %3  L3 %4")
+                           .arg(status_.edgeRadius, 0, 'f', 3)
+                           .arg(status_.edgeLength[0], 0, 'f', 3)
+                           .arg(status_.edgeLength[1], 0, 'f', 3)
+                           .arg(status_.edgeLength[2], 0, 'f', 3)
+                           .arg(status_.edgeOrientation);
     tool_->setText(tool);
 }
 
 void PositionScreen::showModal() {
     QStringList cells;
     for (const auto& g : status_.gFunctions)
-        cells << QString("G%1 %2").arg(g.code).arg(QString::fromUtf8(g.topic));
+        cells << QString("G%1 %2").arg(g.code).arg(mtc::hmi::coreTerm(g.topic));
     // Two columns: narrow and low enough for the bottom row at 96 dpi.
     constexpr int kColumns = 2;
     QStringList lines;
@@ -419,20 +431,20 @@ void PositionScreen::showModal() {
                        .arg(QString::fromStdString(status_.axes[i].name))
                        .arg(status_.zeroOffsetValues[i], 0, 'f', 3);
     zeroOffset_->setText(status_.zeroOffset == 53
-                             ? QString("Zero offset G53 (machine coordinates)")
-                             : QString("Zero offset G%1:%2").arg(status_.zeroOffset).arg(offsets));
+                             ? tr("Zero offset G53 (machine coordinates)")
+                             : tr("Zero offset G%1:%2").arg(status_.zeroOffset).arg(offsets));
 }
 
 void PositionScreen::showBlocks() {
     if (status_.program == 0 && status_.blocks.empty()) {
-        blockContext_->setText("No block");
+        blockContext_->setText(tr("No block"));
         blocks_->setText(QString());
         return;
     }
-    QString where = status_.inLibrary ? QString("Program 99 (subroutine library)")
-                                      : QString("Program %1").arg(status_.program);
-    where += status_.callLevel == 0 ? QString(", main level")
-                                    : QString(", call level %1").arg(status_.callLevel);
+    QString where = status_.inLibrary ? tr("Program 99 (subroutine library)")
+                                      : tr("Program %1").arg(status_.program);
+    where +=
+        status_.callLevel == 0 ? tr(", main level") : tr(", call level %1").arg(status_.callLevel);
     blockContext_->setText(where);
     QStringList rows;
     for (const auto& block : status_.blocks) {

@@ -32,7 +32,9 @@ class PositionScreen : public mtc::hmi::Screen {
   public:
     explicit PositionScreen(const mtc::hmi::ScreenContext& context);
     QString screenName() const override { return "position"; }
-    QString title() const override { return "Base screen (position)"; }
+    QString title() const override {
+        return QCoreApplication::translate("ScreenTitle", "Base screen (position)");
+    }
     mtc::hmi::SoftKeys softKeys() override;
     void activated() override;
 
@@ -62,9 +64,9 @@ class PositionScreen : public mtc::hmi::Screen {
     /// The step of one press or detent (mm, degrees); 0 = continuous.
     double jogStep() const;
 
-    int jogRow_ = 0;        ///< row of the axis table jogged
-    int stepIndex_ = 3;     ///< -1 continuous, else kJogIncrements (1 mm)
-    bool rapid_ = false;    ///< jog at rapid traverse
+    int jogRow_ = 0;      ///< row of the axis table jogged
+    int stepIndex_ = 3;   ///< -1 continuous, else kJogIncrements (1 mm)
+    bool rapid_ = false;  ///< jog at rapid traverse
     bool jogKeyHeld_ = false;
     QLabel* jogLine_;
     mtc::core::StationStatus status_;

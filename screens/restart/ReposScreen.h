@@ -23,7 +23,9 @@ class ReposScreen : public mtc::hmi::Screen {
     ReposScreen(const mtc::hmi::ScreenContext& context,
                 std::shared_ptr<RestartController> controller);
     QString screenName() const override { return "repos"; }
-    QString title() const override { return "Repositioning"; }
+    QString title() const override {
+        return QCoreApplication::translate("ScreenTitle", "Repositioning");
+    }
     mtc::hmi::SoftKeys softKeys() override;
     void activated() override;
 

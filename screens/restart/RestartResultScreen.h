@@ -24,7 +24,9 @@ class RestartResultScreen : public mtc::hmi::Screen {
     RestartResultScreen(const mtc::hmi::ScreenContext& context,
                         std::shared_ptr<RestartController> controller);
     QString screenName() const override { return "restart-result"; }
-    QString title() const override { return "NC program restart: result"; }
+    QString title() const override {
+        return QCoreApplication::translate("ScreenTitle", "NC program restart: result");
+    }
     mtc::hmi::SoftKeys softKeys() override;
     void activated() override;
 

@@ -24,7 +24,9 @@ class RestartScreen : public mtc::hmi::Screen {
     RestartScreen(const mtc::hmi::ScreenContext& context,
                   std::shared_ptr<RestartController> controller);
     QString screenName() const override { return "restart"; }
-    QString title() const override { return "NC program restart"; }
+    QString title() const override {
+        return QCoreApplication::translate("ScreenTitle", "NC program restart");
+    }
     mtc::hmi::SoftKeys softKeys() override;
     /// A fresh entry (from another screen of the station) starts a new
     /// selection; coming back from another station keeps it (seed 000, 2.2).

@@ -28,7 +28,9 @@ class RuntimeScreen : public mtc::hmi::Screen {
     RuntimeScreen(const mtc::hmi::ScreenContext& context,
                   std::shared_ptr<mtc::hmi::ProgramWorkspace> workspace);
     QString screenName() const override { return "runtime"; }
-    QString title() const override { return "Runtime program"; }
+    QString title() const override {
+        return QCoreApplication::translate("ScreenTitle", "Runtime program");
+    }
     mtc::hmi::SoftKeys softKeys() override;
     void activated() override;
 

@@ -15,7 +15,9 @@ class SignalsScreen : public mtc::hmi::Screen {
   public:
     explicit SignalsScreen(const mtc::hmi::ScreenContext& context);
     QString screenName() const override { return "signals"; }
-    QString title() const override { return "Interface signals"; }
+    QString title() const override {
+        return QCoreApplication::translate("ScreenTitle", "Interface signals");
+    }
     mtc::hmi::SoftKeys softKeys() override;
     void activated() override;
 

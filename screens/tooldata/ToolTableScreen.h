@@ -19,7 +19,9 @@ class ToolTableScreen : public SetupTableScreen {
   public:
     explicit ToolTableScreen(const mtc::hmi::ScreenContext& context);
     QString screenName() const override { return "tools"; }
-    QString title() const override { return "Tool table"; }
+    QString title() const override {
+        return QCoreApplication::translate("ScreenTitle", "Tool table");
+    }
     mtc::hmi::SoftKeys softKeys() override;
     void activated() override;
 

@@ -17,7 +17,9 @@ class ZeroOffsetScreen : public SetupTableScreen {
   public:
     explicit ZeroOffsetScreen(const mtc::hmi::ScreenContext& context);
     QString screenName() const override { return "offsets"; }
-    QString title() const override { return "Zero offsets"; }
+    QString title() const override {
+        return QCoreApplication::translate("ScreenTitle", "Zero offsets");
+    }
     mtc::hmi::SoftKeys softKeys() override;
     void activated() override;
 

@@ -36,7 +36,9 @@ class ToolpathScreen : public mtc::hmi::Screen {
                    std::shared_ptr<RestartController> restart, std::shared_ptr<ToolpathLink> link);
     ~ToolpathScreen() override;
     QString screenName() const override { return "toolpath"; }
-    QString title() const override { return "Toolpath graphics"; }
+    QString title() const override {
+        return QCoreApplication::translate("ScreenTitle", "Toolpath graphics");
+    }
     mtc::hmi::SoftKeys softKeys() override;
     void activated() override;
 

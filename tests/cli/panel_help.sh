@@ -20,4 +20,23 @@ check "--version exits 0 without a display" "[ $? -eq 0 ]"
 check "--version prints name and version" "grep -Eq '^mtc200-panel [0-9]+\.[0-9]+\.[0-9]+$' '$out/version'"
 timeout 30 "$MTC_PANEL" --help --no-such-option >"$out/x" 2>"$out/err"
 check "--help with an unknown option: exit 2, named" "[ $? -eq 2 ] && grep -q no-such-option '$out/err'"
+
+# The language of the texts (D-018): --lang, else the desk's setting, else
+# the locale's UI language (German for de_*). Qt's own option lines stay English.
+unset LANGUAGE LC_MESSAGES
+export XDG_CONFIG_HOME="$out/config"
+LC_ALL=de_DE.UTF-8 timeout 30 "$MTC_PANEL" --help >"$out/de" 2>&1
+check "German desk: German option texts" "grep -q 'Maschinenkonfigurationsdatei' '$out/de' && grep -q -- '--lang <de|en>' '$out/de'"
+LC_ALL=de_DE.UTF-8 timeout 30 "$MTC_PANEL" --lang en --help >"$out/en" 2>&1
+check "German desk, --lang en: English" "grep -q 'Machine configuration file' '$out/en' && ! grep -q 'Maschinen' '$out/en'"
+LC_ALL=C.UTF-8 LANG=C.UTF-8 timeout 30 "$MTC_PANEL" --help >"$out/c" 2>&1
+check "other desk: English" "grep -q 'Machine configuration file' '$out/c'"
+LC_ALL=C.UTF-8 LANG=C.UTF-8 timeout 30 "$MTC_PANEL" --lang de --help >"$out/c-de" 2>&1
+check "--lang de: German" "grep -q 'Maschinenkonfigurationsdatei' '$out/c-de'"
+mkdir -p "$out/config/MTC200Sim"
+printf '[panel]\nlanguage=de\n' >"$out/config/MTC200Sim/mtc200-panel.conf"
+LC_ALL=C.UTF-8 LANG=C.UTF-8 timeout 30 "$MTC_PANEL" --help >"$out/stored" 2>&1
+check "the desk's stored language: German" "grep -q 'Maschinenkonfigurationsdatei' '$out/stored'"
+QT_QPA_PLATFORM=offscreen timeout 30 "$MTC_PANEL" --lang fr --screenshot "$out/fr.png" >"$out/fr" 2>&1
+check "--lang fr: exit 2, named (in the desk's German)" "[ $? -eq 2 ] && grep -q 'braucht de oder en, nicht .fr.' '$out/fr'"
 exit $fail

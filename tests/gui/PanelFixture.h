@@ -11,6 +11,7 @@
 #include <memory>
 
 #include "hmi/CellSession.h"
+#include "hmi/PanelLanguage.h"
 #include "hmi/PanelStartup.h"
 #include "hmi/PanelWindow.h"
 #include "hmi/ScreenRegistry.h"
@@ -25,6 +26,11 @@ struct PanelFixture {
 
     explicit PanelFixture(const mtc::hmi::PanelOptions& options = {}) {
         QString error;
+        // The panel's language as main() installs it: English unless the
+        // test asks for another (--lang), whatever the desk's locale.
+        if (!mtc::hmi::installPanelTranslation(
+                options.language.isEmpty() ? QString("en") : options.language, error))
+            qFatal("%s", qPrintable(error));
         session = mtc::hmi::createSession(options, error);
         if (!session) qFatal("cannot create the demo cell: %s", qPrintable(error));
         mtc::screens::registerAllScreens(registry);

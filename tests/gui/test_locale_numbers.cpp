@@ -85,7 +85,32 @@ class LocaleNumbersTest : public QObject {
         GermanDeskPanel again(options);
         QCOMPARE(again.value(180, 1, 0, 2), 612.25);
     }
+
+    // The German desk gets the German panel (D-018) and its numbers stay
+    // C-locale text: '.' and no thousands separator on the base screen.
+    void germanPanelShowsNumbersWithAPoint() {
+        mtc::hmi::PanelOptions options;
+        options.language = mtc::hmi::panelLanguageFor("");
+        QCOMPARE(options.language, QString("de"));
+        GermanDeskPanel panel(options);
+        panel.window->showStation(1);
+        QVERIFY(panel.window->showScreen("position"));
+        mtc::hmi::Screen* screen = panel.window->screen(1, "position");
+        QCOMPARE(screen->title(), QString("Grundbild (Position)"));
+        auto* header = panel.window->findChild<QLabel*>("headerMode");
+        QVERIFY2(header->text().startsWith("Betriebsart: "), qPrintable(header->text()));
+        panel.session->station(1).control().press(mtc::core::ControlKey::Manual);
+        panel.session->station(1).jogBy(0, 12.5, false);
+        panel.session->station(1).advance(3600.0);
+        panel.session->notifyChanged(1);
+        const QString shown = screen->findChild<QLabel*>("axisMachine-0")->text();
+        QVERIFY2(shown.startsWith("+12.500"), qPrintable(shown));
+        const QString feeds = screen->findChild<QLabel*>("feedValues")->text();
+        QVERIFY2(feeds.startsWith("F programmiert") && feeds.contains("0.0 mm/min"),
+                 qPrintable(feeds));
+    }
 };
 
 QTEST_MAIN(LocaleNumbersTest)
+#include "hmi/PanelLanguage.h"
 #include "test_locale_numbers.moc"
