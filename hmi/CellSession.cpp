@@ -51,6 +51,7 @@ CellSession::CellSession(mtc::core::MachineConfig config, QObject* parent)
 
 void CellSession::setProgramDirectory(const QString& directory) {
     programDirectory_ = directory;
+    cell_.setProgramDirectory(directory.toStdString());
     ncOptions_->load(directory);
 }
 
@@ -71,6 +72,10 @@ const mtc::core::ProcessConfig& CellSession::processConfig(int slot) const {
 
 void CellSession::addProgram(int slot, int number, const std::string& name, std::string text) {
     cell_.addProgram(slot, number, name, std::move(text));
+    emit processChanged(slot);
+}
+
+void CellSession::announcePrograms(int slot) {
     emit processChanged(slot);
 }
 

@@ -59,6 +59,9 @@ class CellSession : public QObject {
     const mtc::core::AfcTrendRecorder& afcTrend(int slot) const { return station(slot).afcTrend(); }
     const mtc::core::ProgramStore& store() const { return cell_.store(); }
 
+    /// The programs of station `slot` changed in the cell itself (a save of
+    /// the station's compilation): screens refresh.
+    void announcePrograms(int slot);
     /// Parses `text` (knowing the global macro names) and stores it as
     /// program `number` of the station.
     void addProgram(int slot, int number, const std::string& name, std::string text);

@@ -17,7 +17,6 @@
 #include "cli/StateOutput.h"
 #include "cnc_core/afc/AdaptiveFeedControl.h"
 #include "cnc_core/cell/Cell.h"
-#include "cnc_core/language/CompilerWords.h"
 #include "cnc_core/machine_data/MachineDataStore.h"
 
 namespace mtc::cli {
@@ -105,19 +104,21 @@ core::SourceLocation stationLocation(const core::Station& station) {
 RunOutcome execute(core::Station& station, const PreparedRun& run, RunSamples& samples,
                    core::DiagnosticList& diagnostics) {
     RunOutcome outcome;
-    core::Diagnostic keyword;  // the CLI runs sources: the compiler is off
-    if (core::findCompilerWord(*run.program, keyword)) {
-        diagnostics.add(std::move(keyword));
-        outcome.status = core::RunStatus::Error;
-        return outcome;
-    }
     std::size_t reported = 0;  // run diagnostics already in `diagnostics`
     const auto report = [&] {
         const auto& items = station.runDiagnostics().items();
         for (; reported < items.size(); ++reported)
             diagnostics.add(items[reported]);
     };
-    if (!station.selectProgram(run.request.number) || !station.press(core::ControlKey::Start)) {
+    // Start prepares the runtime program as on the panel (the cell's
+    // ProgramCompilation; the CLI's compiler is off, so a compiler keyword
+    // refuses the program): its refusal is in the station's log.
+    const bool selected = station.selectProgram(run.request.number);
+    const std::uint64_t beforeStart = station.diagnostics().lastSerial();
+    if (!selected || !station.press(core::ControlKey::Start)) {
+        station.diagnostics().forEachAfter(beforeStart, [&](const core::LoggedDiagnostic& record) {
+            diagnostics.add(record.diagnostic);
+        });
         report();
         if (!diagnostics.hasErrors())
             diagnostics.error("RUN_START_REFUSED", {run.request.number, "", 0, 0},

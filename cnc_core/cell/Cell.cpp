@@ -32,6 +32,14 @@ Cell::Cell(MachineConfig config)
         stations_.push_back(std::make_unique<Station>(process, store_, services, *machineData_));
         stations_.back()->useNcOptions(&ncOptions_);
     }
+    // Start prepares the runtime program through the station's compilation.
+    for (int slot = 0; slot < stationCount(); ++slot) {
+        compilations_.push_back(std::make_unique<ProgramCompilation>(*this, slot));
+        ProgramCompilation& compilation = *compilations_.back();
+        station(slot).setPreparer([&compilation](int number, DiagnosticList& diagnostics) {
+            return compilation.prepareRuntime(number, diagnostics);
+        });
+    }
 }
 
 Cell::~Cell() = default;

@@ -6,6 +6,7 @@
 #include <utility>
 #include <vector>
 
+#include "cnc_core/cell/ProgramCompilation.h"
 #include "cnc_core/cell/Station.h"
 #include "cnc_core/compiler/NcOptions.h"
 #include "cnc_core/interp/VariableAccess.h"
@@ -37,6 +38,14 @@ class Cell {
     /// Station by slot 0..stationCount()-1 (the order of the configuration).
     Station& station(int slot) { return *stations_.at(static_cast<std::size_t>(slot)); }
     const Station& station(int slot) const { return *stations_.at(static_cast<std::size_t>(slot)); }
+    /// The compile status and runtime programs of station `slot`; the
+    /// station's Start prepares its program through it.
+    ProgramCompilation& compilation(int slot) {
+        return *compilations_.at(static_cast<std::size_t>(slot));
+    }
+    const ProgramCompilation& compilation(int slot) const {
+        return *compilations_.at(static_cast<std::size_t>(slot));
+    }
     /// Slot of process number `process`, or -1.
     int slotOfProcess(int process) const;
 
@@ -53,6 +62,11 @@ class Cell {
     /// next block.
     SetupData& setupData() { return setupData_; }
     const SetupData& setupData() const { return setupData_; }
+
+    /// The folder the programs' files are in ("" = built-in programs, no
+    /// files): the compiler writes .NCO / .ERR beside them.
+    const std::string& programDirectory() const { return programDirectory_; }
+    void setProgramDirectory(std::string directory) { programDirectory_ = std::move(directory); }
 
     /// The NC options (compiler active, user compilers, global macros).
     const NcOptions& ncOptions() const { return ncOptions_; }
@@ -99,7 +113,9 @@ class Cell {
     AxisTransfer axisTransfer_;
     Variables variables_;
     NcOptions ncOptions_;
+    std::string programDirectory_;
     std::vector<std::unique_ptr<Station>> stations_;
+    std::vector<std::unique_ptr<ProgramCompilation>> compilations_;
 };
 
 }  // namespace mtc::core

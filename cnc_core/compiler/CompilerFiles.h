@@ -32,16 +32,16 @@ std::string updatedIdentification(const std::string& identification, const std::
 /// environment variable is set (reproducible files for tests).
 std::string currentStamp();
 
+/// True when the text of an error file holds at least one error ($W); an
+/// error file with notices ($I) only does not make a program status E.
+bool errorFileHasErrors(const std::string& text);
+
 /// Writes the result of a compile of `sourcePath` (a .DAT file): on success
 /// the object file `objectPath` (default: .NCO next to the source) and no
 /// .ERR (an old one is removed; warnings stay in the result, decision
 /// C-014); on errors only the .ERR file (warnings included), and an old
 /// object file is removed (seed 001 ch. 9, 11). Atomic writes. Returns false
 /// with `error` set when a file cannot be written.
-/// True when the text of an error file holds at least one error ($W); an
-/// error file with notices ($I) only does not make a program status E.
-bool errorFileHasErrors(const std::string& text);
-
 bool writeCompileFiles(const std::string& sourcePath, const std::string& objectPath,
                        const CompileResult& result, std::string& errorPath, std::string& error);
 
