@@ -116,8 +116,11 @@ int main(int argc, char** argv) {
             if (!window.grab().save(&buffer, "PNG") ||
                 !mtc::core::writeFileAtomically(options.screenshot.toStdString(), png.toStdString(),
                                                 reason)) {
-                QTextStream(stderr) << "mtc200-panel: cannot write " << options.screenshot << ": "
-                                    << QString::fromStdString(reason) << "\n";
+                QTextStream(stderr)
+                    << "mtc200-panel: "
+                    << QCoreApplication::translate("PanelStartup", "cannot write %1: %2")
+                           .arg(options.screenshot, QString::fromStdString(reason))
+                    << "\n";
                 status = 2;
             }
             app.exit(status);

@@ -1,5 +1,6 @@
 #include "hmi/PanelStartup.h"
 
+#include <QCoreApplication>
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
@@ -19,10 +20,15 @@ namespace mtc::hmi {
 
 namespace {
 
+/// The start-up messages' texts, context "PanelStartup" of the catalogues.
+struct Text {
+    Q_DECLARE_TR_FUNCTIONS(PanelStartup)
+};
+
 bool readFile(const QString& path, QString& text, QString& error) {
     QFile file(path);
     if (!file.open(QIODevice::ReadOnly)) {
-        error = QString("cannot read %1: %2").arg(path, file.errorString());
+        error = Text::tr("cannot read %1: %2").arg(path, file.errorString());
         return false;
     }
     text = QString::fromUtf8(file.readAll());
@@ -54,8 +60,8 @@ void openMachineData(const PanelOptions& options, CellSession& session) {
         if (!fallback.empty() && mtc::core::makeParentDirectories(fallback, error))
             path = QString::fromStdString(fallback);
         else if (!fallback.empty())
-            QTextStream(stderr) << "mtc200-panel: " << QString::fromStdString(error)
-                                << "; machine data is not kept\n";
+            QTextStream(stderr) << "mtc200-panel: " << QString::fromStdString(error) << "; "
+                                << Text::tr("machine data is not kept") << "\n";
     }
     for (const QString& message : session.openMachineDataFile(path))
         QTextStream(stderr) << "mtc200-panel: " << message << "\n";
@@ -87,7 +93,7 @@ std::optional<mtc::core::MachineConfig> loadConfiguration(const PanelOptions& op
         }
         lines << QString::fromStdString(formatDiagnostic(d));
     }
-    error = "the machine configuration is refused:\n" + lines.join("\n");
+    error = Text::tr("the machine configuration is refused:") + "\n" + lines.join("\n");
     return std::nullopt;
 }
 
@@ -109,9 +115,9 @@ std::unique_ptr<CellSession> createSession(const PanelOptions& options, QString&
         const QFileInfo directory(options.programsDir);
         if (!directory.isDir()) {
             error = QString("--programs %1: %2")
-                        .arg(options.programsDir, directory.exists()
-                                                      ? "is a file, not a program directory"
-                                                      : "does not exist");
+                        .arg(options.programsDir,
+                             directory.exists() ? Text::tr("is a file, not a program directory")
+                                                : Text::tr("does not exist"));
             return nullptr;
         }
         // First the NC options: the programs are parsed knowing the global
@@ -131,7 +137,7 @@ bool applyStartOptions(const PanelOptions& options, CellSession& session, PanelW
     if (options.process >= 0) {
         const int slot = session.slotOfProcess(options.process);
         if (slot < 0) {
-            error = QString("the cell has no process %1").arg(options.process);
+            error = Text::tr("the cell has no process %1").arg(options.process);
             return false;
         }
         window.showStation(slot);
@@ -148,19 +154,19 @@ bool applyStartOptions(const PanelOptions& options, CellSession& session, PanelW
             if (!readFile(options.program, text, error)) return false;
             number = numberForProgramFile(session, slot, options.program);
             if (number == 0) {
-                error = "no free program number for " + options.program;
+                error = Text::tr("no free program number for %1").arg(options.program);
                 return false;
             }
             session.addProgram(slot, number, QFileInfo(options.program).fileName().toStdString(),
                                text.toStdString());
         } else if (!session.program(slot, number)) {
-            error = QString("station %1 has no program %2").arg(slot).arg(number);
+            error = Text::tr("station %1 has no program %2").arg(slot).arg(number);
             return false;
         }
         session.selectProgram(slot, number);
     }
     if (!options.screen.isEmpty() && !window.showScreen(options.screen)) {
-        error = "unknown screen '" + options.screen + "'";
+        error = Text::tr("unknown screen '%1'").arg(options.screen);
         return false;
     }
     return true;

@@ -299,6 +299,49 @@
     </message>
 </context>
 <context>
+    <name>PanelStartup</name>
+    <message>
+        <source>cannot write %1: %2</source>
+        <translation>%1 kann nicht geschrieben werden: %2</translation>
+    </message>
+    <message>
+        <source>cannot read %1: %2</source>
+        <translation>%1 kann nicht gelesen werden: %2</translation>
+    </message>
+    <message>
+        <source>machine data is not kept</source>
+        <translation>Maschinendaten werden nicht gespeichert</translation>
+    </message>
+    <message>
+        <source>the machine configuration is refused:</source>
+        <translation>die Maschinenkonfiguration wird abgewiesen:</translation>
+    </message>
+    <message>
+        <source>is a file, not a program directory</source>
+        <translation>ist eine Datei, kein Programmverzeichnis</translation>
+    </message>
+    <message>
+        <source>does not exist</source>
+        <translation>existiert nicht</translation>
+    </message>
+    <message>
+        <source>the cell has no process %1</source>
+        <translation>die Zelle hat keinen Prozess %1</translation>
+    </message>
+    <message>
+        <source>no free program number for %1</source>
+        <translation>keine freie Programmnummer für %1</translation>
+    </message>
+    <message>
+        <source>station %1 has no program %2</source>
+        <translation>Station %1 hat kein Programm %2</translation>
+    </message>
+    <message>
+        <source>unknown screen &apos;%1&apos;</source>
+        <translation>unbekannte Maske &apos;%1&apos;</translation>
+    </message>
+</context>
+<context>
     <name>ScreenHelp</name>
     <message>
         <source>Leads to every screen of the station.</source>
@@ -805,6 +848,238 @@ Er stammt nicht von diesem Arbeitsplatz. Jetzt und künftig für diesen Ordner a
     </message>
 </context>
 <context>
+    <name>mtc::screens::AfcTrendPlot</name>
+    <message>
+        <source>actual S-0-0084</source>
+        <translation>Istwert S-0-0084</translation>
+    </message>
+    <message>
+        <source>machining 007</source>
+        <translation>Bearbeitung 007</translation>
+    </message>
+    <message>
+        <source>limiting 010</source>
+        <translation>Begrenzung 010</translation>
+    </message>
+    <message>
+        <source>minimum 009</source>
+        <translation>Minimum 009</translation>
+    </message>
+    <message>
+        <source>idling 005</source>
+        <translation>Leerlauf 005</translation>
+    </message>
+    <message>
+        <source>max. idling 006</source>
+        <translation>max. Leerlauf 006</translation>
+    </message>
+    <message>
+        <source>stall 014</source>
+        <translation>Blockierung 014</translation>
+    </message>
+    <message>
+        <source>feed reduction 011</source>
+        <translation>Vorschubreduzierung 011</translation>
+    </message>
+    <message>
+        <source>peak 012</source>
+        <translation>Spitze 012</translation>
+    </message>
+    <message>
+        <source>maximum 013</source>
+        <translation>Maximum 013</translation>
+    </message>
+    <message>
+        <source>ITM measuring period</source>
+        <translation>ITM-Messphase</translation>
+    </message>
+    <message>
+        <source>torque %</source>
+        <translation>Moment %</translation>
+    </message>
+    <message>
+        <source>feed red. %</source>
+        <translation>Vorschubred. %</translation>
+    </message>
+    <message>
+        <source>no samples yet: run a program with G26 / ITM</source>
+        <translation>noch keine Messwerte: ein Programm mit G26 / ITM ausführen</translation>
+    </message>
+    <message>
+        <source>simulated time %1 s ... %2 s</source>
+        <translation>simulierte Zeit %1 s ... %2 s</translation>
+    </message>
+</context>
+<context>
+    <name>mtc::screens::AfcTrendScreen</name>
+    <message>
+        <source>No trend yet (adaptive feed control records during feed moves).</source>
+        <translation>Noch kein Verlauf (die adaptive Vorschubregelung zeichnet während Vorschubbewegungen auf).</translation>
+    </message>
+    <message>
+        <source>t = %1 s   %2   actual %3 %   machining %4 %   reduction %5 % (peak %6 %)   feed %7 mm/min   idling 005 %8 % (max. 006 %9 %)   stall 014 %10 %   EXCTH %11   THMIS %12   samples %13</source>
+        <translation>t = %1 s   %2   Ist %3 %   Bearbeitung %4 %   Reduzierung %5 % (Spitze %6 %)   Vorschub %7 mm/min   Leerlauf 005 %8 % (max. 006 %9 %)   Blockierung 014 %10 %   EXCTH %11   THMIS %12   Messwerte %13</translation>
+    </message>
+    <message>
+        <source>G26 on</source>
+        <translation>G26 ein</translation>
+    </message>
+    <message>
+        <source>G26 off</source>
+        <translation>G26 aus</translation>
+    </message>
+    <message>
+        <source>Window: last %1 s</source>
+        <translation>Fenster: letzte %1 s</translation>
+    </message>
+    <message>
+        <source>Window: every sample kept</source>
+        <translation>Fenster: alle Messwerte</translation>
+    </message>
+    <message>
+        <source>PNG export failed: no image</source>
+        <translation>PNG-Export fehlgeschlagen: kein Bild</translation>
+    </message>
+    <message>
+        <source>PNG export failed: %1</source>
+        <translation>PNG-Export fehlgeschlagen: %1</translation>
+    </message>
+    <message>
+        <source>Trend written to %1</source>
+        <translation>Verlauf geschrieben nach %1</translation>
+    </message>
+    <message>
+        <source>CSV export failed: %1</source>
+        <translation>CSV-Export fehlgeschlagen: %1</translation>
+    </message>
+    <message>
+        <source>Window
+10 s</source>
+        <translation>Fenster
+10 s</translation>
+    </message>
+    <message>
+        <source>Window
+60 s</source>
+        <translation>Fenster
+60 s</translation>
+    </message>
+    <message>
+        <source>Window
+all</source>
+        <translation>Fenster
+alles</translation>
+    </message>
+    <message>
+        <source>Export
+PNG</source>
+        <translation>Export
+PNG</translation>
+    </message>
+    <message>
+        <source>Export
+CSV</source>
+        <translation>Export
+CSV</translation>
+    </message>
+    <message>
+        <source>Back</source>
+        <translation>Zurück</translation>
+    </message>
+</context>
+<context>
+    <name>mtc::screens::EditorScreen</name>
+    <message>
+        <source>Program %1 has unsaved changes: Save (F1) or Discard (F7) first</source>
+        <translation>Programm %1 hat ungespeicherte Änderungen: zuerst Speichern (F1) oder Verwerfen (F7)</translation>
+    </message>
+    <message>
+        <source>%1 lines opened in %2 ms</source>
+        <translation>%1 Zeilen in %2 ms geöffnet</translation>
+    </message>
+    <message>
+        <source>Saved (program memory; built-in program without file)</source>
+        <translation>Gespeichert (Programmspeicher; eingebautes Programm ohne Datei)</translation>
+    </message>
+    <message>
+        <source>Saved to %1</source>
+        <translation>Gespeichert in %1</translation>
+    </message>
+    <message>
+        <source>Compiled: %1 object blocks, %2 warnings (Ctrl+E)</source>
+        <translation>Compiliert: %1 Objektsätze, %2 Warnungen (Strg+E)</translation>
+    </message>
+    <message>
+        <source>Compile error: %1 messages (Ctrl+E shows them)</source>
+        <translation>Compilerfehler: %1 Meldungen (Strg+E zeigt sie)</translation>
+    </message>
+    <message>
+        <source>The graphical NC editor (GNE) is not part of this panel yet</source>
+        <translation>Der grafische NC-Editor (GNE) gehört noch nicht zu diesem Bedienfeld</translation>
+    </message>
+    <message>
+        <source>Changes discarded, program reloaded</source>
+        <translation>Änderungen verworfen, Programm neu geladen</translation>
+    </message>
+    <message>
+        <source>(none)</source>
+        <translation>(keines)</translation>
+    </message>
+    <message>
+        <source>Program %1  %2  status [%3]%4</source>
+        <translation>Programm %1  %2  Status [%3]%4</translation>
+    </message>
+    <message>
+        <source>*modified*</source>
+        <translation>*geändert*</translation>
+    </message>
+    <message>
+        <source>Line %1 of %2   Block %3</source>
+        <translation>Zeile %1 von %2   Satz %3</translation>
+    </message>
+    <message>
+        <source>Save</source>
+        <translation>Speichern</translation>
+    </message>
+    <message>
+        <source>Compile</source>
+        <translation>Compi­lieren</translation>
+    </message>
+    <message>
+        <source>Errors
+Ctrl+E</source>
+        <translation>Fehler
+Strg+E</translation>
+    </message>
+    <message>
+        <source>GNE
+Ctrl+W</source>
+        <translation>GNE
+Strg+W</translation>
+    </message>
+    <message>
+        <source>GNE
+(n/a)</source>
+        <translation>GNE
+(fehlt)</translation>
+    </message>
+    <message>
+        <source>Runtime
+program</source>
+        <translation>Laufzeit­programm</translation>
+    </message>
+    <message>
+        <source>Discard
+changes</source>
+        <translation>Änderungen
+verwerfen</translation>
+    </message>
+    <message>
+        <source>Back</source>
+        <translation>Zurück</translation>
+    </message>
+</context>
+<context>
     <name>mtc::screens::ErrorsScreen</name>
     <message>
         <source>W</source>
@@ -863,6 +1138,192 @@ löschen</translation>
     </message>
 </context>
 <context>
+    <name>mtc::screens::GneCanvas</name>
+    <message>
+        <source>Z -&gt;   X ^   (turning, G18)</source>
+        <translation>Z -&gt;   X ^   (Drehen, G18)</translation>
+    </message>
+    <message>
+        <source>X -&gt;   Y ^   (milling, G17)</source>
+        <translation>X -&gt;   Y ^   (Fräsen, G17)</translation>
+    </message>
+    <message>
+        <source>zoom: window</source>
+        <translation>Zoom: Fenster</translation>
+    </message>
+    <message>
+        <source>zoom: contour</source>
+        <translation>Zoom: Kontur</translation>
+    </message>
+    <message>
+        <source>alternatives: %1</source>
+        <translation>Alternativen: %1</translation>
+    </message>
+    <message>
+        <source>solid: solved  dashed: open  dotted: other solution</source>
+        <translation>durchgezogen: gelöst  gestrichelt: offen  gepunktet: andere Lösung</translation>
+    </message>
+</context>
+<context>
+    <name>mtc::screens::GneScreen</name>
+    <message>
+        <source>Save as function call (keywords with parameters)</source>
+        <translation>Als Funktionsaufruf speichern (Schlüsselwörter mit Parametern)</translation>
+    </message>
+    <message>
+        <source>Save as NC blocks (expanded)</source>
+        <translation>Als NC-Sätze speichern (expandiert)</translation>
+    </message>
+    <message>
+        <source>Discard the changes</source>
+        <translation>Änderungen verwerfen</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Name</translation>
+    </message>
+    <message>
+        <source>Value</source>
+        <translation>Wert</translation>
+    </message>
+    <message>
+        <source>Open the GNE from the program editor (GNE soft key on a line)</source>
+        <translation>Den GNE aus dem Programm-Editor öffnen (Softkey GNE auf einer Zeile)</translation>
+    </message>
+    <message>
+        <source>New GNE section before line %1</source>
+        <translation>Neuer GNE-Abschnitt vor Zeile %1</translation>
+    </message>
+    <message>
+        <source>Modifying the GNE section of lines %1-%2</source>
+        <translation>GNE-Abschnitt der Zeilen %1-%2 wird geändert</translation>
+    </message>
+    <message>
+        <source>GNE  program %1  %2%3</source>
+        <translation>GNE  Programm %1  %2%3</translation>
+    </message>
+    <message>
+        <source>new section at line %1</source>
+        <translation>neuer Abschnitt an Zeile %1</translation>
+    </message>
+    <message>
+        <source>lines %1-%2</source>
+        <translation>Zeilen %1-%2</translation>
+    </message>
+    <message>
+        <source>*modified*</source>
+        <translation>*geändert*</translation>
+    </message>
+    <message>
+        <source>Entry cancelled, value unchanged</source>
+        <translation>Eingabe abgebrochen, Wert unverändert</translation>
+    </message>
+    <message>
+        <source>Enter %1 (Enter takes it, Esc cancels, empty = not given)</source>
+        <translation>%1 eingeben (Eingabe übernimmt, Esc bricht ab, leer = nicht angegeben)</translation>
+    </message>
+    <message>
+        <source>%1 - the old value is kept</source>
+        <translation>%1 - der alte Wert bleibt</translation>
+    </message>
+    <message>
+        <source>Value taken</source>
+        <translation>Wert übernommen</translation>
+    </message>
+    <message>
+        <source>Value cleared: the solver computes it</source>
+        <translation>Wert gelöscht: der Löser berechnet ihn</translation>
+    </message>
+    <message>
+        <source>Insert after the selected row: Up/Down, Enter; Esc = back</source>
+        <translation>Nach der gewählten Zeile einfügen: Auf/Ab, Eingabe; Esc = zurück</translation>
+    </message>
+    <message>
+        <source>How shall the section go into the program? Up/Down, Enter; Esc = back</source>
+        <translation>Wie soll der Abschnitt ins Programm? Auf/Ab, Eingabe; Esc = zurück</translation>
+    </message>
+    <message>
+        <source>%1 inserted: enter its values (Enter)</source>
+        <translation>%1 eingefügt: seine Werte eingeben (Eingabe)</translation>
+    </message>
+    <message>
+        <source>Row deleted (Undo: F4 or Ctrl+Z)</source>
+        <translation>Zeile gelöscht (Rückgängig: F4 oder Strg+Z)</translation>
+    </message>
+    <message>
+        <source>The selected element has no other solution</source>
+        <translation>Das gewählte Element hat keine andere Lösung</translation>
+    </message>
+    <message>
+        <source>Solution %1 of %2 chosen</source>
+        <translation>Lösung %1 von %2 gewählt</translation>
+    </message>
+    <message>
+        <source>Undone</source>
+        <translation>Rückgängig gemacht</translation>
+    </message>
+    <message>
+        <source>Redone</source>
+        <translation>Wiederhergestellt</translation>
+    </message>
+    <message>
+        <source>No program: open the GNE from the editor</source>
+        <translation>Kein Programm: den GNE aus dem Editor öffnen</translation>
+    </message>
+    <message>
+        <source>Not saved - the section is not complete: %1</source>
+        <translation>Nicht gespeichert - der Abschnitt ist nicht vollständig: %1</translation>
+    </message>
+    <message>
+        <source>Insert
+Ins</source>
+        <translation>Einfügen
+Einfg</translation>
+    </message>
+    <message>
+        <source>Delete
+row</source>
+        <translation>Zeile
+löschen</translation>
+    </message>
+    <message>
+        <source>Alter-
+native</source>
+        <translation>Alter-
+native</translation>
+    </message>
+    <message>
+        <source>Undo</source>
+        <translation>Rück­gängig</translation>
+    </message>
+    <message>
+        <source>Redo</source>
+        <translation>Wieder­herstellen</translation>
+    </message>
+    <message>
+        <source>Zoom
+contour</source>
+        <translation>Zoom
+Kontur</translation>
+    </message>
+    <message>
+        <source>Zoom
+window</source>
+        <translation>Zoom
+Fenster</translation>
+    </message>
+    <message>
+        <source>Edit
+value</source>
+        <translation>Wert
+bearbeiten</translation>
+    </message>
+    <message>
+        <source>Exit</source>
+        <translation>Ende</translation>
+    </message>
+</context>
+<context>
     <name>mtc::screens::HelpScreen</name>
     <message>
         <source>Reproduces: %1</source>
@@ -898,6 +1359,157 @@ löschen</translation>
     </message>
 </context>
 <context>
+    <name>mtc::screens::MachineDataModel</name>
+    <message>
+        <source>Nr.</source>
+        <translation>Nr.</translation>
+    </message>
+    <message>
+        <source>Title</source>
+        <translation>Titel</translation>
+    </message>
+    <message>
+        <source>Value</source>
+        <translation>Wert</translation>
+    </message>
+    <message>
+        <source>Unit</source>
+        <translation>Einheit</translation>
+    </message>
+</context>
+<context>
+    <name>mtc::screens::MachineDataScreen</name>
+    <message>
+        <source>Page %1  %2    process %3 (%4)</source>
+        <translation>Seite %1  %2    Prozess %3 (%4)</translation>
+    </message>
+    <message>
+        <source>sub %1: %2</source>
+        <translation>Unterseite %1: %2</translation>
+    </message>
+    <message>
+        <source>Page
+-</source>
+        <translation>Seite
+-</translation>
+    </message>
+    <message>
+        <source>Page
++</source>
+        <translation>Seite
++</translation>
+    </message>
+    <message>
+        <source>Edit</source>
+        <translation>Bearbeiten</translation>
+    </message>
+    <message>
+        <source>Back</source>
+        <translation>Zurück</translation>
+    </message>
+    <message>
+        <source>Element %1 is write-protected: only the NC changes it</source>
+        <translation>Element %1 ist schreibgeschützt: nur die NC ändert es</translation>
+    </message>
+    <message>
+        <source>New value of %1 (%2):</source>
+        <translation>Neuer Wert von %1 (%2):</translation>
+    </message>
+    <message>
+        <source>Input cancelled: the value stays %1</source>
+        <translation>Eingabe abgebrochen: der Wert bleibt %1</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a number: %2 stays %3</source>
+        <translation>&apos;%1&apos; ist keine Zahl: %2 bleibt %3</translation>
+    </message>
+    <message>
+        <source>Wrong password: %1 stays %2</source>
+        <translation>Falsches Passwort: %1 bleibt %2</translation>
+    </message>
+    <message>
+        <source>Password for %1:</source>
+        <translation>Passwort für %1:</translation>
+    </message>
+    <message>
+        <source>%1: %2 stays %3</source>
+        <translation>%1: %2 bleibt %3</translation>
+    </message>
+    <message>
+        <source>NOT saved: %1</source>
+        <translation>NICHT gespeichert: %1</translation>
+    </message>
+</context>
+<context>
+    <name>mtc::screens::MdiModel</name>
+    <message>
+        <source>MDI entry held: Start continues</source>
+        <translation>MDI-Eingabe angehalten: Start setzt fort</translation>
+    </message>
+    <message>
+        <source>MDI entry running</source>
+        <translation>MDI-Eingabe läuft</translation>
+    </message>
+    <message>
+        <source>MDI mode: Start runs the input</source>
+        <translation>Betriebsart MDI: Start führt die Eingabe aus</translation>
+    </message>
+    <message>
+        <source>%1 mode: Start does not run this input; select MDI mode with the M key MDI (Shift+F9)</source>
+        <translation>Betriebsart %1: Start führt diese Eingabe nicht aus; Betriebsart MDI mit der M-Taste MDI (Umschalt+F9) wählen</translation>
+    </message>
+</context>
+<context>
+    <name>mtc::screens::MdiScreen</name>
+    <message>
+        <source>NC blocks, one a line (global macros allowed); Start runs them</source>
+        <translation>NC-Sätze, einer je Zeile (globale Makros erlaubt); Start führt sie aus</translation>
+    </message>
+    <message>
+        <source>Position (programmed)</source>
+        <translation>Position (programmiert)</translation>
+    </message>
+    <message>
+        <source>Modal state</source>
+        <translation>Modaler Zustand</translation>
+    </message>
+    <message>
+        <source>MDI input</source>
+        <translation>MDI-Eingabe</translation>
+    </message>
+    <message>
+        <source>Entries run</source>
+        <translation>Ausgeführte Eingaben</translation>
+    </message>
+    <message>
+        <source>Check
+input</source>
+        <translation>Eingabe
+prüfen</translation>
+    </message>
+    <message>
+        <source>Recall
+entry</source>
+        <translation>Eingabe
+zurückholen</translation>
+    </message>
+    <message>
+        <source>Clear
+input</source>
+        <translation>Eingabe
+löschen</translation>
+    </message>
+    <message>
+        <source>Error
+display</source>
+        <translation>Fehler­fenster</translation>
+    </message>
+    <message>
+        <source>Back</source>
+        <translation>Zurück</translation>
+    </message>
+</context>
+<context>
     <name>mtc::screens::MenuScreen</name>
     <message>
         <source>Select a screen (cursor keys + Enter, or its soft key):</source>
@@ -906,6 +1518,175 @@ löschen</translation>
     <message>
         <source>More…</source>
         <translation>Weitere…</translation>
+    </message>
+</context>
+<context>
+    <name>mtc::screens::NcOptionsModel</name>
+    <message>
+        <source>Compiler active:          %1</source>
+        <translation>Compiler aktiv:           %1</translation>
+    </message>
+    <message>
+        <source>Yes</source>
+        <translation>Ja</translation>
+    </message>
+    <message>
+        <source>No</source>
+        <translation>Nein</translation>
+    </message>
+    <message>
+        <source>User compiler %1:        %2%3</source>
+        <translation>Anwender-Compiler %1:    %2%3</translation>
+    </message>
+    <message>
+        <source>[from the folder: asks before it runs]</source>
+        <translation>[aus dem Ordner: fragt vor dem Ausführen]</translation>
+    </message>
+    <message>
+        <source>INDRAMAT compiler:      %1</source>
+        <translation>INDRAMAT-Compiler:      %1</translation>
+    </message>
+    <message>
+        <source>active</source>
+        <translation>aktiv</translation>
+    </message>
+    <message>
+        <source>not active</source>
+        <translation>nicht aktiv</translation>
+    </message>
+    <message>
+        <source>Syntax check:           in the controller at download (NO-005)</source>
+        <translation>Syntaxprüfung:          in der Steuerung beim Download (NO-005)</translation>
+    </message>
+    <message>
+        <source>Global macro  %1</source>
+        <translation>Globales Makro  %1</translation>
+    </message>
+    <message>
+        <source>Global macro  &lt;new&gt;</source>
+        <translation>Globales Makro  &lt;neu&gt;</translation>
+    </message>
+</context>
+<context>
+    <name>mtc::screens::NcOptionsScreen</name>
+    <message>
+        <source>kept in %1 (%2, %3)</source>
+        <translation>gespeichert in %1 (%2, %3)</translation>
+    </message>
+    <message>
+        <source>built-in programs: kept in memory until the panel ends</source>
+        <translation>eingebaute Programme: im Speicher bis zum Ende des Bedienfelds</translation>
+    </message>
+    <message>
+        <source>NC options of the cell, valid for every station and program — %1</source>
+        <translation>NC-Optionen der Zelle, gültig für jede Station und jedes Programm — %1</translation>
+    </message>
+    <message>
+        <source>Change</source>
+        <translation>Ändern</translation>
+    </message>
+    <message>
+        <source>Add
+macro</source>
+        <translation>Makro
+hinzufügen</translation>
+    </message>
+    <message>
+        <source>Delete
+macro</source>
+        <translation>Makro
+löschen</translation>
+    </message>
+    <message>
+        <source>Compiler
+active: Yes</source>
+        <translation>Compiler
+aktiv: Ja</translation>
+    </message>
+    <message>
+        <source>Compiler
+active: No</source>
+        <translation>Compiler
+aktiv: Nein</translation>
+    </message>
+    <message>
+        <source>Back</source>
+        <translation>Zurück</translation>
+    </message>
+    <message>
+        <source>Command of user compiler %1 (empty = none; called as COMMAND INPUT OUTPUT ERRORS, C-011):</source>
+        <translation>Befehl des Anwender-Compilers %1 (leer = keiner; Aufruf als BEFEHL EINGABE AUSGABE FEHLER, C-011):</translation>
+    </message>
+    <message>
+        <source>The INDRAMAT compiler is switched with &quot;Compiler active&quot;.</source>
+        <translation>Der INDRAMAT-Compiler wird mit „Compiler aktiv“ geschaltet.</translation>
+    </message>
+    <message>
+        <source>The syntax check is done by the controller at download; it has no setting (NO-005).</source>
+        <translation>Die Syntaxprüfung macht die Steuerung beim Download; sie hat keine Einstellung (NO-005).</translation>
+    </message>
+    <message>
+        <source>Change the global macro:</source>
+        <translation>Globales Makro ändern:</translation>
+    </message>
+    <message>
+        <source>Compiler active = %1: the compile files of both stations are cleared</source>
+        <translation>Compiler aktiv = %1: die Compilerdateien beider Stationen werden gelöscht</translation>
+    </message>
+    <message>
+        <source>Yes</source>
+        <translation>Ja</translation>
+    </message>
+    <message>
+        <source>No</source>
+        <translation>Nein</translation>
+    </message>
+    <message>
+        <source>New global macro (DEFINE name AS instructions; name &lt;= 20 characters, instructions &lt;= 156):</source>
+        <translation>Neues globales Makro (DEFINE Name AS Anweisungen; Name &lt;= 20 Zeichen, Anweisungen &lt;= 156):</translation>
+    </message>
+    <message>
+        <source>Deleted: %1
+Programs that used the global macros are set to N again.</source>
+        <translation>Gelöscht: %1
+Programme, die die globalen Makros benutzten, stehen wieder auf N.</translation>
+    </message>
+    <message>
+        <source>Input cancelled: the NC options are unchanged</source>
+        <translation>Eingabe abgebrochen: die NC-Optionen sind unverändert</translation>
+    </message>
+    <message>
+        <source>User compiler %1 set: the compile files of both stations are cleared</source>
+        <translation>Anwender-Compiler %1 gesetzt: die Compilerdateien beider Stationen werden gelöscht</translation>
+    </message>
+    <message>
+        <source>Taken: %1
+Programs that use the global macros are set to N again.</source>
+        <translation>Übernommen: %1
+Programme, die die globalen Makros benutzen, stehen wieder auf N.</translation>
+    </message>
+</context>
+<context>
+    <name>mtc::screens::PainterToolpathCanvas</name>
+    <message>
+        <source>Developed plane (G32)</source>
+        <translation>Abgewickelte Ebene (G32)</translation>
+    </message>
+    <message>
+        <source>Toolpath (2D view, no OpenGL)</source>
+        <translation>Bahn (2D-Ansicht, kein OpenGL)</translation>
+    </message>
+    <message>
+        <source>extents %1 x %2 x %3 mm</source>
+        <translation>Ausdehnung %1 x %2 x %3 mm</translation>
+    </message>
+    <message>
+        <source>axial</source>
+        <translation>axial</translation>
+    </message>
+    <message>
+        <source>circ.</source>
+        <translation>Umfang</translation>
     </message>
 </context>
 <context>
@@ -1084,6 +1865,1107 @@ L1 %2  L2 %3  L3 %4</translation>
     <message>
         <source>, call level %1</source>
         <translation>, Aufrufebene %1</translation>
+    </message>
+</context>
+<context>
+    <name>mtc::screens::ReposModel</name>
+    <message>
+        <source>Axis</source>
+        <translation>Achse</translation>
+    </message>
+    <message>
+        <source>Actual position</source>
+        <translation>Istposition</translation>
+    </message>
+    <message>
+        <source>Re-entry point</source>
+        <translation>Wiedereintrittspunkt</translation>
+    </message>
+    <message>
+        <source>Distance</source>
+        <translation>Abstand</translation>
+    </message>
+</context>
+<context>
+    <name>mtc::screens::ReposScreen</name>
+    <message>
+        <source>No NC program restart: the re-entry point is not known.</source>
+        <translation>Kein Satzvorlauf: der Wiedereintrittspunkt ist nicht bekannt.</translation>
+    </message>
+    <message>
+        <source>Jogged %1 by %2</source>
+        <translation>%1 um %2 verfahren</translation>
+    </message>
+    <message>
+        <source>Jogging is possible in manual mode between ADJUST and REPOS only (and within the travel range).</source>
+        <translation>Verfahren ist nur im Handbetrieb zwischen ADJUST und REPOS möglich (und innerhalb des Verfahrbereichs).</translation>
+    </message>
+    <message>
+        <source>Jog −</source>
+        <translation>Tippen −</translation>
+    </message>
+    <message>
+        <source>Jog +</source>
+        <translation>Tippen +</translation>
+    </message>
+    <message>
+        <source>Step
+%1</source>
+        <translation>Schritt
+%1</translation>
+    </message>
+    <message>
+        <source>Back</source>
+        <translation>Zurück</translation>
+    </message>
+    <message>
+        <source>Restart
+result</source>
+        <translation>Satzvorlauf
+Ergebnis</translation>
+    </message>
+</context>
+<context>
+    <name>mtc::screens::RestartController</name>
+    <message>
+        <source>Verification refused: an NC program restart is active.</source>
+        <translation>Prüfung abgewiesen: ein Satzvorlauf ist aktiv.</translation>
+    </message>
+    <message>
+        <source>Verification refused: no program is displayed.</source>
+        <translation>Prüfung abgewiesen: kein Programm angezeigt.</translation>
+    </message>
+    <message>
+        <source>Verification refused: %1</source>
+        <translation>Prüfung abgewiesen: %1</translation>
+    </message>
+    <message>
+        <source>line %1</source>
+        <translation>Zeile %1</translation>
+    </message>
+    <message>
+        <source>No program is selected: select it in the program directory first.</source>
+        <translation>Kein Programm angewählt: zuerst im Programmverzeichnis anwählen.</translation>
+    </message>
+    <message>
+        <source>NC program restart needs automatic mode (seed 000, 2.1).</source>
+        <translation>Der Satzvorlauf braucht die Betriebsart Automatik (Seed 000, 2.1).</translation>
+    </message>
+    <message>
+        <source>A program is active: stop it with Control reset before the restart (seed 000, 2.1).</source>
+        <translation>Ein Programm ist aktiv: vor dem Satzvorlauf mit Steuerung rücksetzen beenden (Seed 000, 2.1).</translation>
+    </message>
+    <message>
+        <source>Select the target block and press Enter (Plane+ follows jumps and calls).</source>
+        <translation>Zielsatz wählen und Eingabe drücken (Ebene+ folgt Sprüngen und Aufrufen).</translation>
+    </message>
+    <message>
+        <source>Space changes the event, Enter follows the jump, Esc aborts.</source>
+        <translation>Leertaste ändert das Ereignis, Eingabe folgt dem Sprung, Esc bricht ab.</translation>
+    </message>
+    <message>
+        <source>Enter follows the jump with the value shown (or a new one), Esc aborts.</source>
+        <translation>Eingabe folgt dem Sprung mit dem angezeigten (oder einem neuen) Wert, Esc bricht ab.</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a program number.</source>
+        <translation>&apos;%1&apos; ist keine Programmnummer.</translation>
+    </message>
+    <message>
+        <source>Aborted: the cursor stays where it was.</source>
+        <translation>Abgebrochen: der Cursor bleibt, wo er war.</translation>
+    </message>
+    <message>
+        <source>An NC program restart is already active: %1</source>
+        <translation>Ein Satzvorlauf ist bereits aktiv: %1</translation>
+    </message>
+    <message>
+        <source>Target accepted: %1</source>
+        <translation>Ziel übernommen: %1</translation>
+    </message>
+    <message>
+        <source>Target accepted. %1</source>
+        <translation>Ziel übernommen. %1</translation>
+    </message>
+    <message>
+        <source>P%1 %2 (line %3)</source>
+        <translation>P%1 %2 (Zeile %3)</translation>
+    </message>
+    <message>
+        <source>NC program restart active (PxxSBPACT = 1): the SPS starts the computing process.</source>
+        <translation>Satzvorlauf aktiv (PxxSBPACT = 1): die SPS startet den Rechenlauf.</translation>
+    </message>
+    <message>
+        <source>Computing process: %1 blocks interpreted. F7 or Control reset aborts.</source>
+        <translation>Rechenlauf: %1 Sätze interpretiert. F7 oder Steuerung rücksetzen bricht ab.</translation>
+    </message>
+    <message>
+        <source>Target block reached after %1 blocks (%2 ms). Check the result, then Start runs ADJUST.</source>
+        <translation>Zielsatz nach %1 Sätzen erreicht (%2 ms). Ergebnis prüfen, dann führt Start ADJUST aus.</translation>
+    </message>
+    <message>
+        <source>ADJUST establishes the machine states.</source>
+        <translation>ADJUST stellt die Maschinenzustände her.</translation>
+    </message>
+    <message>
+        <source>Manual mode: jog the axes near the re-entry point, then Automatic and Start.</source>
+        <translation>Handbetrieb: Achsen in die Nähe des Wiedereintrittspunkts verfahren, dann Automatik und Start.</translation>
+    </message>
+    <message>
+        <source>Automatic mode again: Start continues with REPOS.</source>
+        <translation>Wieder Automatik: Start setzt mit REPOS fort.</translation>
+    </message>
+    <message>
+        <source>REPOS moves the axes back to the re-entry point.</source>
+        <translation>REPOS fährt die Achsen zum Wiedereintrittspunkt zurück.</translation>
+    </message>
+    <message>
+        <source>State re-established: machining continues at the target block.</source>
+        <translation>Zustand wiederhergestellt: die Bearbeitung läuft am Zielsatz weiter.</translation>
+    </message>
+    <message>
+        <source>NC program restart failed.</source>
+        <translation>Satzvorlauf fehlgeschlagen.</translation>
+    </message>
+    <message>
+        <source>NC program restart aborted: every restart signal is reset.</source>
+        <translation>Satzvorlauf abgebrochen: alle Satzvorlauf-Signale sind zurückgesetzt.</translation>
+    </message>
+    <message>
+        <source>Waiting for another process: %1 (%2).</source>
+        <translation>Wartet auf einen anderen Prozess: %1 (%2).</translation>
+    </message>
+    <message>
+        <source>until it requests the axis with GAX</source>
+        <translation>bis er die Achse mit GAX anfordert</translation>
+    </message>
+    <message>
+        <source>until it relinquishes the axis with FAX</source>
+        <translation>bis er die Achse mit FAX freigibt</translation>
+    </message>
+    <message>
+        <source>Held: Start continues.</source>
+        <translation>Angehalten: Start setzt fort.</translation>
+    </message>
+    <message>
+        <source>Single block: held; Start interprets the next block (%1).</source>
+        <translation>Einzelsatz: angehalten; Start interpretiert den nächsten Satz (%1).</translation>
+    </message>
+    <message>
+        <source>No program</source>
+        <translation>Kein Programm</translation>
+    </message>
+    <message>
+        <source>Target P%1 %2 (line %3), program level %4</source>
+        <translation>Ziel P%1 %2 (Zeile %3), Programmebene %4</translation>
+    </message>
+    <message>
+        <source>start P%1 %2%3</source>
+        <translation>Start P%1 %2%3</translation>
+    </message>
+    <message>
+        <source>(last primary block)</source>
+        <translation>(letzter Primärsatz)</translation>
+    </message>
+    <message>
+        <source>start: no primary block before the target</source>
+        <translation>Start: kein Primärsatz vor dem Ziel</translation>
+    </message>
+    <message>
+        <source>event %1:%2=%3</source>
+        <translation>Ereignis %1:%2=%3</translation>
+    </message>
+    <message>
+        <source>changed %1</source>
+        <translation>geändert %1</translation>
+    </message>
+    <message>
+        <source>runs %1</source>
+        <translation>Durchläufe %1</translation>
+    </message>
+</context>
+<context>
+    <name>mtc::screens::RestartResultModel</name>
+    <message>
+        <source>interpolation</source>
+        <translation>Interpolation</translation>
+    </message>
+    <message>
+        <source>plane</source>
+        <translation>Ebene</translation>
+    </message>
+    <message>
+        <source>tool path compensation</source>
+        <translation>Bahnkorrektur</translation>
+    </message>
+    <message>
+        <source>zero offset</source>
+        <translation>Nullpunktversch.</translation>
+    </message>
+    <message>
+        <source>feed type</source>
+        <translation>Vorschubart</translation>
+    </message>
+    <message>
+        <source>dimension</source>
+        <translation>Maßangabe</translation>
+    </message>
+    <message>
+        <source>radius / diameter</source>
+        <translation>Radius / Durchmesser</translation>
+    </message>
+    <message>
+        <source>units</source>
+        <translation>Maßeinheit</translation>
+    </message>
+    <message>
+        <source>surface speed</source>
+        <translation>Schnittgeschwindigkeit</translation>
+    </message>
+    <message>
+        <source>tool length compensation</source>
+        <translation>Werkzeuglängenkorrektur</translation>
+    </message>
+    <message>
+        <source>transformation</source>
+        <translation>Transformation</translation>
+    </message>
+    <message>
+        <source>none (−1)</source>
+        <translation>keine (−1)</translation>
+    </message>
+    <message>
+        <source>empty</source>
+        <translation>leer</translation>
+    </message>
+    <message>
+        <source>G functions (modal groups)</source>
+        <translation>G-Funktionen (modale Gruppen)</translation>
+    </message>
+    <message>
+        <source>G group %1 %2</source>
+        <translation>G-Gruppe %1 %2</translation>
+    </message>
+    <message>
+        <source>Auxiliary functions</source>
+        <translation>Hilfsfunktionen</translation>
+    </message>
+    <message>
+        <source>M group %1</source>
+        <translation>M-Gruppe %1</translation>
+    </message>
+    <message>
+        <source>M(16), last output</source>
+        <translation>M(16), letzte Ausgabe</translation>
+    </message>
+    <message>
+        <source>Q, last output</source>
+        <translation>Q, letzte Ausgabe</translation>
+    </message>
+    <message>
+        <source>S%1 speed</source>
+        <translation>S%1 Drehzahl</translation>
+    </message>
+    <message>
+        <source>T (tool)</source>
+        <translation>T (Werkzeug)</translation>
+    </message>
+    <message>
+        <source>D (correction)</source>
+        <translation>D (Korrektur)</translation>
+    </message>
+    <message>
+        <source>F (feed)</source>
+        <translation>F (Vorschub)</translation>
+    </message>
+    <message>
+        <source>Page 60 (restart and REPOS)</source>
+        <translation>Seite 60 (Satzvorlauf und REPOS)</translation>
+    </message>
+    <message>
+        <source>Rotary axis mode S%1</source>
+        <translation>Rundachsbetrieb S%1</translation>
+    </message>
+    <message>
+        <source>Transformation selection</source>
+        <translation>Transformationsanwahl</translation>
+    </message>
+    <message>
+        <source>T in tool spindle %1</source>
+        <translation>T in Werkzeugspindel %1</translation>
+    </message>
+    <message>
+        <source>Page 61 buffers, oldest first</source>
+        <translation>Seite 61 Puffer, älteste zuerst</translation>
+    </message>
+    <message>
+        <source>M(16) buffer</source>
+        <translation>M(16)-Puffer</translation>
+    </message>
+    <message>
+        <source>Q buffer</source>
+        <translation>Q-Puffer</translation>
+    </message>
+    <message>
+        <source>Verification: normal run vs. computing process, ADJUST and REPOS</source>
+        <translation>Prüfung: normaler Lauf gegen Rechenlauf, ADJUST und REPOS</translation>
+    </message>
+    <message>
+        <source>Not verified yet</source>
+        <translation>Noch nicht geprüft</translation>
+    </message>
+    <message>
+        <source>the restart fails</source>
+        <translation>der Satzvorlauf scheitert</translation>
+    </message>
+    <message>
+        <source>Verification</source>
+        <translation>Prüfung</translation>
+    </message>
+    <message>
+        <source>Every item</source>
+        <translation>Jeder Eintrag</translation>
+    </message>
+    <message>
+        <source>re-established</source>
+        <translation>wiederhergestellt</translation>
+    </message>
+    <message>
+        <source>Computing process: %1</source>
+        <translation>Rechenlauf: %1</translation>
+    </message>
+    <message>
+        <source>After ADJUST / REPOS: %1</source>
+        <translation>Nach ADJUST / REPOS: %1</translation>
+    </message>
+    <message>
+        <source>not verified yet</source>
+        <translation>noch nicht geprüft</translation>
+    </message>
+    <message>
+        <source>%1 differences</source>
+        <translation>%1 Unterschiede</translation>
+    </message>
+    <message>
+        <source>Item</source>
+        <translation>Eintrag</translation>
+    </message>
+    <message>
+        <source>At the target</source>
+        <translation>Am Ziel</translation>
+    </message>
+    <message>
+        <source>Machine before</source>
+        <translation>Maschine vorher</translation>
+    </message>
+</context>
+<context>
+    <name>mtc::screens::RestartResultScreen</name>
+    <message>
+        <source>No computing process yet: select the target on the restart screen.</source>
+        <translation>Noch kein Rechenlauf: das Ziel in der Satzvorlauf-Maske wählen.</translation>
+    </message>
+    <message>
+        <source>Target %1  ·  %2 blocks interpreted  ·  %3 differences  ·  verification: %4</source>
+        <translation>Ziel %1  ·  %2 Sätze interpretiert  ·  %3 Unterschiede  ·  Prüfung: %4</translation>
+    </message>
+    <message>
+        <source>  ·  arrival %1</source>
+        <translation>  ·  Ankunft %1</translation>
+    </message>
+    <message>
+        <source>All
+items</source>
+        <translation>Alle
+Einträge</translation>
+    </message>
+    <message>
+        <source>Differences
+only</source>
+        <translation>Nur Unter­schiede</translation>
+    </message>
+    <message>
+        <source>Verify
+target</source>
+        <translation>Ziel
+prüfen</translation>
+    </message>
+    <message>
+        <source>Back</source>
+        <translation>Zurück</translation>
+    </message>
+    <message>
+        <source>Reposition</source>
+        <translation>Wieder­anfahren</translation>
+    </message>
+    <message>
+        <source>Target
+selection</source>
+        <translation>Ziel
+wählen</translation>
+    </message>
+</context>
+<context>
+    <name>mtc::screens::RestartScreen</name>
+    <message>
+        <source>1  (set)</source>
+        <translation>1  (gesetzt)</translation>
+    </message>
+    <message>
+        <source>0  (not set)</source>
+        <translation>0  (nicht gesetzt)</translation>
+    </message>
+    <message>
+        <source>Plane +</source>
+        <translation>Ebene +</translation>
+    </message>
+    <message>
+        <source>Plane −</source>
+        <translation>Ebene −</translation>
+    </message>
+    <message>
+        <source>Search
+string</source>
+        <translation>Such­begriff</translation>
+    </message>
+    <message>
+        <source>From last
+primary ✓</source>
+        <translation>Ab letztem
+Primärsatz ✓</translation>
+    </message>
+    <message>
+        <source>From last
+primary block</source>
+        <translation>Ab letztem
+Primärsatz</translation>
+    </message>
+    <message>
+        <source>Number
+of runs</source>
+        <translation>Anzahl
+Durchläufe</translation>
+    </message>
+    <message>
+        <source>Accept
+target</source>
+        <translation>Ziel
+übernehmen</translation>
+    </message>
+    <message>
+        <source>Abort</source>
+        <translation>Abbruch</translation>
+    </message>
+    <message>
+        <source>Verify
+program</source>
+        <translation>Programm
+prüfen</translation>
+    </message>
+    <message>
+        <source>Back</source>
+        <translation>Zurück</translation>
+    </message>
+    <message>
+        <source>Search string:</source>
+        <translation>Suchbegriff:</translation>
+    </message>
+    <message>
+        <source>Enter: next occurrence towards the end · Esc: close</source>
+        <translation>Eingabe: nächste Fundstelle zum Ende hin · Esc: schließen</translation>
+    </message>
+    <message>
+        <source>Number of runs (1 … 65536):</source>
+        <translation>Anzahl Durchläufe (1 … 65536):</translation>
+    </message>
+    <message>
+        <source>Enter: set · Esc: keep the old value</source>
+        <translation>Eingabe: setzen · Esc: alten Wert behalten</translation>
+    </message>
+    <message>
+        <source>%1: event %2:%3</source>
+        <translation>%1: Ereignis %2:%3</translation>
+    </message>
+    <message>
+        <source>Space: change · Enter: follow the jump · Esc: abort</source>
+        <translation>Leertaste: ändern · Eingabe: dem Sprung folgen · Esc: abbrechen</translation>
+    </message>
+    <message>
+        <source>%1 %2 = program number:</source>
+        <translation>%1 %2 = Programmnummer:</translation>
+    </message>
+    <message>
+        <source>Enter: jump with this value · Esc: abort</source>
+        <translation>Eingabe: mit diesem Wert springen · Esc: abbrechen</translation>
+    </message>
+    <message>
+        <source>read only (other process) · Enter: jump · Esc: abort</source>
+        <translation>nur lesbar (anderer Prozess) · Eingabe: springen · Esc: abbrechen</translation>
+    </message>
+</context>
+<context>
+    <name>mtc::screens::RestartVerification</name>
+    <message>
+        <source>program %1 cannot be verified</source>
+        <translation>Programm %1 kann nicht geprüft werden</translation>
+    </message>
+    <message>
+        <source>Verifying P%1: %2 arrivals checked …</source>
+        <translation>Prüfe P%1: %2 Ankünfte geprüft …</translation>
+    </message>
+    <message>
+        <source>Verification of P%1: %2</source>
+        <translation>Prüfung von P%1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>mtc::screens::RuntimeScreen</name>
+    <message>
+        <source>Program %1  %2   source  |  runtime program   status [%3]</source>
+        <translation>Programm %1  %2   Quelle  |  Laufzeitprogramm   Status [%3]</translation>
+    </message>
+    <message>
+        <source>(none)</source>
+        <translation>(keines)</translation>
+    </message>
+    <message>
+        <source>%1 marks the blocks tool compensation inserts while the program runs.</source>
+        <translation>%1 markiert die Sätze, die die Werkzeugkorrektur beim Programmlauf einfügt.</translation>
+    </message>
+    <message>
+        <source>%1 blocks inserted by the compiler (N....:0001, ...).</source>
+        <translation>%1 Sätze vom Compiler eingefügt (N....:0001, ...).</translation>
+    </message>
+    <message>
+        <source>The program needs no compilation: it runs as written.</source>
+        <translation>Das Programm braucht keine Compilierung: es läuft, wie es geschrieben ist.</translation>
+    </message>
+    <message>
+        <source>The program has compile errors (error display: Ctrl+E in the editor).</source>
+        <translation>Das Programm hat Compilerfehler (Fehlerfenster: Strg+E im Editor).</translation>
+    </message>
+    <message>
+        <source>The program is not compiled yet (Compile in the editor or the program directory).</source>
+        <translation>Das Programm ist noch nicht compiliert (Compilieren im Editor oder im Programmverzeichnis).</translation>
+    </message>
+    <message>
+        <source>No look-ahead segment (LA_ON ... LA_OFF) in the last compile</source>
+        <translation>Kein Look-ahead-Abschnitt (LA_ON ... LA_OFF) in der letzten Compilierung</translation>
+    </message>
+    <message>
+        <source>LA segment %1 of %2 (line %3): %4 blocks</source>
+        <translation>LA-Abschnitt %1 von %2 (Zeile %3): %4 Sätze</translation>
+    </message>
+    <message>
+        <source>Compile</source>
+        <translation>Compi­lieren</translation>
+    </message>
+    <message>
+        <source>Next LA
+segment</source>
+        <translation>Nächster
+LA-Abschnitt</translation>
+    </message>
+    <message>
+        <source>Editor</source>
+        <translation>Editor</translation>
+    </message>
+    <message>
+        <source>Back</source>
+        <translation>Zurück</translation>
+    </message>
+</context>
+<context>
+    <name>mtc::screens::SetupTableScreen</name>
+    <message>
+        <source>Refused: %1</source>
+        <translation>Abgewiesen: %1</translation>
+    </message>
+    <message>
+        <source>(effective from the next block)</source>
+        <translation>(wirksam ab dem nächsten Satz)</translation>
+    </message>
+    <message>
+        <source>Not kept in a file: the panel runs without a machine data file</source>
+        <translation>Nicht in einer Datei gespeichert: das Bedienfeld läuft ohne Maschinendatendatei</translation>
+    </message>
+</context>
+<context>
+    <name>mtc::screens::SignalModel</name>
+    <message>
+        <source>Signal</source>
+        <translation>Signal</translation>
+    </message>
+    <message>
+        <source>Value</source>
+        <translation>Wert</translation>
+    </message>
+    <message>
+        <source>Step</source>
+        <translation>Schritt</translation>
+    </message>
+</context>
+<context>
+    <name>mtc::screens::SignalsScreen</name>
+    <message>
+        <source>Clear
+log</source>
+        <translation>Protokoll
+löschen</translation>
+    </message>
+    <message>
+        <source>Back</source>
+        <translation>Zurück</translation>
+    </message>
+</context>
+<context>
+    <name>mtc::screens::ToolTableModel</name>
+    <message>
+        <source>T</source>
+        <translation>T</translation>
+    </message>
+    <message>
+        <source>tool number</source>
+        <translation>Werkzeugnummer</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Name</translation>
+    </message>
+    <message>
+        <source>name</source>
+        <translation>Name</translation>
+    </message>
+    <message>
+        <source>E</source>
+        <translation>E</translation>
+    </message>
+    <message>
+        <source>cutting edge</source>
+        <translation>Schneide</translation>
+    </message>
+    <message>
+        <source>R</source>
+        <translation>R</translation>
+    </message>
+    <message>
+        <source>radius R</source>
+        <translation>Radius R</translation>
+    </message>
+    <message>
+        <source>R
+wear</source>
+        <translation>R
+Verschl.</translation>
+    </message>
+    <message>
+        <source>wear of R</source>
+        <translation>Verschleiß von R</translation>
+    </message>
+    <message>
+        <source>L1</source>
+        <translation>L1</translation>
+    </message>
+    <message>
+        <source>length L1</source>
+        <translation>Länge L1</translation>
+    </message>
+    <message>
+        <source>L1
+wear</source>
+        <translation>L1
+Verschl.</translation>
+    </message>
+    <message>
+        <source>wear of L1</source>
+        <translation>Verschleiß von L1</translation>
+    </message>
+    <message>
+        <source>L2</source>
+        <translation>L2</translation>
+    </message>
+    <message>
+        <source>length L2</source>
+        <translation>Länge L2</translation>
+    </message>
+    <message>
+        <source>L2
+wear</source>
+        <translation>L2
+Verschl.</translation>
+    </message>
+    <message>
+        <source>wear of L2</source>
+        <translation>Verschleiß von L2</translation>
+    </message>
+    <message>
+        <source>L3</source>
+        <translation>L3</translation>
+    </message>
+    <message>
+        <source>length L3</source>
+        <translation>Länge L3</translation>
+    </message>
+    <message>
+        <source>L3
+wear</source>
+        <translation>L3
+Verschl.</translation>
+    </message>
+    <message>
+        <source>wear of L3</source>
+        <translation>Verschleiß von L3</translation>
+    </message>
+    <message>
+        <source>Pos</source>
+        <translation>Lage</translation>
+    </message>
+    <message>
+        <source>cutting edge position</source>
+        <translation>Schneidenlage</translation>
+    </message>
+    <message>
+        <source>Corner</source>
+        <translation>Ecke</translation>
+    </message>
+    <message>
+        <source>corner angle</source>
+        <translation>Eckenwinkel</translation>
+    </message>
+    <message>
+        <source>Setting</source>
+        <translation>Einstell.</translation>
+    </message>
+    <message>
+        <source>setting angle</source>
+        <translation>Einstellwinkel</translation>
+    </message>
+</context>
+<context>
+    <name>mtc::screens::ToolTableScreen</name>
+    <message>
+        <source>Tool list of process %1 (%2): %3 edges
+File: %4</source>
+        <translation>Werkzeugliste von Prozess %1 (%2): %3 Schneiden
+Datei: %4</translation>
+    </message>
+    <message>
+        <source>none, changes hold until the panel ends</source>
+        <translation>keine, Änderungen gelten bis zum Ende des Bedienfelds</translation>
+    </message>
+    <message>
+        <source>Edit</source>
+        <translation>Bearbeiten</translation>
+    </message>
+    <message>
+        <source>New tool</source>
+        <translation>Neues Werkzeug</translation>
+    </message>
+    <message>
+        <source>New edge</source>
+        <translation>Neue Schneide</translation>
+    </message>
+    <message>
+        <source>Delete edge</source>
+        <translation>Schneide löschen</translation>
+    </message>
+    <message>
+        <source>Delete tool</source>
+        <translation>Werkzeug löschen</translation>
+    </message>
+    <message>
+        <source>Back</source>
+        <translation>Zurück</translation>
+    </message>
+    <message>
+        <source>The tool list is empty: F2 adds a tool</source>
+        <translation>Die Werkzeugliste ist leer: F2 fügt ein Werkzeug hinzu</translation>
+    </message>
+    <message>
+        <source>The tool and edge numbers are not edited: F2 adds a tool, F3 an edge</source>
+        <translation>Werkzeug- und Schneidennummern werden nicht bearbeitet: F2 fügt ein Werkzeug hinzu, F3 eine Schneide</translation>
+    </message>
+    <message>
+        <source>New %1 of %2 (%3):</source>
+        <translation>Neuer Wert %1 von %2 (%3):</translation>
+    </message>
+    <message>
+        <source>Number of the new tool (1 .. %1):</source>
+        <translation>Nummer des neuen Werkzeugs (1 .. %1):</translation>
+    </message>
+    <message>
+        <source>New cutting edge of T%1 (1 .. %2):</source>
+        <translation>Neue Schneide von T%1 (1 .. %2):</translation>
+    </message>
+    <message>
+        <source>tool T%1 with all its edges</source>
+        <translation>Werkzeug T%1 mit allen Schneiden</translation>
+    </message>
+    <message>
+        <source>edge %1</source>
+        <translation>Schneide %1</translation>
+    </message>
+    <message>
+        <source>Delete %1? Enter deletes, Esc keeps it:</source>
+        <translation>%1 löschen? Eingabe löscht, Esc behält:</translation>
+    </message>
+    <message>
+        <source>Input cancelled: %1 %2 stays %3</source>
+        <translation>Eingabe abgebrochen: %1 %2 bleibt %3</translation>
+    </message>
+    <message>
+        <source>Cancelled: the tool list is unchanged</source>
+        <translation>Abgebrochen: die Werkzeugliste ist unverändert</translation>
+    </message>
+    <message>
+        <source>%1 stays %2</source>
+        <translation>%1 bleibt %2</translation>
+    </message>
+    <message>
+        <source>New tool %1: enter its values</source>
+        <translation>Neues Werkzeug %1: seine Werte eingeben</translation>
+    </message>
+    <message>
+        <source>No tool was added</source>
+        <translation>Kein Werkzeug hinzugefügt</translation>
+    </message>
+    <message>
+        <source>New edge %1: enter its values</source>
+        <translation>Neue Schneide %1: ihre Werte eingeben</translation>
+    </message>
+    <message>
+        <source>No edge was added</source>
+        <translation>Keine Schneide hinzugefügt</translation>
+    </message>
+    <message>
+        <source>%1 deleted</source>
+        <translation>%1 gelöscht</translation>
+    </message>
+    <message>
+        <source>%1 is kept</source>
+        <translation>%1 bleibt erhalten</translation>
+    </message>
+</context>
+<context>
+    <name>mtc::screens::ToolpathModel</name>
+    <message>
+        <source>Program %1 does not exist.</source>
+        <translation>Programm %1 existiert nicht.</translation>
+    </message>
+    <message>
+        <source>No program is selected: select one in the program directory.</source>
+        <translation>Kein Programm angewählt: eines im Programmverzeichnis anwählen.</translation>
+    </message>
+    <message>
+        <source>%1 moves · %2 segments · tolerance %3 mm</source>
+        <translation>%1 Bewegungen · %2 Segmente · Toleranz %3 mm</translation>
+    </message>
+    <message>
+        <source>G32 RI %1: developed plane | cylinder</source>
+        <translation>G32 RI %1: abgewickelte Ebene | Zylinder</translation>
+    </message>
+    <message>
+        <source>path cut at the segment limit</source>
+        <translation>Bahn an der Segmentgrenze abgeschnitten</translation>
+    </message>
+    <message>
+        <source>program end not reached</source>
+        <translation>Programmende nicht erreicht</translation>
+    </message>
+    <message>
+        <source>editor</source>
+        <translation>Editor</translation>
+    </message>
+    <message>
+        <source>restart</source>
+        <translation>Satzvorlauf</translation>
+    </message>
+    <message>
+        <source>P%1 %2 (line %3)</source>
+        <translation>P%1 %2 (Zeile %3)</translation>
+    </message>
+</context>
+<context>
+    <name>mtc::screens::ToolpathScreen</name>
+    <message>
+        <source>MTC_TOOLPATH_2D is set</source>
+        <translation>MTC_TOOLPATH_2D ist gesetzt</translation>
+    </message>
+    <message>
+        <source>the Qt platform &apos;%1&apos; has no OpenGL</source>
+        <translation>die Qt-Plattform &apos;%1&apos; hat kein OpenGL</translation>
+    </message>
+    <message>
+        <source>no OpenGL context can be created</source>
+        <translation>kein OpenGL-Kontext kann erzeugt werden</translation>
+    </message>
+    <message>
+        <source>the OpenGL context cannot be made current</source>
+        <translation>der OpenGL-Kontext kann nicht aktiviert werden</translation>
+    </message>
+    <message>
+        <source>2D view: %1 (the 3D view needs OpenGL).</source>
+        <translation>2D-Ansicht: %1 (die 3D-Ansicht braucht OpenGL).</translation>
+    </message>
+    <message>
+        <source>Tool centre path:</source>
+        <translation>Werkzeugmittelpunktsbahn:</translation>
+    </message>
+    <message>
+        <source>programmed contour (G41/G42, edge, G48)</source>
+        <translation>programmierte Kontur (G41/G42, Schneide, G48)</translation>
+    </message>
+    <message>
+        <source>Linked to the %1</source>
+        <translation>Verknüpft mit: %1</translation>
+    </message>
+    <message>
+        <source>highlighted: %1</source>
+        <translation>hervorgehoben: %1</translation>
+    </message>
+    <message>
+        <source>2D view: %1</source>
+        <translation>2D-Ansicht: %1</translation>
+    </message>
+    <message>
+        <source>View %1</source>
+        <translation>Ansicht %1</translation>
+    </message>
+    <message>
+        <source>isometric</source>
+        <translation>isometrisch</translation>
+    </message>
+    <message>
+        <source>The view could not be turned into a PNG picture.</source>
+        <translation>Die Ansicht konnte nicht in ein PNG-Bild umgewandelt werden.</translation>
+    </message>
+    <message>
+        <source>PNG not written: %1</source>
+        <translation>PNG nicht geschrieben: %1</translation>
+    </message>
+    <message>
+        <source>View written to %1</source>
+        <translation>Ansicht geschrieben nach %1</translation>
+    </message>
+    <message>
+        <source>G17
+view</source>
+        <translation>G17-
+Ansicht</translation>
+    </message>
+    <message>
+        <source>G18
+view</source>
+        <translation>G18-
+Ansicht</translation>
+    </message>
+    <message>
+        <source>G19
+view</source>
+        <translation>G19-
+Ansicht</translation>
+    </message>
+    <message>
+        <source>Iso-
+metric</source>
+        <translation>Iso-
+metrisch</translation>
+    </message>
+    <message>
+        <source>Fit</source>
+        <translation>Einpassen</translation>
+    </message>
+    <message>
+        <source>Export
+PNG</source>
+        <translation>Export
+PNG</translation>
+    </message>
+    <message>
+        <source>Back</source>
+        <translation>Zurück</translation>
+    </message>
+    <message>
+        <source>Restart</source>
+        <translation>Satzvorlauf</translation>
+    </message>
+</context>
+<context>
+    <name>mtc::screens::VelocityPlot</name>
+    <message>
+        <source>path %1 mm, %2 s</source>
+        <translation>Weg %1 mm, %2 s</translation>
+    </message>
+</context>
+<context>
+    <name>mtc::screens::VtkToolpathCanvas</name>
+    <message>
+        <source>extents %1 x %2</source>
+        <translation>Ausdehnung %1 x %2</translation>
+    </message>
+    <message>
+        <source>axial (mm)</source>
+        <translation>axial (mm)</translation>
+    </message>
+    <message>
+        <source>circumference (mm)</source>
+        <translation>Umfang (mm)</translation>
+    </message>
+    <message>
+        <source>Developed plane, G32 RI %1</source>
+        <translation>Abgewickelte Ebene, G32 RI %1</translation>
+    </message>
+    <message>
+        <source>Wrapped on the cylinder RI %1</source>
+        <translation>Auf den Zylinder RI %1 gewickelt</translation>
+    </message>
+    <message>
+        <source>Toolpath P%1</source>
+        <translation>Bahn P%1</translation>
+    </message>
+</context>
+<context>
+    <name>mtc::screens::ZeroOffsetModel</name>
+    <message>
+        <source>Offset</source>
+        <translation>Verschiebung</translation>
+    </message>
+</context>
+<context>
+    <name>mtc::screens::ZeroOffsetScreen</name>
+    <message>
+        <source>Zero offsets of process %1 (%2). Columns are axis definitions (axis: definitions %3)
+File: %4</source>
+        <translation>Nullpunktverschiebungen von Prozess %1 (%2). Spalten sind Achsdefinitionen (Achse: Definitionen %3)
+Datei: %4</translation>
+    </message>
+    <message>
+        <source>none, changes hold until the panel ends</source>
+        <translation>keine, Änderungen gelten bis zum Ende des Bedienfelds</translation>
+    </message>
+    <message>
+        <source>Edit</source>
+        <translation>Bearbeiten</translation>
+    </message>
+    <message>
+        <source>Back</source>
+        <translation>Zurück</translation>
+    </message>
+    <message>
+        <source>Put the cursor on an axis column (cursor right) to change an offset</source>
+        <translation>Cursor auf eine Achsspalte setzen (Cursor rechts), um eine Verschiebung zu ändern</translation>
+    </message>
+    <message>
+        <source>New zero offset %1 (-%2 .. %2 mm, degrees on a rotary axis):</source>
+        <translation>Neue Nullpunktverschiebung %1 (-%2 .. %2 mm, Grad bei einer Rundachse):</translation>
+    </message>
+    <message>
+        <source>%1 stays %2</source>
+        <translation>%1 bleibt %2</translation>
+    </message>
+    <message>
+        <source>Input cancelled: %1 stays %2</source>
+        <translation>Eingabe abgebrochen: %1 bleibt %2</translation>
     </message>
 </context>
 </TS>

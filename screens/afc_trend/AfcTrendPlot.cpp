@@ -168,9 +168,19 @@ void AfcTrendPlot::setSamples(std::vector<mtc::core::AfcTrendSample> samples) {
 }
 
 QStringList AfcTrendPlot::legend() {
-    return {"actual S-0-0084", "machining 007", "limiting 010",        "minimum 009", "idling 005",
-            "max. idling 006", "stall 014",     "feed reduction 011",  "peak 012",    "maximum 013",
-            "PxxS.EXCTH",      "PxxS.THMIS",    "ITM measuring period"};
+    return {tr("actual S-0-0084"),
+            tr("machining 007"),
+            tr("limiting 010"),
+            tr("minimum 009"),
+            tr("idling 005"),
+            tr("max. idling 006"),
+            tr("stall 014"),
+            tr("feed reduction 011"),
+            tr("peak 012"),
+            tr("maximum 013"),
+            "PxxS.EXCTH",
+            "PxxS.THMIS",
+            tr("ITM measuring period")};
 }
 
 std::vector<std::pair<double, double>> AfcTrendPlot::itmPhases() const {
@@ -194,12 +204,12 @@ void AfcTrendPlot::paintEvent(QPaintEvent*) {
     p.fillRect(rect(), Qt::white);
     const Layout l = layoutFor(size(), samples_);
     drawItmPhases(p, l.torque, itmPhases());
-    drawFrame(p, l.torque, "torque %", 5);
-    drawFrame(p, l.feed, "feed red. %", 4);
+    drawFrame(p, l.torque, tr("torque %"), 5);
+    drawFrame(p, l.feed, tr("feed red. %"), 4);
     const double right = width() - kRight;
     p.drawText(QRectF(kLeft, height() - 22.0, right - kLeft, 18), Qt::AlignCenter,
-               samples_.empty() ? QString("no samples yet: run a program with G26 / ITM")
-                                : QString("simulated time %1 s ... %2 s")
+               samples_.empty() ? tr("no samples yet: run a program with G26 / ITM")
+                                : tr("simulated time %1 s ... %2 s")
                                       .arg(l.torque.t0, 0, 'f', 2)
                                       .arg(l.torque.t1, 0, 'f', 2));
     const Pens k;

@@ -29,16 +29,17 @@ std::vector<mtc::core::AfcTrendSample> lastSeconds(const mtc::core::AfcTrendReco
 
 QString statusText(const mtc::core::AfcTrendRecorder& recorder) {
     if (recorder.size() == 0)
-        return "No trend yet (adaptive feed control records during feed moves).";
+        return AfcTrendScreen::tr(
+            "No trend yet (adaptive feed control records during feed moves).");
     const mtc::core::AfcTrendSample& s = recorder.at(recorder.size() - 1);
-    return QString(
+    return AfcTrendScreen::tr(
                "t = %1 s   %2   actual %3 %   machining %4 %   reduction %5 % (peak %6 %)   "
                "feed %7 mm/min   idling 005 %8 % (max. 006 %9 %)   stall 014 %10 %   "
                "EXCTH %11   THMIS %12   samples %13")
         .arg(s.time, 0, 'f', 2)
-        .arg(s.measuringIdle ? "ITM"
-             : s.active      ? "G26 on"
-                             : "G26 off")
+        .arg(s.measuringIdle ? QString("ITM")
+             : s.active      ? AfcTrendScreen::tr("G26 on")
+                             : AfcTrendScreen::tr("G26 off"))
         .arg(s.torqueActual, 0, 'f', 1)
         .arg(s.machiningTorque, 0, 'f', 1)
         .arg(s.feedReduction, 0, 'f', 1)
@@ -94,8 +95,8 @@ void AfcTrendScreen::refresh(bool force) {
 
 void AfcTrendScreen::cycleWindow() {
     windowSeconds_ = windowSeconds_ == 10.0 ? 60.0 : windowSeconds_ == 60.0 ? 0.0 : 10.0;
-    setMessage(windowSeconds_ > 0 ? QString("Window: last %1 s").arg(windowSeconds_)
-                                  : QString("Window: every sample kept"));
+    setMessage(windowSeconds_ > 0 ? tr("Window: last %1 s").arg(windowSeconds_)
+                                  : tr("Window: every sample kept"));
     refresh(true);
     emit softKeysChanged();
 }
@@ -114,13 +115,13 @@ void AfcTrendScreen::exportPng() {
     QByteArray bytes;
     QBuffer buffer(&bytes);
     buffer.open(QIODevice::WriteOnly);
-    if (!plot_->grab().save(&buffer, "PNG")) return setMessage("PNG export failed: no image");
+    if (!plot_->grab().save(&buffer, "PNG")) return setMessage(tr("PNG export failed: no image"));
     const QString path = exportPath("png");
     std::string error;
     if (!mtc::core::writeFileAtomically(path.toStdString(),
                                         std::string_view(bytes.constData(), bytes.size()), error))
-        return setMessage("PNG export failed: " + QString::fromStdString(error));
-    setMessage("Trend written to " + path);
+        return setMessage(tr("PNG export failed: %1").arg(QString::fromStdString(error)));
+    setMessage(tr("Trend written to %1").arg(path));
 }
 
 void AfcTrendScreen::exportCsv() {
@@ -128,19 +129,19 @@ void AfcTrendScreen::exportCsv() {
     std::string error;
     const std::string csv = context().session->afcTrend(context().process).csv();
     if (!mtc::core::writeFileAtomically(path.toStdString(), csv, error))
-        return setMessage("CSV export failed: " + QString::fromStdString(error));
-    setMessage("Trend written to " + path);
+        return setMessage(tr("CSV export failed: %1").arg(QString::fromStdString(error)));
+    setMessage(tr("Trend written to %1").arg(path));
 }
 
 mtc::hmi::SoftKeys AfcTrendScreen::softKeys() {
     mtc::hmi::SoftKeys keys(8);
-    keys[0] = {windowSeconds_ == 10.0   ? "Window\n10 s"
-               : windowSeconds_ == 60.0 ? "Window\n60 s"
-                                        : "Window\nall",
+    keys[0] = {windowSeconds_ == 10.0   ? tr("Window\n10 s")
+               : windowSeconds_ == 60.0 ? tr("Window\n60 s")
+                                        : tr("Window\nall"),
                [this] { cycleWindow(); }};
-    keys[1] = {"Export\nPNG", [this] { exportPng(); }};
-    keys[2] = {"Export\nCSV", [this] { exportCsv(); }};
-    keys[7] = {"Back", [this] { emit navigateTo("menu"); }};
+    keys[1] = {tr("Export\nPNG"), [this] { exportPng(); }};
+    keys[2] = {tr("Export\nCSV"), [this] { exportCsv(); }};
+    keys[7] = {tr("Back"), [this] { emit navigateTo("menu"); }};
     return keys;
 }
 

@@ -61,9 +61,9 @@ void EditorScreen::activated() {
     const bool other = wanted != program_ || (program && program != loadedSource_);
     if (program && other) {
         if (edit_->isModified() && wanted != program_) {
-            showMessage(QString("Program %1 has unsaved changes: Save (F1) or Discard (F7) first")
-                            .arg(program_),
-                        true);
+            showMessage(
+                tr("Program %1 has unsaved changes: Save (F1) or Discard (F7) first").arg(program_),
+                true);
         } else if (!edit_->isModified()) {
             open(wanted);
         }
@@ -88,7 +88,7 @@ void EditorScreen::open(int number) {
     emit cursorLineChanged(program_, edit_->cursorLine());
     workspace_->requestEdit(number, workspace_->editLine());
     updateStatus();
-    showMessage(QString("%1 lines opened in %2 ms").arg(edit_->lineCount()).arg(lastOpenMs_));
+    showMessage(tr("%1 lines opened in %2 ms").arg(edit_->lineCount()).arg(lastOpenMs_));
 }
 
 bool EditorScreen::save() {
@@ -101,8 +101,8 @@ bool EditorScreen::save() {
     loadedSource_ = context().session->program(context().process, program_);
     edit_->setModified(false);
     const QString file = workspace_->filePath(program_, "DAT");
-    showMessage(file.isEmpty() ? "Saved (program memory; built-in program without file)"
-                               : "Saved to " + file);
+    showMessage(file.isEmpty() ? tr("Saved (program memory; built-in program without file)")
+                               : tr("Saved to %1").arg(file));
     return true;
 }
 
@@ -116,13 +116,12 @@ void EditorScreen::compile() {
     }
     const auto result = workspace_->lastResult(program_);
     if (result && result->status == mtc::core::CompileStatus::Compiled)
-        showMessage(QString("Compiled: %1 object blocks, %2 warnings (Ctrl+E)")
+        showMessage(tr("Compiled: %1 object blocks, %2 warnings (Ctrl+E)")
                         .arg(result->objectBlocks)
                         .arg(result->errors.size()));
     else if (result)
-        showMessage(
-            QString("Compile error: %1 messages (Ctrl+E shows them)").arg(result->errors.size()),
-            true);
+        showMessage(tr("Compile error: %1 messages (Ctrl+E shows them)").arg(result->errors.size()),
+                    true);
 }
 
 void EditorScreen::showErrors() {
@@ -139,7 +138,7 @@ bool EditorScreen::gneAvailable() const {
 
 void EditorScreen::openGne() {
     if (!gneAvailable()) {
-        showMessage("The graphical NC editor (GNE) is not part of this panel yet", true);
+        showMessage(tr("The graphical NC editor (GNE) is not part of this panel yet"), true);
         return;
     }
     // The GNE works on the saved program: unsaved changes are saved first.
@@ -152,7 +151,7 @@ void EditorScreen::reload() {
     if (program_ == 0) return;
     edit_->setModified(false);
     open(program_);
-    showMessage("Changes discarded, program reloaded");
+    showMessage(tr("Changes discarded, program reloaded"));
 }
 
 void EditorScreen::showMessage(const QString& text, bool error) {
@@ -162,19 +161,19 @@ void EditorScreen::showMessage(const QString& text, bool error) {
 
 void EditorScreen::updateStatus() {
     const auto program = context().session->program(context().process, program_);
-    const QString name = program ? QString::fromStdString(program->name) : QString("(none)");
+    const QString name = program ? QString::fromStdString(program->name) : tr("(none)");
     const char status = mtc::core::statusLetter(workspace_->status(program_));
-    heading_->setText(QString("Program %1  %2  status [%3]%4")
+    heading_->setText(tr("Program %1  %2  status [%3]%4")
                           .arg(program_, 3, 10, QChar('0'))
                           .arg(name)
                           .arg(QChar(status))
-                          .arg(edit_->isModified() ? "  *modified*" : ""));
+                          .arg(edit_->isModified() ? "  " + tr("*modified*") : QString()));
     updateCursorLine();
 }
 
 void EditorScreen::updateCursorLine() {
     const QString block = edit_->cursorBlockId();
-    status_->setText(QString("Line %1 of %2   Block %3")
+    status_->setText(tr("Line %1 of %2   Block %3")
                          .arg(edit_->cursorLine())
                          .arg(edit_->lineCount())
                          .arg(block.isEmpty() ? "-" : block));
@@ -202,16 +201,16 @@ bool EditorScreen::eventFilter(QObject* watched, QEvent* event) {
 mtc::hmi::SoftKeys EditorScreen::softKeys() {
     mtc::hmi::SoftKeys keys(8);
     const bool open = program_ != 0 && !edit_->loading();
-    keys[0] = {"Save", [this] { save(); }, open};
-    keys[1] = {"Compile", [this] { compile(); }, open && workspace_->compilerActive()};
-    keys[2] = {"Errors\nCtrl+E", [this] { showErrors(); }};
-    keys[3] = {gneAvailable() ? "GNE\nCtrl+W" : "GNE\n(n/a)", [this] { openGne(); }};
-    keys[4] = {"Runtime\nprogram", [this] {
+    keys[0] = {tr("Save"), [this] { save(); }, open};
+    keys[1] = {tr("Compile"), [this] { compile(); }, open && workspace_->compilerActive()};
+    keys[2] = {tr("Errors\nCtrl+E"), [this] { showErrors(); }};
+    keys[3] = {gneAvailable() ? tr("GNE\nCtrl+W") : tr("GNE\n(n/a)"), [this] { openGne(); }};
+    keys[4] = {tr("Runtime\nprogram"), [this] {
                    workspace_->requestEdit(program_, 0);
                    emit navigateTo("runtime");
                }};
-    keys[6] = {"Discard\nchanges", [this] { reload(); }, open && edit_->isModified()};
-    keys[7] = {"Back", [this] { emit navigateTo("programs"); }};
+    keys[6] = {tr("Discard\nchanges"), [this] { reload(); }, open && edit_->isModified()};
+    keys[7] = {tr("Back"), [this] { emit navigateTo("programs"); }};
     return keys;
 }
 

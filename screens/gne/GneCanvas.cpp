@@ -247,14 +247,14 @@ void GneCanvas::drawLegend(QPainter& painter) const {
                 ? 0
                 : model_->rows()[static_cast<std::size_t>(model_->currentRow())].item) ==
         gne::GnePlane::Turning;
-    QString text = turning ? "Z ->   X ^   (turning, G18)" : "X ->   Y ^   (milling, G17)";
-    text += zoomToWindow_ ? "   zoom: window" : "   zoom: contour";
+    QString text = turning ? tr("Z ->   X ^   (turning, G18)") : tr("X ->   Y ^   (milling, G17)");
+    text += "   " + (zoomToWindow_ ? tr("zoom: window") : tr("zoom: contour"));
     if (zoom_ != 1.0) text += QString(" x%1").arg(zoom_, 0, 'g', 3);
     const int alternatives = model_->alternativeCount();
-    if (alternatives > 1) text += QString("   alternatives: %1").arg(alternatives);
+    if (alternatives > 1) text += "   " + tr("alternatives: %1").arg(alternatives);
     painter.drawText(QRect(6, height() - 20, width() - 12, 18), Qt::AlignLeft, text);
     painter.drawText(QRect(6, 2, width() - 12, 18), Qt::AlignRight,
-                     "solid: solved  dashed: open  dotted: other solution");
+                     tr("solid: solved  dashed: open  dotted: other solution"));
 }
 
 }  // namespace mtc::screens

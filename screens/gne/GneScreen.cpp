@@ -17,9 +17,11 @@ namespace mtc::screens {
 
 namespace {
 const QString kEditorScreen = "editor";
-const char* kExitKeywords = "Save as function call (keywords with parameters)";
-const char* kExitBlocks = "Save as NC blocks (expanded)";
-const char* kExitDiscard = "Discard the changes";
+const char* kExitKeywords = QT_TRANSLATE_NOOP("mtc::screens::GneScreen",
+                                              "Save as function call (keywords with parameters)");
+const char* kExitBlocks =
+    QT_TRANSLATE_NOOP("mtc::screens::GneScreen", "Save as NC blocks (expanded)");
+const char* kExitDiscard = QT_TRANSLATE_NOOP("mtc::screens::GneScreen", "Discard the changes");
 
 QString q(const std::string& s) {
     return QString::fromStdString(s);
@@ -37,7 +39,7 @@ GneScreen::GneScreen(const mtc::hmi::ScreenContext& context,
     rows_->installEventFilter(this);
     fields_ = new QTableWidget(0, 2, this);
     fields_->setObjectName("gneFields");
-    fields_->setHorizontalHeaderLabels({"Name", "Value"});
+    fields_->setHorizontalHeaderLabels({tr("Name"), tr("Value")});
     fields_->verticalHeader()->hide();
     fields_->horizontalHeader()->setStretchLastSection(true);
     fields_->setEditTriggers(QAbstractItemView::NoEditTriggers);
@@ -103,7 +105,7 @@ void GneScreen::activated() {
     const auto program = context().session->program(context().process, wanted);
     if (!program) {
         program_ = 0;
-        showMessage("Open the GNE from the program editor (GNE soft key on a line)", true);
+        showMessage(tr("Open the GNE from the program editor (GNE soft key on a line)"), true);
         refresh();
         return;
     }
@@ -121,8 +123,8 @@ void GneScreen::openOn(int number, const std::string& programText, int line) {
     closeChooser();
     closeInput();
     canvas_->setZoomToWindow(true);
-    showMessage(model_.isNew() ? QString("New GNE section before line %1").arg(model_.spliceLine())
-                               : QString("Modifying the GNE section of lines %1-%2")
+    showMessage(model_.isNew() ? tr("New GNE section before line %1").arg(model_.spliceLine())
+                               : tr("Modifying the GNE section of lines %1-%2")
                                      .arg(model_.firstLine())
                                      .arg(model_.lastLine()));
     refresh();
@@ -130,12 +132,11 @@ void GneScreen::openOn(int number, const std::string& programText, int line) {
 
 void GneScreen::refresh() {
     heading_->setText(
-        QString("GNE  program %1  %2%3")
+        tr("GNE  program %1  %2%3")
             .arg(program_, 3, 10, QChar('0'))
-            .arg(model_.isNew()
-                     ? QString("new section at line %1").arg(model_.spliceLine())
-                     : QString("lines %1-%2").arg(model_.firstLine()).arg(model_.lastLine()))
-            .arg(model_.modified() ? "  *modified*" : ""));
+            .arg(model_.isNew() ? tr("new section at line %1").arg(model_.spliceLine())
+                                : tr("lines %1-%2").arg(model_.firstLine()).arg(model_.lastLine()))
+            .arg(model_.modified() ? "  " + tr("*modified*") : QString()));
     const QSignalBlocker block(rows_);
     rows_->clear();
     for (int row = 0; row < static_cast<int>(model_.rows().size()); ++row)
@@ -247,7 +248,7 @@ bool GneScreen::inputKey(int key) {
     }
     if (key == Qt::Key_Escape) {
         closeInput();
-        showMessage("Entry cancelled, value unchanged");
+        showMessage(tr("Entry cancelled, value unchanged"));
         return true;
     }
     return false;
@@ -258,7 +259,7 @@ void GneScreen::startInput(const QString& initial) {
     input_->setText(initial);
     input_->setEnabled(true);
     input_->setFocus();
-    showMessage(QString("Enter %1 (Enter takes it, Esc cancels, empty = not given)")
+    showMessage(tr("Enter %1 (Enter takes it, Esc cancels, empty = not given)")
                     .arg(fields_->item(fields_->currentRow(), 0)->text()));
 }
 
@@ -266,7 +267,7 @@ void GneScreen::applyInput() {
     const int index = fields_->currentRow();
     std::string error;
     if (!model_.setField(index, input_->text().toStdString(), error)) {
-        showMessage(q(error) + " - the old value is kept", true);
+        showMessage(tr("%1 - the old value is kept").arg(q(error)), true);
         input_->selectAll();
         return;  // the entry stays open for a correction
     }
@@ -275,7 +276,7 @@ void GneScreen::applyInput() {
     const int next = std::min(index + 1, fields_->rowCount() - 1);
     fields_->setFocus();
     fields_->setCurrentCell(next, 1);
-    showMessage("Value taken");
+    showMessage(tr("Value taken"));
 }
 
 void GneScreen::closeInput() {
@@ -287,14 +288,14 @@ void GneScreen::closeInput() {
 void GneScreen::clearField() {
     std::string error;
     if (!model_.setField(fields_->currentRow(), "", error)) {
-        showMessage(q(error) + " - the old value is kept", true);
+        showMessage(tr("%1 - the old value is kept").arg(q(error)), true);
         return;
     }
     const int row = fields_->currentRow();
     refresh();
     fields_->setFocus();
     fields_->setCurrentCell(row, 1);
-    showMessage("Value cleared: the solver computes it");
+    showMessage(tr("Value cleared: the solver computes it"));
 }
 
 void GneScreen::openChooser(Chooser kind) {
@@ -303,10 +304,10 @@ void GneScreen::openChooser(Chooser kind) {
     if (kind == Chooser::Insert) {
         for (const std::string& c : model_.insertChoices())
             choices_->addItem(q(c));
-        showMessage("Insert after the selected row: Up/Down, Enter; Esc = back");
+        showMessage(tr("Insert after the selected row: Up/Down, Enter; Esc = back"));
     } else {
-        choices_->addItems({kExitKeywords, kExitBlocks, kExitDiscard});
-        showMessage("How shall the section go into the program? Up/Down, Enter; Esc = back");
+        choices_->addItems({tr(kExitKeywords), tr(kExitBlocks), tr(kExitDiscard)});
+        showMessage(tr("How shall the section go into the program? Up/Down, Enter; Esc = back"));
     }
     choices_->setCurrentRow(0);
     choices_->show();
@@ -341,8 +342,8 @@ void GneScreen::choose() {
     const Chooser kind = chooser_;
     closeChooser();
     if (kind == Chooser::Insert) return insertChoice(choice.toStdString());
-    if (choice == kExitKeywords) return finish(GneOutput::FunctionCall);
-    if (choice == kExitBlocks) return finish(GneOutput::NcBlocks);
+    if (choice == tr(kExitKeywords)) return finish(GneOutput::FunctionCall);
+    if (choice == tr(kExitBlocks)) return finish(GneOutput::NcBlocks);
     discard();
 }
 
@@ -350,19 +351,19 @@ void GneScreen::insertChoice(const std::string& choice) {
     std::string error;
     if (!model_.insert(choice, error)) return showMessage(q(error), true);
     refresh();
-    showMessage(q(choice) + " inserted: enter its values (Enter)");
+    showMessage(tr("%1 inserted: enter its values (Enter)").arg(q(choice)));
 }
 
 void GneScreen::deleteRow() {
     std::string error;
     if (!model_.removeCurrent(error)) return showMessage(q(error), true);
     refresh();
-    showMessage("Row deleted (Undo: F4 or Ctrl+Z)");
+    showMessage(tr("Row deleted (Undo: F4 or Ctrl+Z)"));
 }
 
 void GneScreen::nextAlternative() {
     if (!model_.nextAlternative()) {
-        showMessage("The selected element has no other solution", true);
+        showMessage(tr("The selected element has no other solution"), true);
         return;
     }
     refresh();
@@ -370,15 +371,15 @@ void GneScreen::nextAlternative() {
     const auto& e = model_.items()[static_cast<std::size_t>(row.item)]
                         .contour.elements[static_cast<std::size_t>(row.element)];
     showMessage(
-        QString("Solution %1 of %2 chosen").arg(e.alternative + 1).arg(model_.alternativeCount()));
+        tr("Solution %1 of %2 chosen").arg(e.alternative + 1).arg(model_.alternativeCount()));
 }
 
 void GneScreen::undo() {
-    if (model_.undo()) refresh(), showMessage("Undone");
+    if (model_.undo()) refresh(), showMessage(tr("Undone"));
 }
 
 void GneScreen::redo() {
-    if (model_.redo()) refresh(), showMessage("Redone");
+    if (model_.redo()) refresh(), showMessage(tr("Redone"));
 }
 
 void GneScreen::toggleZoom() {
@@ -387,12 +388,12 @@ void GneScreen::toggleZoom() {
 }
 
 void GneScreen::finish(GneOutput output) {
-    if (program_ == 0) return showMessage("No program: open the GNE from the editor", true);
+    if (program_ == 0) return showMessage(tr("No program: open the GNE from the editor"), true);
     if (output == GneOutput::FunctionCall) {
         if (const std::string open = model_.sectionProblems(); !open.empty())
-            return showMessage(
-                "Not saved - the section is not complete: " + q(open.substr(0, open.find('\n'))),
-                true);
+            return showMessage(tr("Not saved - the section is not complete: %1")
+                                   .arg(q(open.substr(0, open.find('\n')))),
+                               true);
     }
     std::string text, problem;
     if (!model_.output(output, text, problem)) return showMessage(q(problem), true);
@@ -412,21 +413,21 @@ void GneScreen::discard() {
 mtc::hmi::SoftKeys GneScreen::softKeys() {
     mtc::hmi::SoftKeys keys(8);
     const bool open = program_ != 0 && chooser_ == Chooser::None;
-    keys[0] = {"Insert\nIns", [this] { openChooser(Chooser::Insert); }, open};
-    keys[1] = {"Delete\nrow", [this] { deleteRow(); }, open && !model_.rows().empty()};
-    keys[2] = {"Alter-\nnative", [this] { nextAlternative(); },
+    keys[0] = {tr("Insert\nIns"), [this] { openChooser(Chooser::Insert); }, open};
+    keys[1] = {tr("Delete\nrow"), [this] { deleteRow(); }, open && !model_.rows().empty()};
+    keys[2] = {tr("Alter-\nnative"), [this] { nextAlternative(); },
                open && model_.alternativeCount() > 1};
-    keys[3] = {"Undo", [this] { undo(); }, open && model_.canUndo()};
-    keys[4] = {"Redo", [this] { redo(); }, open && model_.canRedo()};
-    keys[5] = {canvas_->zoomToWindow() ? "Zoom\ncontour" : "Zoom\nwindow",
+    keys[3] = {tr("Undo"), [this] { undo(); }, open && model_.canUndo()};
+    keys[4] = {tr("Redo"), [this] { redo(); }, open && model_.canRedo()};
+    keys[5] = {canvas_->zoomToWindow() ? tr("Zoom\ncontour") : tr("Zoom\nwindow"),
                [this] { toggleZoom(); }};
-    keys[6] = {"Edit\nvalue",
+    keys[6] = {tr("Edit\nvalue"),
                [this] {
                    fields_->setFocus();
                    fieldKey(Qt::Key_Return, QString());
                },
                open && fields_->rowCount() > 0};
-    keys[7] = {"Exit", [this] { openChooser(Chooser::Exit); }, open};
+    keys[7] = {tr("Exit"), [this] { openChooser(Chooser::Exit); }, open};
     return keys;
 }
 

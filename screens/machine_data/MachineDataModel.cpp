@@ -96,8 +96,9 @@ QVariant MachineDataModel::data(const QModelIndex& index, int role) const {
 
 QVariant MachineDataModel::headerData(int section, Qt::Orientation orientation, int role) const {
     if (orientation != Qt::Horizontal || role != Qt::DisplayRole) return {};
-    static const char* const names[] = {"Nr.", "Title", "Value", "Unit"};
-    return section >= 0 && section < ColumnCount ? QString(names[section]) : QVariant();
+    static const char* const names[] = {QT_TR_NOOP("Nr."), QT_TR_NOOP("Title"), QT_TR_NOOP("Value"),
+                                        QT_TR_NOOP("Unit")};
+    return section >= 0 && section < ColumnCount ? tr(names[section]) : QVariant();
 }
 
 }  // namespace mtc::screens

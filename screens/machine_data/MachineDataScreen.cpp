@@ -120,28 +120,28 @@ void MachineDataScreen::updateHeader() {
     const mtc::core::MachineDataPage* page = model_->definition();
     if (!page) return;
     QString text =
-        QString("Page %1  %2    process %3 (%4)")
+        tr("Page %1  %2    process %3 (%4)")
             .arg(page->number)
             .arg(QString::fromStdString(page->title))
             .arg(processNumber())
             .arg(QString::fromStdString(context().session->processConfig(context().process).name));
     if (model_->sub() > 0)
-        text += QString("    sub %1: %2")
-                    .arg(model_->sub())
-                    .arg(QString::fromStdString(
-                        page->subTitles[static_cast<std::size_t>(model_->sub() - 1)]));
+        text += "    " + tr("sub %1: %2")
+                             .arg(model_->sub())
+                             .arg(QString::fromStdString(
+                                 page->subTitles[static_cast<std::size_t>(model_->sub() - 1)]));
     header_->setText(text);
     table_->scrollTo(model_->index(model_->cursor(), 0));
 }
 
 mtc::hmi::SoftKeys MachineDataScreen::softKeys() {
     mtc::hmi::SoftKeys keys(8);
-    keys[0] = {"Page\n-", [this] { stepPage(-1); }};
-    keys[1] = {"Page\n+", [this] { stepPage(1); }};
+    keys[0] = {tr("Page\n-"), [this] { stepPage(-1); }};
+    keys[1] = {tr("Page\n+"), [this] { stepPage(1); }};
     const bool hasSubs = model_->definition() && model_->definition()->subs().size() > 1;
-    keys[2] = {hasSubs ? "M(16)\n/ Q" : "", [this] { stepSub(); }, hasSubs};
-    keys[3] = {"Edit", [this] { startEdit(); }};
-    keys[7] = {"Back", [this] { emit navigateTo("menu"); }};
+    keys[2] = {hasSubs ? QString("M(16)\n/ Q") : QString(), [this] { stepSub(); }, hasSubs};
+    keys[3] = {tr("Edit"), [this] { startEdit(); }};
+    keys[7] = {tr("Back"), [this] { emit navigateTo("menu"); }};
     return keys;
 }
 
@@ -196,10 +196,10 @@ void MachineDataScreen::startEdit() {
     const mtc::core::MachineDataElement* e = model_->currentElement();
     if (!e || input_ != Input::None) return;
     if (e->protectedGui) {
-        say("Element " + elementName() + " is write-protected: only the NC changes it");
+        say(tr("Element %1 is write-protected: only the NC changes it").arg(elementName()));
         return;
     }
-    openInput(Input::Value, "New value of " + elementName() + " (" + rangeText(*e) + "):",
+    openInput(Input::Value, tr("New value of %1 (%2):").arg(elementName(), rangeText(*e)),
               model_->currentValueText());
 }
 
@@ -216,7 +216,7 @@ void MachineDataScreen::closeInput() {
 
 void MachineDataScreen::cancelInput() {
     closeInput();
-    say("Input cancelled: the value stays " + model_->currentValueText());
+    say(tr("Input cancelled: the value stays %1").arg(model_->currentValueText()));
 }
 
 void MachineDataScreen::confirmInput(const QString& text) {
@@ -230,8 +230,8 @@ void MachineDataScreen::confirmValue(const QString& text) {
     bool ok = false;
     const double value = QLocale::c().toDouble(text, &ok);
     if (!ok) {
-        say("'" + text + "' is not a number: " + elementName() + " stays " +
-            model_->currentValueText());
+        say(tr("'%1' is not a number: %2 stays %3")
+                .arg(text, elementName(), model_->currentValueText()));
         return;
     }
     writeValue(value);
@@ -239,7 +239,7 @@ void MachineDataScreen::confirmValue(const QString& text) {
 
 void MachineDataScreen::confirmPassword(const QString& text) {
     if (!context().session->machineData().passwordMatches(text.toStdString())) {
-        say("Wrong password: " + elementName() + " stays " + model_->currentValueText());
+        say(tr("Wrong password: %1 stays %2").arg(elementName(), model_->currentValueText()));
         return;
     }
     password_ = text;
@@ -253,7 +253,7 @@ void MachineDataScreen::writeValue(double value) {
                     password_.toStdString());
     if (status == MachineDataStatus::PasswordRequired) {
         pendingValue_ = value;
-        openInput(Input::Password, "Password for " + elementName() + ":", {});
+        openInput(Input::Password, tr("Password for %1:").arg(elementName()), {});
         return;
     }
     model_->refresh();
@@ -261,14 +261,14 @@ void MachineDataScreen::writeValue(double value) {
         QString reason = mtc::core::machineDataStatusText(status);
         if (status == MachineDataStatus::OutOfRange && model_->currentElement())
             reason += " " + rangeText(*model_->currentElement());
-        say(reason + ": " + elementName() + " stays " + model_->currentValueText());
+        say(tr("%1: %2 stays %3").arg(reason, elementName(), model_->currentValueText()));
         return;
     }
     QString error;
     notice_.clear();
     const bool saved = context().session->saveMachineData(error);
     say(elementName() + " = " + model_->currentValueText() +
-        (saved ? QString() : "\nNOT saved: " + error) +
+        (saved ? QString() : "\n" + tr("NOT saved: %1").arg(error)) +
         (notice_.isEmpty() ? QString() : "\n" + notice_));
 }
 

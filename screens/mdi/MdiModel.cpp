@@ -3,6 +3,7 @@
 #include "cnc_core/interp/Interpreter.h"
 #include "cnc_core/mdi/MdiEntry.h"
 #include "hmi/CellSession.h"
+#include "hmi/CoreTerms.h"
 
 namespace mtc::screens {
 
@@ -64,14 +65,15 @@ QString MdiModel::modeSummary() const {
     const auto& control = session_->control(slot_);
     const std::string refusal = mtc::core::mdiRefusal(control);
     if (session_->station(slot_).mdiRunning())
-        return control.programHeld() ? "MDI entry held: Start continues" : "MDI entry running";
-    if (refusal.empty()) return "MDI mode: Start runs the input";
+        return control.programHeld() ? tr("MDI entry held: Start continues")
+                                     : tr("MDI entry running");
+    if (refusal.empty()) return tr("MDI mode: Start runs the input");
     if (control.mode() != mtc::core::OperatingMode::Mdi) {
-        QString mode = QString::fromUtf8(mtc::core::modeName(control.mode()));
+        QString mode = mtc::hmi::modeLabel(control.mode());
         mode[0] = mode[0].toUpper();
-        return mode +
-               " mode: Start does not run this input; select MDI mode with the M key MDI "
-               "(Shift+F9)";
+        return tr("%1 mode: Start does not run this input; select MDI mode with the M key MDI "
+                  "(Shift+F9)")
+            .arg(mode);
     }
     return QString::fromStdString(refusal);
 }

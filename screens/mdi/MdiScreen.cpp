@@ -43,7 +43,8 @@ MdiScreen::MdiScreen(const mtc::hmi::ScreenContext& context) : Screen(context) {
     input_->setObjectName("mdiInput");
     input_->setFont(fixed);
     input_->setTabChangesFocus(true);
-    input_->setPlaceholderText("NC blocks, one a line (global macros allowed); Start runs them");
+    input_->setPlaceholderText(
+        tr("NC blocks, one a line (global macros allowed); Start runs them"));
     input_->setMaximumHeight(input_->fontMetrics().lineSpacing() * 6);
     message_ = makeLabel(this, "mdiMessage", font());
     history_ = new QListWidget(this);
@@ -52,14 +53,14 @@ MdiScreen::MdiScreen(const mtc::hmi::ScreenContext& context) : Screen(context) {
 
     auto* layout = new QVBoxLayout(this);
     layout->addWidget(mode_);
-    layout->addWidget(caption(this, "Position (programmed)"));
+    layout->addWidget(caption(this, tr("Position (programmed)")));
     layout->addWidget(position_);
-    layout->addWidget(caption(this, "Modal state"));
+    layout->addWidget(caption(this, tr("Modal state")));
     layout->addWidget(modal_);
-    layout->addWidget(caption(this, "MDI input"));
+    layout->addWidget(caption(this, tr("MDI input")));
     layout->addWidget(input_);
     layout->addWidget(message_);
-    layout->addWidget(caption(this, "Entries run"));
+    layout->addWidget(caption(this, tr("Entries run")));
     layout->addWidget(history_, 1);
     setFocusProxy(input_);
 
@@ -115,21 +116,21 @@ void MdiScreen::refreshHistory() {
 
 mtc::hmi::SoftKeys MdiScreen::softKeys() {
     mtc::hmi::SoftKeys keys(8);
-    keys[0] = {"Check\ninput", [this] {
+    keys[0] = {tr("Check\ninput"), [this] {
                    model_->check();
                    refresh();
                }};
-    keys[1] = {"Recall\nentry", [this] {
+    keys[1] = {tr("Recall\nentry"), [this] {
                    model_->recall(history_->currentRow());
                    refresh();
                    input_->setFocus();
                }};
-    keys[2] = {"Clear\ninput", [this] {
+    keys[2] = {tr("Clear\ninput"), [this] {
                    input_->clear();
                    input_->setFocus();
                }};
-    keys[3] = {"Error\ndisplay", [this] { emit navigateTo("errors"); }};
-    keys[7] = {"Back", [this] { emit navigateTo("menu"); }};
+    keys[3] = {tr("Error\ndisplay"), [this] { emit navigateTo("errors"); }};
+    keys[7] = {tr("Back"), [this] { emit navigateTo("menu"); }};
     return keys;
 }
 

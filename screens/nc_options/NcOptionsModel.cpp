@@ -50,28 +50,29 @@ QString NcOptionsModel::macroEntry(int index) const {
 QString NcOptionsModel::text(const Row& row) const {
     switch (row.kind) {
         case RowKind::CompilerActive:
-            return QString("Compiler active:          %1")
-                .arg(holder_->compilerActive() ? "Yes" : "No");
+            return tr("Compiler active:          %1")
+                .arg(holder_->compilerActive() ? tr("Yes") : tr("No"));
         case RowKind::UserCompiler: {
             const std::string& command =
                 mtc::core::userCompilerCommand(holder_->userCompilers(), row.index);
             // D-010: a command that came with the folder is marked until approved.
-            return QString("  User compiler %1:        %2%3")
-                .arg(row.index)
-                .arg(command.empty() ? QString("\u2014") : QString::fromStdString(command))
-                .arg(holder_->userCompilerApproved(row.index)
-                         ? QString()
-                         : QString("   [from the folder: asks before it runs]"));
+            return "  " +
+                   tr("User compiler %1:        %2%3")
+                       .arg(row.index)
+                       .arg(command.empty() ? QString("\u2014") : QString::fromStdString(command))
+                       .arg(holder_->userCompilerApproved(row.index)
+                                ? QString()
+                                : "   " + tr("[from the folder: asks before it runs]"));
         }
         case RowKind::Indramat:
-            return QString("  INDRAMAT compiler:      %1")
-                .arg(holder_->compilerActive() ? "active" : "not active");
+            return "  " + tr("INDRAMAT compiler:      %1")
+                              .arg(holder_->compilerActive() ? tr("active") : tr("not active"));
         case RowKind::SyntaxCheck:
-            return "  Syntax check:           in the controller at download (NO-005)";
+            return "  " + tr("Syntax check:           in the controller at download (NO-005)");
         case RowKind::Macro:
-            return "Global macro  " + macroEntry(row.index);
+            return tr("Global macro  %1").arg(macroEntry(row.index));
         case RowKind::NewMacro:
-            return "Global macro  <new>";
+            return tr("Global macro  <new>");
     }
     return {};
 }

@@ -58,12 +58,14 @@ NcOptionsScreen::NcOptionsScreen(const mtc::hmi::ScreenContext& context)
 }
 
 void NcOptionsScreen::activated() {
-    const QString where = holder_->persistent()
-                              ? "kept in " + context().session->programDirectory() + " (" +
-                                    mtc::core::kNcOptionsFileName + ", " +
-                                    mtc::core::kGlobalMacroFileName + ")"
-                              : QString("built-in programs: kept in memory until the panel ends");
-    header_->setText("NC options of the cell, valid for every station and program \u2014 " + where);
+    const QString where =
+        holder_->persistent()
+            ? tr("kept in %1 (%2, %3)")
+                  .arg(context().session->programDirectory(), mtc::core::kNcOptionsFileName,
+                       mtc::core::kGlobalMacroFileName)
+            : tr("built-in programs: kept in memory until the panel ends");
+    header_->setText(
+        tr("NC options of the cell, valid for every station and program — %1").arg(where));
     if (currentRow() < 0) moveTo(0);
     emit softKeysChanged();
 }
@@ -85,12 +87,12 @@ void NcOptionsScreen::moveTo(int row) {
 mtc::hmi::SoftKeys NcOptionsScreen::softKeys() {
     mtc::hmi::SoftKeys keys(8);
     const bool onMacro = model_->rowAt(currentRow()).kind == RowKind::Macro;
-    keys[0] = {"Change", [this] { changeCurrent(); }};
-    keys[1] = {"Add\nmacro", [this] { startNewMacro(); }};
-    keys[2] = {"Delete\nmacro", [this] { deleteCurrentMacro(); }, onMacro};
-    keys[3] = {holder_->compilerActive() ? "Compiler\nactive: Yes" : "Compiler\nactive: No",
+    keys[0] = {tr("Change"), [this] { changeCurrent(); }};
+    keys[1] = {tr("Add\nmacro"), [this] { startNewMacro(); }};
+    keys[2] = {tr("Delete\nmacro"), [this] { deleteCurrentMacro(); }, onMacro};
+    keys[3] = {holder_->compilerActive() ? tr("Compiler\nactive: Yes") : tr("Compiler\nactive: No"),
                [this] { toggleCompiler(); }};
-    keys[7] = {"Back", [this] { emit navigateTo("programs"); }};
+    keys[7] = {tr("Back"), [this] { emit navigateTo("programs"); }};
     return keys;
 }
 
@@ -103,22 +105,23 @@ void NcOptionsScreen::changeCurrent() {
             break;
         case RowKind::UserCompiler:
             openInput(Input::UserCompiler, row.index,
-                      QString("Command of user compiler %1 (empty = none; called as COMMAND "
-                              "INPUT OUTPUT ERRORS, C-011):")
+                      tr("Command of user compiler %1 (empty = none; called as COMMAND "
+                         "INPUT OUTPUT ERRORS, C-011):")
                           .arg(row.index),
                       QString::fromStdString(
                           mtc::core::userCompilerCommand(holder_->userCompilers(), row.index)));
             break;
         case RowKind::Indramat:
-            say("The INDRAMAT compiler is switched with \"Compiler active\".");
+            say(tr("The INDRAMAT compiler is switched with \"Compiler active\"."));
             break;
         case RowKind::SyntaxCheck:
-            say("The syntax check is done by the controller at download; it has no setting "
-                "(NO-005).");
+            say(
+                tr("The syntax check is done by the controller at download; it has no setting "
+                   "(NO-005)."));
             break;
         case RowKind::Macro:
-            openInput(Input::ChangeMacro, row.index,
-                      "Change the global macro:", model_->macroEntry(row.index));
+            openInput(Input::ChangeMacro, row.index, tr("Change the global macro:"),
+                      model_->macroEntry(row.index));
             break;
         case RowKind::NewMacro:
             startNewMacro();
@@ -133,8 +136,8 @@ void NcOptionsScreen::toggleCompiler() {
         say(error);
         return;
     }
-    say(QString("Compiler active = %1: the compile files of both stations are cleared")
-            .arg(holder_->compilerActive() ? "Yes" : "No"));
+    say(tr("Compiler active = %1: the compile files of both stations are cleared")
+            .arg(holder_->compilerActive() ? tr("Yes") : tr("No")));
     emit softKeysChanged();
 }
 
@@ -142,8 +145,8 @@ void NcOptionsScreen::startNewMacro() {
     if (input_ != Input::None) return;
     moveTo(model_->rowCount() - 1);
     openInput(Input::NewMacro, 0,
-              "New global macro (DEFINE name AS instructions; name <= 20 characters, "
-              "instructions <= 156):",
+              tr("New global macro (DEFINE name AS instructions; name <= 20 characters, "
+                 "instructions <= 156):"),
               "DEFINE ");
     inputLine_->field()->deselect();
     inputLine_->field()->end(false);
@@ -159,7 +162,7 @@ void NcOptionsScreen::deleteCurrentMacro() {
         return;
     }
     moveTo(model_->rowOfMacro(row.index));
-    say("Deleted: " + entry + "\nPrograms that used the global macros are set to N again.");
+    say(tr("Deleted: %1\nPrograms that used the global macros are set to N again.").arg(entry));
 }
 
 void NcOptionsScreen::openInput(Input input, int index, const QString& prompt,
@@ -176,7 +179,7 @@ void NcOptionsScreen::closeInput() {
 
 void NcOptionsScreen::cancelInput() {
     closeInput();
-    say("Input cancelled: the NC options are unchanged");
+    say(tr("Input cancelled: the NC options are unchanged"));
 }
 
 void NcOptionsScreen::confirmInput(const QString& text) {
@@ -204,15 +207,14 @@ void NcOptionsScreen::confirmInput(const QString& text) {
     closeInput();
     if (done == Input::UserCompiler) {
         moveTo(index == 1 || index == 2 ? index : index + 1);
-        say(QString("User compiler %1 set: the compile files of both stations are cleared")
-                .arg(index));
+        say(tr("User compiler %1 set: the compile files of both stations are cleared").arg(index));
         return;
     }
     const int macro =
         done == Input::NewMacro ? static_cast<int>(holder_->globalMacros().size()) - 1 : index;
     moveTo(model_->rowOfMacro(macro));
-    say("Taken: " + model_->macroEntry(macro) +
-        "\nPrograms that use the global macros are set to N again.");
+    say(tr("Taken: %1\nPrograms that use the global macros are set to N again.")
+            .arg(model_->macroEntry(macro)));
 }
 
 bool NcOptionsScreen::eventFilter(QObject* watched, QEvent* event) {

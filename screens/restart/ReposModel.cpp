@@ -75,8 +75,9 @@ QVariant ReposModel::data(const QModelIndex& index, int role) const {
 
 QVariant ReposModel::headerData(int section, Qt::Orientation orientation, int role) const {
     if (orientation != Qt::Horizontal || role != Qt::DisplayRole) return {};
-    static const char* titles[] = {"Axis", "Actual position", "Re-entry point", "Distance"};
-    return section >= 0 && section < 4 ? QString(titles[section]) : QVariant();
+    const QString titles[] = {tr("Axis"), tr("Actual position"), tr("Re-entry point"),
+                              tr("Distance")};
+    return section >= 0 && section < 4 ? titles[section] : QVariant();
 }
 
 }  // namespace mtc::screens

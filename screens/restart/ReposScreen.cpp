@@ -60,7 +60,7 @@ void ReposScreen::activated() {
 
 void ReposScreen::render() {
     const QString phase = controller_->phaseText();
-    phase_->setText(phase.isEmpty() ? "No NC program restart: the re-entry point is not known."
+    phase_->setText(phase.isEmpty() ? tr("No NC program restart: the re-entry point is not known.")
                                     : phase);
     model_->refresh();
 }
@@ -69,13 +69,13 @@ void ReposScreen::jog(double direction) {
     const int axis = table_->currentIndex().row();
     if (axis < 0) return;
     if (controller_->run()->jog(axis, direction * step_))
-        message_->setText(QString("Jogged %1 by %2")
+        message_->setText(tr("Jogged %1 by %2")
                               .arg(model_->index(axis, 0).data().toString())
                               .arg(direction * step_));
     else
         message_->setText(
-            "Jogging is possible in manual mode between ADJUST and REPOS only "
-            "(and within the travel range).");
+            tr("Jogging is possible in manual mode between ADJUST and REPOS only "
+               "(and within the travel range)."));
     render();
 }
 
@@ -96,14 +96,14 @@ bool ReposScreen::eventFilter(QObject* watched, QEvent* event) {
 
 mtc::hmi::SoftKeys ReposScreen::softKeys() {
     mtc::hmi::SoftKeys keys(8);
-    keys[0] = {"Jog −", [this] { jog(-1.0); }};
-    keys[1] = {"Jog +", [this] { jog(+1.0); }};
-    keys[2] = {QString("Step\n%1").arg(step_), [this] {
+    keys[0] = {tr("Jog −"), [this] { jog(-1.0); }};
+    keys[1] = {tr("Jog +"), [this] { jog(+1.0); }};
+    keys[2] = {tr("Step\n%1").arg(step_), [this] {
                    step_ = step_ >= 10.0 ? 0.1 : step_ * 10.0;
                    emit softKeysChanged();
                }};
-    keys[4] = {"Restart\nresult", [this] { emit navigateTo("restart-result"); }};
-    keys[7] = {"Back", [this] { emit navigateTo("menu"); }};
+    keys[4] = {tr("Restart\nresult"), [this] { emit navigateTo("restart-result"); }};
+    keys[7] = {tr("Back"), [this] { emit navigateTo("menu"); }};
     return keys;
 }
 

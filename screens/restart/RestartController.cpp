@@ -60,15 +60,15 @@ RestartController::RestartController(mtc::hmi::CellSession* session, int slot, Q
 void RestartController::verifyProgram() {
     if (run_->active() || !pointer_.active()) {
         setMessage(RestartMessage::Level::Error,
-                   run_->active() ? "Verification refused: an NC program restart is active."
-                                  : "Verification refused: no program is displayed.");
+                   run_->active() ? tr("Verification refused: an NC program restart is active.")
+                                  : tr("Verification refused: no program is displayed."));
         emit changed();
         return;
     }
     QString why;
     const int main = pointer_.levels().front().program->number;
     if (!verification_->startProgram(main, why)) {
-        setMessage(RestartMessage::Level::Error, "Verification refused: " + why);
+        setMessage(RestartMessage::Level::Error, tr("Verification refused: %1").arg(why));
         emit changed();
     }
 }
@@ -85,7 +85,7 @@ QString RestartController::describe(const mtc::core::Diagnostic& d) {
     QString where;
     if (d.where.program) where += QString("P%1").arg(d.where.program);
     if (!d.where.block.empty()) where += " " + QString::fromStdString(d.where.block);
-    if (d.where.line) where += QString(" line %1").arg(d.where.line);
+    if (d.where.line) where += " " + tr("line %1").arg(d.where.line);
     const QString text = QString::fromStdString(d.message);
     return where.isEmpty() ? text : where.trimmed() + ": " + text;
 }
@@ -115,12 +115,13 @@ void RestartController::reply(const mtc::core::SearchReply& reply) {
 QString RestartController::refusalReason() const {
     const auto& control = session_->control(slot_);
     if (control.selectedProgram() == 0)
-        return "No program is selected: select it in the program directory first.";
+        return tr("No program is selected: select it in the program directory first.");
     if (control.mode() != mtc::core::OperatingMode::Automatic)
-        return "NC program restart needs automatic mode (seed 000, 2.1).";
+        return tr("NC program restart needs automatic mode (seed 000, 2.1).");
     if (control.programActive())
-        return "A program is active: stop it with Control reset before the restart (seed 000, "
-               "2.1).";
+        return tr(
+            "A program is active: stop it with Control reset before the restart (seed 000, "
+            "2.1).");
     return {};
 }
 
@@ -156,8 +157,9 @@ void RestartController::enter() {
             clickRow(listing_->rowOfBlock(preselectedBlock_));
         const QString reason = refusalReason();
         if (reason.isEmpty())
-            setMessage(RestartMessage::Level::Info,
-                       "Select the target block and press Enter (Plane+ follows jumps and calls).");
+            setMessage(
+                RestartMessage::Level::Info,
+                tr("Select the target block and press Enter (Plane+ follows jumps and calls)."));
         else
             setMessage(RestartMessage::Level::Warning, reason);
     }
@@ -239,10 +241,10 @@ void RestartController::planePlus() {
     const auto& window = pointer_.window();
     if (window.kind == mtc::core::PlaneWindow::Kind::Event)
         setMessage(RestartMessage::Level::Info,
-                   "Space changes the event, Enter follows the jump, Esc aborts.");
+                   tr("Space changes the event, Enter follows the jump, Esc aborts."));
     else if (window.kind == mtc::core::PlaneWindow::Kind::Variable)
         setMessage(RestartMessage::Level::Info,
-                   "Enter follows the jump with the value shown (or a new one), Esc aborts.");
+                   tr("Enter follows the jump with the value shown (or a new one), Esc aborts."));
     showLevel();
     emit changed();
 }
@@ -264,7 +266,7 @@ bool RestartController::confirmVariable(const QString& text) {
     const double value = text.trimmed().toDouble(&isNumber);
     if (!isNumber) {
         setMessage(RestartMessage::Level::Error,
-                   QString("'%1' is not a program number.").arg(text.trimmed()));
+                   tr("'%1' is not a program number.").arg(text.trimmed()));
         emit changed();
         return false;
     }
@@ -277,7 +279,7 @@ bool RestartController::confirmVariable(const QString& text) {
 
 void RestartController::cancelWindow() {
     pointer_.cancelWindow();
-    setMessage(RestartMessage::Level::Info, "Aborted: the cursor stays where it was.");
+    setMessage(RestartMessage::Level::Info, tr("Aborted: the cursor stays where it was."));
     emit changed();
 }
 
@@ -306,7 +308,7 @@ void RestartController::toggleFromLastPrimary() {
 bool RestartController::accept() {
     if (run_->active()) {
         setMessage(RestartMessage::Level::Error,
-                   "An NC program restart is already active: " + phaseText());
+                   tr("An NC program restart is already active: %1").arg(phaseText()));
         emit changed();
         return false;
     }
@@ -335,9 +337,9 @@ bool RestartController::accept() {
         notes << describe(d);  // warnings of the NC
     accepted_ = std::move(result);
     if (notes.isEmpty())
-        setMessage(RestartMessage::Level::Info, "Target accepted: " + phaseText());
+        setMessage(RestartMessage::Level::Info, tr("Target accepted: %1").arg(phaseText()));
     else
-        setMessage(RestartMessage::Level::Warning, "Target accepted. " + notes.join("  "));
+        setMessage(RestartMessage::Level::Warning, tr("Target accepted. %1").arg(notes.join("  ")));
     emit changed();
     return true;
 }
@@ -366,7 +368,7 @@ QString RestartController::acceptedTarget() const {
     const auto& target = accepted_.selection.target;
     const auto program = session_->store().find(pointer_.process(), target.program);
     if (!program || target.block >= program->blocks.size()) return {};
-    return QString("P%1 %2 (line %3)")
+    return tr("P%1 %2 (line %3)")
         .arg(target.program)
         .arg(QString::fromStdString(program->blockId(target.block)))
         .arg(program->blocks[target.block].line);
@@ -381,31 +383,36 @@ QString describePhase(mtc::core::RestartPhase phase, const QString& blocks, doub
         case RestartPhase::Idle:
             return {};
         case RestartPhase::Active:
-            return "NC program restart active (PxxSBPACT = 1): the SPS starts the computing "
-                   "process.";
+            return RestartController::tr(
+                "NC program restart active (PxxSBPACT = 1): the SPS starts the computing "
+                "process.");
         case RestartPhase::Computing:
-            return QString("Computing process: %1 blocks interpreted. F7 or Control reset aborts.")
+            return RestartController::tr(
+                       "Computing process: %1 blocks interpreted. F7 or Control reset aborts.")
                 .arg(blocks);
         case RestartPhase::TargetReached:
-            return QString(
+            return RestartController::tr(
                        "Target block reached after %1 blocks (%2 ms). Check the result, then "
                        "Start runs ADJUST.")
                 .arg(blocks)
                 .arg(ms, 0, 'f', 0);
         case RestartPhase::Adjusting:
-            return "ADJUST establishes the machine states.";
+            return RestartController::tr("ADJUST establishes the machine states.");
         case RestartPhase::ManualMode:
-            return "Manual mode: jog the axes near the re-entry point, then Automatic and Start.";
+            return RestartController::tr(
+                "Manual mode: jog the axes near the re-entry point, then Automatic and Start.");
         case RestartPhase::AutomaticAgain:
-            return "Automatic mode again: Start continues with REPOS.";
+            return RestartController::tr("Automatic mode again: Start continues with REPOS.");
         case RestartPhase::Repositioning:
-            return "REPOS moves the axes back to the re-entry point.";
+            return RestartController::tr("REPOS moves the axes back to the re-entry point.");
         case RestartPhase::Reestablished:
-            return "State re-established: machining continues at the target block.";
+            return RestartController::tr(
+                "State re-established: machining continues at the target block.");
         case RestartPhase::Failed:
-            return "NC program restart failed.";
+            return RestartController::tr("NC program restart failed.");
         case RestartPhase::Aborted:
-            return "NC program restart aborted: every restart signal is reset.";
+            return RestartController::tr(
+                "NC program restart aborted: every restart signal is reset.");
     }
     return {};
 }
@@ -426,15 +433,16 @@ QString RestartController::phaseText() const {
     if (run_->held()) text += heldText();
     const std::string axis = run_->sequence().waitingFor();
     if (!axis.empty() && run_->phase() == mtc::core::RestartPhase::Computing)
-        text += QString(" Waiting for another process: %1 (%2).")
-                    .arg(QString::fromStdString(axis),
-                         axis.rfind("FAX", 0) == 0 ? "until it requests the axis with GAX"
-                                                   : "until it relinquishes the axis with FAX");
+        text += " " + tr("Waiting for another process: %1 (%2).")
+                          .arg(QString::fromStdString(axis),
+                               axis.rfind("FAX", 0) == 0
+                                   ? tr("until it requests the axis with GAX")
+                                   : tr("until it relinquishes the axis with FAX"));
     return text;
 }
 
 QString RestartController::heldText() const {
-    if (!session_->control(slot_).singleBlock()) return " Held: Start continues.";
+    if (!session_->control(slot_).singleBlock()) return " " + tr("Held: Start continues.");
     // Single-block mode: say which block Start interprets next.
     const mtc::core::InterpreterState& state = run_->phase() == mtc::core::RestartPhase::Computing
                                                    ? run_->sequence().computing().state()
@@ -444,11 +452,11 @@ QString RestartController::heldText() const {
                                    .arg(state.program->number)
                                    .arg(QString::fromStdString(state.program->blockId(state.block)))
                              : QString("?");
-    return QString(" Single block: held; Start interprets the next block (%1).").arg(next);
+    return " " + tr("Single block: held; Start interprets the next block (%1).").arg(next);
 }
 
 QString RestartController::breadcrumb() const {
-    if (!pointer_.active()) return "No program";
+    if (!pointer_.active()) return tr("No program");
     const auto& levels = pointer_.levels();
     QString text = programCaption(*levels[0].program);
     for (std::size_t i = 1; i < levels.size(); ++i) {
@@ -466,7 +474,7 @@ QString RestartController::status() const {
     if (!pointer_.active()) return {};
     const auto& level = pointer_.current();
     const auto& program = *level.program;
-    QString target = QString("Target P%1 %2 (line %3), program level %4")
+    QString target = tr("Target P%1 %2 (line %3), program level %4")
                          .arg(program.number)
                          .arg(QString::fromStdString(program.blockId(level.cursor)))
                          .arg(program.blocks[level.cursor].line)
@@ -475,22 +483,22 @@ QString RestartController::status() const {
     if (const auto s = pointer_.startBlock()) {
         const auto startProgram = session_->store().find(pointer_.process(), s->block.program);
         start =
-            QString("start P%1 %2%3")
+            tr("start P%1 %2%3")
                 .arg(s->block.program)
                 .arg(startProgram ? QString::fromStdString(startProgram->blockId(s->block.block))
                                   : QString::number(s->block.block))
-                .arg(s->primary ? " (last primary block)" : "");
+                .arg(s->primary ? " " + tr("(last primary block)") : QString());
     } else {
-        start = "start: no primary block before the target";
+        start = tr("start: no primary block before the target");
     }
     QString text = QString("%1  ·  %2").arg(target, start);
     QStringList changes;
     for (const auto& [variable, value] : pointer_.variableChanges())
         changes << QString("@%1=%2").arg(variable).arg(value, 0, 'g', 10);
     for (const auto& [event, set] : pointer_.eventChanges())
-        changes << QString("event %1:%2=%3").arg(event.process).arg(event.event).arg(set ? 1 : 0);
-    if (!changes.isEmpty()) text += "  ·  changed " + changes.join(", ");
-    return text + QString("  ·  runs %1").arg(pointer_.runs());
+        changes << tr("event %1:%2=%3").arg(event.process).arg(event.event).arg(set ? 1 : 0);
+    if (!changes.isEmpty()) text += "  ·  " + tr("changed %1").arg(changes.join(", "));
+    return text + "  ·  " + tr("runs %1").arg(pointer_.runs());
 }
 
 }  // namespace mtc::screens

@@ -12,37 +12,37 @@ namespace mtc::screens {
 
 namespace {
 
-const char* groupName(int group) {
+QString groupName(int group) {
     switch (group) {
         case mtc::core::kGroupInterpolation:
-            return "interpolation";
+            return RestartResultModel::tr("interpolation");
         case mtc::core::kGroupPlane:
-            return "plane";
+            return RestartResultModel::tr("plane");
         case mtc::core::kGroupToolPath:
-            return "tool path compensation";
+            return RestartResultModel::tr("tool path compensation");
         case mtc::core::kGroupZeroOffset:
-            return "zero offset";
+            return RestartResultModel::tr("zero offset");
         case mtc::core::kGroupFeedType:
-            return "feed type";
+            return RestartResultModel::tr("feed type");
         case mtc::core::kGroupDimension:
-            return "dimension";
+            return RestartResultModel::tr("dimension");
         case mtc::core::kGroupRadiusDiameter:
-            return "radius / diameter";
+            return RestartResultModel::tr("radius / diameter");
         case mtc::core::kGroupUnits:
-            return "units";
+            return RestartResultModel::tr("units");
         case mtc::core::kGroupSurfaceSpeed:
-            return "surface speed";
+            return RestartResultModel::tr("surface speed");
         case mtc::core::kGroupToolLength:
-            return "tool length compensation";
+            return RestartResultModel::tr("tool length compensation");
         case mtc::core::kGroupTransformation:
-            return "transformation";
+            return RestartResultModel::tr("transformation");
         default:
             return "";
     }
 }
 
 QString function(char letter, int value) {
-    return value < 0 ? QString("none (−1)") : QString("%1%2").arg(letter).arg(value);
+    return value < 0 ? RestartResultModel::tr("none (−1)") : QString("%1%2").arg(letter).arg(value);
 }
 
 QString number(double value) {
@@ -50,7 +50,7 @@ QString number(double value) {
 }
 
 QString buffer(const std::array<int, 40>& elements, int count) {
-    if (count == 0) return "empty";
+    if (count == 0) return RestartResultModel::tr("empty");
     QStringList list;
     for (int i = 0; i < count; ++i)
         list << QString::number(elements[static_cast<std::size_t>(i)]);
@@ -77,52 +77,56 @@ void addSection(QVector<RestartResultModel::Row>& rows, const QString& title) {
 
 void addGFunctions(QVector<RestartResultModel::Row>& rows, const mtc::core::InterpreterState& at,
                    const mtc::core::InterpreterState& before) {
-    addSection(rows, "G functions (modal groups)");
+    addSection(rows, RestartResultModel::tr("G functions (modal groups)"));
     for (int group : mtc::core::usedGGroups()) {
         const auto g = static_cast<std::size_t>(group);
-        addRow(rows, QString("G group %1 %2").arg(group).arg(groupName(group)).trimmed(),
+        addRow(rows,
+               RestartResultModel::tr("G group %1 %2").arg(group).arg(groupName(group)).trimmed(),
                function('G', at.modal.g[g]), function('G', before.modal.g[g]));
     }
 }
 
 void addAuxiliary(QVector<RestartResultModel::Row>& rows, const mtc::core::InterpreterState& at,
                   const mtc::core::InterpreterState& before) {
-    addSection(rows, "Auxiliary functions");
+    addSection(rows, RestartResultModel::tr("Auxiliary functions"));
     for (int group = 1; group <= 15; ++group) {
         const auto m = static_cast<std::size_t>(group);
-        addRow(rows, QString("M group %1").arg(group), function('M', at.mGroups[m]),
+        addRow(rows, RestartResultModel::tr("M group %1").arg(group), function('M', at.mGroups[m]),
                function('M', before.mGroups[m]));
     }
-    addRow(rows, "M(16), last output", function('M', at.mGroups[16]),
+    addRow(rows, RestartResultModel::tr("M(16), last output"), function('M', at.mGroups[16]),
            function('M', before.mGroups[16]));
-    addRow(rows, "Q, last output", function('Q', at.lastQ), function('Q', before.lastQ));
+    addRow(rows, RestartResultModel::tr("Q, last output"), function('Q', at.lastQ),
+           function('Q', before.lastQ));
     for (int s = 1; s < mtc::core::kSpindleSlots; ++s) {
         const auto i = static_cast<std::size_t>(s);
-        addRow(rows, QString("S%1 speed").arg(s), number(at.modal.spindleSpeed[i]),
+        addRow(rows, RestartResultModel::tr("S%1 speed").arg(s), number(at.modal.spindleSpeed[i]),
                number(before.modal.spindleSpeed[i]));
     }
-    addRow(rows, "T (tool)", QString::number(at.modal.tool), QString::number(before.modal.tool));
+    addRow(rows, RestartResultModel::tr("T (tool)"), QString::number(at.modal.tool),
+           QString::number(before.modal.tool));
     addRow(rows, "E", QString::number(at.modal.edge), QString::number(before.modal.edge));
-    addRow(rows, "D (correction)", QString::number(at.modal.correction),
+    addRow(rows, RestartResultModel::tr("D (correction)"), QString::number(at.modal.correction),
            QString::number(before.modal.correction));
-    addRow(rows, "F (feed)", number(at.modal.feed), number(before.modal.feed));
+    addRow(rows, RestartResultModel::tr("F (feed)"), number(at.modal.feed),
+           number(before.modal.feed));
 }
 
 void addPage60(QVector<RestartResultModel::Row>& rows, const mtc::core::InterpreterState& at,
                const mtc::core::InterpreterState& before) {
-    addSection(rows, "Page 60 (restart and REPOS)");
+    addSection(rows, RestartResultModel::tr("Page 60 (restart and REPOS)"));
     for (int s = 1; s < mtc::core::kSpindleSlots; ++s) {
         const auto i = static_cast<std::size_t>(s);
-        addRow(rows, QString("Rotary axis mode S%1").arg(s),
+        addRow(rows, RestartResultModel::tr("Rotary axis mode S%1").arg(s),
                QString::number(at.modal.rotaryAxisMode[i]),
                QString::number(before.modal.rotaryAxisMode[i]));
     }
     const auto t = static_cast<std::size_t>(mtc::core::kGroupTransformation);
-    addRow(rows, "Transformation selection", QString::number(at.modal.g[t]),
+    addRow(rows, RestartResultModel::tr("Transformation selection"), QString::number(at.modal.g[t]),
            QString::number(before.modal.g[t]));
     for (int s = 0; s < mtc::core::kToolSpindles; ++s) {
         const auto i = static_cast<std::size_t>(s);
-        addRow(rows, QString("T in tool spindle %1").arg(s + 1),
+        addRow(rows, RestartResultModel::tr("T in tool spindle %1").arg(s + 1),
                QString::number(at.modal.toolSpindle[i]),
                QString::number(before.modal.toolSpindle[i]));
     }
@@ -135,10 +139,12 @@ void RestartResultModel::buildRows(QVector<Row>& rows) const {
     addGFunctions(rows, computing.state(), run_->before());
     addAuxiliary(rows, computing.state(), run_->before());
     addPage60(rows, computing.state(), run_->before());
-    addSection(rows, "Page 61 buffers, oldest first");
+    addSection(rows, RestartResultModel::tr("Page 61 buffers, oldest first"));
     const mtc::core::RestartAuxCollector& collector = computing.collector();
-    addRow(rows, "M(16) buffer", buffer(collector.m16().elements(), collector.m16().size()), "—");
-    addRow(rows, "Q buffer", buffer(collector.q().elements(), collector.q().size()), "—");
+    addRow(rows, RestartResultModel::tr("M(16) buffer"),
+           buffer(collector.m16().elements(), collector.m16().size()), "—");
+    addRow(rows, RestartResultModel::tr("Q buffer"),
+           buffer(collector.q().elements(), collector.q().size()), "—");
     addVerification(rows);
 }
 
@@ -146,49 +152,54 @@ void RestartResultModel::addVerification(QVector<Row>& rows) const {
     // The same comparison as `mtc200-cli verify-restart` (restart.md R-028):
     // at the target: expected (the normal run); other column: what the
     // computing process computed, or what ADJUST and REPOS will leave.
-    addSection(rows, "Verification: normal run vs. computing process, ADJUST and REPOS");
+    addSection(rows, RestartResultModel::tr(
+                         "Verification: normal run vs. computing process, ADJUST and REPOS"));
     const auto& target = verification_->target();
     if (!target) {
-        addRow(rows, "Not verified yet", "F4", "F4");
+        addRow(rows, RestartResultModel::tr("Not verified yet"), QString("F4"), QString("F4"));
         return;
     }
     using mtc::core::TargetOutcome;
     if (target->outcome == TargetOutcome::Failed ||
         target->outcome == TargetOutcome::NotSelectable) {
-        QString why = "the restart fails";
+        QString why = RestartResultModel::tr("the restart fails");
         for (const auto& d : target->diagnostics.items())
             if (d.severity == mtc::core::Severity::Error) {
                 why = QString::fromStdString(d.code + ": " + d.message);
                 break;
             }
-        addRow(rows, "Verification", why, "—");
+        addRow(rows, RestartResultModel::tr("Verification"), why, QString("—"));
         return;
     }
     if (target->outcome == TargetOutcome::Reestablished) {
-        addRow(rows, "Every item", "re-established", "re-established");
+        addRow(rows, RestartResultModel::tr("Every item"), RestartResultModel::tr("re-established"),
+               RestartResultModel::tr("re-established"));
         return;
     }
     for (const auto& d : target->computed)
-        addRow(rows, "Computing process: " + QString::fromStdString(d.label),
+        addRow(rows,
+               RestartResultModel::tr("Computing process: %1").arg(QString::fromStdString(d.label)),
                QString::fromStdString(d.expectedText), QString::fromStdString(d.actualText));
     for (const auto& d : target->cutting)
-        addRow(rows, "After ADJUST / REPOS: " + QString::fromStdString(d.label),
-               QString::fromStdString(d.expectedText), QString::fromStdString(d.actualText));
+        addRow(
+            rows,
+            RestartResultModel::tr("After ADJUST / REPOS: %1").arg(QString::fromStdString(d.label)),
+            QString::fromStdString(d.expectedText), QString::fromStdString(d.actualText));
 }
 
 QString RestartResultModel::verificationSummary() const {
     const auto& target = verification_->target();
-    if (!target) return "not verified yet";
+    if (!target) return RestartResultModel::tr("not verified yet");
     using mtc::core::TargetOutcome;
     switch (target->outcome) {
         case TargetOutcome::Reestablished:
-            return "re-established";
+            return RestartResultModel::tr("re-established");
         case TargetOutcome::Differs:
-            return QString("%1 differences")
+            return RestartResultModel::tr("%1 differences")
                 .arg(static_cast<int>(target->computed.size() + target->cutting.size()));
         case TargetOutcome::Failed:
         case TargetOutcome::NotSelectable:
-            return "the restart fails";
+            return RestartResultModel::tr("the restart fails");
     }
     return {};
 }
@@ -250,11 +261,11 @@ QVariant RestartResultModel::headerData(int section, Qt::Orientation orientation
     if (orientation != Qt::Horizontal || role != Qt::DisplayRole) return {};
     switch (section) {
         case 0:
-            return "Item";
+            return RestartResultModel::tr("Item");
         case 1:
-            return "At the target";
+            return RestartResultModel::tr("At the target");
         case 2:
-            return "Machine before";
+            return RestartResultModel::tr("Machine before");
         default:
             return {};
     }

@@ -50,36 +50,36 @@ void RestartResultScreen::activated() {
 void RestartResultScreen::render() {
     const RestartRun* run = controller_->run();
     if (!run->started()) {
-        summary_->setText("No computing process yet: select the target on the restart screen.");
+        summary_->setText(tr("No computing process yet: select the target on the restart screen."));
         hint_->clear();
         return;
     }
     const auto& s = controller_->accepted();
     summary_->setText(
-        QString("Target %1  ·  %2 blocks interpreted  ·  %3 differences  ·  verification: %4")
+        tr("Target %1  ·  %2 blocks interpreted  ·  %3 differences  ·  verification: %4")
             .arg(controller_->acceptedTarget())
             .arg(run->computedBlocks())
             .arg(model_->differenceCount())
             .arg(model_->verificationSummary()) +
-        (s.selection.runs > 1 ? QString("  ·  arrival %1").arg(s.selection.runs) : QString()));
+        (s.selection.runs > 1 ? tr("  ·  arrival %1").arg(s.selection.runs) : QString()));
     hint_->setText(controller_->phaseText());
 }
 
 mtc::hmi::SoftKeys RestartResultScreen::softKeys() {
     mtc::hmi::SoftKeys keys(8);
-    keys[0] = {"Reposition", [this] { emit navigateTo("repos"); }};
-    keys[1] = {"Target\nselection", [this] { emit navigateTo("restart"); }};
-    keys[2] = {model_->differencesOnly() ? "All\nitems" : "Differences\nonly", [this] {
+    keys[0] = {tr("Reposition"), [this] { emit navigateTo("repos"); }};
+    keys[1] = {tr("Target\nselection"), [this] { emit navigateTo("restart"); }};
+    keys[2] = {model_->differencesOnly() ? tr("All\nitems") : tr("Differences\nonly"), [this] {
                    model_->setDifferencesOnly(!model_->differencesOnly());
                    emit softKeysChanged();
                }};
-    keys[3] = {"Verify\ntarget",
+    keys[3] = {tr("Verify\ntarget"),
                [this] {
                    controller_->verifyAcceptedTarget();
                    activated();
                },
                controller_->accepted().ok};
-    keys[7] = {"Back", [this] { emit navigateTo("menu"); }};
+    keys[7] = {tr("Back"), [this] { emit navigateTo("menu"); }};
     return keys;
 }
 

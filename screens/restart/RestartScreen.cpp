@@ -19,7 +19,7 @@ namespace mtc::screens {
 namespace {
 
 QString eventText(bool set) {
-    return set ? "1  (set)" : "0  (not set)";
+    return set ? RestartScreen::tr("1  (set)") : RestartScreen::tr("0  (not set)");
 }
 
 /// A fixed-pitch font for the listing (the platform's, else fontconfig's "Monospace").
@@ -118,37 +118,37 @@ void RestartScreen::hideEvent(QHideEvent* event) {
 mtc::hmi::SoftKeys RestartScreen::softKeys() {
     mtc::hmi::SoftKeys keys(8);
     const bool primary = controller_->pointer().fromLastPrimary();
-    keys[0] = {"Plane +", [this] {
+    keys[0] = {tr("Plane +"), [this] {
                    closePrompt();
                    controller_->planePlus();
                    openWindow();
                }};
-    keys[1] = {"Plane −", [this] {
+    keys[1] = {tr("Plane −"), [this] {
                    closePrompt();
                    controller_->planeMinus();
                }};
-    keys[2] = {"Search\nstring", [this] { openSearch(); }};
-    keys[3] = {primary ? "From last\nprimary ✓" : "From last\nprimary block", [this] {
+    keys[2] = {tr("Search\nstring"), [this] { openSearch(); }};
+    keys[3] = {primary ? tr("From last\nprimary ✓") : tr("From last\nprimary block"), [this] {
                    closePrompt();
                    controller_->toggleFromLastPrimary();
                    emit softKeysChanged();
                }};
-    keys[4] = {"Number\nof runs", [this] { openRuns(); }};
-    keys[5] = {"Accept\ntarget", [this] {
+    keys[4] = {tr("Number\nof runs"), [this] { openRuns(); }};
+    keys[5] = {tr("Accept\ntarget"), [this] {
                    closePrompt();
                    controller_->accept();
                }};
     // F7: Abort while a restart runs; otherwise the restart verifier.
     if (controller_->run()->active())
-        keys[6] = {"Abort", [this] { controller_->abort(); }};
+        keys[6] = {tr("Abort"), [this] { controller_->abort(); }};
     else
-        keys[6] = {"Verify\nprogram",
+        keys[6] = {tr("Verify\nprogram"),
                    [this] {
                        closePrompt();
                        controller_->verifyProgram();
                    },
                    controller_->active()};
-    keys[7] = {"Back", [this] { emit navigateTo("menu"); }};
+    keys[7] = {tr("Back"), [this] { emit navigateTo("menu"); }};
     return keys;
 }
 
@@ -240,16 +240,16 @@ bool RestartScreen::promptKey(int key) {
 void RestartScreen::openSearch() {
     if (!controller_->active()) return;
     controller_->cancelWindow();
-    prompt_->open(RestartPrompt::Kind::Search, "Search string:", controller_->lastSearch(),
-                  "Enter: next occurrence towards the end · Esc: close");
+    prompt_->open(RestartPrompt::Kind::Search, tr("Search string:"), controller_->lastSearch(),
+                  tr("Enter: next occurrence towards the end · Esc: close"));
 }
 
 void RestartScreen::openRuns() {
     if (!controller_->active()) return;
     controller_->cancelWindow();
-    prompt_->open(RestartPrompt::Kind::Runs,
-                  "Number of runs (1 … 65536):", QString::number(controller_->pointer().runs()),
-                  "Enter: set · Esc: keep the old value");
+    prompt_->open(RestartPrompt::Kind::Runs, tr("Number of runs (1 … 65536):"),
+                  QString::number(controller_->pointer().runs()),
+                  tr("Enter: set · Esc: keep the old value"));
 }
 
 void RestartScreen::openWindow() {
@@ -257,22 +257,19 @@ void RestartScreen::openWindow() {
     const QString command = QString::fromStdString(std::string(mtc::core::jumpName(window.jump)));
     if (window.kind == mtc::core::PlaneWindow::Kind::Event) {
         eventSet_ = window.eventSet;
-        prompt_->open(RestartPrompt::Kind::Event,
-                      QString("%1: event %2:%3")
-                          .arg(command)
-                          .arg(window.event.process)
-                          .arg(window.event.event),
-                      eventText(eventSet_), "Space: change · Enter: follow the jump · Esc: abort",
-                      true);
+        prompt_->open(
+            RestartPrompt::Kind::Event,
+            tr("%1: event %2:%3").arg(command).arg(window.event.process).arg(window.event.event),
+            eventText(eventSet_), tr("Space: change · Enter: follow the jump · Esc: abort"), true);
     } else if (window.kind == mtc::core::PlaneWindow::Kind::Variable) {
         const QString name =
             window.writable ? QString("@%1").arg(window.variable)
                             : QString("@%1:%2").arg(window.variableProcess).arg(window.variable);
         prompt_->open(RestartPrompt::Kind::Variable,
-                      QString("%1 %2 = program number:").arg(command, name),
+                      tr("%1 %2 = program number:").arg(command, name),
                       window.valueKnown ? QString::number(window.value, 'g', 10) : QString(),
-                      window.writable ? "Enter: jump with this value · Esc: abort"
-                                      : "read only (other process) · Enter: jump · Esc: abort",
+                      window.writable ? tr("Enter: jump with this value · Esc: abort")
+                                      : tr("read only (other process) · Enter: jump · Esc: abort"),
                       !window.writable);
     }
 }

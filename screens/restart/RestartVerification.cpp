@@ -34,14 +34,13 @@ RestartVerification::~RestartVerification() = default;
 
 bool RestartVerification::startProgram(int program, QString& why) {
     timer_.stop();
-    verifier_ = std::make_unique<mtc::core::RestartVerifier>(session_->config(),
-                                                             session_->processConfig(slot_).index,
-                                                             session_->store(),
+    verifier_ = std::make_unique<mtc::core::RestartVerifier>(
+        session_->config(), session_->processConfig(slot_).index, session_->store(),
         panelOptions(*session_, session_->processConfig(slot_).index));
     mtc::core::DiagnosticList diagnostics;
     if (!verifier_->begin(program, diagnostics, &session_->interpreter(slot_).state())) {
         why = diagnostics.items().empty()
-                  ? QString("program %1 cannot be verified").arg(program)
+                  ? tr("program %1 cannot be verified").arg(program)
                   : QString::fromStdString(diagnostics.items().front().message);
         verifier_.reset();
         return false;
@@ -72,10 +71,10 @@ QString RestartVerification::programText() const {
     if (!verifier_) return {};
     const mtc::core::VerifyReport& report = verifier_->report();
     if (!verifier_->done())
-        return QString("Verifying P%1: %2 arrivals checked …")
+        return tr("Verifying P%1: %2 arrivals checked …")
             .arg(program_)
             .arg(QLocale::c().toString(static_cast<qulonglong>(report.arrivals)));
-    QString text = QString("Verification of P%1: %2")
+    QString text = tr("Verification of P%1: %2")
                        .arg(program_)
                        .arg(QString::fromStdString(report.coverageLine()));
     for (const auto& d : report.diagnostics.items())
@@ -88,8 +87,8 @@ QString RestartVerification::programText() const {
 
 void RestartVerification::verifyTarget(const mtc::core::RestartSelection& selection,
                                        const mtc::core::InterpreterState& before) {
-    mtc::core::RestartVerifier verifier(session_->config(), session_->processConfig(slot_).index,
-                                        session_->store(),
+    mtc::core::RestartVerifier verifier(
+        session_->config(), session_->processConfig(slot_).index, session_->store(),
         panelOptions(*session_, session_->processConfig(slot_).index));
     target_ = verifier.verifySelection(selection, &before);
 }

@@ -60,9 +60,9 @@ void RuntimeScreen::showProgram() {
     const auto program = context().session->program(context().process, program_);
     const auto result = workspace_->runtimeResult(program_);
     const auto status = workspace_->status(program_);
-    heading_->setText(QString("Program %1  %2   source  |  runtime program   status [%3]")
+    heading_->setText(tr("Program %1  %2   source  |  runtime program   status [%3]")
                           .arg(program_, 3, 10, QChar('0'))
-                          .arg(program ? QString::fromStdString(program->name) : "(none)")
+                          .arg(program ? QString::fromStdString(program->name) : tr("(none)"))
                           .arg(QChar(mtc::core::statusLetter(status))));
     source_->load(program ? program->source : std::string());
     showSegment(segment_);
@@ -72,14 +72,13 @@ void RuntimeScreen::showProgram() {
         runtime ? insertedBlocks(runtime) : std::vector<mtc::core::InsertedBlock>();
     const QString arrows = inserted.empty()
                                ? QString()
-                               : QString(
-                                     " %1 marks the blocks tool compensation inserts while the "
-                                     "program runs.")
-                                     .arg(kIntermediateArrow.trimmed());
+                               : " " + tr("%1 marks the blocks tool compensation inserts while "
+                                          "the program runs.")
+                                           .arg(kIntermediateArrow.trimmed());
     if (result && result->status == mtc::core::CompileStatus::Compiled) {
         listing_ = buildRuntimeListing(*result, runtime.get(), inserted);
         compiled_->load(listing_.text);
-        note_->setText(QString("%1 blocks inserted by the compiler (N....:0001, ...).")
+        note_->setText(tr("%1 blocks inserted by the compiler (N....:0001, ...).")
                            .arg(listing_.intermediateBlocks) +
                        arrows);
     } else if (status == mtc::core::CompileStatus::NotNeeded && program) {
@@ -89,13 +88,14 @@ void RuntimeScreen::showProgram() {
             listing_ = buildSourceListing(*program, inserted);
             compiled_->load(listing_.text);
         }
-        note_->setText("The program needs no compilation: it runs as written." + arrows);
+        note_->setText(tr("The program needs no compilation: it runs as written.") + arrows);
     } else {
         compiled_->load(QString());
         note_->setText(status == mtc::core::CompileStatus::Error
-                           ? "The program has compile errors (error display: Ctrl+E in the editor)."
-                           : "The program is not compiled yet (Compile in the editor or the "
-                             "program directory).");
+                           ? tr("The program has compile errors (error display: Ctrl+E in the "
+                                "editor).")
+                           : tr("The program is not compiled yet (Compile in the editor or the "
+                                "program directory)."));
     }
 }
 
@@ -137,13 +137,13 @@ void RuntimeScreen::showSegment(int index) {
     const mtc::hmi::VelocityProfile profile = workspace_->velocityProfile(program_);
     if (profile.empty()) {
         segment_ = 0;
-        plot_->setSegment({}, "No look-ahead segment (LA_ON ... LA_OFF) in the last compile");
+        plot_->setSegment({}, tr("No look-ahead segment (LA_ON ... LA_OFF) in the last compile"));
         return;
     }
     segment_ = (index % int(profile.segments.size()) + int(profile.segments.size())) %
                int(profile.segments.size());
     const auto& segment = profile.segments[size_t(segment_)];
-    plot_->setSegment(segment, QString("LA segment %1 of %2 (line %3): %4 blocks")
+    plot_->setSegment(segment, tr("LA segment %1 of %2 (line %3): %4 blocks")
                                    .arg(segment_ + 1)
                                    .arg(profile.segments.size())
                                    .arg(segment.sourceLine)
@@ -165,19 +165,19 @@ void RuntimeScreen::followCompiledCursor() {
 
 mtc::hmi::SoftKeys RuntimeScreen::softKeys() {
     mtc::hmi::SoftKeys keys(8);
-    keys[0] = {"Compile",
+    keys[0] = {tr("Compile"),
                [this] {
                    QString error;
                    if (!workspace_->compile(program_, error)) note_->setText(error);
                },
                workspace_->compilerActive()};
-    keys[1] = {"Next LA\nsegment", [this] { showSegment(segment_ + 1); },
+    keys[1] = {tr("Next LA\nsegment"), [this] { showSegment(segment_ + 1); },
                workspace_->velocityProfile(program_).segments.size() > 1};
-    keys[6] = {"Editor", [this] {
+    keys[6] = {tr("Editor"), [this] {
                    workspace_->requestEdit(program_, 0);
                    emit navigateTo("editor");
                }};
-    keys[7] = {"Back", [this] { emit navigateTo("programs"); }};
+    keys[7] = {tr("Back"), [this] { emit navigateTo("programs"); }};
     return keys;
 }
 

@@ -34,7 +34,7 @@ void VelocityPlot::drawAxes(QPainter& painter, const QRectF& area) const {
                      QString("F [mm/min]  max %1").arg(maxV_, 0, 'f', 0));
     painter.drawText(
         QRectF(area.right() - 200, area.bottom() + 2, 200, 16), Qt::AlignRight,
-        QString("path %1 mm, %2 s").arg(segment_.length, 0, 'f', 1).arg(segment_.time, 0, 'f', 3));
+        tr("path %1 mm, %2 s").arg(segment_.length, 0, 'f', 1).arg(segment_.time, 0, 'f', 3));
 }
 
 void VelocityPlot::paintEvent(QPaintEvent*) {

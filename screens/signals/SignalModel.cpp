@@ -48,9 +48,9 @@ QVariant SignalModel::data(const QModelIndex& index, int role) const {
 
 QVariant SignalModel::headerData(int section, Qt::Orientation orientation, int role) const {
     if (orientation != Qt::Horizontal || role != Qt::DisplayRole) return {};
-    if (view_ == View::Values) return section == 0 ? "Signal" : "Value";
-    static const char* names[] = {"Step", "Signal", "Value"};
-    return names[section];
+    if (view_ == View::Values) return section == 0 ? tr("Signal") : tr("Value");
+    static const char* names[] = {QT_TR_NOOP("Step"), QT_TR_NOOP("Signal"), QT_TR_NOOP("Value")};
+    return tr(names[section]);
 }
 
 }  // namespace mtc::screens

@@ -43,11 +43,11 @@ void SignalsScreen::activated() {
 
 mtc::hmi::SoftKeys SignalsScreen::softKeys() {
     mtc::hmi::SoftKeys keys(8);
-    keys[0] = {"Clear\nlog", [this] {
+    keys[0] = {tr("Clear\nlog"), [this] {
                    context().session->control(context().process).signalTable().clearLog();
                    activated();
                }};
-    keys[7] = {"Back", [this] { emit navigateTo("menu"); }};
+    keys[7] = {tr("Back"), [this] { emit navigateTo("menu"); }};
     return keys;
 }
 

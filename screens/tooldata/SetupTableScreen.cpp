@@ -152,12 +152,12 @@ void SetupTableScreen::setHeading(const QString& heading) {
 QString SetupTableScreen::outcomeText(const mtc::core::SetupDataEdit& edit, const QString& done,
                                       const QString& refusedWhat) const {
     if (!edit.changed)
-        return "Refused: " + QString::fromStdString(edit.reason()) + "\n" + refusedWhat;
-    QString text = done + " (effective from the next block)";
+        return tr("Refused: %1").arg(QString::fromStdString(edit.reason())) + "\n" + refusedWhat;
+    QString text = done + " " + tr("(effective from the next block)");
     for (const mtc::core::Diagnostic& d : edit.diagnostics.items())
         text += "\n" + QString::fromStdString(d.message);
     if (!edit.saved && !edit.diagnostics.hasErrors())
-        text += "\nNot kept in a file: the panel runs without a machine data file";
+        text += "\n" + tr("Not kept in a file: the panel runs without a machine data file");
     return text;
 }
 

@@ -16,20 +16,34 @@ struct ColumnInfo {
 // Headers short enough for the panel's minimum width; the meaning goes
 // into the prompt.
 const ColumnInfo kColumns[ToolTableModel::ColumnCount] = {
-    {"T", "", "tool number", 0},
-    {"Name", "name", "name", 0},
-    {"E", "", "cutting edge", 0},
-    {"R", "radius", "radius R", 3},
-    {"R\nwear", "radius_wear", "wear of R", 3},
-    {"L1", "l1", "length L1", 3},
-    {"L1\nwear", "l1_wear", "wear of L1", 3},
-    {"L2", "l2", "length L2", 3},
-    {"L2\nwear", "l2_wear", "wear of L2", 3},
-    {"L3", "l3", "length L3", 3},
-    {"L3\nwear", "l3_wear", "wear of L3", 3},
-    {"Pos", "orientation", "cutting edge position", 0},
-    {"Corner", "corner_angle", "corner angle", 1},
-    {"Setting", "setting_angle", "setting angle", 1},
+    {QT_TRANSLATE_NOOP("mtc::screens::ToolTableModel", "T"), "",
+     QT_TRANSLATE_NOOP("mtc::screens::ToolTableModel", "tool number"), 0},
+    {QT_TRANSLATE_NOOP("mtc::screens::ToolTableModel", "Name"), "name",
+     QT_TRANSLATE_NOOP("mtc::screens::ToolTableModel", "name"), 0},
+    {QT_TRANSLATE_NOOP("mtc::screens::ToolTableModel", "E"), "",
+     QT_TRANSLATE_NOOP("mtc::screens::ToolTableModel", "cutting edge"), 0},
+    {QT_TRANSLATE_NOOP("mtc::screens::ToolTableModel", "R"), "radius",
+     QT_TRANSLATE_NOOP("mtc::screens::ToolTableModel", "radius R"), 3},
+    {QT_TRANSLATE_NOOP("mtc::screens::ToolTableModel", "R\nwear"), "radius_wear",
+     QT_TRANSLATE_NOOP("mtc::screens::ToolTableModel", "wear of R"), 3},
+    {QT_TRANSLATE_NOOP("mtc::screens::ToolTableModel", "L1"), "l1",
+     QT_TRANSLATE_NOOP("mtc::screens::ToolTableModel", "length L1"), 3},
+    {QT_TRANSLATE_NOOP("mtc::screens::ToolTableModel", "L1\nwear"), "l1_wear",
+     QT_TRANSLATE_NOOP("mtc::screens::ToolTableModel", "wear of L1"), 3},
+    {QT_TRANSLATE_NOOP("mtc::screens::ToolTableModel", "L2"), "l2",
+     QT_TRANSLATE_NOOP("mtc::screens::ToolTableModel", "length L2"), 3},
+    {QT_TRANSLATE_NOOP("mtc::screens::ToolTableModel", "L2\nwear"), "l2_wear",
+     QT_TRANSLATE_NOOP("mtc::screens::ToolTableModel", "wear of L2"), 3},
+    {QT_TRANSLATE_NOOP("mtc::screens::ToolTableModel", "L3"), "l3",
+     QT_TRANSLATE_NOOP("mtc::screens::ToolTableModel", "length L3"), 3},
+    {QT_TRANSLATE_NOOP("mtc::screens::ToolTableModel", "L3\nwear"), "l3_wear",
+     QT_TRANSLATE_NOOP("mtc::screens::ToolTableModel", "wear of L3"), 3},
+    {QT_TRANSLATE_NOOP("mtc::screens::ToolTableModel", "Pos"), "orientation",
+     QT_TRANSLATE_NOOP("mtc::screens::ToolTableModel", "cutting edge position"), 0},
+    {QT_TRANSLATE_NOOP("mtc::screens::ToolTableModel", "Corner"), "corner_angle",
+     QT_TRANSLATE_NOOP("mtc::screens::ToolTableModel", "corner angle"), 1},
+    {QT_TRANSLATE_NOOP("mtc::screens::ToolTableModel", "Setting"), "setting_angle",
+     QT_TRANSLATE_NOOP("mtc::screens::ToolTableModel", "setting angle"), 1},
 };
 
 }  // namespace
@@ -78,7 +92,7 @@ const char* ToolTableModel::columnKey(int column) {
 }
 
 QString ToolTableModel::columnMeaning(int column) {
-    return column >= 0 && column < ColumnCount ? kColumns[column].meaning : "";
+    return column >= 0 && column < ColumnCount ? tr(kColumns[column].meaning) : QString();
 }
 
 double ToolTableModel::value(const mtc::core::ToolEdge& e, int column) {
@@ -151,7 +165,7 @@ QVariant ToolTableModel::headerData(int section, Qt::Orientation orientation, in
     if (role != Qt::DisplayRole || orientation != Qt::Horizontal || section < 0 ||
         section >= ColumnCount)
         return {};
-    return QString(kColumns[section].header);
+    return tr(kColumns[section].header);
 }
 
 }  // namespace mtc::screens

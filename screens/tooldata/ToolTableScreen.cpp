@@ -26,22 +26,22 @@ void ToolTableScreen::activated() {
 void ToolTableScreen::updateHeading() {
     const std::string& file = context().session->setupEditor().files().tools;
     const auto& process = context().session->processConfig(context().process);
-    setHeading(QString("Tool list of process %1 (%2): %3 edges\nFile: %4")
+    setHeading(tr("Tool list of process %1 (%2): %3 edges\nFile: %4")
                    .arg(process.index)
                    .arg(QString::fromStdString(process.name))
                    .arg(model_->rowCount())
-                   .arg(file.empty() ? QString("none, changes hold until the panel ends")
+                   .arg(file.empty() ? tr("none, changes hold until the panel ends")
                                      : QString::fromStdString(file)));
 }
 
 mtc::hmi::SoftKeys ToolTableScreen::softKeys() {
     mtc::hmi::SoftKeys keys(8);
-    keys[0] = {"Edit", [this] { startEdit(); }};
-    keys[1] = {"New tool", [this] { askNewTool(); }};
-    keys[2] = {"New edge", [this] { askNewEdge(); }};
-    keys[3] = {"Delete edge", [this] { askRemoval(false); }};
-    keys[4] = {"Delete tool", [this] { askRemoval(true); }};
-    keys[7] = {"Back", [this] { emit navigateTo("menu"); }};
+    keys[0] = {tr("Edit"), [this] { startEdit(); }};
+    keys[1] = {tr("New tool"), [this] { askNewTool(); }};
+    keys[2] = {tr("New edge"), [this] { askNewEdge(); }};
+    keys[3] = {tr("Delete edge"), [this] { askRemoval(false); }};
+    keys[4] = {tr("Delete tool"), [this] { askRemoval(true); }};
+    keys[7] = {tr("Back"), [this] { emit navigateTo("menu"); }};
     return keys;
 }
 
@@ -57,17 +57,17 @@ void ToolTableScreen::ask(Input input, const QString& prompt, const QString& tex
 void ToolTableScreen::startEdit() {
     if (input_ != Input::None) return;
     if (model_->rowCount() == 0) {
-        say("The tool list is empty: F2 adds a tool");
+        say(tr("The tool list is empty: F2 adds a tool"));
         return;
     }
     const int column = model_->cursorColumn();
     const std::string key = ToolTableModel::columnKey(column);
     if (key.empty()) {
-        say("The tool and edge numbers are not edited: F2 adds a tool, F3 an edge");
+        say(tr("The tool and edge numbers are not edited: F2 adds a tool, F3 an edge"));
         return;
     }
     ask(Input::Value,
-        QString("New %1 of %2 (%3):")
+        tr("New %1 of %2 (%3):")
             .arg(ToolTableModel::columnMeaning(column), edgeName(),
                  QString::fromStdString(mtc::core::toolValueRange(key))),
         model_->currentValueText());
@@ -75,18 +75,17 @@ void ToolTableScreen::startEdit() {
 
 void ToolTableScreen::askNewTool() {
     if (input_ != Input::None) return;
-    ask(Input::NewTool, QString("Number of the new tool (1 .. %1):").arg(mtc::core::kMaxToolNumber),
-        {});
+    ask(Input::NewTool, tr("Number of the new tool (1 .. %1):").arg(mtc::core::kMaxToolNumber), {});
 }
 
 void ToolTableScreen::askNewEdge() {
     if (input_ != Input::None) return;
     if (model_->rowCount() == 0) {
-        say("The tool list is empty: F2 adds a tool");
+        say(tr("The tool list is empty: F2 adds a tool"));
         return;
     }
     ask(Input::NewEdge,
-        QString("New cutting edge of T%1 (1 .. %2):")
+        tr("New cutting edge of T%1 (1 .. %2):")
             .arg(model_->currentTool())
             .arg(mtc::core::kMaxEdgeNumber),
         {});
@@ -94,11 +93,10 @@ void ToolTableScreen::askNewEdge() {
 
 void ToolTableScreen::askRemoval(bool wholeTool) {
     if (input_ != Input::None || model_->rowCount() == 0) return;
-    const QString what = wholeTool
-                             ? QString("tool T%1 with all its edges").arg(model_->currentTool())
-                             : "edge " + edgeName();
+    const QString what = wholeTool ? tr("tool T%1 with all its edges").arg(model_->currentTool())
+                                   : tr("edge %1").arg(edgeName());
     ask(wholeTool ? Input::RemoveTool : Input::RemoveEdge,
-        "Delete " + what + "? Enter deletes, Esc keeps it:", {});
+        tr("Delete %1? Enter deletes, Esc keeps it:").arg(what), {});
 }
 
 void ToolTableScreen::inputConfirmed(const QString& text) {
@@ -129,11 +127,11 @@ void ToolTableScreen::inputCancelled() {
     const Input input = input_;
     input_ = Input::None;
     if (input == Input::Value)
-        say("Input cancelled: " + edgeName() + " " +
-            ToolTableModel::columnMeaning(model_->cursorColumn()) + " stays " +
-            model_->currentValueText());
+        say(tr("Input cancelled: %1 %2 stays %3")
+                .arg(edgeName(), ToolTableModel::columnMeaning(model_->cursorColumn()),
+                     model_->currentValueText()));
     else
-        say("Cancelled: the tool list is unchanged");
+        say(tr("Cancelled: the tool list is unchanged"));
 }
 
 void ToolTableScreen::confirmValue(const QString& text) {
@@ -144,7 +142,8 @@ void ToolTableScreen::confirmValue(const QString& text) {
         processNumber(), model_->currentTool(), model_->currentEdge(),
         {{ToolTableModel::columnKey(column), text.toStdString()}});
     model_->refresh();
-    say(outcomeText(edit, what + " = " + model_->currentValueText(), what + " stays " + old));
+    say(outcomeText(edit, what + " = " + model_->currentValueText(),
+                    tr("%1 stays %2").arg(what, old)));
 }
 
 void ToolTableScreen::confirmNewTool(const QString& text) {
@@ -155,7 +154,8 @@ void ToolTableScreen::confirmNewTool(const QString& text) {
         const QString digits = text.startsWith('T', Qt::CaseInsensitive) ? text.mid(1) : text;
         model_->showEdge(digits.toInt(), 1);
     }
-    say(outcomeText(edit, "New tool " + edgeName() + ": enter its values", "No tool was added"));
+    say(outcomeText(edit, tr("New tool %1: enter its values").arg(edgeName()),
+                    tr("No tool was added")));
 }
 
 void ToolTableScreen::confirmNewEdge(const QString& text) {
@@ -167,7 +167,8 @@ void ToolTableScreen::confirmNewEdge(const QString& text) {
         const QString digits = text.startsWith('E', Qt::CaseInsensitive) ? text.mid(1) : text;
         model_->showEdge(tool, digits.toInt());
     }
-    say(outcomeText(edit, "New edge " + edgeName() + ": enter its values", "No edge was added"));
+    say(outcomeText(edit, tr("New edge %1: enter its values").arg(edgeName()),
+                    tr("No edge was added")));
 }
 
 void ToolTableScreen::confirmRemoval(bool wholeTool) {
@@ -178,7 +179,7 @@ void ToolTableScreen::confirmRemoval(bool wholeTool) {
                                               ? editor.removeTool(processNumber(), tool)
                                               : editor.removeEdge(processNumber(), tool, edge);
     model_->refresh();
-    say(outcomeText(edit, what + " deleted", what + " is kept"));
+    say(outcomeText(edit, tr("%1 deleted").arg(what), tr("%1 is kept").arg(what)));
 }
 
 }  // namespace mtc::screens

@@ -64,7 +64,7 @@ int ZeroOffsetModel::columnCount(const QModelIndex& parent) const {
 
 QVariant ZeroOffsetModel::headerData(int section, Qt::Orientation orientation, int role) const {
     if (role != Qt::DisplayRole || orientation != Qt::Horizontal) return {};
-    if (section == 0) return QString("Offset");
+    if (section == 0) return tr("Offset");
     const int c = section - 1;
     if (c < 0 || c >= static_cast<int>(columns_.size())) return {};
     return QString(QChar(mtc::core::definitionLetter(columns_[static_cast<std::size_t>(c)])));

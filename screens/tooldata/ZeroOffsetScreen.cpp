@@ -37,18 +37,18 @@ void ZeroOffsetScreen::updateHeading() {
         axes += (axes.isEmpty() ? "" : "  ") + QString::fromStdString(axis.name) + ": " +
                 letters.join('/');
     }
-    setHeading(QString("Zero offsets of process %1 (%2). Columns are axis definitions (axis: "
-                       "definitions %3)\nFile: %4")
+    setHeading(tr("Zero offsets of process %1 (%2). Columns are axis definitions (axis: "
+                  "definitions %3)\nFile: %4")
                    .arg(process.index)
                    .arg(QString::fromStdString(process.name), axes,
-                        file.empty() ? QString("none, changes hold until the panel ends")
+                        file.empty() ? tr("none, changes hold until the panel ends")
                                      : QString::fromStdString(file)));
 }
 
 mtc::hmi::SoftKeys ZeroOffsetScreen::softKeys() {
     mtc::hmi::SoftKeys keys(8);
-    keys[0] = {"Edit", [this] { startEdit(); }};
-    keys[7] = {"Back", [this] { emit navigateTo("menu"); }};
+    keys[0] = {tr("Edit"), [this] { startEdit(); }};
+    keys[7] = {tr("Back"), [this] { emit navigateTo("menu"); }};
     return keys;
 }
 
@@ -59,12 +59,12 @@ QString ZeroOffsetScreen::cellName() const {
 void ZeroOffsetScreen::startEdit() {
     if (editing_) return;
     if (model_->currentColumn() == '\0') {
-        say("Put the cursor on an axis column (cursor right) to change an offset");
+        say(tr("Put the cursor on an axis column (cursor right) to change an offset"));
         return;
     }
     const std::string limit = mtc::core::formatDataNumber(mtc::core::kMaxZeroOffset);
     editing_ = true;
-    openInput(QString("New zero offset %1 (-%2 .. %2 mm, degrees on a rotary axis):")
+    openInput(tr("New zero offset %1 (-%2 .. %2 mm, degrees on a rotary axis):")
                   .arg(cellName(), QString::fromStdString(limit)),
               model_->currentValueText());
 }
@@ -77,13 +77,14 @@ void ZeroOffsetScreen::inputConfirmed(const QString& text) {
         processNumber(), model_->currentCode(),
         {{std::string(1, model_->currentColumn()), text.toStdString()}});
     model_->refresh();
-    say(outcomeText(edit, what + " = " + model_->currentValueText(), what + " stays " + old));
+    say(outcomeText(edit, what + " = " + model_->currentValueText(),
+                    tr("%1 stays %2").arg(what, old)));
     showCursor();
 }
 
 void ZeroOffsetScreen::inputCancelled() {
     editing_ = false;
-    say("Input cancelled: " + cellName() + " stays " + model_->currentValueText());
+    say(tr("Input cancelled: %1 stays %2").arg(cellName(), model_->currentValueText()));
 }
 
 }  // namespace mtc::screens

@@ -168,13 +168,14 @@ void PainterToolpathCanvas::drawView(QPainter& painter, const View& view) {
     drawTriad(painter, view);
     const auto* layer = layerOf(view);
     painter.setPen(Qt::white);
-    QString caption = view.developed ? "Developed plane (G32)" : "Toolpath (2D view, no OpenGL)";
+    QString caption =
+        view.developed ? tr("Developed plane (G32)") : tr("Toolpath (2D view, no OpenGL)");
     if (layer && !layer->bounds.empty) {
         const auto& b = layer->bounds;
-        caption += QString("\nextents %1 x %2 x %3 mm")
-                       .arg(b.max[0] - b.min[0], 0, 'f', 1)
-                       .arg(b.max[1] - b.min[1], 0, 'f', 1)
-                       .arg(b.max[2] - b.min[2], 0, 'f', 1);
+        caption += "\n" + tr("extents %1 x %2 x %3 mm")
+                              .arg(b.max[0] - b.min[0], 0, 'f', 1)
+                              .arg(b.max[1] - b.min[1], 0, 'f', 1)
+                              .arg(b.max[2] - b.min[2], 0, 'f', 1);
     }
     painter.drawText(view.rect.adjusted(6, 4, -6, -4), Qt::AlignTop | Qt::AlignLeft, caption);
     painter.restore();
@@ -294,7 +295,7 @@ void PainterToolpathCanvas::drawTriad(QPainter& painter, const View& view) {
         painter.setPen(QPen(colours[axis], 2));
         painter.drawLine(origin, tip);
         painter.drawText(tip + QPointF(3, 3), view.developed && axis < 2
-                                                  ? QString(axis == 0 ? "axial" : "circ.")
+                                                  ? (axis == 0 ? tr("axial") : tr("circ."))
                                                   : QString(names[axis]));
     }
 }

@@ -61,8 +61,8 @@ void ToolpathModel::build(int number) {
     currentMove_ = -1;
     if (!built_) {
         geometry_.reset();
-        problem_ = number ? QString("Program %1 does not exist.").arg(number)
-                          : "No program is selected: select one in the program directory.";
+        problem_ = number ? tr("Program %1 does not exist.").arg(number)
+                          : tr("No program is selected: select one in the program directory.");
         emit geometryChanged();
         return;
     }
@@ -82,14 +82,14 @@ QString ToolpathModel::summary() const {
     if (!geometry_) return problem_;
     QString text = QString("P%1").arg(number_);
     if (built_ && !built_->title.empty()) text += " " + QString::fromStdString(built_->title);
-    text += QString(" · %1 moves · %2 segments · tolerance %3 mm")
-                .arg(geometry_->moves.size())
-                .arg(geometry_->scene.segmentCount() + geometry_->developed.segmentCount())
-                .arg(geometry_->tolerance);
+    text += " · " + tr("%1 moves · %2 segments · tolerance %3 mm")
+                        .arg(geometry_->moves.size())
+                        .arg(geometry_->scene.segmentCount() + geometry_->developed.segmentCount())
+                        .arg(geometry_->tolerance);
     if (geometry_->cylinderAxis >= 0)
-        text += QString(" · G32 RI %1: developed plane | cylinder").arg(geometry_->cylinderRadius);
-    if (geometry_->truncated) text += " · path cut at the segment limit";
-    if (!complete_) text += " · program end not reached";
+        text += " · " + tr("G32 RI %1: developed plane | cylinder").arg(geometry_->cylinderRadius);
+    if (geometry_->truncated) text += " · " + tr("path cut at the segment limit");
+    if (!complete_) text += " · " + tr("program end not reached");
     return text;
 }
 
@@ -170,7 +170,7 @@ void ToolpathModel::updateReposPath() {
 }
 
 QString ToolpathModel::partnerName() const {
-    return link_->partner() == ToolpathLink::Partner::Editor ? "editor" : "restart";
+    return link_->partner() == ToolpathLink::Partner::Editor ? tr("editor") : tr("restart");
 }
 
 void ToolpathModel::followPartner() {
@@ -220,7 +220,7 @@ void ToolpathModel::setHighlight(int program, std::uint32_t block) {
     highlightText_.clear();
     if (const auto p = session_->program(slot_, program); p && block < p->blocks.size()) {
         const std::string id = p->blockId(block);
-        highlightText_ = QString("P%1 %2 (line %3)")
+        highlightText_ = tr("P%1 %2 (line %3)")
                              .arg(program)
                              .arg(QString::fromStdString(id.empty() ? "-" : id))
                              .arg(p->blocks[block].line);

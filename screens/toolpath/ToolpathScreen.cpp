@@ -23,23 +23,23 @@ namespace mtc::screens {
 bool openGlAvailable(QString& reason) {
     const QString platform = QGuiApplication::platformName();
     if (qEnvironmentVariableIsSet("MTC_TOOLPATH_2D")) {
-        reason = "MTC_TOOLPATH_2D is set";
+        reason = ToolpathScreen::tr("MTC_TOOLPATH_2D is set");
         return false;
     }
     if (platform == "offscreen" || platform == "minimal") {
-        reason = QString("the Qt platform '%1' has no OpenGL").arg(platform);
+        reason = ToolpathScreen::tr("the Qt platform '%1' has no OpenGL").arg(platform);
         return false;
     }
     QOpenGLContext context;
     if (!context.create()) {
-        reason = "no OpenGL context can be created";
+        reason = ToolpathScreen::tr("no OpenGL context can be created");
         return false;
     }
     QOffscreenSurface surface;
     surface.setFormat(context.format());
     surface.create();
     if (!surface.isValid() || !context.makeCurrent(&surface)) {
-        reason = "the OpenGL context cannot be made current";
+        reason = ToolpathScreen::tr("the OpenGL context cannot be made current");
         return false;
     }
     context.doneCurrent();
@@ -80,7 +80,7 @@ ToolpathScreen::ToolpathScreen(const mtc::hmi::ScreenContext& context,
         if (slot == this->context().process && isVisible()) model_->refresh();
     });
     if (!glReason_.isEmpty())
-        message_->setText("2D view: " + glReason_ + " (the 3D view needs OpenGL).");
+        message_->setText(tr("2D view: %1 (the 3D view needs OpenGL).").arg(glReason_));
 }
 
 ToolpathScreen::~ToolpathScreen() = default;
@@ -95,28 +95,30 @@ QString ToolpathScreen::legendText() const {
     auto swatch = [](const QColor& colour, const QString& text) {
         return QString("<span style='color:%1'>&#9632;</span> %2").arg(colour.name(), text);
     };
-    QString text = "Tool centre path: " + swatch(p.rapid, "G0") + " &nbsp;" + swatch(p.feed, "G1") +
-                   " &nbsp;" + swatch(p.arc, "G2/G3");
+    QString text = tr("Tool centre path:") + " " + swatch(p.rapid, "G0") + " &nbsp;" +
+                   swatch(p.feed, "G1") + " &nbsp;" + swatch(p.arc, "G2/G3");
     const auto g = model_->geometry();
     if (g && g->contour.segmentCount() + g->developedContour.segmentCount() > 0)
-        text += " &nbsp;&nbsp; " + swatch(p.contour, "programmed contour (G41/G42, edge, G48)");
+        text += " &nbsp;&nbsp; " + swatch(p.contour, tr("programmed contour (G41/G42, edge, G48)"));
     return text;
 }
 
 void ToolpathScreen::renderText() {
     summary_->setText(model_->summary());
     legend_->setText(legendText());
-    QString line = "Linked to the " + model_->partnerName();
-    if (!model_->highlightText().isEmpty()) line += " · highlighted: " + model_->highlightText();
+    QString line = tr("Linked to the %1").arg(model_->partnerName());
+    if (!model_->highlightText().isEmpty())
+        line += " · " + tr("highlighted: %1").arg(model_->highlightText());
     if (!model_->problem().isEmpty()) line += (line.isEmpty() ? "" : " · ") + model_->problem();
     if (!glReason_.isEmpty())
-        line += (line.isEmpty() ? "" : " · ") + QString("2D view: ") + glReason_;
+        line += (line.isEmpty() ? "" : " · ") + tr("2D view: %1").arg(glReason_);
     message_->setText(line);
 }
 
 void ToolpathScreen::preset(ToolpathPreset p) {
     canvas_->showPreset(p);
-    message_->setText(QString("View %1").arg(presetName(p)));
+    message_->setText(tr("View %1").arg(p == ToolpathPreset::Isometric ? tr("isometric")
+                                                                       : QString(presetName(p))));
 }
 
 QString ToolpathScreen::defaultExportPath() const {
@@ -132,15 +134,15 @@ bool ToolpathScreen::exportPng(const QString& path) {
     buffer.open(QIODevice::WriteOnly);
     std::string error;
     if (image.isNull() || !image.save(&buffer, "PNG")) {
-        message_->setText("The view could not be turned into a PNG picture.");
+        message_->setText(tr("The view could not be turned into a PNG picture."));
         return false;
     }
     if (!mtc::core::writeFileAtomically(path.toStdString(),
                                         std::string_view(bytes.constData(), bytes.size()), error)) {
-        message_->setText("PNG not written: " + QString::fromStdString(error));
+        message_->setText(tr("PNG not written: %1").arg(QString::fromStdString(error)));
         return false;
     }
-    message_->setText("View written to " + path);
+    message_->setText(tr("View written to %1").arg(path));
     return true;
 }
 
@@ -185,14 +187,14 @@ void ToolpathScreen::keyPressEvent(QKeyEvent* event) {
 
 mtc::hmi::SoftKeys ToolpathScreen::softKeys() {
     mtc::hmi::SoftKeys keys(8);
-    keys[0] = {"G17\nview", [this] { preset(ToolpathPreset::G17); }};
-    keys[1] = {"G18\nview", [this] { preset(ToolpathPreset::G18); }};
-    keys[2] = {"G19\nview", [this] { preset(ToolpathPreset::G19); }};
-    keys[3] = {"Iso-\nmetric", [this] { preset(ToolpathPreset::Isometric); }};
-    keys[4] = {"Fit", [this] { canvas_->fit(); }};
-    keys[5] = {"Export\nPNG", [this] { exportPng(defaultExportPath()); }};
-    keys[6] = {"Restart", [this] { emit navigateTo("restart"); }};
-    keys[7] = {"Back", [this] { emit navigateTo("menu"); }};
+    keys[0] = {tr("G17\nview"), [this] { preset(ToolpathPreset::G17); }};
+    keys[1] = {tr("G18\nview"), [this] { preset(ToolpathPreset::G18); }};
+    keys[2] = {tr("G19\nview"), [this] { preset(ToolpathPreset::G19); }};
+    keys[3] = {tr("Iso-\nmetric"), [this] { preset(ToolpathPreset::Isometric); }};
+    keys[4] = {tr("Fit"), [this] { canvas_->fit(); }};
+    keys[5] = {tr("Export\nPNG"), [this] { exportPng(defaultExportPath()); }};
+    keys[6] = {tr("Restart"), [this] { emit navigateTo("restart"); }};
+    keys[7] = {tr("Back"), [this] { emit navigateTo("menu"); }};
     return keys;
 }
 

@@ -253,7 +253,7 @@ void setBounds(vtkCubeAxesActor* axes, const mtc::core::ToolpathBounds& b) {
 
 QString extents(const mtc::core::ToolpathBounds& b, bool flat) {
     if (b.empty) return {};
-    QString text = QString("extents %1 x %2")
+    QString text = VtkToolpathCanvas::tr("extents %1 x %2")
                        .arg(b.max[0] - b.min[0], 0, 'f', 1)
                        .arg(b.max[1] - b.min[1], 0, 'f', 1);
     if (!flat) text += QString(" x %1").arg(b.max[2] - b.min[2], 0, 'f', 1);
@@ -325,16 +325,16 @@ void VtkToolpathCanvas::rebuild() {
             part->coarseMapper->SetInputData(part->coarse);
         }
         setBounds(part->axes, layer.bounds);
-        part->axes->SetXTitle(part->developed ? "axial (mm)" : "X (mm)");
-        part->axes->SetYTitle(part->developed ? "circumference (mm)" : "Y (mm)");
+        part->axes->SetXTitle(part->developed ? tr("axial (mm)").toUtf8().constData() : "X (mm)");
+        part->axes->SetYTitle(part->developed ? tr("circumference (mm)").toUtf8().constData()
+                                              : "Y (mm)");
         part->axes->SetZTitle(part->developed ? "" : "Z (mm)");
         part->axes->SetUse2DMode(part->developed);
         part->axes->SetZAxisVisibility(!part->developed);
         QString caption =
-            part->developed
-                ? QString("Developed plane, G32 RI %1").arg(g->cylinderRadius)
-                : (s.split ? QString("Wrapped on the cylinder RI %1").arg(g->cylinderRadius)
-                           : QString("Toolpath P%1").arg(model_->programNumber()));
+            part->developed ? tr("Developed plane, G32 RI %1").arg(g->cylinderRadius)
+                            : (s.split ? tr("Wrapped on the cylinder RI %1").arg(g->cylinderRadius)
+                                       : tr("Toolpath P%1").arg(model_->programNumber()));
         caption += "\n" + extents(layer.bounds, part->developed);
         part->caption->SetInput(caption.toUtf8().constData());
     }
