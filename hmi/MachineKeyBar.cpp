@@ -1,11 +1,14 @@
 #include "hmi/MachineKeyBar.h"
 
+#include <QEvent>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QPushButton>
 #include <QStyle>
 #include <QVBoxLayout>
 #include <QVariant>
+#include <algorithm>
+#include <cstdlib>
 
 #include "hmi/CoreTerms.h"
 #include "hmi/KeyMap.h"
@@ -71,6 +74,48 @@ QLabel* MachineKeyBar::addOverride(const QString& name, const QString& title, bo
     add("Up", "+", 1);
     qobject_cast<QVBoxLayout*>(layout())->addLayout(row);
     return label;
+}
+
+namespace {
+/// `label` on two lines, broken at the blank nearest its middle, when it is
+/// wider than `width` pixels; unchanged otherwise.
+QString twoLinesIfWider(const QString& label, const QFontMetrics& metrics, int width) {
+    if (metrics.horizontalAdvance(label) <= width || !label.contains(' ')) return label;
+    int best = -1;
+    for (int i = label.indexOf(' '); i >= 0; i = label.indexOf(' ', i + 1))
+        if (best < 0 || std::abs(i - label.size() / 2) < std::abs(best - label.size() / 2))
+            best = i;
+    return label.left(best) + '\n' + label.mid(best + 1);
+}
+}  // namespace
+
+void MachineKeyBar::fitLabels() {
+    for (const auto& [key, button] : buttons_) {
+        const QString label = keyLabel(key);
+        // Room inside the key's 2 px frame (the style sheet has no padding).
+        const QString text = twoLinesIfWider(label, button->fontMetrics(), button->width() - 6);
+        if (button->text() != text) button->setText(text);
+    }
+}
+
+QSize MachineKeyBar::sizeHint() const {
+    QSize hint = QWidget::sizeHint();
+    int widest = 0;
+    for (const auto& [key, button] : buttons_)
+        widest = std::max(widest, button->fontMetrics().horizontalAdvance(keyLabel(key)));
+    const QMargins margins = layout()->contentsMargins();
+    hint.setWidth(std::max(hint.width(), widest + 12 + margins.left() + margins.right()));
+    return hint;
+}
+
+void MachineKeyBar::resizeEvent(QResizeEvent* event) {
+    QWidget::resizeEvent(event);
+    fitLabels();
+}
+
+void MachineKeyBar::changeEvent(QEvent* event) {
+    QWidget::changeEvent(event);
+    if (event->type() == QEvent::FontChange) fitLabels();
 }
 
 void MachineKeyBar::setOverrides(int feedPercent, int rapidPercent) {

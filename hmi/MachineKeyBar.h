@@ -30,6 +30,9 @@ class MachineKeyBar : public QWidget {
     void setLamp(mtc::core::ControlKey key, bool on);
     /// The button of `key` (nullptr for a key the bar does not have).
     QPushButton* button(mtc::core::ControlKey key) const;
+    /// Wide enough for every M key's label on one line: the bar only wraps
+    /// a label when the window leaves it less (fitLabels).
+    QSize sizeHint() const override;
 
   signals:
     void keyPressed(mtc::core::ControlKey key);
@@ -37,7 +40,15 @@ class MachineKeyBar : public QWidget {
     /// An override button: `rapid` false = feed; `direction` +1 / -1.
     void overrideStep(bool rapid, int direction);
 
+  protected:
+    void resizeEvent(QResizeEvent* event) override;
+    void changeEvent(QEvent* event) override;
+
   private:
+    /// The M keys' labels broken at a blank where a label is wider than its
+    /// key (German "Steuerung rücksetzen" on a narrow window).
+    void fitLabels();
+
     QLabel* addOverride(const QString& name, const QString& title, bool rapid);
     QPushButton* speed_;
     QLabel* feedOverride_;

@@ -37,11 +37,15 @@ QStringList breakAtSoftHyphens(const QString& word,
     for (int i = 0; i < parts.size(); ++i) {
         const QString candidate = current + parts[i];
         const bool last = i + 1 == parts.size();
-        if (current.isEmpty() || fits(last ? candidate : candidate + '-')) {
+        // A piece ending in a hyphen of its own ("NC-") needs no second one.
+        const auto broken = [](const QString& piece) {
+            return piece.endsWith('-') ? piece : piece + '-';
+        };
+        if (current.isEmpty() || fits(last ? candidate : broken(candidate))) {
             current = candidate;
             continue;
         }
-        pieces << current + '-';
+        pieces << broken(current);
         current = parts[i];
     }
     pieces << current;

@@ -672,7 +672,7 @@
     </message>
     <message>
         <source>Error display</source>
-        <translation>Fehlerfenster</translation>
+        <translation>Fehler­fenster</translation>
     </message>
     <message>
         <source>Graphical NC editor (GNE)</source>
@@ -696,7 +696,7 @@
     </message>
     <message>
         <source>NC options</source>
-        <translation>NC-Optionen</translation>
+        <translation>NC-­Optionen</translation>
     </message>
     <message>
         <source>Base screen (position)</source>
@@ -1071,8 +1071,8 @@ program</source>
     <message>
         <source>Discard
 changes</source>
-        <translation>Änderungen
-verwerfen</translation>
+        <translation>Ände­rungen
+ver­werfen</translation>
     </message>
     <message>
         <source>Back</source>
@@ -1491,7 +1491,7 @@ prüfen</translation>
         <source>Recall
 entry</source>
         <translation>Eingabe
-zurückholen</translation>
+zurück­holen</translation>
     </message>
     <message>
         <source>Clear
@@ -2350,7 +2350,7 @@ Durchläufe</translation>
         <source>Accept
 target</source>
         <translation>Ziel
-übernehmen</translation>
+über­nehmen</translation>
     </message>
     <message>
         <source>Abort</source>
@@ -2464,7 +2464,7 @@ prüfen</translation>
         <source>Next LA
 segment</source>
         <translation>Nächster
-LA-Abschnitt</translation>
+LA-­Abschnitt</translation>
     </message>
     <message>
         <source>Editor</source>
