@@ -68,13 +68,12 @@ bool NcOptionsHolder::setCompilerActive(bool active, QString& error) {
 bool NcOptionsHolder::setUserCompiler(int slot, const QString& command, QString& error) {
     const std::string text = command.trimmed().toStdString();
     if (slot < 1 || slot > mtc::core::kUserCompilerSlotCount) {
-        error = QString("there is no user compiler %1").arg(slot);
+        error = tr("there is no user compiler %1").arg(slot);
         return false;
     }
     if (std::string problem = mtc::core::checkUserCompilerCommand(text); !problem.empty()) {
-        error = QString("User compiler %1 not changed: %2")
-                    .arg(slot)
-                    .arg(QString::fromStdString(problem));
+        error =
+            tr("User compiler %1 not changed: %2").arg(slot).arg(QString::fromStdString(problem));
         return false;
     }
     if (text == mtc::core::userCompilerCommand(options_.userCompilers, slot)) {
@@ -103,8 +102,8 @@ bool NcOptionsHolder::mayRunUserCompilers(QString& refusal) {
             UserCompilerTrust::approve(directory_, slot, command);
             continue;
         }
-        refusal = QString("User compiler %1 not run: its command '%2' came with the program "
-                          "folder (%3) and was not approved")
+        refusal = tr("User compiler %1 not run: its command '%2' came with the program "
+                     "folder (%3) and was not approved")
                       .arg(slot)
                       .arg(command, mtc::core::kNcOptionsFileName);
         emit optionsChanged();
@@ -116,12 +115,12 @@ bool NcOptionsHolder::mayRunUserCompilers(QString& refusal) {
 
 bool NcOptionsHolder::commitSettings(const mtc::core::NcOptions& changed, QString& error) {
     if (const QString station = runningStation(); !station.isEmpty()) {
-        error = "NC options not changed: station " + station + " is running a program";
+        error = tr("NC options not changed: station %1 is running a program").arg(station);
         return false;
     }
     std::string reason;
     if (persistent() && !mtc::core::writeNcOptionsFile(directory_.toStdString(), changed, reason)) {
-        error = QString("NC options not changed, %1 not written: %2")
+        error = tr("NC options not changed, %1 not written: %2")
                     .arg(mtc::core::kNcOptionsFileName, QString::fromStdString(reason));
         return false;
     }
@@ -139,7 +138,7 @@ bool NcOptionsHolder::addGlobalMacro(const QString& entry, QString& error) {
     std::string problem;
     if (!mtc::core::parseGlobalMacroEntry(entry.trimmed().toStdString(), options_.globalMacros, {},
                                           macro, problem)) {
-        error = "Macro refused: " + QString::fromStdString(problem);
+        error = tr("Macro refused: %1").arg(QString::fromStdString(problem));
         return false;
     }
     std::vector<MacroDefinition> macros = options_.globalMacros;
@@ -149,7 +148,7 @@ bool NcOptionsHolder::addGlobalMacro(const QString& entry, QString& error) {
 
 bool NcOptionsHolder::changeGlobalMacro(int index, const QString& entry, QString& error) {
     if (index < 0 || index >= static_cast<int>(options_.globalMacros.size())) {
-        error = "no global macro selected";
+        error = tr("no global macro selected");
         return false;
     }
     const std::size_t at = static_cast<std::size_t>(index);
@@ -157,7 +156,7 @@ bool NcOptionsHolder::changeGlobalMacro(int index, const QString& entry, QString
     std::string problem;
     if (!mtc::core::parseGlobalMacroEntry(entry.trimmed().toStdString(), options_.globalMacros,
                                           options_.globalMacros[at].name, macro, problem)) {
-        error = "Macro refused: " + QString::fromStdString(problem);
+        error = tr("Macro refused: %1").arg(QString::fromStdString(problem));
         return false;
     }
     std::vector<MacroDefinition> macros = options_.globalMacros;
@@ -167,7 +166,7 @@ bool NcOptionsHolder::changeGlobalMacro(int index, const QString& entry, QString
 
 bool NcOptionsHolder::removeGlobalMacro(int index, QString& error) {
     if (index < 0 || index >= static_cast<int>(options_.globalMacros.size())) {
-        error = "no global macro selected";
+        error = tr("no global macro selected");
         return false;
     }
     std::vector<MacroDefinition> macros = options_.globalMacros;
@@ -177,13 +176,13 @@ bool NcOptionsHolder::removeGlobalMacro(int index, QString& error) {
 
 bool NcOptionsHolder::commitMacros(std::vector<MacroDefinition> macros, QString& error) {
     if (const QString station = runningStation(); !station.isEmpty()) {
-        error = "Global macros not changed: station " + station + " is running a program";
+        error = tr("Global macros not changed: station %1 is running a program").arg(station);
         return false;
     }
     std::string reason;
     if (persistent() &&
         !mtc::core::writeGlobalMacroFile(directory_.toStdString(), macros, reason)) {
-        error = QString("Global macros not changed, %1 not written: %2")
+        error = tr("Global macros not changed, %1 not written: %2")
                     .arg(mtc::core::kGlobalMacroFileName, QString::fromStdString(reason));
         return false;
     }

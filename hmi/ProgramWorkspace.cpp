@@ -181,9 +181,10 @@ void ProgramWorkspace::mapToSource(ErrorEntry& entry) const {
     if (objectLine > 0 && static_cast<std::size_t>(objectLine) <= result->lineMap.size())
         sourceLine = static_cast<int>(result->lineMap[objectLine - 1].sourceLine);
     entry.line = sourceLine;
-    entry.details << QString("compiled program, object line %1; source line %2")
+    entry.details << ProgramWorkspace::tr("compiled program, object line %1; source line %2")
                          .arg(objectLine)
-                         .arg(sourceLine > 0 ? QString::number(sourceLine) : QString("unknown"));
+                         .arg(sourceLine > 0 ? QString::number(sourceLine)
+                                             : ProgramWorkspace::tr("unknown"));
 }
 
 ErrorOrigin originOf(mtc::core::DiagnosticSource source) {

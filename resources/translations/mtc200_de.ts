@@ -786,6 +786,45 @@
     </message>
 </context>
 <context>
+    <name>mtc::hmi::NcOptionsHolder</name>
+    <message>
+        <source>there is no user compiler %1</source>
+        <translation>es gibt keinen Anwender-Compiler %1</translation>
+    </message>
+    <message>
+        <source>User compiler %1 not changed: %2</source>
+        <translation>Anwender-Compiler %1 nicht geändert: %2</translation>
+    </message>
+    <message>
+        <source>User compiler %1 not run: its command &apos;%2&apos; came with the program folder (%3) and was not approved</source>
+        <translation>Anwender-Compiler %1 nicht ausgeführt: sein Befehl &apos;%2&apos; kam mit dem Programmordner (%3) und wurde nicht freigegeben</translation>
+    </message>
+    <message>
+        <source>NC options not changed: station %1 is running a program</source>
+        <translation>NC-Optionen nicht geändert: Station %1 führt ein Programm aus</translation>
+    </message>
+    <message>
+        <source>NC options not changed, %1 not written: %2</source>
+        <translation>NC-Optionen nicht geändert, %1 nicht geschrieben: %2</translation>
+    </message>
+    <message>
+        <source>Macro refused: %1</source>
+        <translation>Makro abgewiesen: %1</translation>
+    </message>
+    <message>
+        <source>no global macro selected</source>
+        <translation>kein globales Makro gewählt</translation>
+    </message>
+    <message>
+        <source>Global macros not changed: station %1 is running a program</source>
+        <translation>Globale Makros nicht geändert: Station %1 führt ein Programm aus</translation>
+    </message>
+    <message>
+        <source>Global macros not changed, %1 not written: %2</source>
+        <translation>Globale Makros nicht geändert, %1 nicht geschrieben: %2</translation>
+    </message>
+</context>
+<context>
     <name>mtc::hmi::PanelWindow</name>
     <message>
         <source>MTC200 panel simulator</source>
@@ -810,6 +849,17 @@ will diesen Befehl ausführen (aus seiner %3):
 %4
 
 Er stammt nicht von diesem Arbeitsplatz. Jetzt und künftig für diesen Ordner ausführen?</translation>
+    </message>
+</context>
+<context>
+    <name>mtc::hmi::ProgramWorkspace</name>
+    <message>
+        <source>compiled program, object line %1; source line %2</source>
+        <translation>compiliertes Programm, Objektzeile %1; Quellzeile %2</translation>
+    </message>
+    <message>
+        <source>unknown</source>
+        <translation>unbekannt</translation>
     </message>
 </context>
 <context>
@@ -1865,6 +1915,71 @@ L1 %2  L2 %3  L3 %4</translation>
     <message>
         <source>, call level %1</source>
         <translation>, Aufrufebene %1</translation>
+    </message>
+</context>
+<context>
+    <name>mtc::screens::ProgramsScreen</name>
+    <message>
+        <source>Program %1 compiled: status %2, %3 messages</source>
+        <translation>Programm %1 compiliert: Status %2, %3 Meldungen</translation>
+    </message>
+    <message>
+        <source>NC options: Compiler active = %1</source>
+        <translation>NC-Optionen: Compiler aktiv = %1</translation>
+    </message>
+    <message>
+        <source>Yes</source>
+        <translation>Ja</translation>
+    </message>
+    <message>
+        <source>No</source>
+        <translation>Nein</translation>
+    </message>
+    <message>
+        <source>Select
+program</source>
+        <translation>Programm
+anwählen</translation>
+    </message>
+    <message>
+        <source>Edit</source>
+        <translation>Bearbeiten</translation>
+    </message>
+    <message>
+        <source>Compile</source>
+        <translation>Compi­lieren</translation>
+    </message>
+    <message>
+        <source>Runtime
+program</source>
+        <translation>Laufzeit­programm</translation>
+    </message>
+    <message>
+        <source>NC
+options</source>
+        <translation>NC-
+Optionen</translation>
+    </message>
+    <message>
+        <source>Compiler
+active: Yes</source>
+        <translation>Compiler
+aktiv: Ja</translation>
+    </message>
+    <message>
+        <source>Compiler
+active: No</source>
+        <translation>Compiler
+aktiv: Nein</translation>
+    </message>
+    <message>
+        <source>Error
+display</source>
+        <translation>Fehler­fenster</translation>
+    </message>
+    <message>
+        <source>Back</source>
+        <translation>Zurück</translation>
     </message>
 </context>
 <context>

@@ -93,7 +93,7 @@ void ProgramsScreen::compileCurrent() {
         return;
     }
     const auto result = workspace_->lastResult(number);
-    message_->setText(QString("Program %1 compiled: status %2, %3 messages")
+    message_->setText(tr("Program %1 compiled: status %2, %3 messages")
                           .arg(number)
                           .arg(QChar(mtc::core::statusLetter(workspace_->status(number))))
                           .arg(result ? int(result->errors.size()) : 0));
@@ -104,8 +104,8 @@ void ProgramsScreen::toggleCompiler() {
     if (!workspace_->setCompilerActive(!workspace_->compilerActive(), error))
         message_->setText(error);
     else
-        message_->setText(QString("NC options: Compiler active = %1")
-                              .arg(workspace_->compilerActive() ? "Yes" : "No"));
+        message_->setText(tr("NC options: Compiler active = %1")
+                              .arg(workspace_->compilerActive() ? tr("Yes") : tr("No")));
     emit softKeysChanged();
 }
 
@@ -122,19 +122,20 @@ bool ProgramsScreen::eventFilter(QObject* watched, QEvent* event) {
 
 mtc::hmi::SoftKeys ProgramsScreen::softKeys() {
     mtc::hmi::SoftKeys keys(8);
-    keys[0] = {"Select\nprogram", [this] { selectCurrent(); }};
-    keys[1] = {"Edit", [this] { editCurrent(); }};
+    keys[0] = {tr("Select\nprogram"), [this] { selectCurrent(); }};
+    keys[1] = {tr("Edit"), [this] { editCurrent(); }};
     // Seed 001 ch. 7: <Compile> only while "Compiler active" is Yes.
-    keys[2] = {"Compile", [this] { compileCurrent(); }, workspace_->compilerActive()};
-    keys[3] = {"Runtime\nprogram", [this] {
+    keys[2] = {tr("Compile"), [this] { compileCurrent(); }, workspace_->compilerActive()};
+    keys[3] = {tr("Runtime\nprogram"), [this] {
                    workspace_->requestEdit(currentNumber(), 0);
                    emit navigateTo("runtime");
                }};
-    keys[4] = {"NC\noptions", [this] { emit navigateTo("nc-options"); }};
-    keys[5] = {workspace_->compilerActive() ? "Compiler\nactive: Yes" : "Compiler\nactive: No",
-               [this] { toggleCompiler(); }};
-    keys[6] = {"Error\ndisplay", [this] { emit navigateTo("errors"); }};
-    keys[7] = {"Back", [this] { emit navigateTo("menu"); }};
+    keys[4] = {tr("NC\noptions"), [this] { emit navigateTo("nc-options"); }};
+    keys[5] = {
+        workspace_->compilerActive() ? tr("Compiler\nactive: Yes") : tr("Compiler\nactive: No"),
+        [this] { toggleCompiler(); }};
+    keys[6] = {tr("Error\ndisplay"), [this] { emit navigateTo("errors"); }};
+    keys[7] = {tr("Back"), [this] { emit navigateTo("menu"); }};
     return keys;
 }
 

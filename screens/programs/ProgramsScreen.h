@@ -28,7 +28,9 @@ class ProgramsScreen : public mtc::hmi::Screen {
     ProgramsScreen(const mtc::hmi::ScreenContext& context,
                    std::shared_ptr<mtc::hmi::ProgramWorkspace> workspace);
     QString screenName() const override { return "programs"; }
-    QString title() const override { return "Program directory"; }
+    QString title() const override {
+        return QCoreApplication::translate("ScreenTitle", "Program directory");
+    }
     mtc::hmi::SoftKeys softKeys() override;
     void activated() override;
 
