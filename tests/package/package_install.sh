@@ -47,6 +47,11 @@ check "installed mtc200-panel --help without a display" \
 check "installed mtc200-panel starts offscreen" \
   "QT_QPA_PLATFORM=offscreen '$panel' --screen position --screenshot '$tmp/shot.png' 2>'$tmp/panel.err'"
 check "its screenshot is a PNG" "head -c 8 '$tmp/shot.png' | od -An -c | grep -q 'P   N   G'"
+# The translations are compiled into the panel (D-018): German from the package too.
+check "installed mtc200-panel speaks German" \
+  "env -u DISPLAY -u WAYLAND_DISPLAY QT_QPA_PLATFORM= '$panel' --lang de --help | grep -q 'Maschinenkonfigurationsdatei'"
+check "installed mtc200-panel offscreen in German" \
+  "QT_QPA_PLATFORM=offscreen '$panel' --lang de --screen position --screenshot '$tmp/shot-de.png' 2>'$tmp/panel-de.err'"
 
 [ "$failures" -eq 0 ] || { echo "$failures check(s) failed"; exit 1; }
 echo "package: all checks passed"
