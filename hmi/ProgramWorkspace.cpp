@@ -8,6 +8,11 @@ namespace mtc::hmi {
 
 using mtc::core::CompileStatus;
 
+namespace {
+/// How often the panel looks for finished background compiles.
+constexpr int kBackgroundPollMs = 50;
+}  // namespace
+
 ProgramWorkspace::ProgramWorkspace(CellSession* session, int slot, QObject* parent)
     : QObject(parent), session_(session), slot_(slot), options_(&session->ncOptions()) {
     compilation().setChangeListener([this](int number) { compilationChanged(number); });
@@ -28,6 +33,12 @@ ProgramWorkspace::ProgramWorkspace(CellSession* session, int slot, QObject* pare
     connect(session_, &CellSession::processChanged, this, [this](int changed) {
         if (changed == slot_) watchRuntime();
     });
+    // D-019: user compilers run beside the panel; their results are taken here.
+    backgroundPoll_.setInterval(kBackgroundPollMs);
+    connect(&backgroundPoll_, &QTimer::timeout, this, [this] {
+        if (compilation().anyCompiling()) compilation().takeFinished();
+    });
+    backgroundPoll_.start();
 }
 
 ProgramWorkspace::~ProgramWorkspace() {
@@ -111,6 +122,10 @@ bool ProgramWorkspace::save(int number, const QString& text, QString& error) {
     }
     session_->announcePrograms(slot_);
     return true;
+}
+
+bool ProgramWorkspace::compiling(int number) const {
+    return compilation().compiling(number);
 }
 
 bool ProgramWorkspace::compile(int number, QString& error) {

@@ -2,6 +2,7 @@
 
 #include <QObject>
 #include <QString>
+#include <QTimer>
 #include <cstdint>
 #include <memory>
 
@@ -64,8 +65,12 @@ class ProgramWorkspace : public QObject {
 
     /// Saves `text` as program `number` (core::ProgramCompilation::save).
     bool save(int number, const QString& text, QString& error);
-    /// Compiles program `number` (core::ProgramCompilation::compile).
+    /// Compiles program `number` (core::ProgramCompilation::compile). With
+    /// user compilers it runs in the background (compiling()); the panel
+    /// stays usable and programChanged() tells when it is done (D-019).
     bool compile(int number, QString& error);
+    /// A background compile of `number` (user compilers) runs.
+    bool compiling(int number) const;
     /// The compile result the station runs for `number` (nullptr = source).
     std::shared_ptr<const mtc::core::CompileResult> running(int number) const;
 
@@ -103,6 +108,7 @@ class ProgramWorkspace : public QObject {
     CellSession* session_;
     int slot_;
     ErrorLog errors_;
+    QTimer backgroundPoll_;             ///< takes the results of background compiles
     NcOptionsHolder* options_;          ///< the cell's NC options (owned by the session)
     std::uint64_t seenDiagnostic_ = 0;  ///< serial of the station log read last
     int editProgram_ = 0;

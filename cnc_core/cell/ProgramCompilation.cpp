@@ -1,10 +1,13 @@
 #include "cnc_core/cell/ProgramCompilation.h"
 
+#include <condition_variable>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <mutex>
 #include <sstream>
 #include <system_error>
+#include <thread>
 
 #include "cnc_core/cell/Cell.h"
 #include "cnc_core/compiler/CompilerFiles.h"
@@ -77,6 +80,20 @@ CompilerError refusalOf(int number, std::string code, std::string message, std::
 }
 
 }  // namespace
+
+/// A user compiler chain running on its own thread. The thread owns copies
+/// of everything it reads (source, options, the process configuration), so
+/// neither the cell nor this object has to outlive it.
+struct ProgramCompilation::Background {
+    std::weak_ptr<const Program> program;  ///< the source it compiles
+    std::uint64_t generation = 0;          ///< NC options invalidations when started
+    bool keepFiles = true;                 ///< false: in memory (status C from files)
+    std::mutex mutex;
+    std::condition_variable finished;
+    bool done = false;
+    std::shared_ptr<const CompileResult> result;
+    std::shared_ptr<const lookahead::LookAheadAnalysis> plan;
+};
 
 ProgramCompilation::ProgramCompilation(Cell& cell, int slot)
     : cell_(cell),
@@ -152,37 +169,123 @@ std::shared_ptr<const CompileResult> ProgramCompilation::runtimeResult(int numbe
     if (auto result = lastResult(number)) return result;
     const auto program = cell_.program(slot_, number);
     if (!program || status(number) != CompileStatus::Compiled) return nullptr;
+    if (userCompilerBusy()) return nullptr;
     CompilerOptions options = compilerOptions(number);
     options.compilerActive = true;
-    auto result = std::make_shared<CompileResult>(runCompilers(number, *program, options));
+    if (!cell_.ncOptions().userCompilers.empty()) {
+        if (!refusedUserCompilers(number)) startBackground(number, program, options, false);
+        return nullptr;
+    }
+    auto result = std::make_shared<CompileResult>(compileNow(number, *program, options));
     if (result->status != CompileStatus::Compiled) return nullptr;
     results_[number] = result;
     setMessages(number, result->errors);  // the warnings are in no file (C-014)
     return result;
 }
 
-CompileResult ProgramCompilation::runCompilers(int number, const Program& program,
-                                               const CompilerOptions& options) {
+CompileResult ProgramCompilation::compileNow(int number, const Program& program,
+                                             const CompilerOptions& options) {
     *capture_ = {};
-    const UserCompilerSlots& chain = cell_.ncOptions().userCompilers;
-    CompileResult result;
-    std::string refusal;
-    if (chain.empty()) {
-        result = compiler_.compile(program, options);
-    } else if (approval_ && !approval_(refusal)) {
-        // D-010: a command that came with the program folder runs only when
-        // the operator has seen and approved it.
-        result.status = CompileStatus::Error;
-        result.errors.push_back(refusalOf(options.programNumber, "USER_COMPILER_NOT_APPROVED",
-                                          "User compiler not approved: not run.", refusal));
-    } else {
-        ScratchDirectory scratch;  // C-011: built-in programs have no directory
-        const std::string& directory =
-            cell_.programDirectory().empty() ? scratch.path() : cell_.programDirectory();
-        result = compileWithUserCompilers(compiler_, program.source, options, chain, directory);
-    }
+    CompileResult result = compiler_.compile(program, options);
     lookAhead_[number] = std::make_shared<const lookahead::LookAheadAnalysis>(*capture_);
     return result;
+}
+
+bool ProgramCompilation::refusedUserCompilers(int number) {
+    // D-010: a command that came with the program folder runs only when the
+    // operator has seen and approved it.
+    std::string refusal;
+    if (!approval_ || approval_(refusal)) return false;
+    auto refused = std::make_shared<CompileResult>();
+    refused->status = CompileStatus::Error;
+    refused->errors.push_back(refusalOf(number, "USER_COMPILER_NOT_APPROVED",
+                                        "User compiler not approved: not run.", refusal));
+    apply(number, refused, nullptr, true);
+    return true;
+}
+
+void ProgramCompilation::startBackground(int number, const ProgramPtr& program,
+                                         const CompilerOptions& options, bool keepFiles) {
+    auto job = std::make_shared<Background>();
+    job->program = program;
+    job->generation = generation_;
+    job->keepFiles = keepFiles;
+    background_[number] = job;
+    auto process = std::make_shared<const ProcessConfig>(*options.process);
+    CompilerOptions own = options;
+    own.process = process.get();
+    std::thread([job, process, own, source = program->source,
+                 chain = cell_.ncOptions().userCompilers, directory = cell_.programDirectory()] {
+        auto capture = std::make_shared<lookahead::LookAheadAnalysis>();
+        const Compiler compiler(passesCapturing(capture));
+        ScratchDirectory scratch;  // C-011: built-in programs have no directory
+        auto result = std::make_shared<const CompileResult>(compileWithUserCompilers(
+            compiler, source, own, chain, directory.empty() ? scratch.path() : directory));
+        const std::lock_guard<std::mutex> lock(job->mutex);
+        job->result = std::move(result);
+        job->plan = std::move(capture);
+        job->done = true;
+        job->finished.notify_all();
+    }).detach();
+}
+
+bool ProgramCompilation::userCompilerBusy() const {
+    // The user compilers of both stations exchange files of fixed names in
+    // the one program directory (C-011): one chain at a time in the cell.
+    for (int slot = 0; slot < cell_.stationCount(); ++slot)
+        if (cell_.compilation(slot).anyCompiling()) return true;
+    return false;
+}
+
+bool ProgramCompilation::takeFinished() {
+    bool any = false;
+    for (auto it = background_.begin(); it != background_.end();) {
+        const std::shared_ptr<Background> job = it->second;
+        std::unique_lock<std::mutex> lock(job->mutex);
+        if (!job->done) {
+            ++it;
+            continue;
+        }
+        lock.unlock();
+        const int number = it->first;
+        it = background_.erase(it);
+        any = true;
+        // A source saved or NC options changed meanwhile: the result is stale.
+        if (job->program.lock() != cell_.program(slot_, number) || job->generation != generation_) {
+            changed(number);
+            continue;
+        }
+        if (job->keepFiles)
+            apply(number, job->result, job->plan, true);
+        else if (job->result->status == CompileStatus::Compiled)
+            apply(number, job->result, job->plan, false);
+        else
+            changed(number);
+    }
+    return any;
+}
+
+void ProgramCompilation::waitForCompiles() {
+    for (const auto& [number, job] : background_) {
+        std::unique_lock<std::mutex> lock(job->mutex);
+        job->finished.wait(lock, [&] { return job->done; });
+    }
+    takeFinished();
+}
+
+void ProgramCompilation::apply(int number, std::shared_ptr<const CompileResult> result,
+                               std::shared_ptr<const lookahead::LookAheadAnalysis> plan,
+                               bool keepFiles) {
+    results_[number] = result;
+    lookAhead_[number] = std::move(plan);
+    messages_[number] = result->errors;
+    if (!keepFiles) {  // a compile in memory: files and status stay (C-014)
+        changed(number);
+        return;
+    }
+    writeCompileFiles(number, *result);
+    setStatus(number, result->status == CompileStatus::Compiled ? CompileStatus::Compiled
+                                                                : CompileStatus::Error);
 }
 
 std::string ProgramCompilation::filePath(int number, const std::string& extension) const {
@@ -271,12 +374,17 @@ bool ProgramCompilation::compile(int number, std::string& error) {
         error = "the program uses no compiler keyword: nothing to compile";
         return false;
     }
-    auto result = std::make_shared<CompileResult>(runCompilers(number, *program, options));
-    results_[number] = result;
-    messages_[number] = result->errors;
-    writeCompileFiles(number, *result);
-    setStatus(number, result->status == CompileStatus::Compiled ? CompileStatus::Compiled
-                                                                : CompileStatus::Error);
+    if (userCompilerBusy()) {
+        error = "a user compiler runs: program " + std::to_string(number) +
+                " is compiled when it is done";
+        return false;
+    }
+    if (!cell_.ncOptions().userCompilers.empty()) {
+        if (!refusedUserCompilers(number)) startBackground(number, program, options, true);
+        return true;
+    }
+    auto result = std::make_shared<const CompileResult>(compileNow(number, *program, options));
+    apply(number, std::move(result), lookAhead_[number], true);
     return true;
 }
 
@@ -321,11 +429,16 @@ std::string ProgramCompilation::prepareOne(int number, DiagnosticList& diagnosti
         return {};
     }
     if (current == CompileStatus::NotCompiled) {
-        std::string ignored;  // compile() only refuses cases excluded above
+        std::string ignored;  // refused while a user compiler runs (below)
         compile(number, ignored);
         current = status(number);
     }
     const auto result = current == CompileStatus::Compiled ? runtimeResult(number) : nullptr;
+    if (!result && userCompilerBusy()) {
+        runSource();
+        return "Start refused: program " + std::to_string(number) +
+               " is being compiled (user compiler) \u2014 Start again when done";
+    }
     if (!result) {
         runSource();
         return "Start refused: program " + std::to_string(number) +
@@ -350,6 +463,7 @@ void ProgramCompilation::invalidate(const std::vector<int>& numbers) {
         messages_.erase(number);
     }
     needsCompiling_.clear();  // the global macros may have changed
+    ++generation_;            // a compile running now used the old options
     changed(0);
 }
 

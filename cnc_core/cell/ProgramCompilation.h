@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstdint>
 #include <functional>
 #include <map>
 #include <memory>
@@ -80,6 +81,26 @@ class ProgramCompilation {
     /// (seed 001 ch. 9: the error window shows the error file).
     void loadErrorFiles();
 
+    // ---- user compilers run beside the station (D-019): they may take up
+    // to kUserCompilerTimeoutSeconds, and the panel must not freeze. A
+    // compile with user compilers (the Compile key, or Start of a program
+    // with status N) starts in the background and returns at once; Start is
+    // refused while it runs and goes when it is done.
+    /// A background compile of `number` runs.
+    bool compiling(int number) const { return background_.count(number) > 0; }
+    bool anyCompiling() const { return !background_.empty(); }
+    /// A user compiler chain runs on any station of the cell: another one
+    /// waits (their files share the program directory, C-011).
+    bool userCompilerBusy() const;
+    /// Applies what the finished background compiles gave (files, status,
+    /// messages; a result of a source saved or of NC options changed
+    /// meanwhile is dropped). True when one finished. The panel calls it
+    /// from its timer.
+    bool takeFinished();
+    /// Waits for every background compile and applies it (tests, the end
+    /// of a run).
+    void waitForCompiles();
+
     /// Decides whether the user compilers may run now (the panel asks the
     /// operator about commands that came with a program folder, D-010):
     /// false with the reason refuses the compile. Without one they may run.
@@ -91,6 +112,7 @@ class ProgramCompilation {
     void setChangeListener(ChangeListener listener) { listener_ = std::move(listener); }
 
   private:
+    struct Background;
     struct NeedsCompiling {
         std::weak_ptr<const Program> program;
         bool needed = false;
@@ -98,9 +120,19 @@ class ProgramCompilation {
     CompilerOptions compilerOptions(int number) const;
     bool needsCompiling(int number, const ProgramPtr& program) const;
     std::string prepareOne(int number, DiagnosticList& diagnostics);
-    /// Runs the chain (user compilers 1, 2, INDRAMAT, 3, 4); the look-ahead
-    /// plan of the run goes to lookAhead_[number].
-    CompileResult runCompilers(int number, const Program& program, const CompilerOptions& options);
+    /// Compiles `number` now (INDRAMAT compiler only); the look-ahead plan of
+    /// the run goes to lookAhead_[number].
+    CompileResult compileNow(int number, const Program& program, const CompilerOptions& options);
+    /// Starts the user compiler chain on `program` beside the caller;
+    /// `keepFiles` false: a compile in memory of a program with status C.
+    void startBackground(int number, const ProgramPtr& program, const CompilerOptions& options,
+                         bool keepFiles);
+    /// The operator refused the user compilers (D-010): the compile ends
+    /// with USER_COMPILER_NOT_APPROVED; false when they may run.
+    bool refusedUserCompilers(int number);
+    /// Takes a finished compile: result, plan, messages, files and status.
+    void apply(int number, std::shared_ptr<const CompileResult> result,
+               std::shared_ptr<const lookahead::LookAheadAnalysis> plan, bool keepFiles);
     CompileStatus statusFromFiles(int number) const;
     void setStatus(int number, CompileStatus status);
     void setMessages(int number, std::vector<CompilerError> messages);
@@ -119,6 +151,8 @@ class ProgramCompilation {
     std::map<int, std::shared_ptr<const lookahead::LookAheadAnalysis>> lookAhead_;
     std::map<int, std::shared_ptr<const CompileResult>> running_;  ///< in the store
     std::map<int, std::vector<CompilerError>> messages_;
+    std::map<int, std::shared_ptr<Background>> background_;
+    std::uint64_t generation_ = 0;  ///< grows when the NC options invalidate compiles
     UserCompilerApproval approval_;
     ChangeListener listener_;
 };

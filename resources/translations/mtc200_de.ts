@@ -1128,6 +1128,10 @@ ver­werfen</translation>
         <source>Back</source>
         <translation>Zurück</translation>
     </message>
+    <message>
+        <source>The user compilers run; the status follows in the program directory</source>
+        <translation>Die Anwender-Compiler laufen; der Status folgt im Programmverzeichnis</translation>
+    </message>
 </context>
 <context>
     <name>mtc::screens::ErrorsScreen</name>
@@ -1980,6 +1984,10 @@ display</source>
     <message>
         <source>Back</source>
         <translation>Zurück</translation>
+    </message>
+    <message>
+        <source>Program %1: the user compilers run; the status follows</source>
+        <translation>Programm %1: Die Anwender-Compiler laufen; der Status folgt</translation>
     </message>
 </context>
 <context>

@@ -114,6 +114,10 @@ void EditorScreen::compile() {
         showMessage(error, true);
         return;
     }
+    if (workspace_->compiling(program_)) {  // D-019: the status follows when done
+        showMessage(tr("The user compilers run; the status follows in the program directory"));
+        return;
+    }
     const auto result = workspace_->lastResult(program_);
     if (result && result->status == mtc::core::CompileStatus::Compiled)
         showMessage(tr("Compiled: %1 object blocks, %2 warnings (Ctrl+E)")

@@ -92,6 +92,10 @@ void ProgramsScreen::compileCurrent() {
         message_->setText(error);
         return;
     }
+    if (workspace_->compiling(number)) {  // D-019: the status follows when done
+        message_->setText(tr("Program %1: the user compilers run; the status follows").arg(number));
+        return;
+    }
     const auto result = workspace_->lastResult(number);
     message_->setText(tr("Program %1 compiled: status %2, %3 messages")
                           .arg(number)

@@ -167,6 +167,7 @@ TEST_F(ProgramCompilationTest, AUserCompilerRunsOnlyWhenApproved) {
 
     compilation.setUserCompilerApproval([](std::string&) { return true; });
     ASSERT_TRUE(compilation.compile(7, error)) << error;
+    compilation.waitForCompiles();
     EXPECT_TRUE(fs::exists(marker)) << "approved, it ran";
 }
 
@@ -182,6 +183,68 @@ TEST_F(ProgramCompilationTest, InvalidatedProgramsRunTheirSourceAgain) {
     EXPECT_EQ(cell.compilation(0).running(7), nullptr);
     EXPECT_FALSE(exists("P7.NCO"));
     EXPECT_EQ(cell.compilation(0).status(7), CompileStatus::NotCompiled);
+}
+
+/// A user compiler that waits until the test creates `gate` (the compile
+/// runs beside the test until then; 60 s timeout if the test never does).
+std::string gatedCompiler(const fs::path& gate) {
+    return "sh -c 'while [ ! -e " + gate.string() + " ]; do sleep 0.01; done' gate";
+}
+
+TEST_F(ProgramCompilationTest, UserCompilersRunBesideTheStationAndStartWaitsForThem) {
+    core::Cell cell(demoCell());
+    core::NcOptions options;
+    options.compilerActive = true;
+    const fs::path gate = dir_ / "gate";
+    options.userCompilers.before[0] = gatedCompiler(gate);
+    cell.setNcOptions(options);
+    addFile(cell, 7, "P7.DAT", kRounded);
+    core::ProgramCompilation& compilation = cell.compilation(0);
+    std::string error;
+    ASSERT_TRUE(compilation.compile(7, error)) << error;
+    EXPECT_TRUE(compilation.compiling(7)) << "compile() returned while the user compiler runs";
+    EXPECT_EQ(compilation.status(7), CompileStatus::NotCompiled);
+    EXPECT_FALSE(compilation.compile(7, error)) << "one user compiler chain at a time";
+    EXPECT_NE(error.find("a user compiler runs"), std::string::npos) << error;
+    cell.addProgram(1, 7, "P7.DAT", kRounded);
+    error.clear();
+    EXPECT_FALSE(cell.compilation(1).compile(7, error)) << "in the whole cell";
+    EXPECT_NE(error.find("a user compiler runs"), std::string::npos) << error;
+
+    core::Station& mill = cell.station(0);
+    ASSERT_TRUE(mill.selectProgram(7));
+    EXPECT_FALSE(mill.press(ControlKey::Start));
+    EXPECT_NE(mill.control().alarm().find("being compiled"), std::string::npos)
+        << mill.control().alarm();
+    EXPECT_FALSE(compilation.takeFinished()) << "still waiting at the gate";
+
+    std::ofstream(gate).put('x');
+    compilation.waitForCompiles();
+    EXPECT_FALSE(compilation.compiling(7));
+    EXPECT_EQ(compilation.status(7), CompileStatus::Compiled);
+    EXPECT_TRUE(exists("P7.NCO"));
+    EXPECT_TRUE(mill.press(ControlKey::Start)) << mill.control().alarm();
+    ASSERT_NE(cell.store().findRuntime(mill.process(), 7), nullptr);
+}
+
+TEST_F(ProgramCompilationTest, ABackgroundResultOfAnOldSourceIsDropped) {
+    core::Cell cell(demoCell());
+    core::NcOptions options;
+    options.compilerActive = true;
+    const fs::path gate = dir_ / "gate";
+    options.userCompilers.before[0] = gatedCompiler(gate);
+    cell.setNcOptions(options);
+    addFile(cell, 7, "P7.DAT", kRounded);
+    core::ProgramCompilation& compilation = cell.compilation(0);
+    std::string error;
+    ASSERT_TRUE(compilation.compile(7, error)) << error;
+    ASSERT_TRUE(compilation.save(7, kRounded + "N0005 M30\n", error)) << error;
+    std::ofstream(gate).put('x');
+    compilation.waitForCompiles();
+    EXPECT_EQ(compilation.status(7), CompileStatus::NotCompiled)
+        << "the saved text is not compiled";
+    EXPECT_FALSE(exists("P7.NCO"));
+    EXPECT_EQ(compilation.lastResult(7), nullptr);
 }
 
 }  // namespace

@@ -17,6 +17,7 @@
 #include "PanelFixture.h"
 #include "cnc_core/compiler/NcOptions.h"
 #include "hmi/NcOptionsHolder.h"
+#include "hmi/UserCompilerTrust.h"
 
 namespace {
 
@@ -149,8 +150,11 @@ class UserCompilerTrustTest : public QObject {
         watch.start(10);
         pickProgram(panel, 9);
         panel.press(Qt::Key_F3);
-        QTRY_VERIFY2(directoryRow(panel, 9).contains("[C]"), qPrintable(directoryRow(panel, 9)));
+        // The .NCO of the first start says C already; the compile runs in
+        // the background (D-019) and leaves its marker when done.
+        QTRY_VERIFY(!panel.session->cell().compilation(0).anyCompiling());
         QVERIFY(QFile::exists(stick.marker()));
+        QVERIFY2(directoryRow(panel, 9).contains("[C]"), qPrintable(directoryRow(panel, 9)));
         QVERIFY(!asked);
     }
 
@@ -175,6 +179,38 @@ class UserCompilerTrustTest : public QObject {
                      std::string("true"));
         QVERIFY(panel.session->ncOptions().userCompilerApproved(3));
         QVERIFY(!panel.session->ncOptions().userCompilerApproved(2));
+    }
+    void thePanelStaysUsableWhileAUserCompilerRuns() {
+        // D-019: the user compiler waits until the test opens its gate; the
+        // panel meanwhile takes keys, refuses Start with a reason, and shows
+        // status C once the compiler is done.
+        StickFolder stick;
+        const QString gate = stick.path("GATE");
+        QFile options(stick.path("NC_OPTIONS.CFG"));
+        QVERIFY(options.open(QIODevice::WriteOnly));
+        options.write(QString("COMPILER_ACTIVE = YES\nUSER_COMPILER_1 = sh -c 'while [ ! -e "
+                              "%1 ]; do sleep 0.01; done' gate\n")
+                          .arg(gate)
+                          .toUtf8());
+        options.close();
+        mtc::hmi::UserCompilerTrust::trustFolder(QDir(stick.dir.path()).canonicalPath());
+        PanelFixture panel(stick.options());
+        pickProgram(panel, 9);
+        panel.press(Qt::Key_F3);  // Compile: returns at once
+        auto* message = child<QLabel>(panel, "programs", "programsMessage");
+        QVERIFY2(message->text().contains("user compilers run"), qPrintable(message->text()));
+        QVERIFY2(directoryRow(panel, 9).contains("[N]"), qPrintable(directoryRow(panel, 9)));
+        panel.session->selectProgram(0, 9);
+        QVERIFY(!panel.session->station(0).press(mtc::core::ControlKey::Start));
+        QVERIFY2(QString::fromStdString(panel.session->station(0).control().alarm())
+                     .contains("being compiled"),
+                 panel.session->station(0).control().alarm().c_str());
+        panel.window->showScreen("errors");  // the panel goes on working
+        QCOMPARE(panel.window->currentScreenName(), QString("errors"));
+        QFile open(gate);
+        QVERIFY(open.open(QIODevice::WriteOnly));
+        open.close();
+        QTRY_VERIFY2(directoryRow(panel, 9).contains("[C]"), qPrintable(directoryRow(panel, 9)));
     }
 };
 
