@@ -266,9 +266,10 @@ bool ProgramCompilation::takeFinished() {
 }
 
 void ProgramCompilation::waitForCompiles() {
-    for (const auto& [number, job] : background_) {
-        std::unique_lock<std::mutex> lock(job->mutex);
-        job->finished.wait(lock, [&] { return job->done; });
+    for (const auto& entry : background_) {  // (no structured binding: clang's C++17 lambdas)
+        Background& job = *entry.second;
+        std::unique_lock<std::mutex> lock(job.mutex);
+        job.finished.wait(lock, [&job] { return job.done; });
     }
     takeFinished();
 }

@@ -69,8 +69,8 @@ std::vector<ModalWord> findModalWords(std::string_view text) {
                     word.problem = "the modal text is empty";
             }
         }
+        i = word.end > i ? word.end : end;  // before the move below
         found.push_back(std::move(word));
-        i = word.end > i ? word.end : end;
     }
     return found;
 }

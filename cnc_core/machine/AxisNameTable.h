@@ -34,7 +34,7 @@ class AxisNameTable {
     /// Looks up letter (A..Z) + index (0..3).
     AxisLookup find(char letter, int index) const {
         if (letter < 'A' || letter > 'Z' || index < 0 || index > 3) return {};
-        return entries_[static_cast<size_t>((letter - 'A') * 4 + index)];
+        return entries_[static_cast<size_t>(letter - 'A') * 4 + static_cast<size_t>(index)];
     }
 
   private:

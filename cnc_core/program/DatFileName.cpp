@@ -36,7 +36,7 @@ bool parseFields(std::string_view name, DatFileName& out, std::string* whyNot) {
     out.plant = hexDigit(name[1]);
     int d[6];
     for (int i = 0; i < 6; ++i) {
-        d[i] = digit(name[static_cast<std::size_t>(2 + i)]);
+        d[i] = digit(name[2 + static_cast<std::size_t>(i)]);
         if (d[i] < 0) return fail(whyNot, "package, process and program number must be digits");
     }
     if (out.plant < 0) return fail(whyNot, "the plant address is one digit 0-9 or A-F");
