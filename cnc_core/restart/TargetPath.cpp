@@ -149,11 +149,15 @@ class PathFollower {
     bool programOf(const Program& program, const Word& word, const SourceLocation& where,
                    const PathReference& next, ProgramPtr& destination) {
         double number = word.number;
-        std::string shown = std::to_string(static_cast<long long>(number));
+        const auto literal = exactInteger<long long>(number);
+        std::string shown = literal ? std::to_string(*literal) : formatGeneral(number, 10);
         if (word.expr >= 0 && !variableProgram(program, word, where, next, number, shown))
             return false;
-        destination = store_.find(process_, static_cast<int>(number));
-        if (destination && number == std::floor(number)) return true;
+        // Any double may come here (@1=-1E308): no cast outside int's range
+        // (fuzz finding target_path e0dea8c, replayed under UBSan).
+        const std::optional<int> whole = exactInteger<int>(number);
+        destination = whole ? store_.find(process_, *whole) : nullptr;
+        if (destination) return true;
         return fail("RESTART_PATH_PROGRAM_NOT_FOUND", where,
                     "the command leads to program " + shown + ", which does not exist in process " +
                         std::to_string(process_));
