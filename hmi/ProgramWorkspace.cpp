@@ -131,7 +131,24 @@ bool ProgramWorkspace::compiling(int number) const {
 bool ProgramWorkspace::compile(int number, QString& error) {
     std::string reason;
     if (compilation().compile(number, reason)) return true;
-    error = QString::fromStdString(reason);
+    using Refusal = mtc::core::ProgramCompilation::Refusal;
+    switch (compilation().lastRefusal()) {
+        case Refusal::NoProgram:
+            error = tr("program %1 does not exist").arg(number);
+            break;
+        case Refusal::CompilerOff:
+            error = tr("the compiler is not active (NC options: Compiler active = No)");
+            break;
+        case Refusal::NothingToCompile:
+            error = tr("the program uses no compiler keyword: nothing to compile");
+            break;
+        case Refusal::UserCompilerBusy:
+            error = tr("a user compiler runs: program %1 is compiled when it is done").arg(number);
+            break;
+        case Refusal::None:
+            error = QString::fromStdString(reason);
+            break;
+    }
     return false;
 }
 

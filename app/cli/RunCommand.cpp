@@ -304,8 +304,7 @@ int runRunCommand(const CliOptions& options) {
     // machine has no effect on the run, so the interpreter need not even
     // build the moves (about 10 % of a run of plain moves); with it, the
     // moves must reach the machine (G26 slows them, ITM measures, 508..510).
-    interpreter.options().output.motion =
-        !options.noMotion || station.adaptiveFeed().available();
+    interpreter.options().output.motion = !options.noMotion || station.adaptiveFeed().available();
     RunSamples samples(options.sampleMs, reportedAxisNames(interpreter));
     if (options.json) json.beginObject();
     if (mode == MotionMode::Json) {

@@ -361,21 +361,26 @@ bool ProgramCompilation::save(int number, const std::string& text, std::string& 
 }
 
 bool ProgramCompilation::compile(int number, std::string& error) {
+    lastRefusal_ = Refusal::None;
     const auto program = cell_.program(slot_, number);
     if (!program) {
+        lastRefusal_ = Refusal::NoProgram;
         error = "program " + std::to_string(number) + " does not exist";
         return false;
     }
     if (!cell_.ncOptions().compilerActive) {
+        lastRefusal_ = Refusal::CompilerOff;
         error = "the compiler is not active (NC options: Compiler active = No)";
         return false;
     }
     const CompilerOptions options = compilerOptions(number);
     if (!needsCompilation(*program, options) && cell_.ncOptions().userCompilers.empty()) {
+        lastRefusal_ = Refusal::NothingToCompile;
         error = "the program uses no compiler keyword: nothing to compile";
         return false;
     }
     if (userCompilerBusy()) {
+        lastRefusal_ = Refusal::UserCompilerBusy;
         error = "a user compiler runs: program " + std::to_string(number) +
                 " is compiled when it is done";
         return false;

@@ -67,6 +67,10 @@ class ProgramCompilation {
     /// .ERR) written beside the program file, status C or E. False with
     /// `error` when the compiler did not run (not active, nothing to compile).
     bool compile(int number, std::string& error);
+    /// Why the last compile() did not run the compiler (a screen words it
+    /// in the operator's language; `error` is the English text).
+    enum class Refusal { None, NoProgram, CompilerOff, NothingToCompile, UserCompilerBusy };
+    Refusal lastRefusal() const { return lastRefusal_; }
     /// Makes what Start runs for `number` (and program 99, which holds the
     /// labels a program calls) ready (seed 001 ch. 10/11, C-013): with the
     /// compiler active, status N is compiled first, status C puts the object
@@ -152,7 +156,8 @@ class ProgramCompilation {
     std::map<int, std::shared_ptr<const CompileResult>> running_;  ///< in the store
     std::map<int, std::vector<CompilerError>> messages_;
     std::map<int, std::shared_ptr<Background>> background_;
-    std::uint64_t generation_ = 0;  ///< grows when the NC options invalidate compiles
+    std::uint64_t generation_ = 0;
+    Refusal lastRefusal_ = Refusal::None;  ///< grows when the NC options invalidate compiles
     UserCompilerApproval approval_;
     ChangeListener listener_;
 };

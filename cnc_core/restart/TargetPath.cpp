@@ -5,8 +5,8 @@
 
 #include "cnc_core/interp/ExpressionEvaluator.h"
 #include "cnc_core/language/CheckedNumber.h"
-#include "cnc_core/text/Numbers.h"
 #include "cnc_core/restart/RestartRoute.h"
+#include "cnc_core/text/Numbers.h"
 
 namespace mtc::core {
 

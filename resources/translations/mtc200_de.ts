@@ -861,6 +861,22 @@ Er stammt nicht von diesem Arbeitsplatz. Jetzt und künftig für diesen Ordner a
         <source>unknown</source>
         <translation>unbekannt</translation>
     </message>
+    <message>
+        <source>program %1 does not exist</source>
+        <translation>Programm %1 existiert nicht</translation>
+    </message>
+    <message>
+        <source>the compiler is not active (NC options: Compiler active = No)</source>
+        <translation>der Compiler ist nicht aktiv (NC-Optionen: Compiler aktiv = Nein)</translation>
+    </message>
+    <message>
+        <source>the program uses no compiler keyword: nothing to compile</source>
+        <translation>das Programm verwendet kein Compiler-Schlüsselwort: nichts zu compilieren</translation>
+    </message>
+    <message>
+        <source>a user compiler runs: program %1 is compiled when it is done</source>
+        <translation>ein Anwender-Compiler läuft: Programm %1 wird compiliert, wenn er fertig ist</translation>
+    </message>
 </context>
 <context>
     <name>mtc::hmi::StatusHeader</name>

@@ -4,6 +4,7 @@
 // panel in German: every screen's title and soft keys differ from English
 // except the words both languages share, and no soft key or M key label is
 // clipped at the default window size.
+#include <QLabel>
 #include <QPushButton>
 #include <QTextBrowser>
 
@@ -136,6 +137,22 @@ class TranslationsTest : public QObject {
         QCOMPARE(german.value("restart/menu"), QString("Satzvorlauf"));
         auto* reset = panel.window->findChild<QPushButton*>("mkey-7");
         QCOMPARE(reset->text().simplified(), QString("Steuerung rücksetzen"));  // may take 2 lines
+    }
+
+    // The compile refusals come from the core as a reason, worded by the
+    // panel in the operator's language.
+    void germanCompileRefusal() {
+        mtc::hmi::PanelOptions options;
+        options.language = "de";
+        PanelFixture panel(options);
+        pickProgram(panel, 1);    // a built-in program without compiler keywords
+        panel.press(Qt::Key_F6);  // Compiler active = Ja
+        panel.press(Qt::Key_F3);  // Compile
+        auto* message = child<QLabel>(panel, "programs", "programsMessage");
+        QCOMPARE(
+            message->text(),
+            QString("das Programm verwendet kein Compiler-Schlüsselwort: nichts zu compilieren"));
+        panel.press(Qt::Key_F6);  // back to No for the other cases
     }
 
     // F12 in German: the screen's help text, its seed section and the panel's

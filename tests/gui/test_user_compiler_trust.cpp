@@ -3,13 +3,13 @@
 // is shown to the operator before it runs; refusing does not run it, an
 // approval is remembered for the folder; a command typed at this desk runs
 // without a question.
+#include <QAbstractButton>
 #include <QDir>
 #include <QFile>
 #include <QLabel>
 #include <QLineEdit>
 #include <QListView>
 #include <QListWidget>
-#include <QAbstractButton>
 #include <QMessageBox>
 #include <QTemporaryDir>
 #include <QTimer>
