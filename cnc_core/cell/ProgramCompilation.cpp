@@ -3,9 +3,7 @@
 #include <condition_variable>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <mutex>
-#include <sstream>
 #include <system_error>
 #include <thread>
 
@@ -15,6 +13,7 @@
 #include "cnc_core/compiler/lookahead/LookAheadPass.h"
 #include "cnc_core/language/CompilerWords.h"
 #include "cnc_core/program/AtomicWrite.h"
+#include "cnc_core/program/FileText.h"
 
 namespace mtc::core {
 
@@ -38,15 +37,6 @@ bool modified(const std::string& path, fs::file_time_type& time) {
     std::error_code error;
     time = fs::last_write_time(path, error);
     return !error;
-}
-
-bool readWholeFile(const std::string& path, std::string& text) {
-    std::ifstream file(path, std::ios::binary);
-    if (!file) return false;
-    std::ostringstream bytes;
-    bytes << file.rdbuf();
-    text = bytes.str();
-    return true;
 }
 
 /// A private scratch directory for user compilers of built-in programs
@@ -311,7 +301,7 @@ CompileStatus ProgramCompilation::statusFromFiles(int number) const {
         // C-014: only errors make status E (an .ERR with notices only, as
         // older versions wrote beside a good .NCO, does not)
         std::string text;
-        if (!readWholeFile(errorFile, text) || errorFileHasErrors(text))
+        if (std::string unread; !readFileText(errorFile, text, unread) || errorFileHasErrors(text))
             return CompileStatus::Error;
     }
     return CompileStatus::NotCompiled;
@@ -497,7 +487,8 @@ void ProgramCompilation::loadErrorFiles() {
     for (const auto& program : cell_.programs(slot_)) {
         if (status(program->number) != CompileStatus::Error) continue;
         std::string text;
-        if (!readWholeFile(filePath(program->number, "ERR"), text)) continue;
+        if (std::string unread; !readFileText(filePath(program->number, "ERR"), text, unread))
+            continue;
         std::string identification;
         std::vector<CompilerError> errors = parseErrorFile(text, identification);
         for (CompilerError& error : errors) {

@@ -191,13 +191,18 @@ std::string gatedCompiler(const fs::path& gate) {
     return "sh -c 'while [ ! -e " + gate.string() + " ]; do sleep 0.01; done' gate";
 }
 
-TEST_F(ProgramCompilationTest, UserCompilersRunBesideTheStationAndStartWaitsForThem) {
-    core::Cell cell(demoCell());
+/// Compiler active, user compiler 1 gated by `gate`, program 7 in the folder.
+void useGatedCompiler(core::Cell& cell, const fs::path& gate) {
     core::NcOptions options;
     options.compilerActive = true;
-    const fs::path gate = dir_ / "gate";
     options.userCompilers.before[0] = gatedCompiler(gate);
     cell.setNcOptions(options);
+}
+
+TEST_F(ProgramCompilationTest, UserCompilersRunBesideTheStationAndStartWaitsForThem) {
+    core::Cell cell(demoCell());
+    const fs::path gate = dir_ / "gate";
+    useGatedCompiler(cell, gate);
     addFile(cell, 7, "P7.DAT", kRounded);
     core::ProgramCompilation& compilation = cell.compilation(0);
     std::string error;
@@ -229,11 +234,8 @@ TEST_F(ProgramCompilationTest, UserCompilersRunBesideTheStationAndStartWaitsForT
 
 TEST_F(ProgramCompilationTest, ABackgroundResultOfAnOldSourceIsDropped) {
     core::Cell cell(demoCell());
-    core::NcOptions options;
-    options.compilerActive = true;
     const fs::path gate = dir_ / "gate";
-    options.userCompilers.before[0] = gatedCompiler(gate);
-    cell.setNcOptions(options);
+    useGatedCompiler(cell, gate);
     addFile(cell, 7, "P7.DAT", kRounded);
     core::ProgramCompilation& compilation = cell.compilation(0);
     std::string error;
