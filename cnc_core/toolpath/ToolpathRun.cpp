@@ -18,6 +18,20 @@ void keep(DiagnosticList& into, const DiagnosticList& from, bool chunkEnd) {
 }
 }  // namespace
 
+bool runToProgramEnd(Interpreter& interpreter, std::uint64_t blockBudget,
+                     DiagnosticList& diagnostics, std::uint64_t& blocks) {
+    for (;;) {
+        const std::uint64_t left = blockBudget - blocks;
+        const std::uint64_t slice = std::min(left, kChunk);
+        RunResult run = interpreter.run(slice);
+        blocks += run.blocksInterpreted;
+        const bool chunkEnd = run.status == RunStatus::BudgetExceeded && slice < left;
+        keep(diagnostics, run.diagnostics, chunkEnd);
+        if ((chunkEnd || run.status == RunStatus::Stopped) && blocks < blockBudget) continue;
+        return run.status == RunStatus::Ended;
+    }
+}
+
 ToolpathRunResult buildToolpath(const ProcessConfig& config, const ProgramStore& programs,
                                 int number, const ToolpathSettings& settings,
                                 std::uint64_t blockBudget) {
@@ -27,17 +41,7 @@ ToolpathRunResult buildToolpath(const ProcessConfig& config, const ProgramStore&
     Interpreter interpreter(config, programs, builder);
     interpreter.options().continueAfterError = true;
     if (!interpreter.select(number, 0, &result.diagnostics)) return result;
-    for (;;) {
-        const std::uint64_t left = blockBudget - result.blocks;
-        const std::uint64_t slice = std::min(left, kChunk);
-        RunResult run = interpreter.run(slice);
-        result.blocks += run.blocksInterpreted;
-        const bool chunkEnd = run.status == RunStatus::BudgetExceeded && slice < left;
-        keep(result.diagnostics, run.diagnostics, chunkEnd);
-        if ((chunkEnd || run.status == RunStatus::Stopped) && result.blocks < blockBudget) continue;
-        result.complete = run.status == RunStatus::Ended;
-        break;
-    }
+    result.complete = runToProgramEnd(interpreter, blockBudget, result.diagnostics, result.blocks);
     result.geometry = builder.take();
     return result;
 }

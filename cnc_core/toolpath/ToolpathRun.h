@@ -15,6 +15,14 @@ struct ToolpathRunResult {
     bool complete = false;       ///< the program reached its end
 };
 
+/// Runs `interpreter` (a program selected, check mode) in chunks until the
+/// program ends or `blockBudget` blocks were interpreted; the first 100
+/// diagnostics go to `diagnostics`, the blocks to `blocks`. True when the
+/// program reached its end. The loop of every whole-program simulation
+/// (toolpath, material removal).
+bool runToProgramEnd(Interpreter& interpreter, std::uint64_t blockBudget,
+                     DiagnosticList& diagnostics, std::uint64_t& blocks);
+
 /// Interprets program `number` of `config`'s process from its first block to
 /// its end on a fresh interpreter (check mode: a rejected block is reported
 /// and skipped, M00/M01 go on) and collects its moves with a ToolpathBuilder.

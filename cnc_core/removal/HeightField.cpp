@@ -1,0 +1,75 @@
+#include "cnc_core/removal/HeightField.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "cnc_core/removal/SweptDisc.h"
+
+namespace mtc::core::removal {
+
+std::array<int, 2> cellsWithin(double lo, double hi, double origin, double step, int count) {
+    const double first = std::ceil((lo - origin) / step - 0.5);
+    const double last = std::floor((hi - origin) / step - 0.5);
+    if (!(first <= last) || !(last >= 0.0) || !(first <= count - 1.0)) return {1, 0};
+    // Clipped as doubles before the conversion: a coordinate of 1e300 is fine.
+    return {static_cast<int>(std::max(first, 0.0)), static_cast<int>(std::min(last, count - 1.0))};
+}
+
+HeightField::HeightField(const Box& stock, int columns, int rows)
+    : stock_(stock),
+      columns_(std::max(columns, 1)),
+      rows_(std::max(rows, 1)),
+      width_((stock.max[0] - stock.min[0]) / columns_),
+      depth_((stock.max[1] - stock.min[1]) / rows_),
+      heights_(static_cast<std::size_t>(columns_) * static_cast<std::size_t>(rows_),
+               static_cast<float>(stock.max[2])) {}
+
+bool HeightField::cut(const std::array<double, 3>& a, const std::array<double, 3>& b,
+                      double radius) {
+    for (std::size_t k = 0; k < 3; ++k)
+        if (!std::isfinite(a[k]) || !std::isfinite(b[k])) return false;
+    if (!(radius >= 0.0) || !(std::min(a[2], b[2]) < stock_.max[2])) return false;  // above the top
+    const auto [first, last] = cellsWithin(
+        std::min(a[1], b[1]) - radius, std::max(a[1], b[1]) + radius, stock_.min[1], depth_, rows_);
+    bool removed = false;
+    for (int j = first; j <= last; ++j)
+        removed = cutRow(j, a, b, radius) || removed;
+    return removed;
+}
+
+bool HeightField::cutRow(int j, const std::array<double, 3>& a, const std::array<double, 3>& b,
+                         double radius) {
+    const SweptDisc disc{a[0], a[1], b[0], b[1], radius};
+    const double y = rowY(j);
+    const Span row = sweptRow(disc, y);
+    if (row.empty()) return false;
+    const auto [first, last] = cellsWithin(row.lo, row.hi, stock_.min[0], width_, columns_);
+    float* heights = heights_.data() + static_cast<std::size_t>(j) * columns_;
+    const double bottom = stock_.max[2] > stock_.min[2] ? stock_.min[2] : stock_.max[2];
+    const bool level = a[2] == b[2];
+    bool removed = false;
+    for (int i = first; i <= last; ++i) {
+        double z = a[2];
+        if (!level) {  // a ramp: the lowest face position that covers the centre
+            const Span t = coveringPositions(disc, columnX(i), y);
+            if (t.empty()) continue;
+            z = std::min(a[2] + (b[2] - a[2]) * t.lo, a[2] + (b[2] - a[2]) * t.hi);
+        }
+        const float face = static_cast<float>(std::max(z, bottom));
+        if (face < heights[i]) {
+            heights[i] = face;
+            removed = true;
+        }
+    }
+    return removed;
+}
+
+double HeightField::removedVolume() const {
+    const double top = static_cast<float>(stock_.max[2]);  // as the cells hold it
+    double sum = 0.0;
+    for (float h : heights_)
+        sum += top - static_cast<double>(h);
+    return sum * width_ * depth_;
+}
+
+}  // namespace mtc::core::removal

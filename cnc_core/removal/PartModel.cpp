@@ -1,0 +1,107 @@
+#include "cnc_core/removal/PartModel.h"
+
+#include <algorithm>
+#include <cmath>
+#include <locale>
+#include <sstream>
+
+#include "cnc_core/toolpath/CurveMath.h"
+
+namespace mtc::core::removal {
+
+namespace {
+
+constexpr int kMinSegments = 24;
+constexpr int kMaxSegments = 720;
+
+std::string millimetres(double value) {
+    std::ostringstream out;
+    out.imbue(std::locale::classic());
+    out << value;
+    return out.str();
+}
+
+/// Cells needed along an extent (at least one), as a double: never overflows.
+double cellsAlong(double extent, double resolution) {
+    return std::max(1.0, std::ceil(extent / resolution - 1e-9));
+}
+
+std::string tooManyCells(double cells, const RemovalSettings& settings, double area) {
+    // Cells grow with 1 / resolution^2 (height field) or about that (turned):
+    // the resolution that brings the count under the cap.
+    const double coarsest = std::sqrt(area / static_cast<double>(settings.maxCells));
+    return "resolution " + millimetres(settings.resolution) + " mm needs " +
+           millimetres(std::round(cells)) + " cells for this stock; at most " +
+           std::to_string(settings.maxCells) + " are simulated (try " +
+           millimetres(std::ceil(coarsest * 1000.0) / 1000.0) + " mm or coarser)";
+}
+
+}  // namespace
+
+std::string resolutionProblem(double resolution) {
+    if (!std::isfinite(resolution) || !(resolution >= kMinResolution) ||
+        !(resolution <= kMaxResolution))
+        return "resolution must be a number of millimetres from " + millimetres(kMinResolution) +
+               " to " + millimetres(kMaxResolution);
+    return {};
+}
+
+std::optional<PartModel> PartModel::create(const Stock& stock, const RemovalSettings& settings,
+                                           std::string& error) {
+    error = resolutionProblem(settings.resolution);
+    if (!error.empty()) return std::nullopt;
+    const double res = settings.resolution;
+    PartModel model;
+    model.resolution_ = res;
+    if (stock.shape == Stock::Shape::Block) {
+        const double columns = cellsAlong(stock.max[0] - stock.min[0], res);
+        const double rows = cellsAlong(stock.max[1] - stock.min[1], res);
+        if (columns * rows > static_cast<double>(settings.maxCells)) {
+            const double area = (stock.max[0] - stock.min[0]) * (stock.max[1] - stock.min[1]);
+            error = tooManyCells(columns * rows, settings, area);
+            return std::nullopt;
+        }
+        model.field_.emplace(Box{stock.min, stock.max}, static_cast<int>(columns),
+                             static_cast<int>(rows));
+        return model;
+    }
+    if (stock.shape == Stock::Shape::Cylinder) {
+        const double circumference = 2.0 * curve::kPi * stock.radius;
+        const int segments = std::clamp(curve::arcChords(stock.radius, 2.0 * curve::kPi, res / 4.0),
+                                        kMinSegments, kMaxSegments);
+        const double slices = cellsAlong(stock.to - stock.from, res);
+        if (slices * segments > static_cast<double>(settings.maxCells)) {
+            error =
+                tooManyCells(slices * segments, settings, (stock.to - stock.from) * circumference);
+            return std::nullopt;
+        }
+        model.profile_.emplace(stock.radius, stock.from, stock.to, static_cast<int>(slices));
+        model.axial_ = std::clamp(stock.axis, 0, 2);
+        model.radial_ = (model.axial_ + 1) % 3;
+        model.segments_ = segments;
+        return model;
+    }
+    error =
+        "the process has no stock in its machine configuration (stock = block ... or cylinder ...)";
+    return std::nullopt;
+}
+
+bool PartModel::cut(const std::array<double, 3>& a, const std::array<double, 3>& b, double radius,
+                    int body) {
+    if (field_) return field_->cut(a, b, radius);
+    const auto axial = static_cast<std::size_t>(axial_), radial = static_cast<std::size_t>(radial_);
+    return profile_->cut(a[axial], a[radial], b[axial], b[radial], radius, body);
+}
+
+double PartModel::removedVolume() const {
+    return field_ ? field_->removedVolume() : profile_->removedVolume();
+}
+
+std::uint64_t PartModel::cells() const {
+    if (field_)
+        return static_cast<std::uint64_t>(field_->columns()) *
+               static_cast<std::uint64_t>(field_->rows());
+    return static_cast<std::uint64_t>(profile_->slices()) * static_cast<std::uint64_t>(segments_);
+}
+
+}  // namespace mtc::core::removal

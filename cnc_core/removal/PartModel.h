@@ -1,0 +1,76 @@
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+
+#include "cnc_core/removal/HeightField.h"
+#include "cnc_core/removal/TurnedProfile.h"
+#include "cnc_core/toolpath/Stock.h"
+
+namespace mtc::core::removal {
+
+/// Finest and coarsest resolution (mm) a simulation accepts.
+inline constexpr double kMinResolution = 0.01;
+inline constexpr double kMaxResolution = 10.0;
+/// Most cells of a part: height field cells, or slices x angular segments of
+/// a turned part. Memory (4 bytes a cell) and the STL (about 100 bytes a
+/// cell) stay bounded whatever the stock and resolution (D-020).
+inline constexpr std::uint64_t kMaxRemovalCells = 2'000'000;
+
+/// How finely the part is simulated.
+struct RemovalSettings {
+    double resolution = 0.2;  ///< largest cell edge (mm)
+    std::uint64_t maxCells = kMaxRemovalCells;
+};
+
+/// Why `resolution` cannot be used ("" when it can): NaN, infinite, outside
+/// kMinResolution .. kMaxResolution.
+std::string resolutionProblem(double resolution);
+
+/// The raw part being cut: a block becomes a HeightField (mill), a cylinder a
+/// TurnedProfile around its axis (lathe). Positions are scene coordinates
+/// (machine X, Y, Z in mm, as the toolpath view draws them).
+class PartModel {
+  public:
+    /// The model of `stock` at `settings`; nullopt with `error` when there is
+    /// no stock, the resolution is refused or the part would need more than
+    /// settings.maxCells cells (the message gives the coarsest resolution
+    /// that fits).
+    static std::optional<PartModel> create(const Stock& stock, const RemovalSettings& settings,
+                                           std::string& error);
+
+    /// Sweeps the tool from scene point `a` to `b`: the face centre of a
+    /// flat end mill of `radius` (along Z), or the nose centre of a turning
+    /// tool of nose radius `radius` whose insert stands on the `body` side
+    /// (TurnedProfile::cut). True when material was removed.
+    bool cut(const std::array<double, 3>& a, const std::array<double, 3>& b, double radius,
+             int body = 0);
+
+    /// Material taken away so far (mm^3).
+    double removedVolume() const;
+    double resolution() const { return resolution_; }
+    /// Cells the model has (height field cells or slices x segments).
+    std::uint64_t cells() const;
+
+    const HeightField* heightField() const { return field_ ? &*field_ : nullptr; }
+    const TurnedProfile* profile() const { return profile_ ? &*profile_ : nullptr; }
+    /// Turned part: scene axis of the spindle axis and of the radius.
+    int axialAxis() const { return axial_; }
+    int radialAxis() const { return radial_; }
+    /// Turned part: facets around the axis of its revolved surface.
+    int angularSegments() const { return segments_; }
+
+  private:
+    PartModel() = default;
+
+    double resolution_ = 0.2;
+    std::optional<HeightField> field_;
+    std::optional<TurnedProfile> profile_;
+    int axial_ = 2;
+    int radial_ = 0;
+    int segments_ = 0;
+};
+
+}  // namespace mtc::core::removal

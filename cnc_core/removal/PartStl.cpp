@@ -1,0 +1,165 @@
+#include "cnc_core/removal/PartStl.h"
+
+#include <array>
+#include <cmath>
+#include <cstring>
+#include <vector>
+
+#include "cnc_core/program/AtomicWrite.h"
+#include "cnc_core/toolpath/CurveMath.h"
+
+namespace mtc::core::removal {
+
+namespace {
+
+using Point = std::array<double, 3>;
+
+/// Vertex positions along one grid direction: the cell centres, the first
+/// and last moved out onto the stock's faces (two when there is one cell).
+struct VertexLine {
+    std::vector<double> position;
+    std::vector<int> cell;  ///< the cell whose value a vertex takes
+};
+
+VertexLine vertexLine(int cells, double min, double max, double size) {
+    VertexLine line;
+    const int count = std::max(cells, 2);
+    for (int k = 0; k < count; ++k) {
+        const int cell = std::min(k, cells - 1);
+        line.cell.push_back(cell);
+        line.position.push_back(k == 0 ? min : k == count - 1 ? max : min + (cell + 0.5) * size);
+    }
+    return line;
+}
+
+/// Appends binary STL triangles to a string.
+class StlBuffer {
+  public:
+    explicit StlBuffer(std::uint64_t triangles) {
+        data_.reserve(84 + 50 * triangles);
+        data_.append(80, '\0');
+        std::memcpy(data_.data(), "mtc200 simulate: finished part (mm)", 35);
+        putUint32(static_cast<std::uint32_t>(triangles));
+    }
+    void triangle(const Point& a, const Point& b, const Point& c) {
+        const Point u{b[0] - a[0], b[1] - a[1], b[2] - a[2]};
+        const Point v{c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+        Point n{u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+        const double length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+        for (double& x : n)
+            x = length > 0.0 ? x / length : 0.0;
+        const Point n0 = n;
+        for (const Point* p : {&n0, &a, &b, &c})
+            for (double x : *p)
+                putFloat(static_cast<float>(x));
+        data_.append(2, '\0');
+    }
+    /// Two triangles; p0..p3 counter-clockwise seen from outside.
+    void quad(const Point& p0, const Point& p1, const Point& p2, const Point& p3) {
+        triangle(p0, p1, p2);
+        triangle(p0, p2, p3);
+    }
+    std::string take() { return std::move(data_); }
+
+  private:
+    void putUint32(std::uint32_t v) {
+        for (int i = 0; i < 4; ++i)
+            data_.push_back(static_cast<char>((v >> (8 * i)) & 0xFFu));
+    }
+    void putFloat(float f) {
+        std::uint32_t bits = 0;
+        std::memcpy(&bits, &f, sizeof bits);
+        putUint32(bits);  // little-endian whatever the host
+    }
+    std::string data_;
+};
+
+void heightFieldSurface(const HeightField& f, StlBuffer& out) {
+    const Box& box = f.stock();
+    const VertexLine xs = vertexLine(f.columns(), box.min[0], box.max[0], f.cellWidth());
+    const VertexLine ys = vertexLine(f.rows(), box.min[1], box.max[1], f.cellDepth());
+    const int nu = static_cast<int>(xs.position.size()), nv = static_cast<int>(ys.position.size());
+    const double zb = box.min[2];
+    const auto top = [&](int k, int l) {
+        return Point{xs.position[k], ys.position[l], f.height(xs.cell[k], ys.cell[l])};
+    };
+    const auto bottom = [&](int k, int l) { return Point{xs.position[k], ys.position[l], zb}; };
+    for (int l = 0; l + 1 < nv; ++l)
+        for (int k = 0; k + 1 < nu; ++k)
+            out.quad(top(k, l), top(k + 1, l), top(k + 1, l + 1), top(k, l + 1));
+    for (int k = 0; k + 1 < nu; ++k) {
+        out.quad(bottom(k, 0), bottom(k + 1, 0), top(k + 1, 0), top(k, 0));  // -Y
+        out.quad(bottom(k + 1, nv - 1), bottom(k, nv - 1), top(k, nv - 1), top(k + 1, nv - 1));
+    }
+    for (int l = 0; l + 1 < nv; ++l) {
+        out.quad(bottom(0, l + 1), bottom(0, l), top(0, l), top(0, l + 1));  // -X
+        out.quad(bottom(nu - 1, l), bottom(nu - 1, l + 1), top(nu - 1, l + 1), top(nu - 1, l));
+    }
+    // Bottom: a fan around its centre over the border vertices the walls use.
+    const Point centre{(box.min[0] + box.max[0]) / 2, (box.min[1] + box.max[1]) / 2, zb};
+    for (int k = 0; k + 1 < nu; ++k) {
+        out.triangle(centre, bottom(k + 1, 0), bottom(k, 0));
+        out.triangle(centre, bottom(k, nv - 1), bottom(k + 1, nv - 1));
+    }
+    for (int l = 0; l + 1 < nv; ++l) {
+        out.triangle(centre, bottom(0, l), bottom(0, l + 1));
+        out.triangle(centre, bottom(nu - 1, l + 1), bottom(nu - 1, l));
+    }
+}
+
+void turnedSurface(const PartModel& part, StlBuffer& out) {
+    const TurnedProfile& p = *part.profile();
+    const VertexLine zs = vertexLine(p.slices(), p.from(), p.to(), p.sliceLength());
+    const int rings = static_cast<int>(zs.position.size()), segments = part.angularSegments();
+    const auto axial = static_cast<std::size_t>(part.axialAxis());
+    const auto radial = static_cast<std::size_t>(part.radialAxis());
+    const auto third = static_cast<std::size_t>((part.axialAxis() + 2) % 3);
+    const auto point = [&](int k, int s) {
+        const double angle = 2.0 * curve::kPi * (s % segments) / segments;
+        const double r = p.radiusAt(zs.cell[static_cast<std::size_t>(k)]);
+        Point q{0, 0, 0};
+        q[axial] = zs.position[static_cast<std::size_t>(k)];
+        q[radial] = r * std::cos(angle);
+        q[third] = r * std::sin(angle);
+        return q;
+    };
+    const auto axisPoint = [&](int k) {
+        Point q{0, 0, 0};
+        q[axial] = zs.position[static_cast<std::size_t>(k)];
+        return q;
+    };
+    for (int k = 0; k + 1 < rings; ++k)
+        for (int s = 0; s < segments; ++s)
+            out.quad(point(k, s), point(k, s + 1), point(k + 1, s + 1), point(k + 1, s));
+    for (int s = 0; s < segments; ++s) {
+        out.triangle(axisPoint(0), point(0, s + 1), point(0, s));
+        out.triangle(axisPoint(rings - 1), point(rings - 1, s), point(rings - 1, s + 1));
+    }
+}
+
+}  // namespace
+
+std::uint64_t stlTriangleCount(const PartModel& part) {
+    if (const HeightField* f = part.heightField()) {
+        const std::uint64_t nu = std::max(f->columns(), 2), nv = std::max(f->rows(), 2);
+        return 2 * (nu - 1) * (nv - 1) + 6 * (nu - 1) + 6 * (nv - 1);
+    }
+    const std::uint64_t rings = std::max(part.profile()->slices(), 2);
+    const std::uint64_t segments = static_cast<std::uint64_t>(part.angularSegments());
+    return 2 * (rings - 1) * segments + 2 * segments;
+}
+
+std::string partStl(const PartModel& part) {
+    StlBuffer out(stlTriangleCount(part));
+    if (const HeightField* f = part.heightField())
+        heightFieldSurface(*f, out);
+    else
+        turnedSurface(part, out);
+    return out.take();
+}
+
+bool writePartStl(const PartModel& part, const std::string& path, std::string& error) {
+    return writeFileAtomically(path, partStl(part), error);
+}
+
+}  // namespace mtc::core::removal

@@ -1,0 +1,24 @@
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include "cnc_core/removal/PartModel.h"
+
+namespace mtc::core::removal {
+
+/// Triangles of the closed surface partStl() writes for `part`.
+std::uint64_t stlTriangleCount(const PartModel& part);
+
+/// The finished part as a binary STL (little-endian, mm): a closed surface.
+/// Height field: the top through the cell centres (its border on the
+/// block's faces), four side walls down to the bottom and the bottom face.
+/// Turned part: the profile revolved with angularSegments() facets, closed
+/// by the two end faces. Through-cuts leave top and bottom touching.
+std::string partStl(const PartModel& part);
+
+/// Writes partStl() to `path` atomically (writeFileAtomically: only over a
+/// regular file, the old file stays when anything fails). False with `error`.
+bool writePartStl(const PartModel& part, const std::string& path, std::string& error);
+
+}  // namespace mtc::core::removal

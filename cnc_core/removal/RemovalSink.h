@@ -1,0 +1,64 @@
+#pragma once
+
+#include <cstdint>
+#include <functional>
+
+#include "cnc_core/compensation/ToolData.h"
+#include "cnc_core/interp/MachineSink.h"
+#include "cnc_core/removal/PartModel.h"
+#include "cnc_core/toolpath/ToolpathBuilder.h"
+
+namespace mtc::core::removal {
+
+/// What a removal run counted.
+struct RemovalCounts {
+    std::uint64_t moves = 0;             ///< moves the sink got
+    std::uint64_t approachMoves = 0;     ///< the first move, from the power-on position: not cut
+    std::uint64_t cuttingMoves = 0;      ///< moves that removed material
+    std::uint64_t rapidCuts = 0;         ///< rapid (G0) moves that removed material
+    std::uint64_t transformedMoves = 0;  ///< G31 / G32 moves: not simulated
+    std::uint64_t insideToolMoves = 0;   ///< lathe moves of inside (boring) tools: not simulated
+};
+
+/// The material-removal sink: takes the interpreter's moves, turns each into
+/// the tool-centre path the toolpath view draws (a ToolpathBuilder with a
+/// chordal tolerance of a quarter of the resolution: the same tool
+/// compensation, arcs and helices) and sweeps the tool in working position
+/// (radius from the tool list) along it through the part. A turning tool
+/// (cutting edge orientation 1..8) outside G41/G42 is programmed by its
+/// theoretical tip: its nose centre lies at - radius x edge vector from it
+/// (compensation.md TC-010); its insert stands opposite the edge vector.
+/// The first move starts at the simulator's power-on position (machine
+/// zero, no real place of the tool: on the lathe it lies on the spindle
+/// axis): it is not cut. G31/G32 moves, and an inside tool's moves on the lathe (orientation 1, 2,
+/// 6: the profile has no bores), are counted, not cut.
+class RemovalSink : public MachineSink {
+  public:
+    /// `part` must outlive the sink.
+    RemovalSink(const ProcessAxes& axes, PartModel& part);
+
+    /// Where the tool in working position comes from (the interpreter's tool
+    /// list and modal state); without a source the tool has radius 0.
+    void setToolSource(std::function<ToolData()> source) { toolSource_ = std::move(source); }
+
+    void motion(const Motion& motion) override;
+    void auxiliary(const AuxOutput&) override {}
+    void dwell(const SourceLocation&, double) override {}
+    void command(const MachineCommand&) override {}
+
+    const RemovalCounts& counts() const { return counts_; }
+    /// A warning per rapid move that cut (the first 20): program, block, line.
+    const DiagnosticList& notes() const { return notes_; }
+
+  private:
+    /// The tool-centre chords of the move as scene points, in order.
+    void cutChords(const Motion& motion, const ToolData& tool);
+
+    PartModel& part_;
+    ToolpathBuilder path_;
+    std::function<ToolData()> toolSource_;
+    RemovalCounts counts_;
+    DiagnosticList notes_;
+};
+
+}  // namespace mtc::core::removal

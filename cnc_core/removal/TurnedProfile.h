@@ -1,0 +1,50 @@
+#pragma once
+
+#include <vector>
+
+namespace mtc::core::removal {
+
+/// The lathe's part as a revolved profile: the bar (radius R from `from` to
+/// `to` along the spindle axis) cut into slices; each slice keeps the outer
+/// radius of the material at its centre. The tool is its nose, a disc in
+/// the plane through the axis (axial, radial), and an outside tool: where the
+/// swept nose reaches a slice, the material beyond the nose's inner edge is
+/// gone (the insert and holder stand outside it). Bores, and material left
+/// ahead of a face cut deeper than the nose, are not represented (D-020).
+class TurnedProfile {
+  public:
+    /// slices >= 1; radius > 0, from < to.
+    TurnedProfile(double radius, double from, double to, int slices);
+
+    /// Sweeps a nose of `noseRadius` whose centre moves on the straight line
+    /// from (axial a, radial a) to (axial b, radial b). The radial coordinate
+    /// is signed (a tool beyond the axis). `body` is the axial side the
+    /// insert stands on (+1: towards +axial, the tool points to -axial; -1
+    /// the other way; 0: only radially outside, a grooving tool). Work: the
+    /// slices the sweep covers, at most every slice. Chords with a
+    /// non-finite coordinate cut nothing. True when material was removed.
+    bool cut(double axialA, double radialA, double axialB, double radialB, double noseRadius,
+             int body = 0);
+
+    /// Material turned away so far (mm^3).
+    double removedVolume() const;
+
+    double stockRadius() const { return radius_; }
+    double from() const { return from_; }
+    double to() const { return to_; }
+    int slices() const { return static_cast<int>(radii_.size()); }
+    double sliceLength() const { return length_; }
+    /// Axial position of the centre of slice `k`.
+    double sliceCentre(int k) const { return from_ + (k + 0.5) * length_; }
+    /// Outer radius of the material in slice `k` (0: nothing left).
+    double radiusAt(int k) const { return radii_[static_cast<std::size_t>(k)]; }
+
+  private:
+    double radius_;
+    double from_;
+    double to_;
+    double length_;
+    std::vector<double> radii_;
+};
+
+}  // namespace mtc::core::removal

@@ -1,0 +1,311 @@
+// Material removal (issue 19 §3, D-020): the swept-disc geometry, the mill's
+// height field against hand-computed pocket volumes, the lathe's turned
+// profile against the programmed contour, the bounds on resolution and
+// cells, and the closed STL surface of the finished part.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <map>
+
+#include "InterpTestSupport.h"
+#include "cnc_core/removal/PartStl.h"
+#include "cnc_core/removal/RemovalRun.h"
+#include "cnc_core/removal/SweptDisc.h"
+
+namespace {
+
+using namespace mtc::core;
+using namespace mtc::core::removal;
+using namespace mtc::test;
+
+constexpr double kPi = 3.14159265358979323846;
+
+RemovalRunResult simulate(const std::string& source, int process, double resolution) {
+    ProgramStore store;
+    store.put(process, 1, parse(source, 1));
+    RemovalSettings settings;
+    settings.resolution = resolution;
+    return simulateRemoval(demoCell().processes[static_cast<std::size_t>(process)], store, 1,
+                           settings);
+}
+
+/// Cells on the border of a region of `perimeter` can be counted wrongly:
+/// those whose centre lies within a cell diagonal of it.
+double borderBound(double perimeter, double resolution, double depth) {
+    return perimeter * std::sqrt(2.0) * resolution * depth;
+}
+
+TEST(SweptDisc, RowOfADiagonalChordIsTheStadiumCut) {
+    const SweptDisc d{0, 0, 10, 10, 1};
+    const Span mid = sweptRow(d, 5);  // the band: |x - 5| <= sqrt(2)
+    EXPECT_NEAR(mid.lo, 5 - std::sqrt(2.0), 1e-12);
+    EXPECT_NEAR(mid.hi, 5 + std::sqrt(2.0), 1e-12);
+    const Span end = sweptRow(d, 10.5);  // the band's corner, then the end disc
+    EXPECT_NEAR(end.lo, 10.5 - std::sqrt(2.0), 1e-12);
+    EXPECT_NEAR(end.hi, 10 + std::sqrt(0.75), 1e-12);
+    EXPECT_TRUE(sweptRow(d, 11.01).empty());
+    EXPECT_TRUE(sweptRow(d, -1.01).empty());
+}
+
+TEST(SweptDisc, CoveringPositionsOfAPoint) {
+    const SweptDisc d{0, 0, 10, 0, 1};
+    const Span t = coveringPositions(d, 5, 0.6);  // |x - 5| <= 0.8
+    EXPECT_NEAR(t.lo, 0.42, 1e-12);
+    EXPECT_NEAR(t.hi, 0.58, 1e-12);
+    EXPECT_TRUE(coveringPositions(d, 5, 1.2).empty());
+    const Span still = coveringPositions(SweptDisc{3, 3, 3, 3, 1}, 3.5, 3);
+    EXPECT_EQ(still.lo, 0.0);
+    EXPECT_EQ(still.hi, 1.0);
+}
+
+TEST(HeightField, HugeCoordinatesCutOnlyTheGrid) {
+    HeightField f(Box{{0, 0, -10}, {10, 10, 0}}, 50, 50);
+    const double huge = 1e300;
+    f.cut({-huge, 5, -2}, {huge, 5, -2}, 1);  // a line through the whole world
+    EXPECT_NEAR(f.removedVolume(), 10 * 2 * 2, borderBound(20, 0.2, 2));
+    const double before = f.removedVolume();
+    const double inf = std::numeric_limits<double>::infinity();
+    EXPECT_FALSE(f.cut({0, 0, -5}, {inf, 0, -5}, 1));
+    EXPECT_FALSE(f.cut({0, 0, -5}, {std::nan(""), 0, -5}, 1));
+    EXPECT_EQ(f.removedVolume(), before);
+    // A plunge from far above to far below with a huge cutter: everything
+    // down to the bottom, nothing below it.
+    EXPECT_TRUE(f.cut({5, 5, 1e300}, {5, 5, -1e300}, 1e300));
+    EXPECT_NEAR(f.removedVolume(), 10.0 * 10.0 * 10.0, 1e-6);
+}
+
+TEST(HeightField, RampCutsTheLowestFaceThatCoversACell) {
+    HeightField f(Box{{0, 0, -10}, {20, 2, 0}}, 200, 20);
+    f.cut({0, 1, 0}, {20, 1, -4}, 5);  // the ramp descends 0.2 mm per mm
+    // A cell centre at x is covered from face positions x - 5 .. x + 5 (on
+    // the chord line): its height is the face at min(x + 5, 20).
+    for (int i = 0; i < f.columns(); i += 17) {
+        const double x = f.columnX(i);
+        EXPECT_NEAR(f.height(i, 10), -0.2 * std::min(x + std::sqrt(25 - 0.05 * 0.05), 20.0), 1e-4)
+            << x;
+    }
+}
+
+// A 40 x 20 x 4 pocket at X20..60 Y20..40 (G54) cleared by T1 (radius 3.5)
+// with its centre on three zig-zag lines and a finishing lap: the cutter
+// takes the rectangle with corners rounded by its radius.
+const char* kPocketByCentre =
+    "N0001 T1 G17 G90 G54 G0 X23.5 Y23.5 Z2\n"
+    "N0002 S2000 M3\n"
+    "N0003 G1 Z-4 F200\n"
+    "N0004 X56.5\n"
+    "N0005 Y30\n"
+    "N0006 X23.5\n"
+    "N0007 Y36.5\n"
+    "N0008 X56.5\n"
+    "N0009 Y23.5\n"
+    "N0010 X23.5\n"
+    "N0011 Y36.5\n"
+    "N0012 G0 Z2\n"
+    "N0013 M30\n";
+
+// The same pocket with its wall programmed and G41 keeping the cutter inside.
+const char* kPocketByContour =
+    "N0001 T1 G17 G90 G54 G0 X40 Y30 Z2\n"
+    "N0002 S2000 M3\n"
+    "N0003 G1 Z-4 F200\n"
+    "N0004 X23.5 Y23.5\n"
+    "N0005 X56.5\n"
+    "N0006 Y30\n"
+    "N0007 X23.5\n"
+    "N0008 Y36.5\n"
+    "N0009 X56.5\n"
+    "N0010 X40 Y30\n"
+    "N0011 G41 Y20\n"
+    "N0012 X60\n"
+    "N0013 Y40\n"
+    "N0014 X20\n"
+    "N0015 Y20\n"
+    "N0016 X40\n"
+    "N0017 G40 Y30\n"
+    "N0018 G0 Z2\n"
+    "N0019 M30\n";
+
+double pocketVolume() {
+    return (40.0 * 20.0 - (4.0 - kPi) * 3.5 * 3.5) * 4.0;
+}
+
+TEST(MillRemoval, PocketVolumeWithinTheResolution) {
+    for (double resolution : {0.2, 0.1}) {
+        for (const char* program : {kPocketByCentre, kPocketByContour}) {
+            SCOPED_TRACE(std::to_string(resolution) +
+                         (program == kPocketByCentre ? " centre" : " G41"));
+            const RemovalRunResult r = simulate(program, 0, resolution);
+            ASSERT_TRUE(r.part) << diagnosticsText(r.diagnostics);
+            EXPECT_TRUE(r.complete);
+            EXPECT_FALSE(r.diagnostics.hasErrors()) << diagnosticsText(r.diagnostics);
+            EXPECT_NEAR(r.part->removedVolume(), pocketVolume(), borderBound(120, resolution, 4.0));
+            EXPECT_EQ(r.counts.rapidCuts, 0u);
+            // Outside the pocket the block is untouched, inside it is 4 deep.
+            const HeightField& f = *r.part->heightField();
+            const double top = -120.0, floor = -124.0;  // G54 Z-120
+            for (int j = 0; j < f.rows(); j += 7)
+                for (int i = 0; i < f.columns(); i += 7) {
+                    const double x = f.columnX(i) + 150.0, y = f.rowY(j) + 80.0;  // program
+                    const double h = f.height(i, j);
+                    if (x < 19.9 || x > 60.1 || y < 19.9 || y > 40.1) {
+                        ASSERT_NEAR(h, top, 1e-4) << x << " " << y;
+                    } else if (x > 23.6 && x < 56.4 && y > 20.1 && y < 39.9) {
+                        ASSERT_NEAR(h, floor, 1e-4) << x << " " << y;
+                    }
+                }
+        }
+    }
+}
+
+TEST(MillRemoval, HelixIntoACircle) {
+    // Centre circle of radius 3 around (50, 30): helix down 3 mm in one turn,
+    // then a turn at the bottom: a hole of radius 3 + 3.5, 3 deep.
+    const RemovalRunResult r = simulate(
+        "N0001 T1 G17 G90 G54 G0 X53 Y30 Z1\nN0002 G1 Z0 F100\n"
+        "N0003 G2 X53 Y30 Z-3 I50 J30\nN0004 G2 X53 Y30 I50 J30\nN0005 G0 Z5\nN0006 M30\n",
+        0, 0.1);
+    ASSERT_TRUE(r.part) << diagnosticsText(r.diagnostics);
+    EXPECT_FALSE(r.diagnostics.hasErrors()) << diagnosticsText(r.diagnostics);
+    const double radius = 6.5;
+    EXPECT_NEAR(r.part->removedVolume(), kPi * radius * radius * 3.0,
+                borderBound(2 * kPi * radius, 0.1, 3.0));
+}
+
+TEST(MillRemoval, RapidIntoThePartIsReportedWithItsBlock) {
+    const RemovalRunResult r = simulate(
+        "N0001 T1 G17 G90 G54 G0 X10 Y10 Z2\nN0002 Z-2\nN0003 G1 X20 F100\nN0004 M30\n", 0, 0.5);
+    ASSERT_TRUE(r.part);
+    EXPECT_EQ(r.counts.rapidCuts, 1u);
+    EXPECT_EQ(r.counts.cuttingMoves, 2u);
+    ASSERT_FALSE(r.diagnostics.empty());
+    const Diagnostic& d = r.diagnostics.items().front();
+    EXPECT_EQ(d.code, "REMOVAL_RAPID_CUT");
+    EXPECT_EQ(d.where.block, "N0002");
+    EXPECT_EQ(d.where.line, 2);
+    EXPECT_EQ(d.severity, Severity::Warning);
+}
+
+// Turned with T1 (cutting edge orientation 3, nose radius 0.4) under G40:
+// the theoretical tip follows the contour — face at Z0 past the axis,
+// radius 30 to Z-40, shoulder, radius 35 to Z-80, out.
+const char* kTurnedShaft =
+    "N0001 T1 G18 G90 G54 G0 X42 Z0\n"
+    "N0002 S1200 M4\n"
+    "N0003 G1 X-1 F300\n"
+    "N0004 G0 Z2\n"
+    "N0005 X30\n"
+    "N0006 G1 Z-40\n"
+    "N0007 X35\n"
+    "N0008 Z-80\n"
+    "N0009 X41\n"
+    "N0010 G0 X50 Z5\n"
+    "N0011 M30\n";
+
+double shaftRadius(double z) {  // program Z
+    if (z > 0) return 0;
+    if (z > -40) return 30;
+    if (z > -80) return 35;
+    return 40;
+}
+
+TEST(LatheRemoval, TurnedProfileFollowsTheProgrammedContour) {
+    const double nose = 0.4, resolution = 0.1;
+    const RemovalRunResult r = simulate(kTurnedShaft, 1, resolution);
+    ASSERT_TRUE(r.part) << diagnosticsText(r.diagnostics);
+    EXPECT_FALSE(r.diagnostics.hasErrors()) << diagnosticsText(r.diagnostics);
+    const TurnedProfile& p = *r.part->profile();
+    for (int k = 0; k < p.slices(); ++k) {
+        const double z = p.sliceCentre(k) - 255.5;  // G54 Z255.5
+        const double nearCorner = std::min({std::fabs(z), std::fabs(z + 40), std::fabs(z + 80)});
+        if (nearCorner > nose + resolution) {
+            ASSERT_NEAR(p.radiusAt(k), shaftRadius(z), 1e-3) << z;
+        } else {  // the nose rounds the inner corners: within its radius
+            ASSERT_GE(p.radiusAt(k), std::min(shaftRadius(z - nose), shaftRadius(z + nose)) - 1e-3)
+                << z;
+            ASSERT_LE(p.radiusAt(k), std::max(shaftRadius(z - nose), shaftRadius(z + nose)) + 1e-3)
+                << z;
+        }
+    }
+    // Stock Z 140..257.5 (program -115.5..2): removed 2 mm of face, 40 mm
+    // down to radius 30, 40 mm down to radius 35.
+    const double expected = kPi * (1600.0 * 2 + (1600.0 - 900.0) * 40 + (1600.0 - 1225.0) * 40);
+    EXPECT_NEAR(r.part->removedVolume(), expected, 0.002 * expected);
+}
+
+TEST(LatheRemoval, NoseCompensationGivesTheSameDiameters) {
+    // G42 (nose on the +X side) along the radius-30 stretch.
+    const RemovalRunResult r = simulate(
+        "N0001 T1 G18 G90 G54 G0 X45 Z2\nN0002 G1 G42 X30 F300\nN0003 Z-40\n"
+        "N0004 G40 X45\nN0005 G0 Z5\nN0006 M30\n",
+        1, 0.1);
+    ASSERT_TRUE(r.part) << diagnosticsText(r.diagnostics);
+    EXPECT_FALSE(r.diagnostics.hasErrors()) << diagnosticsText(r.diagnostics);
+    const TurnedProfile& p = *r.part->profile();
+    for (int k = 0; k < p.slices(); ++k) {
+        const double z = p.sliceCentre(k) - 255.5;
+        if (z < -1 && z > -39) {
+            ASSERT_NEAR(p.radiusAt(k), 30.0, 1e-3) << z;
+        }
+        if (z < -41) {
+            ASSERT_NEAR(p.radiusAt(k), 40.0, 1e-9) << z;
+        }
+    }
+}
+
+TEST(PartModel, ResolutionAndCellsAreBounded) {
+    Stock block;
+    block.shape = Stock::Shape::Block;
+    block.min = {0, 0, 0};
+    block.max = {1000, 1000, 10};
+    std::string error;
+    for (double bad :
+         {0.0, -1.0, std::nan(""), 1e9, std::numeric_limits<double>::infinity(), 0.001}) {
+        RemovalSettings s;
+        s.resolution = bad;
+        EXPECT_FALSE(PartModel::create(block, s, error)) << bad;
+        EXPECT_NE(error.find("resolution must be"), std::string::npos) << error;
+    }
+    RemovalSettings fine;
+    fine.resolution = 0.2;  // 5000 x 5000 cells
+    EXPECT_FALSE(PartModel::create(block, fine, error));
+    EXPECT_NE(error.find("at most 2000000"), std::string::npos) << error;
+    EXPECT_NE(error.find("try 0.708 mm"), std::string::npos) << error;
+    fine.resolution = 0.708;
+    EXPECT_TRUE(PartModel::create(block, fine, error)) << error;
+    EXPECT_FALSE(PartModel::create(Stock{}, fine, error));
+    EXPECT_NE(error.find("no stock"), std::string::npos) << error;
+}
+
+/// Every edge of a closed surface is used twice, once in each direction.
+void expectClosed(const std::string& stl, std::uint64_t triangles) {
+    ASSERT_EQ(stl.size(), 84 + 50 * triangles);
+    std::uint32_t count = 0;
+    std::memcpy(&count, stl.data() + 80, 4);
+    ASSERT_EQ(count, triangles);
+    std::map<std::pair<std::array<float, 3>, std::array<float, 3>>, int> edges;
+    for (std::uint64_t t = 0; t < triangles; ++t) {
+        std::array<std::array<float, 3>, 3> v{};
+        std::memcpy(v.data(), stl.data() + 84 + 50 * t + 12, 36);
+        for (int e = 0; e < 3; ++e)
+            ++edges[{v[static_cast<std::size_t>(e)], v[static_cast<std::size_t>((e + 1) % 3)]}];
+    }
+    for (const auto& [edge, uses] : edges) {
+        const auto back = edges.find({edge.second, edge.first});
+        ASSERT_TRUE(back != edges.end()) << "open edge";
+        ASSERT_EQ(back->second, uses);
+    }
+}
+
+TEST(PartStl, FinishedPartsAreClosedSurfaces) {
+    const RemovalRunResult mill = simulate(kPocketByCentre, 0, 1.0);
+    ASSERT_TRUE(mill.part);
+    expectClosed(partStl(*mill.part), stlTriangleCount(*mill.part));
+    const RemovalRunResult lathe = simulate(kTurnedShaft, 1, 1.0);
+    ASSERT_TRUE(lathe.part);
+    expectClosed(partStl(*lathe.part), stlTriangleCount(*lathe.part));
+}
+
+}  // namespace
