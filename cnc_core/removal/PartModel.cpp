@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
 #include <locale>
 #include <sstream>
 
@@ -30,10 +31,13 @@ std::string tooManyCells(double cells, const RemovalSettings& settings, double a
     // Cells grow with 1 / resolution^2 (height field) or about that (turned):
     // the resolution that brings the count under the cap.
     const double coarsest = std::sqrt(area / static_cast<double>(settings.maxCells));
-    return "resolution " + millimetres(settings.resolution) + " mm needs " +
-           millimetres(std::round(cells)) + " cells for this stock; at most " +
-           std::to_string(settings.maxCells) + " are simulated (try " +
-           millimetres(std::ceil(coarsest * 1000.0) / 1000.0) + " mm or coarser)";
+    std::ostringstream count;
+    count.imbue(std::locale::classic());
+    count << std::fixed << std::setprecision(0) << cells;
+    return "resolution " + millimetres(settings.resolution) + " mm needs " + count.str() +
+           " cells for this stock; at most " + std::to_string(settings.maxCells) +
+           " are simulated (try " + millimetres(std::ceil(coarsest * 1000.0) / 1000.0) +
+           " mm or coarser)";
 }
 
 }  // namespace
@@ -86,11 +90,11 @@ std::optional<PartModel> PartModel::create(const Stock& stock, const RemovalSett
     return std::nullopt;
 }
 
-bool PartModel::cut(const std::array<double, 3>& a, const std::array<double, 3>& b, double radius,
-                    int body) {
-    if (field_) return field_->cut(a, b, radius);
+bool PartModel::cut(const std::array<double, 3>& a, const std::array<double, 3>& b,
+                    const Cutter& tool) {
+    if (field_) return field_->cut(a, b, tool.radius);
     const auto axial = static_cast<std::size_t>(axial_), radial = static_cast<std::size_t>(radial_);
-    return profile_->cut(a[axial], a[radial], b[axial], b[radial], radius, body);
+    return profile_->cut(a[axial], a[radial], b[axial], b[radial], tool);
 }
 
 double PartModel::removedVolume() const {

@@ -42,11 +42,10 @@ class PartModel {
                                            std::string& error);
 
     /// Sweeps the tool from scene point `a` to `b`: the face centre of a
-    /// flat end mill of `radius` (along Z), or the nose centre of a turning
-    /// tool of nose radius `radius` whose insert stands on the `body` side
-    /// (TurnedProfile::cut). True when material was removed.
-    bool cut(const std::array<double, 3>& a, const std::array<double, 3>& b, double radius,
-             int body = 0);
+    /// flat end mill of tool.radius (along Z), or on the lathe the nose
+    /// centre / tip centre of `tool` (TurnedProfile::cut). True when
+    /// material was removed.
+    bool cut(const std::array<double, 3>& a, const std::array<double, 3>& b, const Cutter& tool);
 
     /// Material taken away so far (mm^3).
     double removedVolume() const;

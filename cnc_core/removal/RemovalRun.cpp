@@ -12,7 +12,7 @@ RemovalRunResult simulateRemoval(const ProcessConfig& config, const ProgramStore
     std::string problem;
     result.part = PartModel::create(stockOf(config), settings, problem);
     if (!result.part) {
-        result.diagnostics.error("REMOVAL_STOCK", {number, "", 0, 0}, problem);
+        result.diagnostics.error("REMOVAL_STOCK", {}, problem);  // the configuration's
         return result;
     }
     DiagnosticList axisProblems;
@@ -29,7 +29,9 @@ RemovalRunResult simulateRemoval(const ProcessConfig& config, const ProgramStore
             runToProgramEnd(interpreter, blockBudget, result.diagnostics, result.blocks);
     result.diagnostics.append(sink.notes());
     result.counts = sink.counts();
-    const SourceLocation program{number, "", 0, 0};
+    // Reported as the program's blocks are (a loose file keeps program 0).
+    const ProgramPtr selected = programs.find(config.index, number);
+    const SourceLocation program{selected ? selected->number : number, "", 0, 0};
     if (result.counts.transformedMoves > 0)
         result.diagnostics.warning(
             "REMOVAL_NOT_SIMULATED", program,

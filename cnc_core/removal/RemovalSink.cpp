@@ -42,14 +42,14 @@ void RemovalSink::cutChords(const Motion& m, const ToolData& tool) {
     // Outside G41/G42 a turning tool's programmed point is its tip; the
     // nose centre (what the profile is cut with) lies inside it.
     std::array<double, 3> shift{0, 0, 0};
-    int body = 0;
+    Cutter cutter{tool.radius, 0, part_.profile() != nullptr && !tool.turning()};
     if (part_.profile() != nullptr && tool.turning()) {
         const Eigen::Vector2d edge = gne::edgeVector(tool.orientation);  // (axial, radial)
         if (edge.y() > 0.0) {
             ++counts_.insideToolMoves;
             return;
         }
-        body = edge.x() < 0.0 ? 1 : (edge.x() > 0.0 ? -1 : 0);
+        cutter.body = edge.x() < 0.0 ? 1 : (edge.x() > 0.0 ? -1 : 0);
         if (!m.compensated) {
             shift[static_cast<std::size_t>(part_.axialAxis())] = -tool.radius * edge.x();
             shift[static_cast<std::size_t>(part_.radialAxis())] = -tool.radius * edge.y();
@@ -63,7 +63,7 @@ void RemovalSink::cutChords(const Motion& m, const ToolData& tool) {
             a[k] += shift[k];
             b[k] += shift[k];
         }
-        removed = part_.cut(a, b, tool.radius, body) || removed;
+        removed = part_.cut(a, b, cutter) || removed;
     }
     if (!removed) return;
     ++counts_.cuttingMoves;

@@ -27,7 +27,9 @@ struct RemovalCounts {
 /// (radius from the tool list) along it through the part. A turning tool
 /// (cutting edge orientation 1..8) outside G41/G42 is programmed by its
 /// theoretical tip: its nose centre lies at - radius x edge vector from it
-/// (compensation.md TC-010); its insert stands opposite the edge vector.
+/// (compensation.md TC-010); its insert stands opposite the edge vector. A
+/// tool without a cutting edge orientation on the lathe (driven end mill,
+/// drill) stands radially: a flat tip of the tool's radius to either side.
 /// The first move starts at the simulator's power-on position (machine
 /// zero, no real place of the tool: on the lathe it lies on the spindle
 /// axis): it is not cut. G31/G32 moves, and an inside tool's moves on the lathe (orientation 1, 2,

@@ -42,6 +42,24 @@ double bodyReach(double ua, double ra, double ub, double rb, double nose, int bo
     return std::min(ra + (rb - ra) * lo, ra + (rb - ra) * hi) - nose;
 }
 
+/// A radial tool's flat tip, `half` to either side of its centre along the
+/// axis: the lowest tip radius among the positions whose tip spans the slice.
+double flatReach(double ua, double ra, double ub, double rb, double half, double axial) {
+    // Positions t in [0, 1] with |u(t) - axial| <= half.
+    double lo = 0.0, hi = 1.0;
+    const double du = ub - ua;
+    if (du == 0.0) {
+        if (!(std::fabs(ua - axial) <= half)) return kUnreached;
+    } else {
+        const double t1 = (axial - half - ua) / du, t2 = (axial + half - ua) / du;
+        lo = std::max(lo, std::min(t1, t2));
+        hi = std::min(hi, std::max(t1, t2));
+    }
+    if (!(lo <= hi)) return kUnreached;
+    const double r1 = ra + (rb - ra) * lo, r2 = ra + (rb - ra) * hi;
+    return r1 <= 0.0 && r2 >= 0.0 ? 0.0 : std::min(std::fabs(r1), std::fabs(r2));
+}
+
 }  // namespace
 
 TurnedProfile::TurnedProfile(double radius, double from, double to, int slices)
@@ -52,12 +70,14 @@ TurnedProfile::TurnedProfile(double radius, double from, double to, int slices)
       radii_(static_cast<std::size_t>(std::max(slices, 1)), radius) {}
 
 bool TurnedProfile::cut(double axialA, double radialA, double axialB, double radialB,
-                        double noseRadius, int body) {
+                        const Cutter& tool) {
+    const double noseRadius = tool.radius;
+    const int body = tool.radial ? 0 : tool.body;
     for (double v : {axialA, radialA, axialB, radialB})
         if (!std::isfinite(v)) return false;
     if (!(noseRadius >= 0.0)) return false;
-    // The slices the nose reaches, and behind it on the insert's side all
-    // the slices up to the end of the bar.
+    // The slices the nose (or flat tip) reaches, and behind a nose on the
+    // insert's side all the slices up to the end of the bar.
     const double low = std::min(axialA, axialB) - noseRadius;
     const double high = std::max(axialA, axialB) + noseRadius;
     const double infinity = std::numeric_limits<double>::infinity();
@@ -65,10 +85,13 @@ bool TurnedProfile::cut(double axialA, double radialA, double axialB, double rad
                                            from_, length_, slices());
     bool removed = false;
     for (int k = first; k <= last; ++k) {
-        const double inner = std::max(
-            0.0, std::min(noseReach(axialA, radialA, axialB, radialB, noseRadius, sliceCentre(k)),
-                          bodyReach(axialA, radialA, axialB, radialB, noseRadius, body,
-                                    sliceCentre(k))));
+        const double at = sliceCentre(k);
+        const double reach =
+            tool.radial
+                ? flatReach(axialA, radialA, axialB, radialB, noseRadius, at)
+                : std::min(noseReach(axialA, radialA, axialB, radialB, noseRadius, at),
+                           bodyReach(axialA, radialA, axialB, radialB, noseRadius, body, at));
+        const double inner = std::max(0.0, reach);
         double& r = radii_[static_cast<std::size_t>(k)];
         if (inner < r) {
             r = inner;

@@ -4,6 +4,18 @@
 
 namespace mtc::core::removal {
 
+/// The tool as the part models cut with it. The mill uses `radius` (a flat
+/// end mill along Z). On the lathe, in the plane through the axis: a
+/// turning tool's nose of `radius` with its insert on the `body` side
+/// (TurnedProfile::cut), or a `radial` tool (a driven end mill or drill
+/// standing radially, no cutting edge orientation): a flat end at the tip,
+/// `radius` to either side along the axis.
+struct Cutter {
+    double radius = 0.0;
+    int body = 0;
+    bool radial = false;
+};
+
 /// The lathe's part as a revolved profile: the bar (radius R from `from` to
 /// `to` along the spindle axis) cut into slices; each slice keeps the outer
 /// radius of the material at its centre. The tool is its nose, a disc in
@@ -16,15 +28,15 @@ class TurnedProfile {
     /// slices >= 1; radius > 0, from < to.
     TurnedProfile(double radius, double from, double to, int slices);
 
-    /// Sweeps a nose of `noseRadius` whose centre moves on the straight line
-    /// from (axial a, radial a) to (axial b, radial b). The radial coordinate
-    /// is signed (a tool beyond the axis). `body` is the axial side the
-    /// insert stands on (+1: towards +axial, the tool points to -axial; -1
-    /// the other way; 0: only radially outside, a grooving tool). Work: the
-    /// slices the sweep covers, at most every slice. Chords with a
-    /// non-finite coordinate cut nothing. True when material was removed.
-    bool cut(double axialA, double radialA, double axialB, double radialB, double noseRadius,
-             int body = 0);
+    /// Sweeps the tool whose nose centre (a radial tool: the centre of its
+    /// tip) moves on the straight line from (axial a, radial a) to (axial b,
+    /// radial b). The radial coordinate is signed (a tool beyond the axis).
+    /// `tool.body` is the axial side the insert stands on (+1: towards
+    /// +axial, the tool points to -axial; -1 the other way; 0: only radially
+    /// outside, a grooving tool). Work: the slices the sweep covers, at most
+    /// every slice. Chords with a non-finite coordinate cut nothing. True
+    /// when material was removed.
+    bool cut(double axialA, double radialA, double axialB, double radialB, const Cutter& tool);
 
     /// Material turned away so far (mm^3).
     double removedVolume() const;

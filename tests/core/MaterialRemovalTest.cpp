@@ -255,6 +255,24 @@ TEST(LatheRemoval, NoseCompensationGivesTheSameDiameters) {
     }
 }
 
+TEST(LatheRemoval, DrivenToolStandsRadiallyWithAFlatTip) {
+    // T9: driven end mill, radius 4.85, no cutting edge orientation. A
+    // radial plunge to X30 at Z-50 cuts a groove 9.7 wide with a flat floor;
+    // the way out at X40 (above the bar's radius 40) touches nothing.
+    const RemovalRunResult r = simulate(
+        "N0001 T9 G18 G90 G54 G0 X45 Z-50\nN0002 G1 X30 F100\nN0003 X45\n"
+        "N0004 G0 X40 Z-10\nN0005 Z-100\nN0006 M30\n",
+        1, 0.1);
+    ASSERT_TRUE(r.part) << diagnosticsText(r.diagnostics);
+    EXPECT_TRUE(r.diagnostics.empty()) << diagnosticsText(r.diagnostics);
+    const TurnedProfile& p = *r.part->profile();
+    for (int k = 0; k < p.slices(); ++k) {
+        const double z = p.sliceCentre(k) - 255.5;
+        ASSERT_DOUBLE_EQ(p.radiusAt(k), std::fabs(z + 50) <= 4.85 ? 30.0 : 40.0) << z;
+    }
+    EXPECT_EQ(r.counts.rapidCuts, 0u);
+}
+
 TEST(PartModel, ResolutionAndCellsAreBounded) {
     Stock block;
     block.shape = Stock::Shape::Block;
