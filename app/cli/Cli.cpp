@@ -11,6 +11,7 @@
 #include "cli/RestartCommand.h"
 #include "cli/RunCommand.h"
 #include "cli/SetupDataCommand.h"
+#include "cli/SimulateCommand.h"
 #include "cli/VerifyRestartCommand.h"
 
 namespace mtc::cli {
@@ -48,6 +49,8 @@ int runCli(int argc, char** argv) {
             return runToolsCommand(options);
         case Command::Offsets:
             return runOffsetsCommand(options);
+        case Command::Simulate:
+            return runSimulateCommand(options);
         case Command::None:
             break;
     }

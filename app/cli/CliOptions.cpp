@@ -3,6 +3,7 @@
 #include <charconv>
 #include <string_view>
 
+#include "cnc_core/removal/PartModel.h"
 #include "cnc_core/restart/RestartSelection.h"
 
 namespace mtc::cli {
@@ -24,6 +25,7 @@ Command commandFromName(std::string_view name) {
     if (name == "md") return Command::MachineData;
     if (name == "tools") return Command::Tools;
     if (name == "offsets") return Command::Offsets;
+    if (name == "simulate") return Command::Simulate;
     if (name == "help") return Command::Help;
     return Command::None;
 }
@@ -122,6 +124,12 @@ class CommandLineReader {
             o.restartOption = true;
         } else if (name == "--runs") {
             if (optionValue(name, inlineValue, hasInline, value)) runsValue(value);
+        } else if (name == "--stl") {
+            if (optionValue(name, inlineValue, hasInline, value)) o.stlPath = value;
+            if (out_.error.empty() && o.stlPath.empty()) out_.error = "--stl needs a file";
+            o.simulateOption = true;
+        } else if (name == "--resolution") {
+            if (optionValue(name, inlineValue, hasInline, value)) resolutionValue(value);
         } else if (name == "--max-passes") {
             if (optionValue(name, inlineValue, hasInline, value)) maxPassesValue(value);
         } else if (isMachineDataOption(name)) {
@@ -166,6 +174,21 @@ class CommandLineReader {
         out_.options.maxPasses = static_cast<std::uint32_t>(number);
     }
 
+    /// Cell size of simulate (mm): a plain decimal number in the model's range.
+    void resolutionValue(const std::string& value) {
+        out_.options.simulateOption = true;
+        double number = 0.0;
+        const char* end = value.data() + value.size();
+        const auto result = std::from_chars(value.data(), end, number);
+        const std::string problem = core::removal::resolutionProblem(number);
+        if (value.empty() || result.ec != std::errc() || result.ptr != end || !problem.empty()) {
+            out_.error = "bad value '" + value + "' for --resolution (" +
+                         (problem.empty() ? core::removal::resolutionProblem(-1.0) : problem) + ")";
+            return;
+        }
+        out_.options.resolution = number;
+    }
+
     void processValue(const std::string& value) {
         std::uint64_t number = 0;
         if (!parseUnsigned(value, number) || number > kMaxProcess) {
@@ -208,7 +231,8 @@ class CommandLineReader {
         } else if ((o.noMotion || o.sampleMs > 0) && o.command != Command::Run &&
                    o.command != Command::Help && o.command != Command::Version) {
             out_.error = "options --no-motion and --sample-ms belong to 'run'";
-        } else if ((o.command == Command::Check || o.command == Command::Run) &&
+        } else if ((o.command == Command::Check || o.command == Command::Run ||
+                    o.command == Command::Simulate) &&
                    o.arguments.empty()) {
             out_.error = "'" + o.commandName + "' needs a program (number or file)";
         } else if ((!o.outputPath.empty() || !o.userCompilers.empty()) &&
@@ -226,16 +250,22 @@ class CommandLineReader {
         } else if (o.verifyOption && o.command != Command::VerifyRestart &&
                    o.command != Command::Help && o.command != Command::Version) {
             out_.error = "option --max-passes belongs to 'verify-restart'";
+        } else if (o.simulateOption && o.command != Command::Simulate &&
+                   o.command != Command::Help && o.command != Command::Version) {
+            out_.error = "options --stl and --resolution belong to 'simulate'";
+        } else if (o.command == Command::Simulate && o.arguments.size() != 1) {
+            out_.error = "'simulate' takes exactly one program";
         } else if (o.command == Command::VerifyRestart && o.arguments.size() != 1) {
             out_.error = "'verify-restart' takes exactly one program";
         } else if (o.machineData.given && o.command != Command::MachineData &&
                    o.command != Command::Tools && o.command != Command::Offsets &&
                    o.command != Command::Help && o.command != Command::Version &&
-                   !((o.command == Command::Run || o.command == Command::Restart) &&
+                   !((o.command == Command::Run || o.command == Command::Restart ||
+                      o.command == Command::Simulate) &&
                      o.machineData.onlyDataFile())) {
             out_.error =
                 "options --as, --password and --sub belong to 'md' (--data to md, tools, offsets, "
-                "run and restart)";
+                "run, restart and simulate)";
         } else if (o.command == Command::Restart && o.arguments.size() != 1) {
             out_.error = "'restart' takes exactly one program";
         } else if (o.command == Command::Restart && o.target.empty()) {
@@ -319,6 +349,15 @@ Commands available:
                               object file (.NCO), or the error file (.ERR)
                               on errors (warnings: .NCO and .ERR); user
                               compilers 1, 2 run before it, 3, 4 after it
+  simulate FILE|PROG [--stl OUT.stl] [--resolution MM]
+                              material removal: cut the process's stock
+                              (machine configuration) with the program's tool
+                              path and tools; report the removed volume (mm3)
+                              and write the finished part as binary STL
+                              (not when the program has errors). MM: cell
+                              size 0.01..10 (default 0.2); at most 2000000
+                              cells (a finer grid is refused with the
+                              coarsest resolution that fits)
   help                        this text
 
 Global options:
@@ -333,7 +372,8 @@ Global options:
                       $XDG_STATE_HOME/mtc200/machine-data/<cell>.mdt, or
                       ~/.local/state/...; '-' keeps nothing); run and
                       restart load it first and save what they changed
-                      (without --data they keep nothing)
+                      (without --data they keep nothing); simulate reads
+                      the tool list beside it
 
 A program is a program number (looked up in the program directory for the
 selected process) or a path to a source file (.DAT with %NPG header or a

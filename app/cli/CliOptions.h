@@ -20,7 +20,8 @@ enum class Command {
     Compile,
     MachineData,
     Tools,
-    Offsets
+    Offsets,
+    Simulate
 };
 
 /// Default bound of a run: interpreted blocks before the run stops with a diagnostic.
@@ -55,6 +56,10 @@ struct CliOptions {
     std::uint32_t maxPasses = 16;    ///< --max-passes K, 1..65536
     bool verifyOption = false;       ///< --max-passes was given
     MachineDataOptions machineData;  ///< md: --as, --password, --data, --sub
+    // simulate (CLI-CONTRACT.md "Extensions", D-020):
+    std::string stlPath;          ///< --stl OUT.stl ("" = no file)
+    double resolution = 0.2;      ///< --resolution MM
+    bool simulateOption = false;  ///< --stl or --resolution was given
 };
 
 /// Result of reading argv: the options, or the usage error that stops the run

@@ -1,0 +1,78 @@
+#!/usr/bin/env bash
+# mtc200-cli simulate (issue 19 §5, CLI-CONTRACT.md "Extensions", D-020):
+# removed volume of a pocket in JSON and text, the STL written atomically
+# (binary, its triangle count), the lathe's turned part, a rapid into the
+# part named with its block, and refusals: bad resolutions, a grid over
+# the cell cap, a FIFO as output, program errors (no STL), misplaced options.
+source "$(dirname "$0")/common.bash"
+cd "$TEST_TMP" || exit 1
+
+# A 40 x 20 x 4 pocket by its centre path with T1 (radius 3.5):
+# (40 * 20 - (4 - pi) * 3.5^2) * 4 = 3157.94 mm3.
+cat >pocket.nc <<'NC'
+N0001 T1 G17 G90 G54 G0 X23.5 Y23.5 Z2
+N0002 G1 Z-4 F200
+N0003 X56.5
+N0004 Y30
+N0005 X23.5
+N0006 Y36.5
+N0007 X56.5
+N0008 Y23.5
+N0009 X23.5
+N0010 Y36.5
+N0011 G0 Z2
+N0012 M30
+NC
+
+expect_rc 0 "simulate a pocket --json" --json simulate pocket.nc --stl part.stl --resolution 0.2
+json_check "status ok, no diagnostics" 'd["status"] == "ok" and d["diagnostics"] == []'
+json_check "removed volume within the border bound" 'abs(d["removed_volume"] - 3157.94) < 120 * 1.4143 * 0.2 * 4'
+json_check "resolution and stl reported" 'd["resolution"] == 0.2 and d["stl"] == "part.stl"'
+json_check "height field of 500 x 300 cells" 'd["model"] == "height_field" and d["cells"] == 150000'
+json_check "counts" 'd["complete"] and d["blocks_interpreted"] == 12 and d["rapid_cuts"] == 0'
+python3 - "$OUT" <<'PY' && pass "the STL is binary with the reported triangles" || fail "STL size"
+import json, os, struct, sys
+d = json.loads(sys.argv[1])
+data = open("part.stl", "rb").read()
+count = struct.unpack("<I", data[80:84])[0]
+sys.exit(0 if count == d["triangles"] and len(data) == 84 + 50 * count else 1)
+PY
+
+expect_rc 0 "simulate text" simulate pocket.nc --resolution 0.5
+text_check "text names the volume" "removed volume: 31[0-9][0-9]\.[0-9]* mm3"
+text_check "text: no STL asked for" "stl: none written"
+
+expect_rc 0 "simulate the demo lathe program" --json --process 1 simulate 1 --stl shaft.stl
+json_check "turned profile" 'd["model"] == "turned_profile" and d["removed_volume"] > 80000'
+json_check "G32 moves reported as not cut" \
+  'any(x["code"] == "REMOVAL_NOT_SIMULATED" and x["severity"] == "warning" for x in d["diagnostics"])'
+[ -s shaft.stl ] && pass "the lathe STL is written" || fail "no shaft.stl"
+
+printf 'N0001 T1 G17 G90 G54 G0 X10 Y10 Z2\nN0002 Z-3\nN0003 G0 Z5\nN0004 M30\n' >rapid.nc
+expect_rc 0 "a rapid into the part is a warning" --json simulate rapid.nc
+json_check "REMOVAL_RAPID_CUT with program, block and line" \
+  '[(x["code"], x["block"], x["line"]) for x in d["diagnostics"]] == [("REMOVAL_RAPID_CUT", "N0002", 2)]'
+
+for bad in 0 -1 nan 1e9 0.001 abc ""; do
+  expect_rc 2 "--resolution '$bad' refused" simulate pocket.nc --resolution "$bad"
+done
+text_check "the range is named" "millimetres from 0.01 to 10"
+expect_rc 2 "a grid over the cell cap" --json simulate pocket.nc --resolution 0.01
+json_check "the cap and a coarser resolution are named" \
+  'd["status"] == "error" and "needs 60000000 cells" in d["diagnostics"][0]["message"] and "at most 2000000" in d["diagnostics"][0]["message"] and "try 0.055 mm" in d["diagnostics"][0]["message"]'
+
+mkfifo pipe.stl
+expect_rc 2 "--stl FIFO refused" simulate pocket.nc --stl pipe.stl
+[ -p pipe.stl ] && pass "the FIFO stays a FIFO" || fail "the FIFO was replaced"
+echo keep >kept.stl
+printf 'N0001 T1 G17 G90 G54 G0 X10 Y10 Z2\nN0002 G1 Z-2 F100\nN0003 G1 X20 Q\nN0004 M30\n' >broken.nc
+expect_rc 1 "a program with errors" --json simulate broken.nc --stl kept.stl
+json_check "its error with block and line, stl null" \
+  'd["status"] == "error" and d["stl"] is None and any(x["severity"] == "error" and x["line"] == 3 for x in d["diagnostics"])'
+[ "$(cat kept.stl)" = keep ] && pass "the old file is kept" || fail "kept.stl was overwritten"
+
+expect_rc 2 "--stl outside simulate" run pocket.nc --stl x.stl
+text_check "says where it belongs" "belong to 'simulate'"
+expect_rc 2 "simulate needs a program" simulate
+expect_rc 2 "simulate takes one program" simulate pocket.nc pocket.nc
+finish
