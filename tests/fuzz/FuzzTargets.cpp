@@ -19,6 +19,8 @@ const std::vector<FuzzTarget>& fuzzTargets() {
          fuzzTargetPath},
         {"mdi", "MDI entry: prepareMdiEntry with global macros, then run on process 0",
          fuzzMdiEntry},
+        {"removal", "material removal: a program cuts the mill's or the lathe's stock, STL",
+         fuzzRemoval},
     };
     return targets;
 }

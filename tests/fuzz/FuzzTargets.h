@@ -37,5 +37,6 @@ void fuzzMachineConfig(std::string_view input);
 void fuzzMachineDataFile(std::string_view input);
 void fuzzTargetPath(std::string_view input);
 void fuzzMdiEntry(std::string_view input);
+void fuzzRemoval(std::string_view input);
 
 }  // namespace mtc::fuzz

@@ -1,0 +1,67 @@
+// Material removal: the input is an NC program, run on the mill or the lathe
+// of the demo cell (by the input's length) into the part model at a coarse
+// resolution, bounded by a block budget. The part stays inside its stock
+// (heights between bottom and top, radii between 0 and the bar's), the
+// removed volume is finite and at most the stock's, diagnostics have a
+// code, and the STL has the size its triangle count promises.
+#include <cmath>
+#include <string>
+
+#include "../FuzzTargets.h"
+#include "DemoCell.h"
+#include "cnc_core/language/Parser.h"
+#include "cnc_core/removal/PartStl.h"
+#include "cnc_core/removal/RemovalRun.h"
+
+namespace mtc::fuzz {
+
+namespace {
+
+void checkHeightField(const core::removal::HeightField& f, std::string_view input) {
+    const core::removal::Box& box = f.stock();
+    for (int j = 0; j < f.rows(); ++j)
+        for (int i = 0; i < f.columns(); ++i) {
+            const double h = f.height(i, j);
+            require(h >= static_cast<float>(box.min[2]) && h <= static_cast<float>(box.max[2]),
+                    "a height lies between the stock's bottom and top", input);
+        }
+}
+
+void checkProfile(const core::removal::TurnedProfile& p, std::string_view input) {
+    for (int k = 0; k < p.slices(); ++k)
+        require(p.radiusAt(k) >= 0.0 && p.radiusAt(k) <= p.stockRadius(),
+                "a radius lies between 0 and the bar's", input);
+}
+
+}  // namespace
+
+void fuzzRemoval(std::string_view input) {
+    const int process = static_cast<int>(input.size() % 2);
+    core::ParseOptions options;
+    options.programNumber = 1;
+    auto program = std::make_shared<core::Program>(core::parseProgram(std::string(input), options));
+    program->number = 1;
+    core::ProgramStore store;
+    store.put(process, 1, program);
+    core::removal::RemovalSettings settings;
+    settings.resolution = 2.0;  // coarse: the fuzzer's executions stay fast
+    const core::removal::RemovalRunResult r = core::removal::simulateRemoval(
+        *demoCell().process(process), store, 1, settings, nullptr, 5'000);
+    for (const core::Diagnostic& d : r.diagnostics.items())
+        require(!d.code.empty() && !d.message.empty(), "a diagnostic has code and message", input);
+    require(r.part.has_value(), "the demo cell's stock makes a part", input);
+    const core::removal::PartModel& part = *r.part;
+    const double removed = part.removedVolume();
+    require(std::isfinite(removed) && removed >= 0.0, "the removed volume is finite", input);
+    if (const core::removal::HeightField* f = part.heightField()) {
+        checkHeightField(*f, input);
+    } else {
+        checkProfile(*part.profile(), input);
+    }
+    require(r.counts.cuttingMoves <= r.counts.moves, "only moves cut", input);
+    const std::string stl = core::removal::partStl(part);
+    require(stl.size() == 84 + 50 * core::removal::stlTriangleCount(part),
+            "the STL holds its triangles", input);
+}
+
+}  // namespace mtc::fuzz
