@@ -317,6 +317,40 @@ void expectClosed(const std::string& stl, std::uint64_t triangles) {
     }
 }
 
+/// The volume the surface encloses (divergence theorem); positive when the
+/// facets face outwards.
+double enclosedVolume(const std::string& stl) {
+    std::uint32_t count = 0;
+    std::memcpy(&count, stl.data() + 80, 4);
+    double sum = 0.0;
+    for (std::uint32_t t = 0; t < count; ++t) {
+        float v[9];
+        std::memcpy(v, stl.data() + 84 + 50 * std::size_t{t} + 12, 36);
+        const double ax = v[0], ay = v[1], az = v[2], bx = v[3], by = v[4], bz = v[5], cx = v[6],
+                     cy = v[7], cz = v[8];
+        sum += ax * (by * cz - bz * cy) - ay * (bx * cz - bz * cx) + az * (bx * cy - by * cx);
+    }
+    return sum / 6.0;
+}
+
+TEST(PartStl, SurfacesEncloseTheFinishedPart) {
+    // Mill: the block less the pocket; the top runs through the cell
+    // centres, so the pocket's border may differ by half a cell.
+    const double resolution = 0.5;
+    const RemovalRunResult mill = simulate(kPocketByCentre, 0, resolution);
+    ASSERT_TRUE(mill.part);
+    const double block = 100.0 * 60.0 * 12.0;
+    EXPECT_NEAR(enclosedVolume(partStl(*mill.part)), block - mill.part->removedVolume(),
+                borderBound(120, resolution, 4.0));
+    // Lathe: the bar less the turned volume, within the facets' chordal
+    // error (a quarter of the resolution on the radius) and the slices.
+    const RemovalRunResult lathe = simulate(kTurnedShaft, 1, resolution);
+    ASSERT_TRUE(lathe.part);
+    const double bar = kPi * 40.0 * 40.0 * 117.5;
+    const double part = bar - lathe.part->removedVolume();
+    EXPECT_NEAR(enclosedVolume(partStl(*lathe.part)), part, 0.01 * part);
+}
+
 TEST(PartStl, FinishedPartsAreClosedSurfaces) {
     const RemovalRunResult mill = simulate(kPocketByCentre, 0, 1.0);
     ASSERT_TRUE(mill.part);
