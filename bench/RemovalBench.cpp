@@ -3,13 +3,18 @@
 // core. BM_RemovalMill10k interprets and cuts a roughing program of 10,000
 // blocks (zig-zag lines across the demo stock joined by half circles, 0.5 mm
 // deeper each layer, cutter T10 of radius 8) into the 100 x 60 mm block;
-// BM_RemovalStl writes its binary STL into memory; BM_RemovalLathe10k turns
-// 10,000 blocks of passes on the demo bar. Counters: cells, removed mm^3.
+// BM_RemovalMillArcs10k every block cutting: the generated closed-motion
+// program (lines and R10 quarter circles, bench/BenchPrograms.h) 1 mm deep
+// with the R8 cutter, so each block sweeps about 16 mm wide through the
+// part; BM_RemovalStl writes the roughed part's binary STL into memory;
+// BM_RemovalLathe10k turns 10,000 blocks of passes on the demo bar.
+// Counters: cells, removed mm^3.
 #include <benchmark/benchmark.h>
 
 #include <cstdio>
 #include <string>
 
+#include "BenchPrograms.h"
 #include "cnc_core/language/Parser.h"
 #include "cnc_core/machine/MachineConfigReader.h"
 #include "cnc_core/removal/PartStl.h"
@@ -101,6 +106,18 @@ void BM_RemovalMill10k(benchmark::State& state) {
     report(state, last);
 }
 
+void BM_RemovalMillArcs10k(benchmark::State& state) {
+    const ProgramStore store =
+        storeWith(0, "N0001 T10 G17 G90 G54 G0 X0 Y0 Z2\nN0002 G1 Z-1 F100\n" +
+                         mtc::bench::generateClosedMotionProgram(10'000));
+    RemovalSettings settings;
+    settings.resolution = 0.2;
+    RemovalRunResult last;
+    for (auto _ : state)
+        last = simulateRemoval(*cell().process(0), store, 1, settings);
+    report(state, last);
+}
+
 void BM_RemovalStl(benchmark::State& state) {
     const ProgramStore store = storeWith(0, millProgram(10'000));
     RemovalSettings settings;
@@ -125,5 +142,6 @@ void BM_RemovalLathe10k(benchmark::State& state) {
 }  // namespace
 
 BENCHMARK(BM_RemovalMill10k)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_RemovalMillArcs10k)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_RemovalStl)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_RemovalLathe10k)->Unit(benchmark::kMillisecond);

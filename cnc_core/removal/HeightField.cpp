@@ -31,30 +31,36 @@ bool HeightField::cut(const std::array<double, 3>& a, const std::array<double, 3
     if (!(radius >= 0.0) || !(std::min(a[2], b[2]) < stock_.max[2])) return false;  // above the top
     const auto [first, last] = cellsWithin(
         std::min(a[1], b[1]) - radius, std::max(a[1], b[1]) + radius, stock_.min[1], depth_, rows_);
+    const SweptDisc disc{a[0], a[1], b[0], b[1], radius};
+    const SweptRowScanner scanner(disc);
     bool removed = false;
     for (int j = first; j <= last; ++j)
-        removed = cutRow(j, a, b, radius) || removed;
+        removed = cutRow(j, disc, scanner.row(rowY(j)), a[2], b[2]) || removed;
     return removed;
 }
 
-bool HeightField::cutRow(int j, const std::array<double, 3>& a, const std::array<double, 3>& b,
-                         double radius) {
-    const SweptDisc disc{a[0], a[1], b[0], b[1], radius};
-    const double y = rowY(j);
-    const Span row = sweptRow(disc, y);
+bool HeightField::cutRow(int j, const SweptDisc& disc, const Span& row, double za, double zb) {
     if (row.empty()) return false;
     const auto [first, last] = cellsWithin(row.lo, row.hi, stock_.min[0], width_, columns_);
+    if (first > last) return false;
     float* heights = heights_.data() + static_cast<std::size_t>(j) * columns_;
-    const double bottom = stock_.max[2] > stock_.min[2] ? stock_.min[2] : stock_.max[2];
-    const bool level = a[2] == b[2];
+    const double bottom = std::min(stock_.min[2], stock_.max[2]);
+    if (za == zb) {  // level: one face height for the whole row (the common case)
+        const float face = static_cast<float>(std::max(za, bottom));
+        int lowered = 0;
+        for (int i = first; i <= last; ++i) {  // branch-free: the compiler vectorises it
+            lowered += face < heights[i] ? 1 : 0;
+            heights[i] = face < heights[i] ? face : heights[i];
+        }
+        return lowered > 0;
+    }
+    // A ramp: each cell drops to the lowest face position that covers its centre.
+    const double y = rowY(j);
     bool removed = false;
     for (int i = first; i <= last; ++i) {
-        double z = a[2];
-        if (!level) {  // a ramp: the lowest face position that covers the centre
-            const Span t = coveringPositions(disc, columnX(i), y);
-            if (t.empty()) continue;
-            z = std::min(a[2] + (b[2] - a[2]) * t.lo, a[2] + (b[2] - a[2]) * t.hi);
-        }
+        const Span t = coveringPositions(disc, columnX(i), y);
+        if (t.empty()) continue;
+        const double z = std::min(za + (zb - za) * t.lo, za + (zb - za) * t.hi);
         const float face = static_cast<float>(std::max(z, bottom));
         if (face < heights[i]) {
             heights[i] = face;

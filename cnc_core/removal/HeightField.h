@@ -3,6 +3,8 @@
 #include <array>
 #include <vector>
 
+#include "cnc_core/removal/SweptDisc.h"
+
 namespace mtc::core::removal {
 
 /// An axis-parallel box (mm): the raw part of a mill.
@@ -47,9 +49,9 @@ class HeightField {
     }
 
   private:
-    /// Lowers the cells of row `j` the sweep covers; true when one was lowered.
-    bool cutRow(int j, const std::array<double, 3>& a, const std::array<double, 3>& b,
-                double radius);
+    /// Lowers the cells of row `j` the sweep covers (`row`: its X range; the
+    /// face moves from height `za` to `zb`); true when one was lowered.
+    bool cutRow(int j, const SweptDisc& disc, const Span& row, double za, double zb);
 
     Box stock_;
     int columns_;

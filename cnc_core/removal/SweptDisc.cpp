@@ -10,19 +10,12 @@ namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
-/// The x range of the disc around (cx, cy) on the line y = `y`.
-Span discRow(double cx, double cy, double radius, double y) {
-    const double dy = y - cy;
-    const double squared = radius * radius - dy * dy;
-    if (!(squared >= 0.0)) return {};
-    const double half = std::sqrt(squared);
-    return {cx - half, cx + half};
-}
-
-/// The x values where `slope * x + offset` lies in [lo, hi] (slope may be 0).
-Span linearRange(double slope, double offset, double lo, double hi) {
-    if (slope == 0.0) return offset >= lo && offset <= hi ? Span{-kInfinity, kInfinity} : Span{};
-    const double x1 = (lo - offset) / slope, x2 = (hi - offset) / slope;
+/// The x values where `slope * x + offset` lies in [lo, hi], given the
+/// slope's reciprocal `inverse` (0: a slope of 0, or one too small to invert:
+/// every x or none).
+Span linearRangeBy(double inverse, double offset, double lo, double hi) {
+    if (inverse == 0.0) return offset >= lo && offset <= hi ? Span{-kInfinity, kInfinity} : Span{};
+    const double x1 = (lo - offset) * inverse, x2 = (hi - offset) * inverse;
     return {std::min(x1, x2), std::max(x1, x2)};
 }
 
@@ -39,20 +32,41 @@ Span hull(const Span& a, const Span& b) {
 
 }  // namespace
 
-Span sweptRow(const SweptDisc& d, double y) {
-    Span row = hull(discRow(d.ax, d.ay, d.radius, y), discRow(d.bx, d.by, d.radius, y));
-    const double dx = d.bx - d.ax, dy = d.by - d.ay;
-    const double squared = dx * dx + dy * dy;
-    const double length = std::sqrt(squared);
-    if (!(length > 0.0) || !std::isfinite(squared)) return row;
+SweptRowScanner::SweptRowScanner(const SweptDisc& disc)
+    : d_(disc), radiusSquared_(disc.radius * disc.radius) {
+    dx_ = d_.bx - d_.ax;
+    dy_ = d_.by - d_.ay;
+    lengthSquared_ = dx_ * dx_ + dy_ * dy_;
+    const double length = std::sqrt(lengthSquared_);
+    band_ = length > 0.0 && std::isfinite(lengthSquared_);
+    halfWidth_ = d_.radius * length;  // |cross product| bound of the band
+    const auto inverse = [](double v) {
+        const double i = 1.0 / v;
+        return std::isfinite(i) ? i : 0.0;  // 0 or subnormal: the band is axis-parallel
+    };
+    inverseDx_ = inverse(dx_);
+    inverseDy_ = inverse(dy_);
+}
+
+Span SweptRowScanner::row(double y) const {
+    const auto disc = [&](double cx, double cy) {
+        const double squared = radiusSquared_ - (y - cy) * (y - cy);
+        if (!(squared >= 0.0)) return Span{};
+        const double half = std::sqrt(squared);
+        return Span{cx - half, cx + half};
+    };
+    const Span ends = hull(disc(d_.ax, d_.ay), disc(d_.bx, d_.by));
+    if (!band_) return ends;
     // The band between the two end discs: the projection on the chord lies in
     // [0, L^2] and the distance from the chord's line is at most the radius.
-    const double ry = y - d.ay;
-    const Span along = linearRange(dx, ry * dy - d.ax * dx, 0.0, squared);
-    const Span across =
-        linearRange(dy, -d.ax * dy - ry * dx, -d.radius * length, d.radius * length);
-    const Span band = intersect(along, across);
-    return hull(row, band);
+    const double ry = y - d_.ay;
+    const Span along = linearRangeBy(inverseDx_, ry * dy_ - d_.ax * dx_, 0.0, lengthSquared_);
+    const Span across = linearRangeBy(inverseDy_, -d_.ax * dy_ - ry * dx_, -halfWidth_, halfWidth_);
+    return hull(ends, intersect(along, across));
+}
+
+Span sweptRow(const SweptDisc& d, double y) {
+    return SweptRowScanner(d).row(y);
 }
 
 Span coveringPositions(const SweptDisc& d, double px, double py) {

@@ -25,6 +25,21 @@ struct SweptDisc {
 /// misses it). The region is convex, so this is one range.
 Span sweptRow(const SweptDisc& disc, double y);
 
+/// sweptRow() for many rows of one chord: what does not depend on the row
+/// is computed once (the models scan a chord row by row).
+class SweptRowScanner {
+  public:
+    explicit SweptRowScanner(const SweptDisc& disc);
+    Span row(double y) const;
+
+  private:
+    SweptDisc d_;
+    double radiusSquared_;
+    bool band_ = false;  ///< the chord has a length: a band joins the end discs
+    double dx_ = 0.0, dy_ = 0.0, lengthSquared_ = 0.0, halfWidth_ = 0.0;
+    double inverseDx_ = 0.0, inverseDy_ = 0.0;  ///< 0 for a zero component
+};
+
 /// The positions t in [0, 1] of the disc centre a + t (b - a) at which the
 /// disc covers point (px, py): one range (empty when it never does).
 Span coveringPositions(const SweptDisc& disc, double px, double py);

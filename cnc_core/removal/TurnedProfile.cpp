@@ -16,8 +16,8 @@ constexpr double kUnreached = std::numeric_limits<double>::infinity();
 
 /// The radius the swept nose comes closest to the axis at in the slice at
 /// `axial` (0 when it crosses the axis; kUnreached when it misses the slice).
-double noseReach(double ua, double ra, double ub, double rb, double nose, double axial) {
-    const Span reach = sweptRow(SweptDisc{ra, ua, rb, ub, nose}, axial);
+double noseReach(const SweptRowScanner& nose, double axial) {
+    const Span reach = nose.row(axial);
     if (reach.empty()) return kUnreached;
     if (reach.lo <= 0.0 && reach.hi >= 0.0) return 0.0;
     return std::min(std::fabs(reach.lo), std::fabs(reach.hi));
@@ -83,14 +83,14 @@ bool TurnedProfile::cut(double axialA, double radialA, double axialB, double rad
     const double infinity = std::numeric_limits<double>::infinity();
     const auto [first, last] = cellsWithin(body < 0 ? -infinity : low, body > 0 ? infinity : high,
                                            from_, length_, slices());
+    const SweptRowScanner nose(SweptDisc{radialA, axialA, radialB, axialB, noseRadius});
     bool removed = false;
     for (int k = first; k <= last; ++k) {
         const double at = sliceCentre(k);
         const double reach =
-            tool.radial
-                ? flatReach(axialA, radialA, axialB, radialB, noseRadius, at)
-                : std::min(noseReach(axialA, radialA, axialB, radialB, noseRadius, at),
-                           bodyReach(axialA, radialA, axialB, radialB, noseRadius, body, at));
+            tool.radial ? flatReach(axialA, radialA, axialB, radialB, noseRadius, at)
+                        : std::min(noseReach(nose, at), bodyReach(axialA, radialA, axialB, radialB,
+                                                                  noseRadius, body, at));
         const double inner = std::max(0.0, reach);
         double& r = radii_[static_cast<std::size_t>(k)];
         if (inner < r) {
