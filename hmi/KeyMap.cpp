@@ -21,40 +21,50 @@ QVector<ControlKey> machineKeys() {
             ControlKey::ControlReset,   ControlKey::SingleBlock, ControlKey::Mdi};
 }
 
+QKeySequence chord(Qt::Modifier modifier, Qt::Key key) {
+    // Qt 5 spells a chord as the sum of two enums of different types; one
+    // place does the arithmetic on int.
+    return QKeySequence(static_cast<int>(modifier) | static_cast<int>(key));
+}
+
+QKeySequence stationShortcut(int direction) {
+    return chord(Qt::CTRL, direction > 0 ? Qt::Key_PageDown : Qt::Key_PageUp);
+}
+
 QKeySequence machineKeyShortcut(ControlKey key) {
     switch (key) {
         case ControlKey::ProgramRestart:
-            return QKeySequence(Qt::SHIFT | Qt::Key_F1);
+            return chord(Qt::SHIFT, Qt::Key_F1);
         case ControlKey::Repos:
-            return QKeySequence(Qt::SHIFT | Qt::Key_F2);
+            return chord(Qt::SHIFT, Qt::Key_F2);
         case ControlKey::Manual:
-            return QKeySequence(Qt::SHIFT | Qt::Key_F3);
+            return chord(Qt::SHIFT, Qt::Key_F3);
         case ControlKey::Automatic:
-            return QKeySequence(Qt::SHIFT | Qt::Key_F4);
+            return chord(Qt::SHIFT, Qt::Key_F4);
         case ControlKey::Start:
-            return QKeySequence(Qt::SHIFT | Qt::Key_F5);
+            return chord(Qt::SHIFT, Qt::Key_F5);
         case ControlKey::Stop:
-            return QKeySequence(Qt::SHIFT | Qt::Key_F6);
+            return chord(Qt::SHIFT, Qt::Key_F6);
         case ControlKey::ControlReset:
-            return QKeySequence(Qt::SHIFT | Qt::Key_F7);
+            return chord(Qt::SHIFT, Qt::Key_F7);
         case ControlKey::SingleBlock:
-            return QKeySequence(Qt::SHIFT | Qt::Key_F8);
+            return chord(Qt::SHIFT, Qt::Key_F8);
         case ControlKey::Mdi:
-            return QKeySequence(Qt::SHIFT | Qt::Key_F9);
+            return chord(Qt::SHIFT, Qt::Key_F9);
     }
     return {};
 }
 
 QKeySequence speedKeyShortcut() {
-    return QKeySequence(Qt::SHIFT | Qt::Key_F10);
+    return chord(Qt::SHIFT, Qt::Key_F10);
 }
 
 QKeySequence feedOverrideShortcut(int direction) {
-    return QKeySequence(Qt::ALT | (direction > 0 ? Qt::Key_Up : Qt::Key_Down));
+    return chord(Qt::ALT, direction > 0 ? Qt::Key_Up : Qt::Key_Down);
 }
 
 QKeySequence rapidOverrideShortcut(int direction) {
-    return QKeySequence(Qt::ALT | (direction > 0 ? Qt::Key_PageUp : Qt::Key_PageDown));
+    return chord(Qt::ALT, direction > 0 ? Qt::Key_PageUp : Qt::Key_PageDown);
 }
 
 QKeySequence baseScreenShortcut() {

@@ -14,6 +14,13 @@ struct KeyAssignment {
     QString meaning;
 };
 
+/// A key with a modifier (Qt::SHIFT, Qt::CTRL, Qt::ALT).
+QKeySequence chord(Qt::Modifier modifier, Qt::Key key);
+
+/// The keys that show the next (`direction` > 0: Ctrl+PgDn) or previous
+/// station (Ctrl+PgUp).
+QKeySequence stationShortcut(int direction);
+
 /// Keyboard shortcut of each machine control key (M key).
 QKeySequence machineKeyShortcut(mtc::core::ControlKey key);
 

@@ -133,8 +133,8 @@ void PanelWindow::installShortcuts() {
     add(QKeySequence(Qt::Key_Escape), [this] { showScreen(kMenuScreen); });
     add(QKeySequence(Qt::Key_F12), [this] { showScreen(kHelpScreen); });
     add(baseScreenShortcut(), [this] { showScreen(kBaseScreen); });
-    add(QKeySequence(Qt::CTRL | Qt::Key_PageUp), [this] { showStation(station_ - 1); });
-    add(QKeySequence(Qt::CTRL | Qt::Key_PageDown), [this] { showStation(station_ + 1); });
+    add(stationShortcut(-1), [this] { showStation(station_ - 1); });
+    add(stationShortcut(+1), [this] { showStation(station_ + 1); });
     for (mtc::core::ControlKey key : machineKeys())
         add(machineKeyShortcut(key), [this, key] { onMachineKey(key); });
     add(speedKeyShortcut(), [this] { session_->cycleSpeed(); });

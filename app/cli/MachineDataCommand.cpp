@@ -172,10 +172,15 @@ int set(const CliOptions& options, Session& s) {
                                     std::to_string(definition->subTitles.size()) + ")",
                                 options.json);
     const core::MachineDataAddress address{*page, options.process, sub < 0 ? 0 : sub, *element};
+    const core::MachineDataElement* shown = definition ? definition->element(*element) : nullptr;
     double before = 0.0;
-    s.store->read(address, before);
-    const MachineDataStatus status = s.store->write(
-        address, *value, writerFrom(options.machineData.writer), options.machineData.password);
+    // The store names the reason for an address it does not hold (page,
+    // process or element); one its page table does not describe is refused too.
+    MachineDataStatus status = s.store->read(address, before);
+    if (status == MachineDataStatus::Ok && !shown) status = MachineDataStatus::UnknownElement;
+    if (status == MachineDataStatus::Ok)
+        status = s.store->write(address, *value, writerFrom(options.machineData.writer),
+                                options.machineData.password);
     if (status != MachineDataStatus::Ok) {
         s.report.diagnostics.error(core::machineDataStatusCode(status), {},
                                    refusalText(*s.store, address, status));
@@ -188,7 +193,7 @@ int set(const CliOptions& options, Session& s) {
     }
     double after = 0.0;
     s.store->read(address, after);
-    printSetResult(address, *definition->element(*element), before, after, s.report, options.json);
+    printSetResult(address, *shown, before, after, s.report, options.json);
     return 0;
 }
 

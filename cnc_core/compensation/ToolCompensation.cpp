@@ -83,7 +83,10 @@ bool ToolCompensation::plan(const BlockContext& context, const CompensationBlock
     p.movedAxes = block.programmedAxes;
     p.reentry = block.machineMove && block.reentry != nullptr;
     p.reentryCompensated = p.reentry && block.reentry->compensated;
-    if (p.reentryCompensated) p.reentryAxes = block.reentry->axes;
+    if (p.reentryCompensated) {
+        p.reentryAxes = block.reentry->axes;
+        p.reentryLengths = block.reentry->lengthOffsets;
+    }
     p.id = nextId_ + 1;
     if (!planFrameChange(context, block) || !planMove(context, block) ||
         !planLengths(context, block))
@@ -166,7 +169,7 @@ bool ToolCompensation::planLengths(const BlockContext& context, const Compensati
         p.applied[i] = on && a == p.frame.lengthAxis ? p.frame.length : 0.0;
         // REPOS to a compensated re-entry point: the axis takes the tool
         // length it had there (TC-013).
-        if (p.reentryCompensated) p.applied[i] = block.reentry->lengthOffsets[i];
+        if (p.reentryCompensated) p.applied[i] = p.reentryLengths[i];
         const AxisModel& model = axes_.axis(a);
         const double position = block.next.machine[i] + p.applied[i];
         if (p.applied[i] != 0.0 && model.limited() &&

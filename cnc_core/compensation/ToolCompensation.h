@@ -132,7 +132,8 @@ class ToolCompensation {
         std::uint32_t movedAxes = 0;             ///< axis words of the block
         bool reentry = false;                    ///< G77 to a re-entry point (TC-013)
         bool reentryCompensated = false;         ///< ... where compensation was in effect
-        std::array<double, kMaxAxes> reentryAxes{};  ///< its axis positions
+        std::array<double, kMaxAxes> reentryAxes{};     ///< its axis positions
+        std::array<double, kMaxAxes> reentryLengths{};  ///< its G48 offsets
     };
 
     bool report(const BlockContext& context, const comp::Problem& problem) const;

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -28,8 +29,8 @@ struct ScannedWord {
 /// The active plane as the compiler sees it: axis names and centre letters.
 struct CompilerPlane {
     int code = 17;
-    std::string axis[2] = {"X", "Y"};  ///< 1st and 2nd plane axis
-    char centre[2] = {'I', 'J'};       ///< centre letters of the two axes
+    std::array<std::string, 2> axis = {"X", "Y"};  ///< 1st and 2nd plane axis
+    std::array<char, 2> centre = {'I', 'J'};       ///< centre letters of the two axes
 };
 
 /// Indices [begin, end) of a block's words in a ScanResult word pool.

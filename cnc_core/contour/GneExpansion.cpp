@@ -85,12 +85,11 @@ bool parseToolBlock(const std::string& text, ToolAssumption& t) {
     std::string key;
     double value = 0;
     while (in >> key >> value) {
-        const std::optional<int> edge = key == "EDGE" ? exactInteger(value) : std::nullopt;
-        if (edge && *edge >= 0 && *edge <= 9)
+        if (key == "EDGE") {
+            const std::optional<int> edge = exactInteger(value);
+            if (!edge || *edge < 0 || *edge > 9) return false;
             t.edge = *edge, t.turning = true;
-        else if (key == "EDGE")
-            return false;
-        else if (key == "TR")
+        } else if (key == "TR")
             t.radius = value;
         else if (key == "CA")
             t.cornerAngle = value;

@@ -13,20 +13,20 @@
 
 namespace mtc::core::gne {
 
-/// One positional parameter.
 /// Largest magnitude of any GNE value (mm, degrees): parameters and contour
 /// element words alike, so that no geometry, tessellation or pass count can
 /// grow with a typed number (issue 15 §1).
 constexpr double kMaxGneValue = 1e6;
 
+/// One positional parameter.
 struct ParamSpec {
-    const char* name;      ///< short name as in the documentation ("XC")
-    const char* meaning;   ///< one line for the operator
-    bool required;         ///< no default: must be written
-    double defaultValue;   ///< used when the position is empty
-    double minimum;        ///< inclusive
-    double maximum;        ///< inclusive
-    bool integer = false;  ///< whole numbers only
+    const char* name = "";      ///< short name as in the documentation ("XC")
+    const char* meaning = "";   ///< one line for the operator
+    bool required = false;      ///< no default: must be written
+    double defaultValue = 0.0;  ///< used when the position is empty
+    double minimum = 0.0;       ///< inclusive
+    double maximum = 0.0;       ///< inclusive
+    bool integer = false;       ///< whole numbers only
 };
 
 /// One keyword with positional parameters.

@@ -79,7 +79,7 @@ struct Roughing {
             const double a = 2.0 * kPi * j / samples;
             const double h = yc + radius * std::sin(a), dz = radius * std::cos(a);
             for (std::size_t i = 0; i < scaled.size(); ++i) {
-                double lo, hi;
+                double lo = 0.0, hi = 0.0;
                 if (!capsuleInterval(scaled[i], scaled[(i + 1) % scaled.size()], h / ax, lo, hi))
                     continue;
                 const double zLo = lo * az - dz, zHi = hi * az - dz;

@@ -39,7 +39,7 @@ class AuxFunctionGroups {
         return groupOf(m) == 16 && !isProgramControl(m) && !isSpindleOrientation(m);
     }
     /// M number -> group, for the interpreter's per-block look-up.
-    const std::array<std::int8_t, kFunctions>& table() const { return table_; }
+    const std::array<std::uint8_t, kFunctions>& table() const { return table_; }
 
     /// M00, M01, M02, M30.
     static bool isProgramControl(int m) { return m == 0 || m == 1 || m == 2 || m == 30; }
@@ -52,7 +52,7 @@ class AuxFunctionGroups {
     }
 
   private:
-    std::array<std::int8_t, kFunctions> table_{};
+    std::array<std::uint8_t, kFunctions> table_{};
 };
 
 }  // namespace mtc::core

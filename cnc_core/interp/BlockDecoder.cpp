@@ -125,7 +125,7 @@ bool BlockDecoder::axisWord(const Word& w) const {
     in.axisValue[axis] = v;
     in.axisColumn[axis] = w.column;
     const auto slot = static_cast<size_t>(in.axisCount++);
-    in.axisOrder[slot] = static_cast<std::int8_t>(found.axis);
+    in.axisOrder[slot] = static_cast<std::uint8_t>(found.axis);
     in.orderValue[slot] = v;
     in.orderColumn[slot] = w.column;
     return true;

@@ -30,7 +30,7 @@ class BlockExecutor {
         const ZeroOffsetTable* offsets = nullptr;
         const ToolList* tools = nullptr;  ///< the process's tool list (T must be in it)
         const GGroupValues* defaults = nullptr;
-        const std::array<std::int8_t, 1000>* mGroupOf = nullptr;  ///< M number -> group 1..16
+        const std::array<std::uint8_t, 1000>* mGroupOf = nullptr;  ///< M number -> group 1..16
         double arcTolerance = 0.002;
     };
 

@@ -58,7 +58,7 @@ struct BlockInput {
     /// Axis words in program order (repeats included, so that G20 can report
     /// an axis written twice); axisValue/axisColumn hold the last occurrence.
     static constexpr int kMaxAxisWords = 16;
-    std::array<std::int8_t, kMaxAxisWords> axisOrder{};
+    std::array<std::uint8_t, kMaxAxisWords> axisOrder{};
     std::array<double, kMaxAxisWords> orderValue{};
     std::array<std::uint16_t, kMaxAxisWords> orderColumn{};
     int axisCount = 0;

@@ -55,9 +55,9 @@ Interpreter::Interpreter(const ProcessConfig& config, const ProgramStore& progra
                          MachineSink& sink, InterpreterServices services)
     : config_(config),
       programs_(programs),
+      axes_(ProcessAxes::build(config, configDiagnostics_)),
       compensation_(sink, config, axes_),
       sink_(compensation_.output()),
-      axes_(ProcessAxes::build(config, configDiagnostics_)),
       zeroOffsets_(offsetsFor(services, config, configDiagnostics_)),
       tools_(services.tools ? services.tools
                             : std::make_shared<const ToolList>(ToolList::fromConfig(config))),

@@ -291,17 +291,19 @@ class Interpreter {
 
     const ProcessConfig& config_;
     const ProgramStore& programs_;
+    // Declared before compensation_, which keeps a reference to axes_: a
+    // member is constructed in declaration order.
+    DiagnosticList configDiagnostics_;
+    ProcessAxes axes_;
     /// Tool compensation between the interpreter and the machine: the moves
     /// go through it, everything else through sink_ (its output queue).
     ToolCompensation compensation_;
     MachineSink& sink_;
     bool holdRequested_ = false;  ///< requestHold() during the current block
-    DiagnosticList configDiagnostics_;
-    ProcessAxes axes_;
     std::shared_ptr<const ZeroOffsetTable> zeroOffsets_;
     std::shared_ptr<const ToolList> tools_;
     GGroupValues defaults_{};
-    std::array<std::int8_t, 1000> mGroupOf_{};
+    std::array<std::uint8_t, 1000> mGroupOf_{};
     std::shared_ptr<MachineDataProvider> machineData_;
     std::shared_ptr<EventTable> events_;
     VariableAccess* otherProcesses_ = nullptr;

@@ -206,7 +206,7 @@ bool BlockParser::parseNextWord() {
 }
 
 bool BlockParser::parseAddress(char letter, std::uint32_t start) {
-    WordKind kind;
+    WordKind kind = WordKind::Axis;  // set by every case that goes on to parseValue
     bool indexed = false;
     switch (letter) {
         case 'G':

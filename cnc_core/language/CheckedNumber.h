@@ -17,9 +17,10 @@ namespace mtc::core {
 template <typename Int>
 constexpr bool fitsInteger(double value) {
     static_assert(std::is_integral_v<Int>);
-    // lowest() and max()+1 are powers of two (or 0): exact as doubles.
+    // lowest() and max()+1 are powers of two (or 0): exact as doubles. max()
+    // itself may not be (2^63-1), but it rounds to 2^63 and adding 1 keeps it.
     constexpr double below = static_cast<double>(std::numeric_limits<Int>::lowest()) - 1.0;
-    constexpr double above = static_cast<double>(std::numeric_limits<Int>::max() / 2 + 1) * 2.0;
+    constexpr double above = static_cast<double>(std::numeric_limits<Int>::max()) + 1.0;
     return value > below && value < above;
 }
 

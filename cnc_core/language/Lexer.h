@@ -119,10 +119,8 @@ class Lexer {
                 if (mantissa < 100000000000000000LL) {
                     mantissa = mantissa * 10 + (c - '0');
                     if (point) ++scale;
-                } else if (!point) {
-                    exact = false;
-                } else if (c != '0') {
-                    exact = false;
+                } else if (!point || c != '0') {
+                    exact = false;  // a digit the mantissa cannot hold
                 }
             } else if (c == '.' && !point) {
                 point = true;

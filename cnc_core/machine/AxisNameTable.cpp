@@ -12,7 +12,7 @@ bool renamed(const AxisModel& a, const Transformation& transformation, int axis)
 
 void AxisNameTable::put(AxisName name, int axis, AxisNameStatus status) {
     if (!name.valid() || name.letter < 'A' || name.letter > 'Z' || name.index > 3) return;
-    entries_[static_cast<size_t>((name.letter - 'A') * 4 + name.index)] = {axis, status};
+    entries_[static_cast<size_t>(name.letter - 'A') * 4 + name.index] = {axis, status};
 }
 
 AxisNameTable AxisNameTable::build(const ProcessAxes& axes, const Transformation& transformation) {

@@ -1,6 +1,7 @@
 #include "cnc_core/machine/PlaneSelection.h"
 
 #include <cmath>
+#include <iterator>
 
 namespace mtc::core {
 namespace {
@@ -93,7 +94,8 @@ std::vector<PlaneProblem> PlaneSelection::selectFree(const ProcessAxes& axes,
     // program end, jog reset and G17/G18/G19 restore the base system), so a
     // two-axis G20 keeps the current perpendicular axis (3.2).
     PlaneSelection next = *this;
-    for (size_t i = 0; i < programmed.size(); ++i) {
+    // checkCount refused more than three; the bound keeps kTarget's index safe anyway.
+    for (size_t i = 0; i < std::size(kTarget) && i < programmed.size(); ++i) {
         const int axis = programmed[i].axis;
         const AxisDefinition target = kTarget[i];
         const int holder = next.axisOf(target);

@@ -320,12 +320,11 @@ VerifiedTarget RestartVerifier::verify(const RestartSelection& selection, const 
         bool ok = cell.press(ControlKey::Start);
         while (ok && cell.sequence.active()) {
             const RestartPhase phase = cell.sequence.advance(kSlice);
-            if (cell.sequence.held())
+            const bool held = cell.sequence.held();
+            if (held || phase == RestartPhase::AutomaticAgain)
                 ok = cell.press(ControlKey::Start);
             else if (phase == RestartPhase::ManualMode)
                 ok = cell.press(ControlKey::Automatic);
-            else if (phase == RestartPhase::AutomaticAgain)
-                ok = cell.press(ControlKey::Start);
         }
         if (cell.sequence.phase() != RestartPhase::Reestablished) {
             result.outcome = TargetOutcome::Failed;

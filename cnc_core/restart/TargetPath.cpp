@@ -221,7 +221,7 @@ bool parseTargetPath(std::string_view text, std::vector<PathReference>& referenc
         if (end == std::string_view::npos) break;
         begin = end + 1;
     }
-    if (references.size() <= static_cast<std::size_t>(4 * kMaxSearchLevels)) return true;
+    if (references.size() <= 4 * static_cast<std::size_t>(kMaxSearchLevels)) return true;
     diagnostics.error("RESTART_PATH_SYNTAX", {}, "the target path has too many references");
     return false;
 }

@@ -89,16 +89,17 @@ void GneEditModel::pickSection(const std::string& programText, int line) {
             --first;
         while (last + 1 < count &&
                blankBetween(lastLineOf(doc.items[static_cast<std::size_t>(last)]),
-                            firstLineOf(doc.items[static_cast<std::size_t>(last + 1)])))
+                            firstLineOf(doc.items[static_cast<std::size_t>(last) + 1])))
             ++last;
         firstLine_ = firstLineOf(doc.items[static_cast<std::size_t>(first)]);
         lastLine_ = lastLineOf(doc.items[static_cast<std::size_t>(last)]);
     } else {
-        first = last = count;
+        // A new call: an empty range before the first item at or after the line.
         insertLine_ = line <= 0 ? static_cast<int>(programLines_.size()) : line;
+        first = count;
         for (int k = 0; k < count; ++k)
             if (firstLineOf(doc.items[static_cast<std::size_t>(k)]) >= insertLine_) {
-                first = last = k;
+                first = k;
                 break;
             }
         last = first - 1;

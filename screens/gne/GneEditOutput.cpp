@@ -106,10 +106,10 @@ std::string GneEditModel::splice(const std::string& output) const {
     if (!add.empty() && add.back().empty()) add.pop_back();
     std::size_t from = 0, count = 0;
     if (!isNew()) {
-        from = static_cast<std::size_t>(firstLine_ - 1);
-        count = static_cast<std::size_t>(lastLine_ - firstLine_ + 1);
+        from = static_cast<std::size_t>(firstLine_) - 1;
+        count = static_cast<std::size_t>(lastLine_ - firstLine_) + 1;
     } else {
-        from = std::min(static_cast<std::size_t>(std::max(insertLine_, 1) - 1), lines.size());
+        from = std::min(static_cast<std::size_t>(std::max(insertLine_, 1)) - 1, lines.size());
         if (from == lines.size() && !lines.empty() && lines.back().empty()) from = lines.size() - 1;
         count = replaceEmptyLine_ ? 1 : 0;
     }

@@ -18,7 +18,7 @@ class NcOptionsModel : public QAbstractListModel {
   public:
     enum class RowKind { CompilerActive, UserCompiler, Indramat, SyntaxCheck, Macro, NewMacro };
     struct Row {
-        RowKind kind;
+        RowKind kind = RowKind::CompilerActive;
         int index = 0;  ///< user compiler slot 1..4 or macro index
     };
 

@@ -291,7 +291,7 @@ bool PositionScreen::spindleKey(int key) {
     // its speed (MOT-018). The station decides what each key does.
     using mtc::core::SpindleKey;
     if (status_.spindles.empty()) return false;
-    SpindleKey spindleKey;
+    SpindleKey spindleKey = SpindleKey::Stop;  // every case below sets it or returns
     switch (key) {
         case Qt::Key_3:
             spindleKey = SpindleKey::Clockwise;

@@ -2,7 +2,6 @@
 
 #include <QBrush>
 #include <QColor>
-#include <cstring>
 
 #include "cnc_core/restart/ProgramScan.h"
 
@@ -59,14 +58,11 @@ QString ProgramListingModel::lineText(int row) const {
     while (at > 0 && source[at - 1] != '\n')
         --at;
     for (std::uint32_t skip = block.line; skip < line; ++skip) {
-        const void* newline = std::memchr(source.data() + at, '\n', source.size() - at);
-        if (!newline) return {};
-        at = static_cast<std::size_t>(static_cast<const char*>(newline) - source.data()) + 1;
+        const std::size_t newline = source.find('\n', at);
+        if (newline == std::string::npos) return {};
+        at = newline + 1;
     }
-    const void* newline = std::memchr(source.data() + at, '\n', source.size() - at);
-    std::size_t end =
-        newline ? static_cast<std::size_t>(static_cast<const char*>(newline) - source.data())
-                : source.size();
+    std::size_t end = std::min(source.find('\n', at), source.size());
     if (end > at && source[end - 1] == '\r') --end;
     QString text = QString::fromUtf8(source.data() + at, static_cast<int>(end - at));
     text.replace('\t', "    ");

@@ -20,7 +20,7 @@ double dot(const Vec& a, const Vec& b) {
 
 /// The eight corners of a box.
 std::array<Vec, 8> corners(const Vec& lo, const Vec& hi) {
-    std::array<Vec, 8> c;
+    std::array<Vec, 8> c{};
     for (int i = 0; i < 8; ++i)
         c[static_cast<std::size_t>(i)] = {(i & 1) ? hi[0] : lo[0], (i & 2) ? hi[1] : lo[1],
                                           (i & 4) ? hi[2] : lo[2]};

@@ -48,8 +48,8 @@ struct Builder {
         colours->SetName("colours");
         colours->SetNumberOfComponents(3);
         colours->SetNumberOfTuples(static_cast<vtkIdType>(maxPoints));
-        offsets->SetNumberOfValues(static_cast<vtkIdType>(cellCount + 1));
-        connectivity->SetNumberOfValues(static_cast<vtkIdType>(2 * cellCount));
+        offsets->SetNumberOfValues(static_cast<vtkIdType>(cellCount) + 1);
+        connectivity->SetNumberOfValues(2 * static_cast<vtkIdType>(cellCount));
     }
     /// Appends vertex `index` of `layer` with colour `rgb`; returns its point id.
     std::int32_t point(const ToolpathLayer& layer, std::size_t index, const Rgb& rgb) {

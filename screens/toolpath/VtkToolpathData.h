@@ -11,7 +11,9 @@
 #include "cnc_core/toolpath/ToolpathDecimation.h"
 #include "cnc_core/toolpath/ToolpathGeometry.h"
 
-class vtkPolyData;
+// VTK objects are reference-counted and end with Delete(), hence their
+// protected virtual destructors.
+class vtkPolyData;  // NOLINT(cppcoreguidelines-virtual-class-destructor)
 
 namespace mtc::screens {
 
