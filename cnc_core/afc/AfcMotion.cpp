@@ -153,6 +153,7 @@ void span(AdaptiveFeedControl& afc, const AfcMoveInput& move, const ItmWindow& i
 void controlledMove(AdaptiveFeedControl& afc, const AfcMoveInput& move, const ItmWindow& itm,
                     AfcTrendRecorder* recorder, AfcMoveResult& result) {
     Progress p;
+    motion::TimedCourse course;
     afc.setClock(move.startTime);
     while (p.travelled < move.length - 1e-9) {
         const double engagement =
@@ -164,6 +165,7 @@ void controlledMove(AdaptiveFeedControl& afc, const AfcMoveInput& move, const It
         else
             span(afc, move, itm, engagement, settled || p.steps + 1 >= kAfcMaxStepsPerMove,
                  recorder, p);
+        course.add(p.elapsed, p.travelled);
         if (afc.errorPending()) break;  // error 510: the axes stop
         if (p.standing >= kAfcStandstillLimitSeconds) {
             afc.raiseRuntimeError(AfcStatus::FeedStopped,
@@ -187,6 +189,8 @@ void controlledMove(AdaptiveFeedControl& afc, const AfcMoveInput& move, const It
     result.steps = p.steps;
     const bool arrived = p.travelled >= move.length - 1e-9;  // the loop's own tolerance
     result.fraction = arrived || move.length <= 0 ? 1.0 : p.travelled / move.length;
+    if (course.finish(p.elapsed, p.travelled))
+        result.course = std::make_shared<const motion::TimedCourse>(std::move(course));
 }
 
 double parameter(const ProcessConfig& process, const char* key, double fallback) {

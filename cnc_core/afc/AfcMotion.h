@@ -1,10 +1,12 @@
 #pragma once
 
 #include <cstddef>
+#include <memory>
 
 #include "cnc_core/afc/AdaptiveFeedControl.h"
 #include "cnc_core/afc/AfcTrendRecorder.h"
 #include "cnc_core/machine/MachineConfig.h"
+#include "cnc_core/motion/TimedCourse.h"
 
 namespace mtc::core {
 
@@ -43,6 +45,8 @@ struct AfcMoveResult {
     double meanFeed = 0.0;  ///< path length travelled / time, mm/min
     bool adapted = false;   ///< G26 acted on the move
     std::size_t steps = 0;  ///< controller steps simulated (bounded per move)
+    /// Under G26: the distance over time, for the axes to follow (MOT-011).
+    std::shared_ptr<const motion::TimedCourse> course;
 };
 
 /// Cycle of the simulated I controller, s.

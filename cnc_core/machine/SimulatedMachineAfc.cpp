@@ -1,8 +1,8 @@
 // SimulatedMachine, adaptive feed control part: moves under G26 / ITM are
 // worked out by the bounded simulation of cnc_core/afc (AfcMotion.h) when
-// they are queued and executed as timed moves (docs/decisions/motion.md
-// MOT-011); under G25 the torque of the feed moves is only observed for the
-// trend.
+// they are queued and executed as timed moves along the controller's course
+// (docs/decisions/motion.md MOT-011); under G25 the torque of the feed moves is only observed for
+// the trend.
 #include <algorithm>
 #include <cmath>
 
@@ -80,7 +80,7 @@ void SimulatedMachine::adaptiveMove(const Motion& m, double planned) {
     lastAdapted_ = result.adapted;
     lastFraction_ = result.fraction;
     afcClock_ = move.startTime + result.seconds;
-    engine_.pushTimedMove(m, result.seconds, result.fraction);
+    engine_.pushTimedMove(m, result.seconds, result.fraction, result.course);
 }
 
 void SimulatedMachine::observeMove(const Motion& m, double planned) {

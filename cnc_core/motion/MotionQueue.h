@@ -1,10 +1,12 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "cnc_core/motion/JunctionRule.h"
 #include "cnc_core/motion/PathLimits.h"
+#include "cnc_core/motion/TimedCourse.h"
 
 namespace mtc::core::motion {
 
@@ -24,7 +26,8 @@ struct QueueItem {
     /// Timed: a move whose course was worked out when it was queued (adaptive
     /// feed control, docs/decisions/motion.md MOT-011): it starts and ends at
     /// rest and travels `fraction` of its path in `seconds` (at 100 %
-    /// override) at a constant velocity.
+    /// override) along `course` (the controller's feed over time), at a
+    /// constant velocity when it has none.
     enum class Kind : std::uint8_t { Move, Dwell, Action, Timed };
     Kind kind = Kind::Move;
     SourceLocation where;
@@ -41,6 +44,7 @@ struct QueueItem {
     double seconds = 0.0;
     // Timed:
     double fraction = 1.0;  ///< share of the path travelled (< 1: stopped on the path)
+    std::shared_ptr<const TimedCourse> course;  ///< null: constant velocity
     // Action:
     MachineAction action;
 };

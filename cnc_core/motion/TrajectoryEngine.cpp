@@ -58,7 +58,8 @@ void TrajectoryEngine::pushAction(const SourceLocation& where, const MachineActi
     item.action = action;
 }
 
-void TrajectoryEngine::pushTimedMove(const Motion& motion, double seconds, double fraction) {
+void TrajectoryEngine::pushTimedMove(const Motion& motion, double seconds, double fraction,
+                                     std::shared_ptr<const TimedCourse> course) {
     QueueItem& item = queue_.pushBack();
     item.kind = QueueItem::Kind::Timed;
     item.where = motion.where;
@@ -67,6 +68,7 @@ void TrajectoryEngine::pushTimedMove(const Motion& motion, double seconds, doubl
     item.rapid = motion.type == MotionType::Rapid;
     item.seconds = std::isfinite(seconds) ? std::max(0.0, seconds) : 0.0;
     item.fraction = std::isfinite(fraction) ? std::clamp(fraction, 0.0, 1.0) : 1.0;
+    item.course = std::move(course);
 }
 
 // --------------------------------------------------------------- planning
@@ -252,8 +254,10 @@ double TrajectoryEngine::runTimed(QueueItem& timed, double room, bool& finished)
     } else {
         spend(room, 0.0);  // held or at 0 %: the axes stand
     }
-    timed.geometry.machinePoint(travel * dwelt_ / timed.seconds, position_);
-    velocity_ = travel / timed.seconds * rate;
+    const double share = dwelt_ / timed.seconds;
+    const TimedCourse* course = timed.course.get();
+    timed.geometry.machinePoint(travel * (course ? course->distanceAt(share) : share), position_);
+    velocity_ = travel / timed.seconds * (course ? course->slopeAt(share) : 1.0) * rate;
     return room;
 }
 
@@ -385,8 +389,9 @@ double TrajectoryEngine::position(int axis) const {
 }
 
 bool TrajectoryEngine::moving() const {
-    return !queue_.empty() && !atBlockStop_ && (queue_.front().kind == QueueItem::Kind::Move ||
-                               queue_.front().kind == QueueItem::Kind::Timed);
+    return !queue_.empty() && !atBlockStop_ &&
+           (queue_.front().kind == QueueItem::Kind::Move ||
+            queue_.front().kind == QueueItem::Kind::Timed);
 }
 
 const QueueItem* TrajectoryEngine::currentMove() const {

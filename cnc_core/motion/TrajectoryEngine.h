@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "cnc_core/motion/MotionQueue.h"
@@ -42,9 +43,11 @@ class TrajectoryEngine {
     void pushAction(const SourceLocation& where, const MachineAction& action);
     /// A move whose course is already known (adaptive feed control, MOT-011):
     /// from rest to rest, `fraction` (0..1) of its path in `seconds` at 100 %
-    /// override, at a constant velocity; the feed (G1/G2/G3) or rapid (G0)
-    /// override scales its time, feed hold stops it at once.
-    void pushTimedMove(const Motion& motion, double seconds, double fraction);
+    /// override, along `course` (null: at a constant velocity); the feed
+    /// (G1/G2/G3) or rapid (G0) override scales its time, feed hold stops it
+    /// at once.
+    void pushTimedMove(const Motion& motion, double seconds, double fraction,
+                       std::shared_ptr<const TimedCourse> course = nullptr);
 
     // --- time ---
     /// Moves everything on by up to `seconds` and returns the time taken. It

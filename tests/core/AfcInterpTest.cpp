@@ -5,8 +5,10 @@
 // deactivation at program end and control reset, the trend recorder.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
+#include <vector>
 
 #include "InterpTestSupport.h"
 #include "cnc_core/afc/AdaptiveFeedControl.h"
@@ -128,6 +130,26 @@ TEST(AfcInterp, G26SlowsTheFeedAndTheClock) {
     EXPECT_GT(cell.interpreter->state().modal.time - before, planned * 1.05);
     EXPECT_NEAR(cell.machine.position(0), 200.0, 1e-9);
     EXPECT_GT(cell.recorder.size(), 100u);
+}
+
+TEST(AfcInterp, UnderG26TheAxesFollowTheControllersCourseNotItsMean) {
+    // The controller starts at F1500 and reduces the feed within the first
+    // second: the axes move faster than the mean at first, slower at the end.
+    AfcCell cell;
+    cell.load(kHeavyCut);
+    cell.runThrough(20);
+    ASSERT_EQ(cell.interpreter->step().status, RunStatus::Running);  // N0030 queued
+    std::vector<double> feeds;
+    for (int i = 0; i < 100'000 && !cell.machine.idle(); ++i) {
+        cell.machine.advance(0.02);
+        if (!cell.machine.idle()) feeds.push_back(cell.machine.actualFeed());
+    }
+    ASSERT_GT(feeds.size(), 100u);
+    const double mean = cell.machine.lastMoveFeed();
+    EXPECT_GT(feeds.front(), mean * 1.05);
+    EXPECT_LT(feeds.back(), mean * 0.99);
+    EXPECT_LE(*std::max_element(feeds.begin(), feeds.end()), 1500.0 + 1e-6);
+    EXPECT_NEAR(cell.machine.position(0), 200.0, 1e-9);
 }
 
 TEST(AfcInterp, G25StoresThePeaksAndProgramEndResetsTheSignals) {
