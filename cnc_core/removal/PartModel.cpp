@@ -51,9 +51,21 @@ std::string resolutionProblem(double resolution) {
 }
 
 std::optional<PartModel> PartModel::create(const Stock& stock, const RemovalSettings& settings,
-                                           std::string& error) {
+                                           bool turning, std::string& error) {
     error = resolutionProblem(settings.resolution);
     if (!error.empty()) return std::nullopt;
+    if (stock.shape == Stock::Shape::Block && turning) {
+        error =
+            "a block stock on a turning process (default plane G18) is not simulated: the "
+            "turned profile needs a cylinder (stock = cylinder ...)";
+        return std::nullopt;
+    }
+    if (stock.shape == Stock::Shape::Cylinder && !turning) {
+        error =
+            "a cylinder stock on a milling process is not simulated: the height field needs "
+            "a block (stock = block ...)";
+        return std::nullopt;
+    }
     const double res = settings.resolution;
     PartModel model;
     model.resolution_ = res;

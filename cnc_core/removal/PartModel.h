@@ -34,12 +34,15 @@ std::string resolutionProblem(double resolution);
 /// (machine X, Y, Z in mm, as the toolpath view draws them).
 class PartModel {
   public:
-    /// The model of `stock` at `settings`; nullopt with `error` when there is
-    /// no stock, the resolution is refused or the part would need more than
-    /// settings.maxCells cells (the message gives the coarsest resolution
-    /// that fits).
+    /// The model of `stock` at `settings`: a block on a milling process, a
+    /// cylinder on a turning process (`turning`: default plane G18, the
+    /// lathe's). Nullopt with `error` when there is no stock, the other
+    /// combinations (a z-map along Z cannot hold a bar on a mill, a turned
+    /// profile not a block on a lathe), the resolution is refused or the
+    /// part would need more than settings.maxCells cells (the message gives
+    /// the coarsest resolution that fits).
     static std::optional<PartModel> create(const Stock& stock, const RemovalSettings& settings,
-                                           std::string& error);
+                                           bool turning, std::string& error);
 
     /// Sweeps the tool from scene point `a` to `b`: the face centre of a
     /// flat end mill of tool.radius (along Z), or on the lathe the nose

@@ -10,7 +10,8 @@ RemovalRunResult simulateRemoval(const ProcessConfig& config, const ProgramStore
                                  std::shared_ptr<const ToolList> tools, std::uint64_t blockBudget) {
     RemovalRunResult result;
     std::string problem;
-    result.part = PartModel::create(stockOf(config), settings, problem);
+    result.part =
+        PartModel::create(stockOf(config), settings, config.defaultPlane() == 18, problem);
     if (!result.part) {
         result.diagnostics.error("REMOVAL_STOCK", {}, problem);  // the configuration's
         return result;

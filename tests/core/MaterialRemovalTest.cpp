@@ -283,18 +283,28 @@ TEST(PartModel, ResolutionAndCellsAreBounded) {
          {0.0, -1.0, std::nan(""), 1e9, std::numeric_limits<double>::infinity(), 0.001}) {
         RemovalSettings s;
         s.resolution = bad;
-        EXPECT_FALSE(PartModel::create(block, s, error)) << bad;
+        EXPECT_FALSE(PartModel::create(block, s, false, error)) << bad;
         EXPECT_NE(error.find("resolution must be"), std::string::npos) << error;
     }
     RemovalSettings fine;
     fine.resolution = 0.2;  // 5000 x 5000 cells
-    EXPECT_FALSE(PartModel::create(block, fine, error));
+    EXPECT_FALSE(PartModel::create(block, fine, false, error));
     EXPECT_NE(error.find("at most 2000000"), std::string::npos) << error;
     EXPECT_NE(error.find("try 0.708 mm"), std::string::npos) << error;
     fine.resolution = 0.708;
-    EXPECT_TRUE(PartModel::create(block, fine, error)) << error;
-    EXPECT_FALSE(PartModel::create(Stock{}, fine, error));
+    EXPECT_TRUE(PartModel::create(block, fine, false, error)) << error;
+    EXPECT_FALSE(PartModel::create(Stock{}, fine, false, error));
     EXPECT_NE(error.find("no stock"), std::string::npos) << error;
+    // A block on a lathe, a bar on a mill: refused, not modelled wrongly.
+    EXPECT_FALSE(PartModel::create(block, fine, true, error));
+    EXPECT_NE(error.find("turning process"), std::string::npos) << error;
+    Stock bar;
+    bar.shape = Stock::Shape::Cylinder;
+    bar.radius = 20;
+    bar.to = 50;
+    EXPECT_FALSE(PartModel::create(bar, fine, false, error));
+    EXPECT_NE(error.find("milling process"), std::string::npos) << error;
+    EXPECT_TRUE(PartModel::create(bar, fine, true, error)) << error;
 }
 
 /// Every edge of a closed surface is used twice, once in each direction.
