@@ -53,6 +53,13 @@ expect_rc 0 "a rapid into the part is a warning" --json simulate rapid.nc
 json_check "REMOVAL_RAPID_CUT with program, block and line" \
   '[(x["code"], x["block"], x["line"]) for x in d["diagnostics"]] == [("REMOVAL_RAPID_CUT", "N0002", 2)]'
 
+# The tool list beside --data is the one cut with: T1 at radius 5 widens the
+# pocket to (40 + 3) x (20 + 3) with corners of radius 5.
+expect_rc 0 "tools set T1 radius=5" --data "$TEST_TMP/cell.mdt" tools set T1 radius=5
+expect_rc 0 "simulate with the tool file" --json --data "$TEST_TMP/cell.mdt" simulate pocket.nc
+json_check "the wider cutter removes the wider pocket" \
+  'abs(d["removed_volume"] - (43 * 23 - (4 - 3.14159265) * 25) * 4) < 126 * 1.4143 * 0.2 * 4'
+
 for bad in 0 -1 nan 1e9 0.001 abc ""; do
   expect_rc 2 "--resolution '$bad' refused" simulate pocket.nc --resolution "$bad"
 done
