@@ -29,6 +29,10 @@ bool HeightField::cut(const std::array<double, 3>& a, const std::array<double, 3
     for (std::size_t k = 0; k < 3; ++k)
         if (!std::isfinite(a[k]) || !std::isfinite(b[k])) return false;
     if (!(radius >= 0.0) || !(std::min(a[2], b[2]) < stock_.max[2])) return false;  // above the top
+    // Beside the block: no row needs scanning (the chords of a huge arc).
+    if (std::max(a[0], b[0]) + radius < stock_.min[0] ||
+        std::min(a[0], b[0]) - radius > stock_.max[0])
+        return false;
     const auto [first, last] = cellsWithin(
         std::min(a[1], b[1]) - radius, std::max(a[1], b[1]) + radius, stock_.min[1], depth_, rows_);
     const SweptDisc disc{a[0], a[1], b[0], b[1], radius};

@@ -25,20 +25,20 @@ void RemovalSink::motion(const Motion& m) {
     path_.motion(m);  // also keeps the tool offsets of consecutive moves
     if (counts_.moves == 1) {
         ++counts_.approachMoves;
-        path_.take();
+        path_.clearGeometry();
         return;
     }
     if (m.transformation != 30) {
         ++counts_.transformedMoves;
-        path_.take();
+        path_.clearGeometry();
         return;
     }
     cutChords(m, tool);
+    path_.clearGeometry();
 }
 
 void RemovalSink::cutChords(const Motion& m, const ToolData& tool) {
-    const ToolpathGeometry geometry = path_.take();
-    const ToolpathLayer& scene = geometry.scene;
+    const ToolpathLayer& scene = path_.geometry().scene;
     // Outside G41/G42 a turning tool's programmed point is its tip; the
     // nose centre (what the profile is cut with) lies inside it.
     std::array<double, 3> shift{0, 0, 0};

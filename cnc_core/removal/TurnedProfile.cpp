@@ -83,6 +83,8 @@ bool TurnedProfile::cut(double axialA, double radialA, double axialB, double rad
     const double infinity = std::numeric_limits<double>::infinity();
     const auto [first, last] = cellsWithin(body < 0 ? -infinity : low, body > 0 ? infinity : high,
                                            from_, length_, slices());
+    // Outside the bar all along (the insert stands further out): nothing to scan.
+    if (std::min(radialA, radialB) - noseRadius > radius_) return false;
     const SweptRowScanner nose(SweptDisc{radialA, axialA, radialB, axialB, noseRadius});
     bool removed = false;
     for (int k = first; k <= last; ++k) {

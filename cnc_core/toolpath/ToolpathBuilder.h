@@ -45,6 +45,9 @@ class ToolpathBuilder : public MachineSink {
     const ToolpathGeometry& geometry() const { return geometry_; }
     /// Hands the geometry over (the builder starts empty again).
     ToolpathGeometry take();
+    /// Empties the geometry but keeps its memory, and the offsets of the last
+    /// move: for a sink that consumes the path move by move (material removal).
+    void clearGeometry() { geometry_.clear(); }
     /// Scene point of machine positions without transformation (re-entry
     /// point, actual position).
     std::array<double, 3> scenePoint(const std::array<double, kMaxAxes>& machine) const;
