@@ -68,6 +68,16 @@ expect_rc 2 "a grid over the cell cap" --json simulate pocket.nc --resolution 0.
 json_check "the cap and a coarser resolution are named" \
   'd["status"] == "error" and "needs 60000000 cells" in d["diagnostics"][0]["message"] and "at most 2000000" in d["diagnostics"][0]["message"] and "try 0.055 mm" in d["diagnostics"][0]["message"]'
 
+# A process without stock, and a bar on the mill: refused with the reason.
+cfg="$MTC_SOURCE_DIR/resources/machines/demo-cell.cfg"
+sed 's/^stock = block .*/stock = none/' "$cfg" >nostock.cfg
+expect_rc 2 "no stock in the configuration" --machine nostock.cfg simulate pocket.nc
+text_check "says the stock is missing" "has no stock in its machine configuration"
+sed 's/^stock = block .*/stock = cylinder Z 40 -130 -120/' "$cfg" >bar.cfg
+expect_rc 2 "a cylinder stock on the mill" --json --machine bar.cfg simulate pocket.nc
+json_check "REMOVAL_STOCK says why" \
+  'd["diagnostics"][0]["code"] == "REMOVAL_STOCK" and "milling process" in d["diagnostics"][0]["message"]'
+
 mkfifo pipe.stl
 expect_rc 2 "--stl FIFO refused" simulate pocket.nc --stl pipe.stl
 [ -p pipe.stl ] && pass "the FIFO stays a FIFO" || fail "the FIFO was replaced"
