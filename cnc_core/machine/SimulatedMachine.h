@@ -145,7 +145,9 @@ class SimulatedMachine : public MachineSink {
     /// G25 with a trend recorder: the torque is only observed (trend, 007).
     void observeMove(const Motion& motion, double planned);
     AfcMoveInput afcInput(const Motion& motion, double planned) const;
-    double referenceSpeedFraction(const Motion& motion) const;
+    /// The override of the move's kind in force, as a share (1 below 1 %).
+    double overrideShare(const Motion& motion) const;
+    double referenceSpeedFraction(const Motion& motion, double pathFeed) const;
     double accelerationSeconds(const Motion& motion, double feed) const;
     /// Moves the auxiliary functions the engine reached into recentAux().
     void collectReached();

@@ -18,7 +18,7 @@ void SimulatedMachine::attachAdaptiveFeed(AdaptiveFeedControl* afc, AfcTrendReco
     recorder_ = recorder;
 }
 
-double SimulatedMachine::referenceSpeedFraction(const Motion& m) const {
+double SimulatedMachine::referenceSpeedFraction(const Motion& m, double pathFeed) const {
     const int significance = afc_->effectiveSettings().referenceAxis;
     const std::string name = afcAxisName(significance);
     for (std::size_t i = 0; i < config_.axes.size() && i < kMaxAxes; ++i) {
@@ -31,7 +31,7 @@ double SimulatedMachine::referenceSpeedFraction(const Motion& m) const {
         if (significance < 10 && axis.name == name) {
             const double travel = std::abs(m.end[i] - m.start[i]);
             const double length = motionPathLength(m);
-            const double feed = length > 0 ? lastFeed_ * travel / length : 0.0;
+            const double feed = length > 0 ? pathFeed * travel / length : 0.0;
             return axis.maxVelocity > 0 ? feed / axis.maxVelocity : 0.0;
         }
     }
@@ -49,13 +49,24 @@ double SimulatedMachine::accelerationSeconds(const Motion& m, double feed) const
     return weakest > 0 ? feed / 60.0 / weakest : 0.0;
 }
 
+double SimulatedMachine::overrideShare(const Motion& m) const {
+    const double percent =
+        m.type == MotionType::Rapid ? engine_.rapidOverride() : engine_.feedOverride();
+    // Below 1 % the axes stand until the operator turns the switch up: the
+    // course is worked out at 100 % and waits in the queue (rate 0).
+    return percent >= 1.0 ? percent / 100.0 : 1.0;
+}
+
 AfcMoveInput SimulatedMachine::afcInput(const Motion& m, double planned) const {
+    // The controller acts on the feed the axes really get: the programmed
+    // one at the override in force when the move is worked out (MOT-011).
+    const double atOverride = overrideShare(m);
     AfcMoveInput move;
     move.length = motionPathLength(m);
-    move.feed = m.type == MotionType::Rapid ? lastFeed_ : m.feed;
-    move.plannedSeconds = planned;
-    move.accelerationSeconds = accelerationSeconds(m, lastFeed_);
-    move.speedFraction = referenceSpeedFraction(m);
+    move.feed = (m.type == MotionType::Rapid ? lastFeed_ : m.feed) * atOverride;
+    move.plannedSeconds = planned / atOverride;
+    move.accelerationSeconds = accelerationSeconds(m, move.feed);
+    move.speedFraction = referenceSpeedFraction(m, move.feed);
     move.engagement = cuttingEngagement(config_);
     move.materialKnown = material_->known();
     const MaterialShare share = material_->along(m);
@@ -80,7 +91,9 @@ void SimulatedMachine::adaptiveMove(const Motion& m, double planned) {
     lastAdapted_ = result.adapted;
     lastFraction_ = result.fraction;
     afcClock_ = move.startTime + result.seconds;
-    engine_.pushTimedMove(m, result.seconds, result.fraction, result.course);
+    // The engine scales a timed move by the override in force when it runs:
+    // it gets the time at 100 %, so an unchanged switch gives the real time.
+    engine_.pushTimedMove(m, result.seconds * overrideShare(m), result.fraction, result.course);
 }
 
 void SimulatedMachine::observeMove(const Motion& m, double planned) {

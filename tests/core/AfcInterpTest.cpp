@@ -152,6 +152,32 @@ TEST(AfcInterp, UnderG26TheAxesFollowTheControllersCourseNotItsMean) {
     EXPECT_NEAR(cell.machine.position(0), 200.0, 1e-9);
 }
 
+TEST(AfcInterp, TheControllerActsOnTheFeedAtTheOverride) {
+    // At 50 % the heavy cut meets the tool at 750 mm/min: less cutting
+    // torque, so the controller reduces less and the axes get more than half
+    // of what they get at 100 %.
+    struct Cut {
+        double reduction, feed, seconds;
+    };
+    auto cutAt = [](double percent) {
+        AfcCell cell;
+        cell.machine.setFeedOverride(percent);
+        cell.load(kHeavyCut);
+        cell.runThrough(20);
+        const double before = cell.machine.seconds();
+        cell.runThrough(30);
+        EXPECT_TRUE(cell.machine.lastMoveAdapted());
+        EXPECT_NEAR(cell.machine.position(0), 200.0, 1e-9);
+        return Cut{cell.md(11), cell.machine.lastMoveFeed(), cell.machine.seconds() - before};
+    };
+    const Cut full = cutAt(100), half = cutAt(50);
+    EXPECT_LT(half.reduction, full.reduction - 5.0);  // 011 current feed reduction
+    EXPECT_GT(half.feed, full.feed / 2 * 1.1);
+    EXPECT_LT(half.feed, 750.0);
+    // the time the axes took is the path at the feed they got
+    EXPECT_NEAR(half.seconds, 200.0 / half.feed * 60.0, 0.5);
+}
+
 TEST(AfcInterp, G25StoresThePeaksAndProgramEndResetsTheSignals) {
     AfcCell cell;
     cell.load(kHeavyCut);
