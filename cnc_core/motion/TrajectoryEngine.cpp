@@ -266,6 +266,10 @@ void TrajectoryEngine::finishFront() {
     lastWhere_ = item.where;
     lastBlock_ = item.blockIndex;
     if (item.kind == QueueItem::Kind::Action) reached_.push_back(item.action.tag);
+    if (item.kind == QueueItem::Kind::Timed && item.fraction < 1.0)
+        stoppedShortOf_ = item.geometry.machineEnd();
+    else
+        stoppedShortOf_.reset();
     const bool flowsOut = item.kind == QueueItem::Kind::Move ||  // Timed ends at rest
                           (item.kind == QueueItem::Kind::Action && !item.action.stopsPath);
     queue_.popFront();
@@ -328,6 +332,7 @@ void TrajectoryEngine::dropQueue() {
         lastBlock_ = queue_.front().blockIndex;
     }
     queue_.clear();
+    stoppedShortOf_.reset();
     planned_ = false;
     pathS_ = velocity_ = dwelt_ = 0.0;
     actionApplied_ = false;
@@ -399,9 +404,11 @@ const QueueItem* TrajectoryEngine::currentMove() const {
 }
 
 double TrajectoryEngine::distanceToGo(int axis) const {
-    const QueueItem* move = currentMove();
-    if (move == nullptr || axis < 0 || axis >= move->geometry.axisCount()) return 0.0;
+    if (axis < 0 || axis >= kMaxAxes) return 0.0;
     const auto k = static_cast<std::size_t>(axis);
+    if (queue_.empty() && stoppedShortOf_) return (*stoppedShortOf_)[k] - position_[k];
+    const QueueItem* move = currentMove();
+    if (move == nullptr || axis >= move->geometry.axisCount()) return 0.0;
     return move->geometry.machineEnd()[k] - position_[k];
 }
 

@@ -2,6 +2,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "cnc_core/motion/MotionQueue.h"
@@ -102,10 +103,15 @@ class TrajectoryEngine {
     const Position& position() const { return position_; }
     double position(int axis) const;
     /// Sets where the axes are (start, or after a move outside the engine).
-    void setPosition(const Position& position) { position_ = position; }
+    void setPosition(const Position& position) {
+        position_ = position;
+        stoppedShortOf_.reset();
+    }
     /// Path velocity, units/s of the move's plane (0 at rest).
     double velocity() const { return velocity_; }
-    /// End of the move being executed minus the position, per axis (0 between moves).
+    /// End of the move being executed minus the position, per axis (0 between
+    /// moves). After a move adaptive feed control stopped on its path (509,
+    /// 510) and until anything else is queued: what is left of it.
     double distanceToGo(int axis) const;
     /// The entry being executed, or the last one executed when idle or at a
     /// single-block stop.
@@ -161,6 +167,9 @@ class TrajectoryEngine {
     double plannedExit_ = 0.0;
     double pathS_ = 0.0;
     double velocity_ = 0.0;
+    /// Machine end of the last entry when it was a timed move stopped on its
+    /// path (it did not reach it); empty otherwise.
+    std::optional<Position> stoppedShortOf_;
     double dwelt_ = 0.0;          ///< seconds of the front dwell (timed move at 100 %) done
     bool actionApplied_ = false;  ///< the front action's spindle change is made
     Position position_{};

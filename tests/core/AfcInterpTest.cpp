@@ -433,6 +433,18 @@ TEST(AfcInterp, AfterError509TheStateStandsWhereTheAxesStopped) {
     EXPECT_DOUBLE_EQ(cell.interpreter->programmedPosition(0), stopped);
 }
 
+TEST(AfcInterp, AfterError510TheDistanceToGoIsWhatIsLeftOfTheBlock) {
+    AfcCell cell({{"load", 200.0}});
+    const RunResult result = cell.run("N0010 S1=4000 M3\nN0020 G1 G26 X200 F1000\nN0030 M30\n");
+    ASSERT_EQ(errorCodes(result.diagnostics), std::vector<std::string>{"AFC_ERROR_510"});
+    const double left = 200.0 - cell.machine.position(0);
+    EXPECT_GT(left, 1.0);
+    EXPECT_NEAR(cell.machine.distanceToGo(0), left, 1e-9);
+    EXPECT_NEAR(cell.machine.distanceToGo(1), 0.0, 1e-9);
+    cell.machine.stop();  // control reset: the block is given up
+    EXPECT_EQ(cell.machine.distanceToGo(0), 0.0);
+}
+
 TEST(AfcInterp, AfterError510OnAnArcTheAxesStandOnTheArc) {
     AfcCell cell({{"load", 200.0}});
     const RunResult result = cell.run(
