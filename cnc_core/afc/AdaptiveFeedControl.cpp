@@ -58,9 +58,26 @@ AdaptiveFeedControl::AdaptiveFeedControl(const ProcessConfig& process, MachineDa
       parameters_(readAfcParameters(process, parameterDiagnostics_)),
       model_(model) {}
 
+void AdaptiveFeedControl::followStore() const {
+    const std::uint64_t revision = store_.revision();
+    if (revision == memo_.revision) return;
+    memo_.revision = revision;
+    memo_.known = 0;
+    memo_.settingsKnown = false;
+}
+
 double AdaptiveFeedControl::element(int number) const {
+    followStore();
+    const bool kept = number >= 0 && number < static_cast<int>(memo_.value.size());
+    const std::uint32_t bit = kept ? 1u << number : 0u;
+    if (memo_.known & bit) return memo_.value[static_cast<std::size_t>(number)];
     double value = 0.0;
-    store_.read({kAdaptiveFeedPage, process_.index, 0, number}, value);
+    const bool read =
+        store_.read({kAdaptiveFeedPage, process_.index, 0, number}, value) == MachineDataStatus::Ok;
+    if (read && kept) {
+        memo_.value[static_cast<std::size_t>(number)] = value;
+        memo_.known |= bit;
+    }
     return value;
 }
 
@@ -78,8 +95,13 @@ void AdaptiveFeedControl::setSignal(const char* name, int value) {
 }
 
 AfcSettings AdaptiveFeedControl::effectiveSettings() const {
-    if (element(2) != 0.0) return settingsFromPage30(store_, process_.index);
-    return parameters_.settings;
+    followStore();
+    if (!memo_.settingsKnown) {
+        memo_.settings =
+            element(2) != 0.0 ? settingsFromPage30(store_, process_.index) : parameters_.settings;
+        memo_.settingsKnown = true;
+    }
+    return memo_.settings;
 }
 
 bool AdaptiveFeedControl::referenceAxisExists(int significance) const {

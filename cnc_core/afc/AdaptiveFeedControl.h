@@ -1,5 +1,7 @@
 #pragma once
 
+#include <array>
+#include <cstdint>
 #include <map>
 #include <string>
 #include <vector>
@@ -180,6 +182,8 @@ class AdaptiveFeedControl {
     void setSignal(const char* name, int value);
     void setStatus(int element, double value);
     double element(int number) const;
+    /// Forgets the remembered page 30 values when the store changed.
+    void followStore() const;
     void raise510();
     /// The noise-free machining torque (007) at reduction `reduction`.
     double expectedMachining(double reduction, double programmedFeed, double speedFraction,
@@ -190,6 +194,18 @@ class AdaptiveFeedControl {
 
     const ProcessConfig& process_;
     MachineDataStore& store_;
+    /// Page 30 as last read: the controller and the trend read the same
+    /// elements thousands of times per move (a third of a headless run went
+    /// into the store's lookups). Valid while the store's revision stays,
+    /// which every write and every status update that changes a value bumps.
+    struct PageMemo {
+        std::uint64_t revision = ~std::uint64_t{0};
+        std::array<double, 32> value{};
+        std::uint32_t known = 0;  ///< bit n: value[n] holds element n
+        bool settingsKnown = false;
+        AfcSettings settings;
+    };
+    mutable PageMemo memo_;
     SignalTable* signals_;
     // Declared before parameters_: its initialiser writes into this list
     // (members are constructed in declaration order).

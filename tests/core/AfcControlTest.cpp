@@ -141,6 +141,20 @@ TEST(AfcController, MachiningTorqueSettlesAtTheLimit) {
     EXPECT_NEAR(feed, 1000 * std::pow(50.0 / 84.0, 1.25), 25);
 }
 
+TEST(AfcController, ALimitWrittenWhileCuttingActsOnTheNextCycle) {
+    // The controller keeps page 30 between cycles (AdaptiveFeedControl's
+    // memo); a write to 010 between two cycles must reach it at once.
+    Mill mill(quiet());
+    mill.afc.measureIdleTorque(1000, 0.5, 1.0);
+    ASSERT_EQ(mill.afc.switchOn(), AfcStatus::Ok);
+    mill.cut(6.0, 1000, 1.4);
+    EXPECT_NEAR(mill.meanMachining(1.0), 50.0, 1.5);
+    mill.setMd(10, 35);  // 002 != 0 after G26: page 30 rules
+    EXPECT_EQ(mill.afc.effectiveSettings().limitingTorque, 35);
+    mill.cut(6.0, 1000, 1.4);
+    EXPECT_NEAR(mill.meanMachining(1.0), 35.0, 1.5);
+}
+
 TEST(AfcController, HigherAmplificationReactsFaster) {
     auto timeTo80PercentOfFinal = [](double amplification) {
         Mill mill(quiet());
