@@ -96,26 +96,25 @@ void report(benchmark::State& state, const RemovalRunResult& r) {
                                                  : r.diagnostics.items().front().message));
 }
 
-void BM_RemovalMill10k(benchmark::State& state) {
-    const ProgramStore store = storeWith(0, millProgram(10'000));
+/// Simulates program 1 of `process` at 0.2 mm once per iteration.
+void simulateEach(benchmark::State& state, const ProgramStore& store, int process = 0) {
     RemovalSettings settings;
     settings.resolution = 0.2;
     RemovalRunResult last;
     for (auto _ : state)
-        last = simulateRemoval(*cell().process(0), store, 1, settings);
+        last = simulateRemoval(*cell().process(process), store, 1, settings);
     report(state, last);
+}
+
+void BM_RemovalMill10k(benchmark::State& state) {
+    simulateEach(state, storeWith(0, millProgram(10'000)));
 }
 
 void BM_RemovalMillArcs10k(benchmark::State& state) {
     const ProgramStore store =
         storeWith(0, "N0001 T10 G17 G90 G54 G0 X0 Y0 Z2\nN0002 G1 Z-1 F100\n" +
                          mtc::bench::generateClosedMotionProgram(10'000));
-    RemovalSettings settings;
-    settings.resolution = 0.2;
-    RemovalRunResult last;
-    for (auto _ : state)
-        last = simulateRemoval(*cell().process(0), store, 1, settings);
-    report(state, last);
+    simulateEach(state, store);
 }
 
 void BM_RemovalStl(benchmark::State& state) {
@@ -131,12 +130,7 @@ void BM_RemovalStl(benchmark::State& state) {
 
 void BM_RemovalLathe10k(benchmark::State& state) {
     const ProgramStore store = storeWith(1, latheProgram(10'000));
-    RemovalSettings settings;
-    settings.resolution = 0.2;
-    RemovalRunResult last;
-    for (auto _ : state)
-        last = simulateRemoval(*cell().process(1), store, 1, settings);
-    report(state, last);
+    simulateEach(state, store, 1);
 }
 
 }  // namespace

@@ -48,20 +48,14 @@ std::size_t TimedCourse::segmentAt(double time) const {
     return std::clamp<std::size_t>(index, 1, knots_.size() - 1) - 1;
 }
 
-double TimedCourse::distanceAt(double time) const {
-    if (knots_.size() < 2) return std::clamp(time, 0.0, 1.0);
-    const Knot& a = knots_[segmentAt(time)];
-    const Knot& b = knots_[segmentAt(time) + 1];
-    const double t = std::clamp((time - a.time) / (b.time - a.time), 0.0, 1.0);
-    return a.distance + (b.distance - a.distance) * t;
-}
-
-double TimedCourse::slopeAt(double time) const {
-    if (knots_.size() < 2) return 1.0;
+TimedCourse::Point TimedCourse::at(double time) const {
+    if (knots_.size() < 2) return {std::clamp(time, 0.0, 1.0), 1.0};
     const std::size_t i = segmentAt(time);
     const Knot& a = knots_[i];
     const Knot& b = knots_[i + 1];
-    return (b.distance - a.distance) / (b.time - a.time);
+    const double rise = b.distance - a.distance, run = b.time - a.time;
+    const double t = std::clamp((time - a.time) / run, 0.0, 1.0);
+    return {a.distance + rise * t, rise / run};
 }
 
 }  // namespace mtc::core::motion

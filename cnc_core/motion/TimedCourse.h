@@ -23,10 +23,16 @@ class TimedCourse {
     /// travelled nothing.
     bool finish(double seconds, double distance);
 
-    /// Share of the distance travelled at share `time` (0..1) of the time.
-    double distanceAt(double time) const;
-    /// d(distance share) / d(time share) at `time`: 1 at a constant velocity.
-    double slopeAt(double time) const;
+    /// Where the move is at share `time` (0..1) of its time: the share of
+    /// the distance travelled, and d(distance share) / d(time share) there
+    /// (1 at a constant velocity). One search of the knots.
+    struct Point {
+        double distance = 0.0;
+        double slope = 1.0;
+    };
+    Point at(double time) const;
+    double distanceAt(double time) const { return at(time).distance; }
+    double slopeAt(double time) const { return at(time).slope; }
     std::size_t knotCount() const { return knots_.size(); }
 
   private:

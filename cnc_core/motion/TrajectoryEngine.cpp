@@ -255,9 +255,10 @@ double TrajectoryEngine::runTimed(QueueItem& timed, double room, bool& finished)
         spend(room, 0.0);  // held or at 0 %: the axes stand
     }
     const double share = dwelt_ / timed.seconds;
-    const TimedCourse* course = timed.course.get();
-    timed.geometry.machinePoint(travel * (course ? course->distanceAt(share) : share), position_);
-    velocity_ = travel / timed.seconds * (course ? course->slopeAt(share) : 1.0) * rate;
+    const TimedCourse::Point course =
+        timed.course ? timed.course->at(share) : TimedCourse::Point{share, 1.0};
+    timed.geometry.machinePoint(travel * course.distance, position_);
+    velocity_ = travel / timed.seconds * course.slope * rate;
     return room;
 }
 
