@@ -157,6 +157,12 @@ class AdaptiveFeedControl {
     /// G26 is off (the trend shows the machining before G26 and the ITM
     /// moves too): 011 stays.
     void observe(double feed, double speedFraction, double engagement, double offset = 0.0);
+    /// The torques of `sample` become the last observed ones (the last
+    /// sample of an observed move, AfcObservedMove).
+    void takeObservation(const AfcTrendSample& sample) {
+        lastActual_ = sample.torqueActual;
+        lastMachining_ = sample.machiningTorque;
+    }
     /// The state of the last advance()/observe() as a trend point at `time`;
     /// `measuringIdle`: the sample lies in the measuring period of ITM.
     AfcTrendSample trendSample(double time, double effectiveFeed, bool measuringIdle = false) const;
@@ -174,6 +180,7 @@ class AdaptiveFeedControl {
     const std::string& message() const { return message_; }
     const std::vector<AfcSample>& trend() const { return trend_; }
     TorqueModel& model() { return model_; }
+    const TorqueModel& model() const { return model_; }
 
   private:
     bool referenceAxisExists(int significance) const;

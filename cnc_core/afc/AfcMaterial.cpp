@@ -81,10 +81,55 @@ MaterialShare AfcMaterial::alongLine(const std::array<double, 3>& a,
     return t0 <= t1 ? MaterialShare{t0, t1} : MaterialShare{};
 }
 
+void AfcMaterial::stockBox(std::array<double, 3>& low, std::array<double, 3>& high) const {
+    if (stock_.shape == Stock::Shape::Block) {
+        low = stock_.min;
+        high = stock_.max;
+        return;
+    }
+    const auto along = static_cast<std::size_t>(stock_.axis);
+    for (std::size_t d = 0; d < 3; ++d) {
+        low[d] = d == along ? stock_.from : -stock_.radius;
+        high[d] = d == along ? stock_.to : stock_.radius;
+    }
+}
+
 MaterialShare AfcMaterial::along(const Motion& motion) const {
     if (!known()) return {0.0, 1.0};
     const bool arc = motion.type == MotionType::ArcCW || motion.type == MotionType::ArcCCW;
     if (!arc) return alongLine(scenePoint(motion.start), scenePoint(motion.end));
+    // Most arcs lie wholly outside or (on a block) wholly inside the stock:
+    // their box decides all 32 points at once. The box is the full circle's
+    // across the plane and start..end along the other axes, a little wider
+    // (outside) or narrower (inside) than needed so rounding cannot matter.
+    std::array<double, kMaxAxes> low = motion.start, high = motion.start;
+    for (int i = 0; i < motion.axisCount && i < kMaxAxes; ++i) {
+        low[i] = std::min(motion.start[i], motion.end[i]);
+        high[i] = std::max(motion.start[i], motion.end[i]);
+    }
+    const int a = motion.planeAxis1, b = motion.planeAxis2;
+    if (a < 0 || b < 0 || a >= kMaxAxes || b >= kMaxAxes) return alongArc(motion);
+    const double radius =
+        std::hypot(motion.start[a] - motion.center1, motion.start[b] - motion.center2);
+    low[a] = motion.center1 - radius;
+    high[a] = motion.center1 + radius;
+    low[b] = motion.center2 - radius;
+    high[b] = motion.center2 + radius;
+    const std::array<double, 3> from = scenePoint(low), to = scenePoint(high);
+    std::array<double, 3> stockLow{}, stockHigh{};
+    stockBox(stockLow, stockHigh);
+    constexpr double kMargin = 1e-9;
+    bool disjoint = false, within = stock_.shape == Stock::Shape::Block;
+    for (std::size_t d = 0; d < 3; ++d) {
+        disjoint = disjoint || from[d] - kMargin > stockHigh[d] || to[d] + kMargin < stockLow[d];
+        within = within && from[d] - kMargin >= stockLow[d] && to[d] + kMargin <= stockHigh[d];
+    }
+    if (disjoint) return {1.0, 0.0};  // no point inside, as alongArc says then
+    if (within) return {0.0, 1.0};
+    return alongArc(motion);
+}
+
+MaterialShare AfcMaterial::alongArc(const Motion& motion) const {
     MaterialShare share{1.0, 0.0};
     for (int i = 0; i <= kArcPoints; ++i) {
         const double t = static_cast<double>(i) / kArcPoints;

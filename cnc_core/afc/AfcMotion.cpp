@@ -27,7 +27,7 @@ struct ItmWindow {
 double engagementAt(const AfcMoveInput& move, const ItmWindow& itm, double share, double elapsed,
                     bool controlled) {
     if (!move.feedMove) return 0.0;
-    if (share < move.cutFrom || share >= move.cutTo) return 0.0;
+    if (!withinCut(share, move.cutFrom, move.cutTo)) return 0.0;
     if (!itm.measured || move.materialKnown) return move.engagement;
     // No stock tells where the material is: an ITM block moves in air (what
     // ITM is for); with G26 in the same block the cut starts after the
@@ -67,22 +67,33 @@ bool measureIdle(AdaptiveFeedControl& afc, const AfcMoveInput& move, ItmWindow& 
     return false;
 }
 
-/// A move without G26: the torque is only observed for the trend.
+/// A move without G26: the torque is only observed for the trend, as one
+/// record whose samples are made when the trend is read.
 void observePlainMove(AdaptiveFeedControl& afc, const AfcMoveInput& move, const ItmWindow& itm,
                       AfcTrendRecorder* recorder) {
     if (!recorder || move.plannedSeconds <= 0) return;
-    const int samples = samplesFor(move.plannedSeconds);
-    const double step = move.plannedSeconds / samples;
+    AfcObservedMove observed;
     const double feed = move.length / move.plannedSeconds * 60.0;
+    observed.constant = afc.trendSample(move.startTime, feed);
+    observed.model = afc.model();
+    observed.startTime = move.startTime;
+    observed.plannedSeconds = move.plannedSeconds;
+    observed.count = samplesFor(move.plannedSeconds);
+    observed.feed = feed;
+    observed.speedFraction = move.speedFraction;
+    // The engagement rule of the whole cut, asked where the cut starts.
+    observed.engagement =
+        move.cutFrom < move.cutTo ? engagementAt(move, itm, move.cutFrom, 0.0, false) : 0.0;
+    observed.cutFrom = move.cutFrom;
+    observed.cutTo = move.cutTo;
+    observed.itmMeasured = itm.measured;
+    observed.itmFrom = itm.from;
+    observed.itmTo = itm.to;
+    observed.idleTorque = observed.constant.idleTorque;
+    observed.stallCompensation = afc.stallCompensation();
     afc.setClock(move.startTime);
-    for (int i = 1; i <= samples; ++i) {
-        const double elapsed = i * step;
-        const double share = elapsed / move.plannedSeconds;
-        afc.observe(feed, move.speedFraction, engagementAt(move, itm, share, elapsed, false),
-                    elapsed);
-        const bool measuring = itm.measured && elapsed >= itm.from && elapsed <= itm.to;
-        recorder->add(afc.trendSample(move.startTime + elapsed, feed, measuring));
-    }
+    afc.takeObservation(observed.sample(observed.count));
+    recorder->add(observed);
 }
 
 /// Seconds from `elapsed` / `travelled` until the engagement may change or

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <iterator>
+#include <utility>
 
 namespace mtc::core {
 namespace {
@@ -25,32 +27,78 @@ void appendFixed(std::string& out, double value, int decimals) {
 }  // namespace
 
 AfcTrendRecorder::AfcTrendRecorder(std::size_t capacity)
-    : buffer_(std::max<std::size_t>(capacity, 2)) {}
+    : capacity_(std::max<std::size_t>(capacity, 2)) {}
 
 void AfcTrendRecorder::add(const AfcTrendSample& sample) {
-    ++revision_;
-    if (count_ < buffer_.size()) {
-        buffer_[(first_ + count_++) % buffer_.size()] = sample;
-        return;
-    }
-    buffer_[first_] = sample;
-    first_ = (first_ + 1) % buffer_.size();
+    Entry entry;
+    entry.move.constant = sample;
+    append(std::move(entry));
 }
 
-const AfcTrendSample& AfcTrendRecorder::at(std::size_t index) const {
-    return buffer_[(first_ + std::min(index, count_ - 1)) % buffer_.size()];
+void AfcTrendRecorder::add(const AfcObservedMove& move) {
+    Entry entry;
+    entry.move = move;
+    entry.move.count = std::max(1, move.count);
+    entry.observed = true;
+    append(std::move(entry));
+}
+
+void AfcTrendRecorder::append(Entry entry) {
+    ++revision_;
+    entry.first = added_;
+    const auto samples = static_cast<std::size_t>(entry.move.count);
+    added_ += samples;
+    count_ += samples;
+    entries_.push_back(std::move(entry));
+    // Drop the oldest samples beyond the capacity: whole entries, then the
+    // first samples of the oldest one left.
+    while (count_ > capacity_) {
+        const auto left = static_cast<std::size_t>(entries_.front().move.count - skipped_);
+        const std::size_t excess = count_ - capacity_;
+        if (excess < left) {
+            skipped_ += static_cast<int>(excess);
+            count_ -= excess;
+            break;
+        }
+        entries_.pop_front();
+        skipped_ = 0;
+        count_ -= left;
+    }
+}
+
+AfcTrendSample AfcTrendRecorder::at(std::size_t index) const {
+    if (entries_.empty()) return {};
+    const std::uint64_t wanted =
+        entries_.front().first + static_cast<std::uint64_t>(skipped_) + std::min(index, count_ - 1);
+    // The last entry that starts at or before the wanted sample.
+    auto after = std::upper_bound(entries_.begin(), entries_.end(), wanted,
+                                  [](std::uint64_t n, const Entry& e) { return n < e.first; });
+    const Entry& entry = *std::prev(after);
+    return entry.sample(static_cast<int>(wanted - entry.first) + 1);
+}
+
+template <typename Visit>
+void AfcTrendRecorder::forEach(Visit visit) const {
+    int from = skipped_ + 1;
+    for (const Entry& entry : entries_) {
+        for (int k = from; k <= entry.move.count; ++k)
+            visit(entry.sample(k));
+        from = 1;
+    }
 }
 
 std::vector<AfcTrendSample> AfcTrendRecorder::samples() const {
     std::vector<AfcTrendSample> list;
     list.reserve(count_);
-    for (std::size_t i = 0; i < count_; ++i)
-        list.push_back(at(i));
+    forEach([&list](const AfcTrendSample& s) { list.push_back(s); });
     return list;
 }
 
 void AfcTrendRecorder::clear() {
-    first_ = count_ = 0;
+    entries_.clear();
+    skipped_ = 0;
+    count_ = 0;
+    added_ = 0;
     ++revision_;
 }
 
@@ -59,8 +107,7 @@ std::string AfcTrendRecorder::csv() const {
         "time_s,torque_actual_pct,machining_torque_pct,idle_torque_pct,limiting_torque_pct,"
         "minimum_torque_pct,maximum_idle_torque_pct,feed_reduction_pct,peak_reduction_pct,"
         "maximum_reduction_pct,effective_feed_mm_min,g26,stall_torque_pct,itm,excth,thmis\n";
-    for (std::size_t i = 0; i < count_; ++i) {
-        const AfcTrendSample& s = at(i);
+    forEach([&text](const AfcTrendSample& s) {
         appendFixed(text, s.time, 4);
         for (double value : {s.torqueActual, s.machiningTorque, s.idleTorque, s.limitingTorque,
                              s.minimumTorque, s.maximumIdleTorque, s.feedReduction, s.peakReduction,
@@ -73,7 +120,7 @@ std::string AfcTrendRecorder::csv() const {
         for (bool flag : {s.measuringIdle, s.excessiveThrust, s.thrustMissing})
             text += flag ? ",1" : ",0";
         text += '\n';
-    }
+    });
     return text;
 }
 

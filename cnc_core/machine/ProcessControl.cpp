@@ -40,7 +40,8 @@ const char* keyName(ControlKey key) {
     return "?";
 }
 
-ProcessControl::ProcessControl(int process) : process_(process) {
+ProcessControl::ProcessControl(int process)
+    : process_(process), singleBlockSignal_(signalPrefix() + "CSBLK") {
     signals_.set(signalPrefix() + "SREADY", 1);
     signals_.set(signalPrefix() + "SAUTO", 1);
     signals_.clearLog();
@@ -102,7 +103,7 @@ bool ProcessControl::press(ControlKey key) {
 }
 
 bool ProcessControl::singleBlock() const {
-    return signals_.get(signalPrefix() + "CSBLK") == 1;
+    return signals_.get(singleBlockSignal_) == 1;
 }
 
 bool ProcessControl::setMode(OperatingMode mode) {

@@ -128,6 +128,8 @@ class ProcessControl {
     bool start();
 
     int process_;
+    /// PxxCSBLK, asked before every block (built once, not per block).
+    std::string singleBlockSignal_;
     OperatingMode mode_ = OperatingMode::Automatic;
     bool active_ = false;
     bool held_ = false;

@@ -31,7 +31,7 @@ QString statusText(const mtc::core::AfcTrendRecorder& recorder) {
     if (recorder.size() == 0)
         return AfcTrendScreen::tr(
             "No trend yet (adaptive feed control records during feed moves).");
-    const mtc::core::AfcTrendSample& s = recorder.at(recorder.size() - 1);
+    const mtc::core::AfcTrendSample s = recorder.at(recorder.size() - 1);
     return AfcTrendScreen::tr(
                "t = %1 s   %2   actual %3 %   machining %4 %   reduction %5 % (peak %6 %)   "
                "feed %7 mm/min   idling 005 %8 % (max. 006 %9 %)   stall 014 %10 %   "
