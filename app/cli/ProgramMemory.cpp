@@ -4,13 +4,13 @@
 #include <cctype>
 #include <cstdio>
 #include <filesystem>
-#include <memory>
 #include <system_error>
 #include <utility>
 #include <vector>
 
 #include "cnc_core/program/DatFile.h"
 #include "cnc_core/program/DatFileName.h"
+#include "cnc_core/program/FileText.h"
 #include "cnc_core/program/ProgramLoader.h"
 #include "resources/EmbeddedResources.h"
 
@@ -54,31 +54,18 @@ bool resolveNumber(const std::string& argument, const ProgramMemory& memory,
 }  // namespace
 
 bool readTextFile(const std::string& path, std::string& text, std::string& error) {
-    std::error_code ec;
-    const auto status = std::filesystem::status(path, ec);
-    if (ec || !std::filesystem::exists(status)) {
+    const std::string why = core::whyNotARegularFile(path);
+    if (why == "does not exist") {
         error = "cannot read '" + path + "': no such file";
         return false;
     }
-    if (!std::filesystem::is_regular_file(status)) {
-        error = "cannot read '" + path + "': not a regular file";
+    if (!why.empty()) {
+        error = "cannot read '" + path + "': not a regular file (it " + why + ")";
         return false;
     }
-    std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "rb"),
-                                                         &std::fclose);
-    if (!file) {
-        error = "cannot read '" + path + "': permission denied or unreadable";
-        return false;
-    }
-    text.clear();
-    const auto size = std::filesystem::file_size(path, ec);
-    if (!ec) text.reserve(static_cast<std::size_t>(size));
-    char buffer[1 << 16];
-    std::size_t count = 0;
-    while ((count = std::fread(buffer, 1, sizeof buffer, file.get())) > 0)
-        text.append(buffer, count);
-    if (std::ferror(file.get())) {
-        error = "cannot read '" + path + "': read error";
+    std::string reason;
+    if (!core::readFileText(path, text, reason)) {
+        error = "cannot read " + reason;
         return false;
     }
     return true;
@@ -96,10 +83,10 @@ bool loadProgramMemory(const std::string& directory, ProgramMemory& memory,
         std::error_code ec;
         if (!std::filesystem::is_directory(directory, ec)) {
             const bool exists = std::filesystem::exists(directory, ec);
-            diagnostics.error("CLI_FILE_UNREADABLE", {},
-                              "--programs '" + directory + "' " +
-                                  (exists ? "is a file, not a program directory"
-                                          : "does not exist"));
+            diagnostics.error(
+                "CLI_FILE_UNREADABLE", {},
+                "--programs '" + directory + "' " +
+                    (exists ? "is a file, not a program directory" : "does not exist"));
             return false;
         }
         loader.loadDirectory(directory);

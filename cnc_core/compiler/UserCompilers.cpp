@@ -2,25 +2,21 @@
 
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
 #include <sstream>
 
 #include "cnc_core/compiler/CommandLine.h"
 #include "cnc_core/compiler/CompilerFiles.h"
 #include "cnc_core/compiler/CompilerText.h"
 #include "cnc_core/program/AtomicWrite.h"
+#include "cnc_core/program/FileText.h"
 
 namespace mtc::core {
 
 namespace {
 
 bool readWhole(const std::string& path, std::string& text) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) return false;
-    std::stringstream buffer;
-    buffer << in.rdbuf();
-    text = buffer.str();
-    return true;
+    std::string ignored;  // a missing or unreadable file is reported by its caller
+    return readFileText(path, text, ignored);
 }
 
 CompilerError generalError(int slot, int number, std::string message) {
@@ -50,8 +46,8 @@ bool runUserCompiler(int slot, const std::string& command, std::string& text,
     // D-010: no shell in between; the files are three more arguments.
     std::vector<std::string> arguments;
     if (!splitCommandLine(command, arguments, problem)) {
-        errors.push_back(generalError(slot, static_cast<int>(errors.size()) + 1,
-                                      "not run: " + problem));
+        errors.push_back(
+            generalError(slot, static_cast<int>(errors.size()) + 1, "not run: " + problem));
         std::remove(input.c_str());
         return false;
     }
@@ -71,11 +67,11 @@ bool runUserCompiler(int slot, const std::string& command, std::string& text,
     std::remove(output.c_str());
     std::remove(messages.c_str());
     if (!ok && errors.empty())
-        errors.push_back(generalError(
-            slot, 1,
-            outcome.problem.empty()
-                ? "failed (exit status " + std::to_string(outcome.exitStatus) + ")"
-                : outcome.problem));
+        errors.push_back(
+            generalError(slot, 1,
+                         outcome.problem.empty()
+                             ? "failed (exit status " + std::to_string(outcome.exitStatus) + ")"
+                             : outcome.problem));
     return ok;
 }
 

@@ -8,11 +8,11 @@
 #include <cstring>
 #include <ctime>
 #include <filesystem>
-#include <fstream>
 #include <locale>
 #include <sstream>
 
 #include "cnc_core/program/AtomicWrite.h"
+#include "cnc_core/program/FileText.h"
 #include "cnc_core/text/Numbers.h"
 
 namespace mtc::core {
@@ -63,27 +63,6 @@ std::string asideName(const std::string& path) {
     for (int n = 2; fileExists(name) && n < 1000; ++n)
         name = base + "-" + std::to_string(n);
     return name;
-}
-
-bool readWholeFile(const std::string& path, std::string& text, std::string& error) {
-    struct stat info {};
-    if (::stat(path.c_str(), &info) != 0 || !S_ISREG(info.st_mode)) {
-        error = "not a regular file";
-        return false;
-    }
-    std::ifstream in(path, std::ios::binary);
-    if (!in) {
-        error = std::strerror(errno);
-        return false;
-    }
-    std::ostringstream buffer;
-    buffer << in.rdbuf();
-    text = buffer.str();
-    if (text.size() > kMaxFileSize) {
-        error = "file larger than 64 MiB";
-        return false;
-    }
-    return true;
 }
 
 /// One "<process> <page> <sub> <element> <value>" line.
@@ -177,10 +156,10 @@ MachineDataLoadResult MachineDataFile::load(MachineDataStore& store) const {
     result.fileFound = true;
     std::string text, reason, cell;
     std::vector<MachineDataStore::Entry> entries;
-    if (!readWholeFile(path_, text, reason)) {
+    if (!readFileText(path_, text, reason, kMaxFileSize)) {
         result.mayOverwrite = false;
         result.diagnostics.error("MD_FILE_UNREADABLE", {},
-                                 "cannot read machine data file " + path_ + ": " + reason +
+                                 "cannot read machine data file " + reason +
                                      "; defaults are used and nothing will be saved over it");
         return result;
     }
