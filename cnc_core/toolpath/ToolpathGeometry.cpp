@@ -80,6 +80,23 @@ long findMove(const std::vector<ToolpathMove>& moves, std::uint32_t segment, std
 }
 }  // namespace
 
+ToolpathBounds ToolpathGeometry::cuttingBounds(bool developed) const {
+    const ToolpathLayer& layer = developed ? this->developed : scene;
+    ToolpathBounds box;
+    for (std::size_t m = 0; m < moves.size(); ++m) {
+        if (moves[m].kind == ToolpathKind::Rapid) continue;
+        const auto [first, last] = developed ? developedRange(m) : sceneRange(m);
+        for (std::uint32_t segment = first; segment < last; ++segment) {
+            const std::size_t start = layer.segmentStart[segment];
+            for (std::size_t v : {start, start + 1}) {
+                const auto p = layer.vertex(v);
+                box.add(p[0], p[1], p[2]);
+            }
+        }
+    }
+    return box;
+}
+
 long ToolpathGeometry::moveOfSceneSegment(std::uint32_t segment) const {
     return findMove(moves, segment, scene.segmentCount(),
                     [](const ToolpathMove& m) { return m.firstScene; });

@@ -91,6 +91,9 @@ struct ToolpathGeometry {
     /// Move that scene (developed) segment `segment` belongs to; -1 if none.
     long moveOfSceneSegment(std::uint32_t segment) const;
     long moveOfDevelopedSegment(std::uint32_t segment) const;
+    /// Box of the feed and arc moves of the scene (developed) layer, without
+    /// the rapids: what the view frames (empty when there is no such move).
+    ToolpathBounds cuttingBounds(bool developed) const;
     /// Indices of the moves of block `block` of program `program` (in order).
     std::vector<std::uint32_t> movesOfBlock(int program, std::uint32_t block) const;
     /// Bytes held by the vectors (capacity).

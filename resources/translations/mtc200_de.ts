@@ -659,6 +659,14 @@
         <source>rotate, pan and zoom; a click picks a block</source>
         <translation>drehen, verschieben und zoomen; ein Klick wählt einen Satz</translation>
     </message>
+    <message>
+        <source>0, Home</source>
+        <translation>0, Pos1</translation>
+    </message>
+    <message>
+        <source>frame the part: the cutting moves and the stock (F5 then frames every move, the rapids of an approach or tool change too)</source>
+        <translation>das Werkstück einpassen: die Schnittbewegungen und das Rohteil (F5 passt dann alle Bewegungen ein, auch die Eilgänge einer Anfahrt oder eines Werkzeugwechsels)</translation>
+    </message>
 </context>
 <context>
     <name>ScreenTitle</name>
@@ -3011,10 +3019,6 @@ metric</source>
 metrisch</translation>
     </message>
     <message>
-        <source>Fit</source>
-        <translation>Einpassen</translation>
-    </message>
-    <message>
         <source>Export
 PNG</source>
         <translation>Export
@@ -3027,6 +3031,26 @@ PNG</translation>
     <message>
         <source>Restart</source>
         <translation>Satzvorlauf</translation>
+    </message>
+    <message>
+        <source>Every move framed, rapids included (F5: the part again).</source>
+        <translation>Alle Bewegungen eingepasst, Eilgänge eingeschlossen (F5: wieder das Werkstück).</translation>
+    </message>
+    <message>
+        <source>The part framed: cutting moves and stock (F5: every move).</source>
+        <translation>Werkstück eingepasst: Schnittbewegungen und Rohteil (F5: alle Bewegungen).</translation>
+    </message>
+    <message>
+        <source>Fit
+part</source>
+        <translation>Werkstück
+einpassen</translation>
+    </message>
+    <message>
+        <source>Fit
+all</source>
+        <translation>Alles
+einpassen</translation>
     </message>
 </context>
 <context>

@@ -182,7 +182,11 @@ std::vector<ScreenHelpText> buildTexts() {
              "the tool-centre path under compensation."),
          QT_TRANSLATE_NOOP("ScreenHelp", "the simulator's own view (docs/decisions/toolpath.md)"),
          {{QT_TRANSLATE_NOOP("ScreenHelp", "mouse"),
-           QT_TRANSLATE_NOOP("ScreenHelp", "rotate, pan and zoom; a click picks a block")}}},
+           QT_TRANSLATE_NOOP("ScreenHelp", "rotate, pan and zoom; a click picks a block")},
+          {QT_TRANSLATE_NOOP("ScreenHelp", "0, Home"),
+           QT_TRANSLATE_NOOP("ScreenHelp",
+                             "frame the part: the cutting moves and the stock (F5 then frames "
+                             "every move, the rapids of an approach or tool change too)")}}},
     };
 }
 

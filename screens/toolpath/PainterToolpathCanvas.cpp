@@ -83,14 +83,8 @@ QPointF PainterToolpathCanvas::project(const View& view, const Vec& p) const {
             centre.y() - view.scale * dot(d, view.pose.up)};
 }
 
-void PainterToolpathCanvas::fitView(View& view) {
-    const auto* layer = layerOf(view);
-    mtc::core::ToolpathBounds box = layer ? layer->bounds : mtc::core::ToolpathBounds{};
-    const auto& stock = model_->stock();
-    if (!view.developed && stock.shape == mtc::core::Stock::Shape::Block) {
-        box.add(stock.min[0], stock.min[1], stock.min[2]);
-        box.add(stock.max[0], stock.max[1], stock.max[2]);
-    }
+void PainterToolpathCanvas::fitView(View& view, bool all) {
+    mtc::core::ToolpathBounds box = model_->frame(view.developed, all);
     if (box.empty) box.add(0, 0, 0);
     view.focal = {(box.min[0] + box.max[0]) / 2, (box.min[1] + box.max[1]) / 2,
                   (box.min[2] + box.max[2]) / 2};
@@ -110,8 +104,14 @@ void PainterToolpathCanvas::showPreset(ToolpathPreset preset) {
 }
 
 void PainterToolpathCanvas::fit() {
-    fitView(scene_);
-    if (split_) fitView(developed_);
+    fitView(scene_, false);
+    if (split_) fitView(developed_, false);
+    update();
+}
+
+void PainterToolpathCanvas::fitAll() {
+    fitView(scene_, true);
+    if (split_) fitView(developed_, true);
     update();
 }
 

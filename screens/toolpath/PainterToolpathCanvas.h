@@ -21,6 +21,7 @@ class PainterToolpathCanvas : public ToolpathCanvas {
 
     void showPreset(ToolpathPreset preset) override;
     void fit() override;
+    void fitAll() override;
     void zoom(double factor) override;
     void pan(double right, double up) override;
     void rotate(double azimuth, double elevation) override;
@@ -44,7 +45,7 @@ class PainterToolpathCanvas : public ToolpathCanvas {
         bool developed = false;
     };
     void layout();
-    void fitView(View& view);
+    void fitView(View& view, bool all);
     QPointF project(const View& view, const Vec& p) const;
     const mtc::core::ToolpathLayer* layerOf(const View& view) const;
     void drawView(QPainter& painter, const View& view);

@@ -24,8 +24,10 @@ class ToolpathCanvas : public QWidget {
 
     /// Looks at the path from a preset direction and fits it into the view.
     virtual void showPreset(ToolpathPreset preset) = 0;
-    /// Shows the whole path (and stock).
+    /// Frames the part: the cutting moves and the stock (ToolpathModel::frame).
     virtual void fit() = 0;
+    /// Frames every move, the rapids of an approach or tool change too.
+    virtual void fitAll() = 0;
     /// Magnifies by `factor` (> 1 closer).
     virtual void zoom(double factor) = 0;
     /// Moves the picture by fractions of the view's width and height.

@@ -75,7 +75,38 @@ void ToolpathModel::build(int number) {
             break;
         }
     geometry_ = std::make_shared<const mtc::core::ToolpathGeometry>(std::move(result.geometry));
+    cutting_ = {geometry_->cuttingBounds(false), geometry_->cuttingBounds(true)};
     emit geometryChanged();
+}
+
+mtc::core::ToolpathBounds ToolpathModel::frame(bool developed, bool all) const {
+    if (!geometry_) return {};
+    const mtc::core::ToolpathBounds& everything =
+        developed ? geometry_->developed.bounds : geometry_->scene.bounds;
+    mtc::core::ToolpathBounds box = cutting_[developed ? 1 : 0];
+    if (all || box.empty) box = everything;
+    if (!developed) {  // the restart's marks and REPOS path are always in view
+        const ToolpathMarks m = marks();
+        for (const auto& [shown, p] :
+             {std::pair{m.hasStart, m.start}, std::pair{m.hasTarget, m.target},
+              std::pair{m.hasReentry, m.reentry}})
+            if (shown) box.add(p[0], p[1], p[2]);
+        for (const auto& p : m.repos)
+            box.add(p[0], p[1], p[2]);
+    }
+    if (!developed && stock_.shape == mtc::core::Stock::Shape::Block) {
+        box.add(stock_.min[0], stock_.min[1], stock_.min[2]);
+        box.add(stock_.max[0], stock_.max[1], stock_.max[2]);
+    } else if (!developed && stock_.shape == mtc::core::Stock::Shape::Cylinder) {
+        const int axis = stock_.axis;
+        std::array<double, 3> low{-stock_.radius, -stock_.radius, -stock_.radius};
+        std::array<double, 3> high{stock_.radius, stock_.radius, stock_.radius};
+        low[static_cast<std::size_t>(axis)] = stock_.from;
+        high[static_cast<std::size_t>(axis)] = stock_.to;
+        box.add(low[0], low[1], low[2]);
+        box.add(high[0], high[1], high[2]);
+    }
+    return box;
 }
 
 QString ToolpathModel::summary() const {

@@ -59,6 +59,12 @@ class ToolpathModel : public QObject {
     /// The first problem of the last build ("" when it ran cleanly).
     QString problem() const { return problem_; }
     const mtc::core::Stock& stock() const { return stock_; }
+    /// What the view frames and labels in the scene (developed) picture: the
+    /// cutting moves and, in the scene, the stock, so that an approach or a
+    /// tool change far away does not shrink the part to a corner (TP-014);
+    /// with `all`, every move. Falls back to every move when nothing cuts.
+    /// The restart's marks and REPOS path are always inside.
+    mtc::core::ToolpathBounds frame(bool developed, bool all) const;
     const ToolpathPalette& palette() const { return palette_; }
     ToolpathMarks marks() const;
     /// Moves of the highlighted block, every execution of it (empty = none).
@@ -113,6 +119,8 @@ class ToolpathModel : public QObject {
     QString problem_;
     bool complete_ = false;
     mtc::core::Stock stock_;
+    /// cuttingBounds of the geometry, scene and developed (set by build()).
+    std::array<mtc::core::ToolpathBounds, 2> cutting_;
     ToolpathPalette palette_;
     std::vector<std::uint32_t> highlighted_;
     QString highlightText_;

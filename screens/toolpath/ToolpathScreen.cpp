@@ -76,6 +76,11 @@ ToolpathScreen::ToolpathScreen(const mtc::hmi::ScreenContext& context,
     setFocusPolicy(Qt::StrongFocus);
     connect(model_, &ToolpathModel::marksChanged, this, &ToolpathScreen::renderText);
     connect(model_, &ToolpathModel::geometryChanged, this, &ToolpathScreen::renderText);
+    connect(model_, &ToolpathModel::geometryChanged, this, [this] {
+        if (!showingAll_) return;
+        showingAll_ = false;  // a new picture is framed to its part
+        emit softKeysChanged();
+    });
     connect(context.session, &mtc::hmi::CellSession::processChanged, this, [this](int slot) {
         if (slot == this->context().process && isVisible()) model_->refresh();
     });
@@ -116,9 +121,30 @@ void ToolpathScreen::renderText() {
 }
 
 void ToolpathScreen::preset(ToolpathPreset p) {
-    canvas_->showPreset(p);
+    canvas_->showPreset(p);  // frames the part
+    if (showingAll_) {
+        showingAll_ = false;
+        emit softKeysChanged();
+    }
     message_->setText(tr("View %1").arg(p == ToolpathPreset::Isometric ? tr("isometric")
                                                                        : QString(presetName(p))));
+}
+
+void ToolpathScreen::fitNext() {
+    if (showingAll_) return fitPart();
+    canvas_->fitAll();
+    showingAll_ = true;
+    message_->setText(tr("Every move framed, rapids included (F5: the part again)."));
+    emit softKeysChanged();
+}
+
+void ToolpathScreen::fitPart() {
+    canvas_->fit();
+    message_->setText(tr("The part framed: cutting moves and stock (F5: every move)."));
+    if (showingAll_) {
+        showingAll_ = false;
+        emit softKeysChanged();
+    }
 }
 
 QString ToolpathScreen::defaultExportPath() const {
@@ -160,7 +186,7 @@ void ToolpathScreen::keyPressEvent(QKeyEvent* event) {
             return preset(ToolpathPreset::Isometric);
         case Qt::Key_0:
         case Qt::Key_Home:
-            return canvas_->fit();
+            return fitPart();
         case Qt::Key_Plus:
             return canvas_->zoom(1.25);
         case Qt::Key_Minus:
@@ -191,7 +217,7 @@ mtc::hmi::SoftKeys ToolpathScreen::softKeys() {
     keys[1] = {tr("G18\nview"), [this] { preset(ToolpathPreset::G18); }};
     keys[2] = {tr("G19\nview"), [this] { preset(ToolpathPreset::G19); }};
     keys[3] = {tr("Iso-\nmetric"), [this] { preset(ToolpathPreset::Isometric); }};
-    keys[4] = {tr("Fit"), [this] { canvas_->fit(); }};
+    keys[4] = {showingAll_ ? tr("Fit\npart") : tr("Fit\nall"), [this] { fitNext(); }};
     keys[5] = {tr("Export\nPNG"), [this] { exportPng(defaultExportPath()); }};
     keys[6] = {tr("Restart"), [this] { emit navigateTo("restart"); }};
     keys[7] = {tr("Back"), [this] { emit navigateTo("menu"); }};

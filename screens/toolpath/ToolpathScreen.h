@@ -53,6 +53,11 @@ class ToolpathScreen : public mtc::hmi::Screen {
 
   private:
     void preset(ToolpathPreset preset);
+    /// F5: frames the part, or when it is framed, every move (the rapids of
+    /// an approach or tool change too); the key says which comes next.
+    void fitNext();
+    /// Frames the part (presets, Home, a new program) and says so on F5.
+    void fitPart();
     void renderText();
     /// The legend line: the motion colours of the tool-centre path, and the
     /// programmed contour when the program has compensated moves.
@@ -66,6 +71,7 @@ class ToolpathScreen : public mtc::hmi::Screen {
     QLabel* legend_;  ///< what the colours mean (tool-centre path, programmed contour)
     QLabel* message_;
     QString glReason_;
+    bool showingAll_ = false;  ///< the last fit framed every move
 };
 
 }  // namespace mtc::screens

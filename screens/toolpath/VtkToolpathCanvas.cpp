@@ -98,7 +98,10 @@ struct Part {
         axes->DrawYGridlinesOn();
         axes->DrawZGridlinesOn();
         axes->SetGridLineLocation(vtkCubeAxesActor::VTK_GRID_LINES_FURTHEST);
-        axes->SetFlyModeToStaticEdges();
+        // One labelled edge per axis, the one nearest the viewer: labels on
+        // several edges ran into each other and were drawn twice in the plane
+        // views, where front and back edges coincide (TP-014).
+        axes->SetFlyModeToClosestTriad();
         for (int i = 0; i < 3; ++i) {
             setColour(axes->GetTitleTextProperty(i), QColor(220, 220, 230));
             setColour(axes->GetLabelTextProperty(i), QColor(200, 200, 210));
@@ -251,6 +254,20 @@ void setBounds(vtkCubeAxesActor* axes, const mtc::core::ToolpathBounds& b) {
     axes->SetBounds(bounds);
 }
 
+/// Tick labels on an axis far shorter than the longest (a plate's
+/// thickness) crowd into one blot: such an axis keeps its title and grid,
+/// its length is in the caption's extents.
+void labelLongAxesOnly(vtkCubeAxesActor* axes, const mtc::core::ToolpathBounds& b) {
+    const double longest = std::max(b.size(), 1e-9);
+    const auto labelled = [&](int i) {
+        return b.max[static_cast<std::size_t>(i)] - b.min[static_cast<std::size_t>(i)] >=
+               0.2 * longest;
+    };
+    axes->SetXAxisLabelVisibility(labelled(0));
+    axes->SetYAxisLabelVisibility(labelled(1));
+    axes->SetZAxisLabelVisibility(labelled(2));
+}
+
 QString extents(const mtc::core::ToolpathBounds& b, bool flat) {
     if (b.empty) return {};
     QString text = VtkToolpathCanvas::tr("extents %1 x %2")
@@ -324,7 +341,9 @@ void VtkToolpathCanvas::rebuild() {
             part->coarse = toolpathLevelOfDetail(*g, part->developed, palette, part->decimated);
             part->coarseMapper->SetInputData(part->coarse);
         }
-        setBounds(part->axes, layer.bounds);
+        const mtc::core::ToolpathBounds framed = model_->frame(part->developed, false);
+        setBounds(part->axes, framed);
+        labelLongAxesOnly(part->axes, framed);
         part->axes->SetXTitle(part->developed ? tr("axial (mm)").toUtf8().constData() : "X (mm)");
         part->axes->SetYTitle(part->developed ? tr("circumference (mm)").toUtf8().constData()
                                               : "Y (mm)");
@@ -418,8 +437,16 @@ void VtkToolpathCanvas::updateMarks() {
     }
 }
 
+void VtkToolpathCanvas::showAxesFor(ToolpathPreset preset) {
+    vtkCubeAxesActor* axes = scene_->scene.axes;
+    axes->SetXAxisVisibility(preset != ToolpathPreset::G19);
+    axes->SetYAxisVisibility(preset != ToolpathPreset::G18);
+    axes->SetZAxisVisibility(preset != ToolpathPreset::G17);
+}
+
 void VtkToolpathCanvas::showPreset(ToolpathPreset preset) {
     scene_->preset = preset;
+    showAxesFor(preset);
     const CameraPose pose = presetPose(preset);
     vtkCamera* camera = scene_->scene.renderer->GetActiveCamera();
     camera->SetFocalPoint(0, 0, 0);
@@ -435,8 +462,23 @@ void VtkToolpathCanvas::showPreset(ToolpathPreset preset) {
 }
 
 void VtkToolpathCanvas::fit() {
+    frame(false);
+}
+
+void VtkToolpathCanvas::fitAll() {
+    frame(true);
+}
+
+void VtkToolpathCanvas::frame(bool all) {
     for (Part* part : {&scene_->scene, &scene_->developed}) {
-        part->renderer->ResetCamera();
+        const mtc::core::ToolpathBounds box = model_->frame(part->developed, all);
+        if (box.empty) {
+            part->renderer->ResetCamera();
+        } else {
+            double bounds[6] = {box.min[0], box.max[0], box.min[1],
+                                box.max[1], box.min[2], box.max[2]};
+            part->renderer->ResetCamera(bounds);
+        }
         part->renderer->ResetCameraClippingRange();
     }
     requestRender();
@@ -477,6 +519,7 @@ void VtkToolpathCanvas::pan(double right, double up) {
 }
 
 void VtkToolpathCanvas::rotate(double azimuth, double elevation) {
+    showAxesFor(ToolpathPreset::Isometric);  // out of the plane: all three
     vtkCamera* camera = scene_->scene.renderer->GetActiveCamera();
     camera->Azimuth(azimuth);
     camera->Elevation(elevation);

@@ -24,6 +24,7 @@ class VtkToolpathCanvas : public ToolpathCanvas {
 
     void showPreset(ToolpathPreset preset) override;
     void fit() override;
+    void fitAll() override;
     void zoom(double factor) override;
     void pan(double right, double up) override;
     void rotate(double azimuth, double elevation) override;
@@ -57,6 +58,11 @@ class VtkToolpathCanvas : public ToolpathCanvas {
     void requestRender();
     void moving();
     void showLevelOfDetail(bool coarse);
+    /// Frames ToolpathModel::frame (the part, or with `all` every move).
+    void frame(bool all);
+    /// Labels the axes of the picture's plane only in a plane view (the
+    /// axis along the view would be a point), all three otherwise.
+    void showAxesFor(ToolpathPreset preset);
     void pickAt(QPoint position);
 
     QVTKOpenGLNativeWidget* widget_;

@@ -70,6 +70,8 @@ class ToolpathScreenTest : public QObject {
         const auto& moves = model->highlighted();
         QVERIFY(std::find(moves.begin(), moves.end(), 1u) != moves.end());
         QVERIFY(model->highlightText().startsWith("P1 N"));
+        // The approach lies outside the part the view frames: F5 frames every move.
+        panel.press(Qt::Key_F5);
         QVERIFY(count(screen->canvas()->picture(), model->palette().highlight) > 0);
         panel.press(Qt::Key_1);
         QVERIFY(screen->findChild<QLabel*>("toolpathMessage")->text().contains("G17"));
@@ -92,6 +94,38 @@ class ToolpathScreenTest : public QObject {
         QVERIFY(picked >= 0);
         const auto& chosen = g.moves[static_cast<std::size_t>(model->highlighted().front())];
         QCOMPARE(chosen.block, g.moves[static_cast<std::size_t>(picked)].block);
+    }
+
+    /// TP-014: the view frames the cutting moves and the stock, not the
+    /// approach from the tool-change position; F5 toggles to every move.
+    void theViewFramesThePartAndF5FramesEveryMove() {
+        PanelFixture panel;
+        panel.session->selectProgram(0, 1);
+        panel.window->showScreen("toolpath");
+        ToolpathScreen* screen = toolpath(panel);
+        const auto* model = screen->model();
+        const mtc::core::ToolpathBounds part = model->frame(false, false);
+        const mtc::core::ToolpathBounds all = model->frame(false, true);
+        const auto& stock = model->stock();
+        QVERIFY(!part.empty);
+        for (int i = 0; i < 3; ++i) {  // the stock is inside the part's frame
+            QVERIFY(part.min[i] <= stock.min[i] + 1e-9);
+            QVERIFY(part.max[i] >= stock.max[i] - 1e-9);
+        }
+        // The approach from Z far above the plate is not.
+        QVERIFY2(all.max[2] > part.max[2] + 50.0,
+                 qPrintable(QString("%1 %2").arg(all.max[2]).arg(part.max[2])));
+        const auto label = [&] { return screen->softKeys().value(4).label; };
+        QCOMPARE(label(), QString("Fit\nall"));
+        const QImage framedPart = screen->canvas()->picture();
+        panel.press(Qt::Key_F5);
+        QCOMPARE(label(), QString("Fit\npart"));
+        QVERIFY(screen->canvas()->picture() != framedPart);
+        panel.press(Qt::Key_F5);
+        QCOMPARE(label(), QString("Fit\nall"));
+        panel.press(Qt::Key_F5);
+        panel.press(Qt::Key_1);  // a preset frames the part again
+        QCOMPARE(label(), QString("Fit\nall"));
     }
 
     void restartCursorAndToolpathFollowEachOther() {
