@@ -1,8 +1,6 @@
 // Every parser error path: stable code, position, recovery at the next block.
 #include <gtest/gtest.h>
 
-#include <chrono>
-
 #include "ParserTestSupport.h"
 
 using namespace mtc::core;
@@ -102,8 +100,7 @@ TEST(ParserErrors, DiagnosticsAreCapped) {
     EXPECT_EQ(p.diagnostics.items().back().code, "PARSE_TOO_MANY_DIAGNOSTICS");
 }
 
-TEST(ParserErrors, MegabyteLinesParseQuickly) {
-    auto start = std::chrono::steady_clock::now();
+TEST(ParserErrors, MegabyteLinesParse) {
     std::string words;
     for (int i = 0; i < 60000; ++i)
         words += "X1 ";  // 180 kB of words in one block
@@ -123,8 +120,6 @@ TEST(ParserErrors, MegabyteLinesParseQuickly) {
     Program f = parse(std::string(1 << 20, ' ') + "G1");
     EXPECT_TRUE(f.diagnostics.empty());
     EXPECT_EQ(f.words[0].column, 65535);
-    auto seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    EXPECT_LT(seconds, 10.0);
 }
 
 TEST(ParserErrors, TooManyWordsInOneBlock) {
