@@ -67,7 +67,7 @@ void PainterToolpathCanvas::layout() {
 void PainterToolpathCanvas::resizeEvent(QResizeEvent* event) {
     ToolpathCanvas::resizeEvent(event);
     layout();
-    fit();
+    framedAll_ ? fitAll() : fit();  // the same framing at the new size
 }
 
 const mtc::core::ToolpathLayer* PainterToolpathCanvas::layerOf(const View& view) const {
@@ -104,12 +104,14 @@ void PainterToolpathCanvas::showPreset(ToolpathPreset preset) {
 }
 
 void PainterToolpathCanvas::fit() {
+    framedAll_ = false;
     fitView(scene_, false);
     if (split_) fitView(developed_, false);
     update();
 }
 
 void PainterToolpathCanvas::fitAll() {
+    framedAll_ = true;
     fitView(scene_, true);
     if (split_) fitView(developed_, true);
     update();
@@ -254,7 +256,24 @@ void PainterToolpathCanvas::drawMarks(QPainter& painter, const View& view) {
     dot(marks.hasStart, marks.start, palette.start);
     dot(marks.hasTarget, marks.target, palette.target);
     dot(marks.hasReentry, marks.reentry, palette.reentry);
+    drawTool(painter, view, marks);
     painter.setBrush(Qt::NoBrush);
+}
+
+void PainterToolpathCanvas::drawTool(QPainter& painter, const View& view,
+                                     const ToolpathMarks& marks) {
+    if (!marks.hasTool) return;
+    const QColor& colour = model_->palette().tool;
+    const QPointF tip = project(view, marks.tool);
+    const double radius = std::max(5.0, marks.toolRadius * view.scale);
+    painter.setPen(QPen(colour, 2));
+    if (!marks.turning) {  // the shank up the tool axis (Z), as long as L1
+        const double length = std::max(marks.toolLength, 4.0 * std::max(marks.toolRadius, 1.0));
+        const Vec top{marks.tool[0], marks.tool[1], marks.tool[2] + length};
+        painter.drawLine(tip, project(view, top));
+    }
+    painter.setBrush(colour);
+    painter.drawEllipse(tip, radius, radius);
 }
 
 void PainterToolpathCanvas::drawStock(QPainter& painter, const View& view) {

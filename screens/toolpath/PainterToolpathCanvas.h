@@ -3,6 +3,7 @@
 #include <array>
 
 #include "screens/toolpath/ToolpathCanvas.h"
+#include "screens/toolpath/ToolpathModel.h"
 
 namespace mtc::core {
 struct ToolpathLayer;
@@ -54,6 +55,9 @@ class PainterToolpathCanvas : public ToolpathCanvas {
     void drawContour(QPainter& painter, const View& view);
     void drawHighlight(QPainter& painter, const View& view);
     void drawMarks(QPainter& painter, const View& view);
+    /// The tool at the actual position: a disc of its radius (at least 5
+    /// pixels), on the mill with its shank up the Z axis.
+    void drawTool(QPainter& painter, const View& view, const ToolpathMarks& marks);
     void drawStock(QPainter& painter, const View& view);
     void drawTriad(QPainter& painter, const View& view);
     long pickIn(const View& view, QPointF at) const;
@@ -61,6 +65,7 @@ class PainterToolpathCanvas : public ToolpathCanvas {
     View scene_;
     View developed_;
     bool split_ = false;
+    bool framedAll_ = false;  ///< the last fit was fitAll()
 };
 
 }  // namespace mtc::screens

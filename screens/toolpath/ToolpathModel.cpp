@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "cnc_core/cell/StationStatus.h"
 #include "cnc_core/interp/Interpreter.h"
 #include "cnc_core/restart/ReposPreview.h"
 #include "hmi/CellSession.h"
@@ -166,7 +167,22 @@ ToolpathMarks ToolpathModel::marks() const {
         marks.actual = reposPath_.front();
         marks.repos = reposPath_;
     }
+    markTool(marks);
     return marks;
+}
+
+void ToolpathModel::markTool(ToolpathMarks& marks) const {
+    const mtc::core::Station& station = session_->station(slot_);
+    const mtc::core::StationStatus status = mtc::core::describeStation(station, 0);
+    std::array<double, mtc::core::kMaxAxes> machine{};
+    for (const mtc::core::AxisStatus& axis : status.axes)
+        if (axis.index >= 0 && axis.index < mtc::core::kMaxAxes)
+            machine[static_cast<std::size_t>(axis.index)] = axis.machine;
+    marks.hasTool = true;
+    marks.tool = mapping_->scenePoint(machine);
+    marks.toolRadius = status.edgeKnown ? status.edgeRadius : 0.0;
+    marks.toolLength = status.edgeKnown ? status.edgeLength[0] : 0.0;
+    marks.turning = stock_.shape == mtc::core::Stock::Shape::Cylinder;
 }
 
 void ToolpathModel::updateReposPath() {

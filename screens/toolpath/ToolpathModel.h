@@ -27,6 +27,14 @@ struct ToolpathMarks {
     /// The REPOS path (hasRepos): where the axes stand, then the end of every
     /// move the rest of ADJUST and REPOS commands (TP-007), scene points.
     std::vector<std::array<double, 3>> repos;
+    /// The tool where the axes are now (TP-015): the scene point of the
+    /// machine's actual position, the edge in use (radius, length L1; 0 when
+    /// the tool list has no such edge) and whether the station turns.
+    bool hasTool = false;
+    std::array<double, 3> tool{};
+    double toolRadius = 0.0;
+    double toolLength = 0.0;
+    bool turning = false;
 };
 
 /// The model behind the toolpath view of one station (no display code):
@@ -104,6 +112,8 @@ class ToolpathModel : public QObject {
     void setHighlight(int program, std::uint32_t block);
     /// Puts the restart screen's cursor on the block when it shows that program.
     void showInRestartListing(int program, std::uint32_t block);
+    /// The tool marker of `marks` from the station's machine now.
+    void markTool(ToolpathMarks& marks) const;
     std::array<double, 3> firstPointOf(int program, std::uint32_t block, bool& found) const;
 
     mtc::hmi::CellSession* session_;

@@ -24,6 +24,8 @@ struct ToolpathPalette {
     /// Programmed contour of compensated moves (the tool-centre path keeps
     /// the motion colours): lavender, drawn under the path.
     QColor contour{180, 120, 255};
+    /// The tool where the axes are now (TP-015): pink.
+    QColor tool{255, 128, 192};
 
     /// Colour of a move kind.
     QColor colour(mtc::core::ToolpathKind kind) const {

@@ -126,7 +126,7 @@ struct Part {
 struct VtkToolpathCanvas::Scene {
     vtkNew<vtkGenericOpenGLRenderWindow> window;
     Part scene, developed;
-    vtkNew<vtkActor> stock, cylinder, start, target, reentry, repos;
+    vtkNew<vtkActor> stock, cylinder, start, target, reentry, repos, tool;
     vtkNew<vtkAxesActor> triadAxes;
     vtkNew<vtkOrientationMarkerWidget> triad;
     vtkNew<vtkCallbackCommand> interaction;
@@ -154,8 +154,9 @@ VtkToolpathCanvas::VtkToolpathCanvas(ToolpathModel* model, QWidget* parent)
     scene_->scene.setUp(palette);
     scene_->developed.setUp(palette);
     scene_->window->AddRenderer(scene_->scene.renderer);
-    for (vtkActor* a : {scene_->stock.Get(), scene_->cylinder.Get(), scene_->start.Get(),
-                        scene_->target.Get(), scene_->reentry.Get(), scene_->repos.Get()}) {
+    for (vtkActor* a :
+         {scene_->stock.Get(), scene_->cylinder.Get(), scene_->start.Get(), scene_->target.Get(),
+          scene_->reentry.Get(), scene_->repos.Get(), scene_->tool.Get()}) {
         a->PickableOff();
         a->VisibilityOff();
         scene_->scene.renderer->AddActor(a);
@@ -293,6 +294,29 @@ void placeCylinder(vtkActor* actor, int axis, double radius, double from, double
     if (axis == 0) actor->RotateZ(-90);  // Y -> X
     actor->VisibilityOn();
 }
+
+/// The tool at the actual position (TP-015): on the mill a cylinder of the
+/// edge's radius up the Z axis from the tip, as long as L1 (at least four
+/// radii); on the lathe a ball of the nose radius. Never smaller than a
+/// hundredth of the picture, so that it stays visible.
+void placeTool(vtkActor* actor, const ToolpathMarks& marks, double pictureSize) {
+    actor->SetVisibility(marks.hasTool);
+    if (!marks.hasTool) return;
+    const double radius = std::max(marks.toolRadius, pictureSize * 0.01);
+    if (marks.turning) {
+        vtkNew<vtkSphereSource> source;
+        source->SetRadius(radius);
+        source->Update();
+        vtkNew<vtkPolyDataMapper> mapper;
+        mapper->SetInputData(source->GetOutput());
+        actor->SetMapper(mapper);
+        actor->SetOrientation(0, 0, 0);
+    } else {
+        const double length = std::max(marks.toolLength, 4.0 * radius);
+        placeCylinder(actor, 2, radius, 0.0, length);
+    }
+    actor->SetPosition(marks.tool[0], marks.tool[1], marks.tool[2]);
+}
 }  // namespace
 
 void VtkToolpathCanvas::rebuild() {
@@ -421,6 +445,8 @@ void VtkToolpathCanvas::updateMarks() {
     sphere(scene_->start, marks.hasStart, marks.start, palette.start);
     sphere(scene_->target, marks.hasTarget, marks.target, palette.target);
     sphere(scene_->reentry, marks.hasReentry, marks.reentry, palette.reentry);
+    placeTool(scene_->tool, marks, size);
+    setColour(scene_->tool->GetProperty(), palette.tool);
     scene_->repos->SetVisibility(marks.hasRepos);
     if (marks.hasRepos) {
         vtkNew<vtkPolyLineSource> line;  // the corners of ADJUST / REPOS (TP-007)

@@ -128,6 +128,40 @@ class ToolpathScreenTest : public QObject {
         QCOMPARE(label(), QString("Fit\nall"));
     }
 
+    /// TP-015: the tool is drawn where the axes are, and moves with them
+    /// while the program runs (Start, Shift+F5).
+    void theToolFollowsTheActualPosition() {
+        PanelFixture panel;
+        panel.session->selectProgram(0, 1);
+        panel.window->showScreen("toolpath");
+        ToolpathScreen* screen = toolpath(panel);
+        const auto* model = screen->model();
+        const auto sceneOfMachine = [&] {
+            const auto& machine = panel.session->station(0).machine();
+            return std::array<double, 3>{machine.position(0), machine.position(1),
+                                         machine.position(2)};
+        };
+        mtc::screens::ToolpathMarks before = model->marks();
+        QVERIFY(before.hasTool);
+        QVERIFY(!before.turning);
+        for (int i = 0; i < 3; ++i)
+            QCOMPARE(before.tool[i], sceneOfMachine()[i]);
+        panel.press(Qt::Key_F5);  // every move: the tool's start is far from the part
+        QVERIFY(count(screen->canvas()->picture(), model->palette().tool) > 20);
+        panel.session->setSpeed(mtc::hmi::CellSession::kMaxSpeed);
+        panel.press(Qt::Key_F5, Qt::ShiftModifier);
+        QTRY_VERIFY_WITH_TIMEOUT(!panel.session->control(0).programActive(), 20000);
+        QCOMPARE(QString::fromStdString(panel.session->control(0).alarm()), QString());
+        const mtc::screens::ToolpathMarks after = model->marks();
+        for (int i = 0; i < 3; ++i)
+            QCOMPARE(after.tool[i], sceneOfMachine()[i]);
+        QVERIFY(after.tool != before.tool);
+        QVERIFY(after.toolRadius > 0.0);  // the program's tool is in the tool list
+        // Parked at the tool-change position, outside the part: every move framed.
+        if (screen->softKeys().value(4).label == QString("Fit\nall")) panel.press(Qt::Key_F5);
+        QVERIFY(count(screen->canvas()->picture(), model->palette().tool) > 20);
+    }
+
     void restartCursorAndToolpathFollowEachOther() {
         PanelFixture panel;
         panel.session->selectProgram(0, 1);
