@@ -189,6 +189,7 @@ class Interpreter {
     /// The adaptive feed control of this process, nullptr when none was given.
     AdaptiveFeedControl* adaptiveFeed() { return afc_.get(); }
     MachineDataProvider& machineData() { return *machineData_; }
+    const MachineDataProvider& machineData() const { return *machineData_; }
     const ProcessAxes& axes() const { return axes_; }
     /// The tool list the interpreter checks T against (and the tool
     /// compensation reads radius and lengths from).

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "cnc_core/removal/SweptDisc.h"
 
@@ -24,23 +25,64 @@ HeightField::HeightField(const Box& stock, int columns, int rows)
       heights_(static_cast<std::size_t>(columns_) * static_cast<std::size_t>(rows_),
                static_cast<float>(stock.max[2])) {}
 
-bool HeightField::cut(const std::array<double, 3>& a, const std::array<double, 3>& b,
-                      double radius) {
+std::array<int, 2> HeightField::rowsReached(const std::array<double, 3>& a,
+                                            const std::array<double, 3>& b, double radius,
+                                            double top) const {
     for (std::size_t k = 0; k < 3; ++k)
-        if (!std::isfinite(a[k]) || !std::isfinite(b[k])) return false;
-    if (!(radius >= 0.0) || !(std::min(a[2], b[2]) < stock_.max[2])) return false;  // above the top
+        if (!std::isfinite(a[k]) || !std::isfinite(b[k])) return {1, 0};
+    if (!(radius >= 0.0) || !(std::min(a[2], b[2]) < top)) return {1, 0};  // above the top
     // Beside the block: no row needs scanning (the chords of a huge arc).
     if (std::max(a[0], b[0]) + radius < stock_.min[0] ||
         std::min(a[0], b[0]) - radius > stock_.max[0])
-        return false;
-    const auto [first, last] = cellsWithin(
-        std::min(a[1], b[1]) - radius, std::max(a[1], b[1]) + radius, stock_.min[1], depth_, rows_);
+        return {1, 0};
+    return cellsWithin(std::min(a[1], b[1]) - radius, std::max(a[1], b[1]) + radius, stock_.min[1],
+                       depth_, rows_);
+}
+
+bool HeightField::cut(const std::array<double, 3>& a, const std::array<double, 3>& b,
+                      double radius) {
+    const auto [first, last] = rowsReached(a, b, radius, stock_.max[2]);
+    if (first > last) return false;
     const SweptDisc disc{a[0], a[1], b[0], b[1], radius};
     const SweptRowScanner scanner(disc);
     bool removed = false;
     for (int j = first; j <= last; ++j)
         removed = cutRow(j, disc, scanner.row(rowY(j)), a[2], b[2]) || removed;
     return removed;
+}
+
+double HeightField::faceOver(int i, int j, const SweptDisc& disc, double za, double zb) const {
+    const Span t = coveringPositions(disc, columnX(i), rowY(j));
+    if (t.empty()) return std::numeric_limits<double>::infinity();
+    const double z = std::min(za + (zb - za) * t.lo, za + (zb - za) * t.hi);
+    return std::max(z, std::min(stock_.min[2], stock_.max[2]));
+}
+
+bool HeightField::touches(const std::array<double, 3>& a, const std::array<double, 3>& b,
+                          double radius, double margin) const {
+    const auto [first, last] = rowsReached(a, b, radius, stock_.max[2] + std::max(margin, 0.0));
+    const SweptDisc disc{a[0], a[1], b[0], b[1], radius};
+    const SweptRowScanner scanner(disc);
+    const double bottom = std::min(stock_.min[2], stock_.max[2]);
+    for (int j = first; j <= last; ++j) {
+        const Span row = scanner.row(rowY(j));
+        if (row.empty()) continue;
+        const auto [from, to] = cellsWithin(row.lo, row.hi, stock_.min[0], width_, columns_);
+        for (int i = from; i <= to; ++i) {
+            const double h = height(i, j);
+            if (!(h > bottom)) continue;  // cut through: nothing left to touch
+            // As cutRow(): a level sweep has one face for every covered cell.
+            const double face =
+                a[2] == b[2] ? std::max(a[2], bottom) : faceOver(i, j, disc, a[2], b[2]);
+            if (!(face < h + margin)) continue;
+            // Met already where the sweep starts: contact only deeper than there.
+            const double dx = columnX(i) - a[0], dy = rowY(j) - a[1];
+            const double startFace = std::max(a[2], bottom);
+            const bool atStart = dx * dx + dy * dy <= radius * radius && startFace < h + margin;
+            if (!atStart || face < startFace - std::fabs(margin)) return true;
+        }
+    }
+    return false;
 }
 
 bool HeightField::cutRow(int j, const SweptDisc& disc, const Span& row, double za, double zb) {
@@ -59,13 +101,9 @@ bool HeightField::cutRow(int j, const SweptDisc& disc, const Span& row, double z
         return lowered > 0;
     }
     // A ramp: each cell drops to the lowest face position that covers its centre.
-    const double y = rowY(j);
     bool removed = false;
     for (int i = first; i <= last; ++i) {
-        const Span t = coveringPositions(disc, columnX(i), y);
-        if (t.empty()) continue;
-        const double z = std::min(za + (zb - za) * t.lo, za + (zb - za) * t.hi);
-        const float face = static_cast<float>(std::max(z, bottom));
+        const float face = static_cast<float>(faceOver(i, j, disc, za, zb));
         if (face < heights[i]) {
             heights[i] = face;
             removed = true;

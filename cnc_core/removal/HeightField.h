@@ -31,6 +31,17 @@ class HeightField {
     /// non-finite coordinate cut nothing. True when material was removed.
     bool cut(const std::array<double, 3>& a, const std::array<double, 3>& b, double radius);
 
+    /// Would the same sweep reach material, without changing anything? True
+    /// when at some cell that still has material (height above the bottom)
+    /// the face would come below height + `margin`: a negative margin asks
+    /// whether more than -margin would be cut, a positive one whether the
+    /// face comes within `margin` of the surface (a touch). A cell the tool
+    /// meets so where the sweep starts counts only where the sweep goes
+    /// more than |margin| deeper (moving away from the material is no new
+    /// contact). Work as cut().
+    bool touches(const std::array<double, 3>& a, const std::array<double, 3>& b, double radius,
+                 double margin) const;
+
     /// Material taken away so far (mm^3): sum of (top - height) x cell area.
     double removedVolume() const;
 
@@ -52,6 +63,13 @@ class HeightField {
     /// Lowers the cells of row `j` the sweep covers (`row`: its X range; the
     /// face moves from height `za` to `zb`); true when one was lowered.
     bool cutRow(int j, const SweptDisc& disc, const Span& row, double za, double zb);
+    /// The rows a sweep of `radius` from `a` to `b` can reach ({1, 0}: none,
+    /// also for a non-finite coordinate or a sweep above `top`).
+    std::array<int, 2> rowsReached(const std::array<double, 3>& a, const std::array<double, 3>& b,
+                                   double radius, double top) const;
+    /// The lowest face over cell (i, j) while the disc covers its centre
+    /// (the bottom at least; +infinity when it never does).
+    double faceOver(int i, int j, const SweptDisc& disc, double za, double zb) const;
 
     Box stock_;
     int columns_;

@@ -109,6 +109,13 @@ bool PartModel::cut(const std::array<double, 3>& a, const std::array<double, 3>&
     return profile_->cut(a[axial], a[radial], b[axial], b[radial], tool);
 }
 
+bool PartModel::touches(const std::array<double, 3>& a, const std::array<double, 3>& b,
+                        const Cutter& tool, double margin) const {
+    if (field_) return field_->touches(a, b, tool.radius, margin);
+    const auto axial = static_cast<std::size_t>(axial_), radial = static_cast<std::size_t>(radial_);
+    return profile_->touches(a[axial], a[radial], b[axial], b[radial], tool, margin);
+}
+
 double PartModel::removedVolume() const {
     return field_ ? field_->removedVolume() : profile_->removedVolume();
 }

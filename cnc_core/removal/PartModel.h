@@ -50,6 +50,12 @@ class PartModel {
     /// material was removed.
     bool cut(const std::array<double, 3>& a, const std::array<double, 3>& b, const Cutter& tool);
 
+    /// The same sweep as cut() asked without cutting: does the tool come
+    /// below the material's surface + `margin` anywhere (HeightField::touches,
+    /// TurnedProfile::touches)? The part does not change.
+    bool touches(const std::array<double, 3>& a, const std::array<double, 3>& b, const Cutter& tool,
+                 double margin) const;
+
     /// Material taken away so far (mm^3).
     double removedVolume() const;
     double resolution() const { return resolution_; }

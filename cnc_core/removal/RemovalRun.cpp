@@ -1,13 +1,50 @@
 #include "cnc_core/removal/RemovalRun.h"
 
+#include <algorithm>
+
 #include "cnc_core/compensation/ToolData.h"
 #include "cnc_core/toolpath/ToolpathRun.h"
 
 namespace mtc::core::removal {
 
+namespace {
+
+/// Runs `interpreter` to the `stop.runs`-th counted arrival at the stop's
+/// target (true) or to the program end, an error or the budget (false).
+bool runToStop(Interpreter& interpreter, const RemovalStop& stop, std::uint64_t blockBudget,
+               DiagnosticList& diagnostics, std::uint64_t& blocks) {
+    const StopTarget target{stop.target.program, stop.target.block, 1};
+    interpreter.setStopTarget(target);
+    std::uint32_t arrivals = 0;
+    while (blocks < blockBudget) {
+        RunResult run = interpreter.run(std::min<std::uint64_t>(blockBudget - blocks, 65536));
+        blocks += std::max<std::uint64_t>(run.blocksInterpreted, 1);  // progress, whatever it says
+        for (const Diagnostic& d : run.diagnostics.items())
+            if (d.code != "BLOCK_BUDGET" && diagnostics.items().size() < 100) diagnostics.add(d);
+        if (run.status == RunStatus::TargetReached) {
+            if ((!stop.counts || stop.counts(interpreter.state())) && ++arrivals >= stop.runs)
+                return true;
+            interpreter.setStopTarget(std::nullopt);  // this arrival does not count: run the block
+            run = interpreter.step();
+            blocks += run.blocksInterpreted;
+            interpreter.setStopTarget(target);
+        }
+        if (run.status != RunStatus::Running && run.status != RunStatus::BudgetExceeded &&
+            run.status != RunStatus::Stopped && run.status != RunStatus::TargetReached)
+            return false;
+    }
+    diagnostics.error("BLOCK_BUDGET", {},
+                      "the removal run was stopped after " + std::to_string(blockBudget) +
+                          " interpreted blocks (block budget)");
+    return false;
+}
+
+}  // namespace
+
 RemovalRunResult simulateRemoval(const ProcessConfig& config, const ProgramStore& programs,
                                  int number, const RemovalSettings& settings,
-                                 std::shared_ptr<const ToolList> tools, std::uint64_t blockBudget) {
+                                 std::shared_ptr<const ToolList> tools, std::uint64_t blockBudget,
+                                 const RemovalStop* stop) {
     RemovalRunResult result;
     std::string problem;
     result.part =
@@ -20,14 +57,26 @@ RemovalRunResult simulateRemoval(const ProcessConfig& config, const ProgramStore
     RemovalSink sink(ProcessAxes::build(config, axisProblems), *result.part);
     InterpreterServices services;
     services.tools = std::move(tools);
+    if (stop != nullptr) services.zeroOffsets = stop->zeroOffsets;
     Interpreter interpreter(config, programs, sink, services);
     interpreter.options().continueAfterError = true;
     // The tool in working position when the move reaches the sink (TC-009).
     sink.setToolSource(
         [&interpreter] { return activeToolData(interpreter.tools(), interpreter.state().modal); });
-    if (interpreter.select(number, 0, &result.diagnostics))
-        result.complete =
-            runToProgramEnd(interpreter, blockBudget, result.diagnostics, result.blocks);
+    if (interpreter.select(number, 0, &result.diagnostics)) {
+        if (stop == nullptr) {
+            result.complete =
+                runToProgramEnd(interpreter, blockBudget, result.diagnostics, result.blocks);
+        } else {
+            if (stop->prepare) stop->prepare(interpreter);
+            result.complete =
+                runToStop(interpreter, *stop, blockBudget, result.diagnostics, result.blocks);
+            if (!result.complete)
+                result.diagnostics.warning(
+                    "REMOVAL_STOP_NOT_REACHED", {stop->target.program, "", 0, 0},
+                    "the removal run did not reach the target block: the part there is unknown");
+        }
+    }
     result.diagnostics.append(sink.notes());
     result.counts = sink.counts();
     // Reported as the program's blocks are (a loose file keeps program 0).

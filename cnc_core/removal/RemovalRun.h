@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 
@@ -10,13 +11,28 @@
 
 namespace mtc::core::removal {
 
+/// Where a removal run ends instead of the program end: before the target
+/// block is interpreted (the part as the target finds it, an NC program
+/// restart), at its `runs`-th arrival that `counts`.
+struct RemovalStop {
+    StopTarget target;  ///< program and block (its pass is not used)
+    std::uint32_t runs = 1;
+    /// Which arrivals count (the restart's call chain); empty: every one.
+    std::function<bool(const InterpreterState&)> counts;
+    /// Called once after the program is selected, before its first block
+    /// (the variables and events a restart selection changes).
+    std::function<void(Interpreter&)> prepare;
+    /// The zero offsets the program is run with (nullptr: the configuration's).
+    std::shared_ptr<const ZeroOffsetTable> zeroOffsets;
+};
+
 /// What a material-removal simulation produced.
 struct RemovalRunResult {
     std::optional<PartModel> part;  ///< the finished part (none: see diagnostics)
     DiagnosticList diagnostics;     ///< interpreter errors, budget, rapid cuts, the stock
     RemovalCounts counts;
     std::uint64_t blocks = 0;  ///< blocks interpreted
-    bool complete = false;     ///< the program reached its end
+    bool complete = false;     ///< the program reached its end (or the stop)
 };
 
 /// Cuts the stock of `config` (its `stock`; GNE raw parts are not read) with
@@ -26,9 +42,13 @@ struct RemovalRunResult {
 /// configuration's list). A stock the model cannot be made of (none, or more
 /// cells than settings.maxCells) is an error diagnostic REMOVAL_STOCK and no
 /// part. Bounded by `blockBudget`; nothing outside the result changes.
+/// With `stop` the run ends before the stop's target block instead
+/// (`complete` says it was reached; the program end first is a warning
+/// REMOVAL_STOP_NOT_REACHED).
 RemovalRunResult simulateRemoval(const ProcessConfig& config, const ProgramStore& programs,
                                  int number, const RemovalSettings& settings,
                                  std::shared_ptr<const ToolList> tools = nullptr,
-                                 std::uint64_t blockBudget = 10'000'000);
+                                 std::uint64_t blockBudget = 10'000'000,
+                                 const RemovalStop* stop = nullptr);
 
 }  // namespace mtc::core::removal

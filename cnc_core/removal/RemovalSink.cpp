@@ -16,55 +16,80 @@ ToolpathSettings pathSettings(const PartModel& part) {
 
 }  // namespace
 
-RemovalSink::RemovalSink(const ProcessAxes& axes, PartModel& part)
+ToolSweep::ToolSweep(const ProcessAxes& axes, const PartModel& part)
     : part_(part), path_(axes, pathSettings(part)) {}
 
-void RemovalSink::motion(const Motion& m) {
-    ++counts_.moves;
-    const ToolData tool = toolSource_ ? toolSource_() : ToolData{};
-    path_.motion(m);  // also keeps the tool offsets of consecutive moves
-    if (counts_.moves == 1) {
-        ++counts_.approachMoves;
-        path_.clearGeometry();
-        return;
-    }
-    if (m.transformation != 30) {
-        ++counts_.transformedMoves;
-        path_.clearGeometry();
-        return;
-    }
-    cutChords(m, tool);
+void ToolSweep::pass(const Motion& m) {
+    path_.motion(m);  // keeps the tool offsets of consecutive moves
     path_.clearGeometry();
+    chords_.clear();
 }
 
-void RemovalSink::cutChords(const Motion& m, const ToolData& tool) {
-    const ToolpathLayer& scene = path_.geometry().scene;
+ToolSweep::Kind ToolSweep::sweep(const Motion& m, const ToolData& tool) {
+    chords_.clear();
+    path_.motion(m);  // keeps the tool offsets of consecutive moves
+    if (m.transformation != 30) {
+        path_.clearGeometry();
+        return Kind::Transformed;
+    }
     // Outside G41/G42 a turning tool's programmed point is its tip; the
     // nose centre (what the profile is cut with) lies inside it.
     std::array<double, 3> shift{0, 0, 0};
-    Cutter cutter{tool.radius, 0, part_.profile() != nullptr && !tool.turning()};
+    cutter_ = Cutter{tool.radius, 0, part_.profile() != nullptr && !tool.turning()};
     if (part_.profile() != nullptr && tool.turning()) {
         const Eigen::Vector2d edge = gne::edgeVector(tool.orientation);  // (axial, radial)
         if (edge.y() > 0.0) {
-            ++counts_.insideToolMoves;
-            return;
+            path_.clearGeometry();
+            return Kind::InsideTool;
         }
-        cutter.body = edge.x() < 0.0 ? 1 : (edge.x() > 0.0 ? -1 : 0);
+        cutter_.body = edge.x() < 0.0 ? 1 : (edge.x() > 0.0 ? -1 : 0);
         if (!m.compensated) {
             shift[static_cast<std::size_t>(part_.axialAxis())] = -tool.radius * edge.x();
             shift[static_cast<std::size_t>(part_.radialAxis())] = -tool.radius * edge.y();
         }
     }
-    bool removed = false;
+    const ToolpathLayer& scene = path_.geometry().scene;
     for (std::size_t s = 0; s < scene.segmentCount(); ++s) {
-        std::array<double, 3> a = scene.vertex(scene.segmentStart[s]);
-        std::array<double, 3> b = scene.vertex(scene.segmentStart[s] + 1);
+        ToolChord chord{scene.vertex(scene.segmentStart[s]),
+                        scene.vertex(scene.segmentStart[s] + 1)};
         for (std::size_t k = 0; k < 3; ++k) {
-            a[k] += shift[k];
-            b[k] += shift[k];
+            chord.a[k] += shift[k];
+            chord.b[k] += shift[k];
         }
-        removed = part_.cut(a, b, cutter) || removed;
+        chords_.push_back(chord);
     }
+    path_.clearGeometry();
+    return Kind::Swept;
+}
+
+RemovalSink::RemovalSink(const ProcessAxes& axes, PartModel& part)
+    : part_(part), sweep_(axes, part) {}
+
+void RemovalSink::motion(const Motion& m) {
+    ++counts_.moves;
+    const ToolData tool = toolSource_ ? toolSource_() : ToolData{};
+    if (counts_.moves == 1) {
+        ++counts_.approachMoves;
+        sweep_.pass(m);
+        return;
+    }
+    switch (sweep_.sweep(m, tool)) {
+        case ToolSweep::Kind::Transformed:
+            ++counts_.transformedMoves;
+            return;
+        case ToolSweep::Kind::InsideTool:
+            ++counts_.insideToolMoves;
+            return;
+        case ToolSweep::Kind::Swept:
+            cutChords(m);
+            return;
+    }
+}
+
+void RemovalSink::cutChords(const Motion& m) {
+    bool removed = false;
+    for (const ToolChord& chord : sweep_.chords())
+        removed = part_.cut(chord.a, chord.b, sweep_.cutter()) || removed;
     if (!removed) return;
     ++counts_.cuttingMoves;
     if (m.type != MotionType::Rapid) return;

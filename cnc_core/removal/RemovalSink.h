@@ -2,6 +2,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <vector>
 
 #include "cnc_core/compensation/ToolData.h"
 #include "cnc_core/interp/MachineSink.h"
@@ -18,6 +19,43 @@ struct RemovalCounts {
     std::uint64_t rapidCuts = 0;         ///< rapid (G0) moves that removed material
     std::uint64_t transformedMoves = 0;  ///< G31 / G32 moves: not simulated
     std::uint64_t insideToolMoves = 0;   ///< lathe moves of inside (boring) tools: not simulated
+};
+
+/// One straight piece of the tool path as the part model sweeps it (scene
+/// points of the nose centre / face centre).
+struct ToolChord {
+    std::array<double, 3> a{0, 0, 0};
+    std::array<double, 3> b{0, 0, 0};
+};
+
+/// Turns a move into what the part model sweeps: the tool-centre chords of
+/// the path the toolpath view draws and the cutter of the tool (the rules
+/// below, RemovalSink). Shared by the cut and by the collision check of a
+/// restart's way back (ReentryCollisions), so both sweep the same.
+class ToolSweep {
+  public:
+    /// What became of a move.
+    enum class Kind {
+        Swept,        ///< chords() and cutter() hold it
+        Transformed,  ///< G31 / G32: not simulated
+        InsideTool,   ///< lathe, inside tool: not simulated
+    };
+    ToolSweep(const ProcessAxes& axes, const PartModel& part);
+
+    /// The chords of `motion` with `tool` in working position.
+    Kind sweep(const Motion& motion, const ToolData& tool);
+    /// Takes a move into the path's memory (offsets) without sweeping it.
+    void pass(const Motion& motion);
+    const std::vector<ToolChord>& chords() const { return chords_; }
+    const Cutter& cutter() const { return cutter_; }
+    /// Scene axis (0 X, 1 Y, 2 Z) machine axis `axis` draws on, or -1.
+    int sceneAxis(int axis) const { return path_.sceneAxis(axis); }
+
+  private:
+    const PartModel& part_;
+    ToolpathBuilder path_;
+    std::vector<ToolChord> chords_;
+    Cutter cutter_;
 };
 
 /// The material-removal sink: takes the interpreter's moves, turns each into
@@ -53,11 +91,11 @@ class RemovalSink : public MachineSink {
     const DiagnosticList& notes() const { return notes_; }
 
   private:
-    /// The tool-centre chords of the move as scene points, in order.
-    void cutChords(const Motion& motion, const ToolData& tool);
+    /// Cuts the move's chords; counts what it removed.
+    void cutChords(const Motion& motion);
 
     PartModel& part_;
-    ToolpathBuilder path_;
+    ToolSweep sweep_;
     std::function<ToolData()> toolSource_;
     RemovalCounts counts_;
     DiagnosticList notes_;

@@ -60,6 +60,48 @@ double flatReach(double ua, double ra, double ub, double rb, double half, double
     return r1 <= 0.0 && r2 >= 0.0 ? 0.0 : std::min(std::fabs(r1), std::fabs(r2));
 }
 
+/// How far towards the axis a tool sweeping from (axial a, radial a) to
+/// (axial b, radial b) reaches, slice by slice.
+class ToolReach {
+  public:
+    ToolReach(double ua, double ra, double ub, double rb, const Cutter& tool)
+        : ua_(ua),
+          ra_(ra),
+          ub_(ub),
+          rb_(rb),
+          nose_(tool.radius),
+          body_(tool.radial ? 0 : tool.body),
+          radial_(tool.radial),
+          scanner_(SweptDisc{ra, ua, rb, ub, tool.radius}) {
+        valid_ = std::isfinite(ua) && std::isfinite(ra) && std::isfinite(ub) && std::isfinite(rb) &&
+                 nose_ >= 0.0;
+    }
+    bool valid() const { return valid_; }
+    /// The axial range of the slices it can reach: the nose (or flat tip),
+    /// and behind a nose on the insert's side all up to the end of the bar.
+    double low() const {
+        return body_ < 0 ? -std::numeric_limits<double>::infinity() : std::min(ua_, ub_) - nose_;
+    }
+    double high() const {
+        return body_ > 0 ? std::numeric_limits<double>::infinity() : std::max(ua_, ub_) + nose_;
+    }
+    /// The inner radius it reaches in the slice at `axial` (at least 0;
+    /// kUnreached when it misses the slice).
+    double at(double axial) const {
+        const double reach = radial_ ? flatReach(ua_, ra_, ub_, rb_, nose_, axial)
+                                     : std::min(noseReach(scanner_, axial),
+                                                bodyReach(ua_, ra_, ub_, rb_, nose_, body_, axial));
+        return std::max(0.0, reach);
+    }
+
+  private:
+    double ua_, ra_, ub_, rb_, nose_;
+    int body_;
+    bool radial_;
+    bool valid_ = false;
+    SweptRowScanner scanner_;
+};
+
 }  // namespace
 
 TurnedProfile::TurnedProfile(double radius, double from, double to, int slices)
@@ -69,38 +111,47 @@ TurnedProfile::TurnedProfile(double radius, double from, double to, int slices)
       length_((to - from) / std::max(slices, 1)),
       radii_(static_cast<std::size_t>(std::max(slices, 1)), radius) {}
 
+template <typename Visit>
+bool TurnedProfile::forEachReach(double axialA, double radialA, double axialB, double radialB,
+                                 const Cutter& tool, Visit visit) const {
+    const ToolReach reach(axialA, radialA, axialB, radialB, tool);
+    if (!reach.valid()) return false;
+    const auto [first, last] = cellsWithin(reach.low(), reach.high(), from_, length_, slices());
+    for (int k = first; k <= last; ++k) {
+        const double inner = reach.at(sliceCentre(k));
+        if (inner != kUnreached && visit(k, inner)) return true;
+    }
+    return false;
+}
+
 bool TurnedProfile::cut(double axialA, double radialA, double axialB, double radialB,
                         const Cutter& tool) {
-    const double noseRadius = tool.radius;
-    const int body = tool.radial ? 0 : tool.body;
-    for (double v : {axialA, radialA, axialB, radialB})
-        if (!std::isfinite(v)) return false;
-    if (!(noseRadius >= 0.0)) return false;
-    // The slices the nose (or flat tip) reaches, and behind a nose on the
-    // insert's side all the slices up to the end of the bar.
-    const double low = std::min(axialA, axialB) - noseRadius;
-    const double high = std::max(axialA, axialB) + noseRadius;
-    const double infinity = std::numeric_limits<double>::infinity();
-    const auto [first, last] = cellsWithin(body < 0 ? -infinity : low, body > 0 ? infinity : high,
-                                           from_, length_, slices());
     // Outside the bar all along (the insert stands further out): nothing to scan.
-    if (std::min(radialA, radialB) - noseRadius > radius_) return false;
-    const SweptRowScanner nose(SweptDisc{radialA, axialA, radialB, axialB, noseRadius});
+    if (std::min(radialA, radialB) - tool.radius > radius_) return false;
     bool removed = false;
-    for (int k = first; k <= last; ++k) {
-        const double at = sliceCentre(k);
-        const double reach =
-            tool.radial ? flatReach(axialA, radialA, axialB, radialB, noseRadius, at)
-                        : std::min(noseReach(nose, at), bodyReach(axialA, radialA, axialB, radialB,
-                                                                  noseRadius, body, at));
-        const double inner = std::max(0.0, reach);
+    forEachReach(axialA, radialA, axialB, radialB, tool, [&](int k, double inner) {
         double& r = radii_[static_cast<std::size_t>(k)];
         if (inner < r) {
             r = inner;
             removed = true;
         }
-    }
+        return false;
+    });
     return removed;
+}
+
+bool TurnedProfile::touches(double axialA, double radialA, double axialB, double radialB,
+                            const Cutter& tool, double margin) const {
+    if (std::min(radialA, radialB) - tool.radius > radius_ + std::max(margin, 0.0)) return false;
+    const ToolReach start(axialA, radialA, axialA, radialA, tool);
+    return forEachReach(axialA, radialA, axialB, radialB, tool, [&](int k, double inner) {
+        const double r = radii_[static_cast<std::size_t>(k)];
+        // A slice turned to the axis has nothing left; one the tool meets
+        // where it starts is contact only where the move goes deeper.
+        if (!(r > 0.0 && inner < r + margin)) return false;
+        const double atStart = start.at(sliceCentre(k));
+        return !(atStart < r + margin) || inner < atStart - std::fabs(margin);
+    });
 }
 
 double TurnedProfile::removedVolume() const {

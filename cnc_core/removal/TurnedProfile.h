@@ -38,6 +38,16 @@ class TurnedProfile {
     /// when material was removed.
     bool cut(double axialA, double radialA, double axialB, double radialB, const Cutter& tool);
 
+    /// Would the same sweep reach material, without changing anything? True
+    /// when in some slice that still has material (radius above 0) the tool
+    /// would reach below radius + `margin` (negative: more than -margin would
+    /// be turned away; positive: the tool comes within `margin` of the
+    /// surface, a touch); a slice it meets so where the sweep starts counts
+    /// only where the sweep reaches more than |margin| deeper (a move away
+    /// from the material is no new contact). Work as cut().
+    bool touches(double axialA, double radialA, double axialB, double radialB, const Cutter& tool,
+                 double margin) const;
+
     /// Material turned away so far (mm^3).
     double removedVolume() const;
 
@@ -52,6 +62,13 @@ class TurnedProfile {
     double radiusAt(int k) const { return radii_[static_cast<std::size_t>(k)]; }
 
   private:
+    /// Calls visit(slice, inner radius the tool reaches there) for every
+    /// slice the sweep reaches, in order, until visit returns true (then
+    /// true). Nothing for a non-finite coordinate or a sweep outside the bar.
+    template <typename Visit>
+    bool forEachReach(double axialA, double radialA, double axialB, double radialB,
+                      const Cutter& tool, Visit visit) const;
+
     double radius_;
     double from_;
     double to_;
