@@ -91,7 +91,8 @@ class CommandLineReader {
         CliOptions& o = out_.options;
         std::string value;
         if (name == "--json" || name == "--no-motion" || name == "--help" || name == "-h" ||
-            name == "--version" || name == "--from-primary" || name == "--adjust") {
+            name == "--version" || name == "--from-primary" || name == "--adjust" ||
+            name == "--check-collisions") {
             if (hasInline) {
                 out_.error = "option " + std::string(name) + " takes no value";
                 return;
@@ -148,6 +149,7 @@ class CommandLineReader {
         if (name == "--version") versionRequested_ = true;
         if (name == "--from-primary") o.fromPrimary = o.restartOption = true;
         if (name == "--adjust") o.adjust = true;
+        if (name == "--check-collisions") o.checkCollisions = true;
     }
 
     /// Number of runs (seed 000, 2.6): 1..65536.
@@ -176,7 +178,7 @@ class CommandLineReader {
 
     /// Cell size of simulate (mm): a plain decimal number in the model's range.
     void resolutionValue(const std::string& value) {
-        out_.options.simulateOption = true;
+        out_.options.resolutionGiven = true;
         double number = 0.0;
         const char* end = value.data() + value.size();
         const auto result = std::from_chars(value.data(), end, number);
@@ -250,9 +252,18 @@ class CommandLineReader {
         } else if (o.verifyOption && o.command != Command::VerifyRestart &&
                    o.command != Command::Help && o.command != Command::Version) {
             out_.error = "option --max-passes belongs to 'verify-restart'";
+        } else if (o.checkCollisions && o.command != Command::Restart &&
+                   o.command != Command::Help && o.command != Command::Version) {
+            out_.error = "option --check-collisions belongs to 'restart'";
         } else if (o.simulateOption && o.command != Command::Simulate &&
                    o.command != Command::Help && o.command != Command::Version) {
             out_.error = "options --stl and --resolution belong to 'simulate'";
+        } else if (o.resolutionGiven && o.command != Command::Simulate &&
+                   !(o.command == Command::Restart && o.checkCollisions) &&
+                   o.command != Command::Help && o.command != Command::Version) {
+            out_.error =
+                "options --stl and --resolution belong to 'simulate' (--resolution also to "
+                "'restart --check-collisions')";
         } else if (o.command == Command::Simulate && o.arguments.size() != 1) {
             out_.error = "'simulate' takes exactly one program";
         } else if (o.command == Command::VerifyRestart && o.arguments.size() != 1) {
@@ -304,13 +315,17 @@ Commands available:
                               time, block, position and feed every N ms of
                               simulated time (1..3600000)
   restart FILE|PROG --target PATH [--runs K] [--from-primary] [--adjust]
+          [--check-collisions [--resolution MM]]
                               NC program restart: the computing process up to
                               the target block (PATH: N<number> or L<line>
                               references, optionally P<program>:, joined by
                               '>' where a jump or call is followed); K runs
                               (1..65536); start at the last primary block;
                               --adjust goes on with ADJUST, manual mode,
-                              automatic, REPOS and the re-entry
+                              automatic, REPOS and the re-entry;
+                              --check-collisions checks the ADJUST/REPOS
+                              moves against the part cut up to the target
+                              (at --resolution MM, default 0.2)
   verify-restart FILE|PROG [--adjust] [--max-passes K]
                               restart verifier: every arrival at every block
                               of the program tree (the first K passes of each,

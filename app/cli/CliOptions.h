@@ -47,19 +47,21 @@ struct CliOptions {
     std::string outputPath;  ///< compile: -o OUT.NCO
     std::vector<std::string> userCompilers;  ///< compile: --user-compiler SLOT=COMMAND
     // restart (CLI-CONTRACT.md):
-    std::string target;          ///< --target PATH
-    std::uint32_t runs = 1;      ///< --runs K, 1..65536
-    bool fromPrimary = false;    ///< --from-primary
-    bool adjust = false;         ///< --adjust (restart and verify-restart)
-    bool restartOption = false;  ///< --target, --runs or --from-primary was given
+    std::string target;            ///< --target PATH
+    std::uint32_t runs = 1;        ///< --runs K, 1..65536
+    bool fromPrimary = false;      ///< --from-primary
+    bool adjust = false;           ///< --adjust (restart and verify-restart)
+    bool checkCollisions = false;  ///< restart --check-collisions (D-021)
+    bool restartOption = false;    ///< --target, --runs or --from-primary was given
     // verify-restart (CLI-CONTRACT.md "Extensions"):
     std::uint32_t maxPasses = 16;    ///< --max-passes K, 1..65536
     bool verifyOption = false;       ///< --max-passes was given
     MachineDataOptions machineData;  ///< md: --as, --password, --data, --sub
     // simulate (CLI-CONTRACT.md "Extensions", D-020):
-    std::string stlPath;          ///< --stl OUT.stl ("" = no file)
-    double resolution = 0.2;      ///< --resolution MM
-    bool simulateOption = false;  ///< --stl or --resolution was given
+    std::string stlPath;           ///< --stl OUT.stl ("" = no file)
+    double resolution = 0.2;       ///< --resolution MM (simulate, restart --check-collisions)
+    bool simulateOption = false;   ///< --stl was given
+    bool resolutionGiven = false;  ///< --resolution was given
 };
 
 /// Result of reading argv: the options, or the usage error that stops the run

@@ -97,6 +97,7 @@ class RestartDriver {
         report.recorder = &recorder_;
         report.signals = &station_.control().signalTable();
         report.adjust = options_.adjust;
+        report.checkCollisions = options_.checkCollisions;
         report.diagnostics = prepared_.diagnostics;
         dataKeeper_.load(cell_.machineData(), report.diagnostics);
         if (prepared_.request.program->diagnostics.hasErrors()) return true;
@@ -118,6 +119,7 @@ class RestartDriver {
         computingProcess();
         report.computed = takeSnapshot(station_.restart().computing().interpreter(),
                                        cell_.machineData(), prepared_.request.process);
+        if (options_.checkCollisions) checkCollisions(report);
         if (options_.adjust && station_.restart().phase() == core::RestartPhase::TargetReached) {
             adjustAndRepos();
             report.final = takeSnapshot(station_.interpreter(), cell_.machineData(),
@@ -136,6 +138,26 @@ class RestartDriver {
 
   private:
     const core::RestartSequence& sequence() const { return station_.restart(); }
+
+    /// At the target, before Start: the moves ADJUST and REPOS will make
+    /// against the part cut up to the target (D-021), as the panel's review.
+    void checkCollisions(RestartReport& report) {
+        if (sequence().phase() != core::RestartPhase::TargetReached) return;
+        core::removal::RemovalSettings settings;
+        settings.resolution = options_.resolution;
+        report.collisions = core::removal::checkRestartReentry(sequence(), station_.interpreter(),
+                                                               cell_.store(), settings);
+        if (!report.collisions) return;
+        // What the removal run says about the part (no stock, target not
+        // reached, rapid cuts); the program's own problems the computing
+        // process reported already.
+        for (const core::Diagnostic& d : report.collisions->diagnostics.items())
+            if (d.code.rfind("REMOVAL_", 0) == 0) report.diagnostics.add(d);
+        if (!report.collisions->checked)
+            report.diagnostics.warning("REENTRY_NOT_CHECKED", {},
+                                       "the ADJUST/REPOS moves were not checked against the part: "
+                                       "no collision list (see the diagnostics before)");
+    }
 
     bool continueAfterStop() {
         const std::vector<core::StackLevel> levels =

@@ -1,5 +1,7 @@
 #include "cli/RestartReport.h"
 
+#include "cli/CollisionReport.h"
+
 #include <cstdio>
 #include <string>
 
@@ -139,6 +141,8 @@ void writeRestartJson(JsonWriter& json, const RestartReport& r) {
         json.null();
     writeAux(json, *r.recorder);
     writeSignals(json, *r.signals);
+    if (r.checkCollisions)
+        writeCollisionsJson(json, r.collisions, reportedAxisNames(*r.interpreter));
     if (r.adjust) {
         const std::vector<std::string> names = reportedAxisNames(*r.interpreter);
         writeMotions(json, "adjust_motion", r.recorder->adjustMotion(), names);
@@ -185,6 +189,7 @@ void printRestartText(const RestartReport& r) {
     int step = 0;
     for (const core::SignalChange& change : r.signals->log())
         std::printf("signal %d %s=%d\n", ++step, change.name.c_str(), change.value);
+    if (r.checkCollisions) printCollisionsText(r.collisions, names);
     if (r.adjust)
         std::printf("ADJUST/REPOS: %zu + %zu motions, phase %s\n",
                     r.recorder->adjustMotion().size(), r.recorder->reposMotion().size(),

@@ -8,6 +8,7 @@
 #include "cli/StateOutput.h"
 #include "cnc_core/interp/Interpreter.h"
 #include "cnc_core/machine/SignalTable.h"
+#include "cnc_core/removal/ReentryCollisions.h"
 #include "cnc_core/restart/RestartSequence.h"
 
 namespace mtc::cli {
@@ -29,8 +30,12 @@ struct RestartReport {
     const core::ProcessConfig* process = nullptr;
     const core::Interpreter* interpreter = nullptr;  ///< for axes and axis names
     const core::RestartSequence* sequence = nullptr;
-    bool accepted = false;  ///< the selection was accepted (target and start known)
-    bool adjust = false;    ///< --adjust
+    bool accepted = false;         ///< the selection was accepted (target and start known)
+    bool adjust = false;           ///< --adjust
+    bool checkCollisions = false;  ///< --check-collisions
+    /// The way back checked against the part at the target (with
+    /// --check-collisions; none when the target was not reached).
+    std::optional<core::removal::ReentryCheck> collisions;
     core::DiagnosticList diagnostics;
     std::optional<StateSnapshot> computed;  ///< after the computing process (or as far as it got)
     std::optional<StateSnapshot> final;     ///< after REPOS (with --adjust)
