@@ -342,6 +342,41 @@
     </message>
 </context>
 <context>
+    <name>RestartCollisions</name>
+    <message>
+        <source>the part at the target could not be made</source>
+        <translation>das Werkstück am Zielsatz konnte nicht gebildet werden</translation>
+    </message>
+    <message>
+        <source>Way back not checked against the part: %1</source>
+        <translation>Rückweg nicht gegen das Werkstück geprüft: %1</translation>
+    </message>
+    <message>
+        <source>Way back clear: ADJUST/REPOS moves checked against the part: %1</source>
+        <translation>Rückweg frei: gegen das Werkstück geprüfte ADJUST/REPOS-Bewegungen: %1</translation>
+    </message>
+    <message>
+        <source>(line %1)</source>
+        <translation>(Zeile %1)</translation>
+    </message>
+    <message>
+        <source>%1 (machine)</source>
+        <translation>%1 (Maschine)</translation>
+    </message>
+    <message>
+        <source>ADJUST/REPOS moves that collide with the part: %1 of %2; the first: %3, %4 at %5. Check the way back before Start.</source>
+        <translation>ADJUST/REPOS-Bewegungen mit Kollision am Werkstück: %1 von %2; die erste: %3, %4 bei %5. Rückweg vor Start prüfen.</translation>
+    </message>
+    <message>
+        <source>rapid move touches the part</source>
+        <translation>Eilgangbewegung berührt das Werkstück</translation>
+    </message>
+    <message>
+        <source>feed move cuts the part</source>
+        <translation>Vorschubbewegung schneidet das Werkstück</translation>
+    </message>
+</context>
+<context>
     <name>ScreenHelp</name>
     <message>
         <source>Leads to every screen of the station.</source>
@@ -2404,6 +2439,10 @@ Ergebnis</translation>
     <message>
         <source>Machine before</source>
         <translation>Maschine vorher</translation>
+    </message>
+    <message>
+        <source>Way back against the part (ADJUST / REPOS)</source>
+        <translation>Rückweg gegen das Werkstück (ADJUST / REPOS)</translation>
     </message>
 </context>
 <context>

@@ -44,7 +44,8 @@ RestartController::RestartController(mtc::hmi::CellSession* session, int slot, Q
       pointer_(session->store(), session->processConfig(slot).index, stationSources(session, slot)),
       listing_(new ProgramListingModel(this)),
       run_(new RestartRun(session, slot, this)),
-      verification_(new RestartVerification(session, slot, this)) {
+      verification_(new RestartVerification(session, slot, this)),
+      collisions_(session, slot) {
     connect(run_, &RestartRun::phaseChanged, this, &RestartController::phaseChanged);
     connect(run_, &RestartRun::progressed, this, &RestartController::changed);
     connect(verification_, &RestartVerification::progressed, this, [this] {
@@ -76,6 +77,7 @@ void RestartController::verifyProgram() {
 void RestartController::verifyAcceptedTarget() {
     if (!accepted_.ok) return;
     verification_->verifyTarget(accepted_.selection, run_->before());
+    collisions_.check();
     emit changed();
 }
 
@@ -355,8 +357,10 @@ void RestartController::phaseChanged(mtc::core::RestartPhase phase) {
     constexpr std::uint64_t kAutomaticUpTo = 500'000;
     if (phase == RestartPhase::TargetReached && run_->computedBlocks() <= kAutomaticUpTo)
         verifyAcceptedTarget();
-    else if (phase == RestartPhase::Active || phase == RestartPhase::Computing)
+    else if (phase == RestartPhase::Active || phase == RestartPhase::Computing) {
         verification_->clearTarget();
+        collisions_.clear();
+    }
     // After each computing process the number of runs is 1 again (seed 000, 2.6).
     if (phase != RestartPhase::Active && phase != RestartPhase::Computing)
         pointer_.computingProcessDone();

@@ -7,6 +7,7 @@
 
 #include "cnc_core/restart/RestartSequence.h"
 #include "cnc_core/restart/SearchPointer.h"
+#include "screens/restart/RestartCollisions.h"
 
 namespace mtc::hmi {
 class CellSession;
@@ -51,12 +52,15 @@ class RestartController : public QObject {
     RestartRun* run() const { return run_; }
     /// The restart verifier of the station (restart.md R-028).
     RestartVerification* verification() const { return verification_; }
+    /// The way back checked against the part at the target (D-021).
+    const RestartCollisions& collisions() const { return collisions_; }
     /// Soft key of the restart screen: verifies every arrival of the displayed
     /// main program as a target (in slices; the message line shows the
     /// coverage line when it is done). Refused while a restart is active.
     void verifyProgram();
     /// The result review: the accepted target as the CLI's verify-restart
-    /// checks it (a normal run to it, ADJUST and REPOS on private copies).
+    /// checks it (a normal run to it, ADJUST and REPOS on private copies),
+    /// and the way back against the part at the target.
     void verifyAcceptedTarget();
     /// "P1 N0020 (line 37)" of the accepted target; "" before the first Enter.
     QString acceptedTarget() const;
@@ -150,6 +154,7 @@ class RestartController : public QObject {
     mtc::core::AcceptResult accepted_;
     RestartRun* run_;
     RestartVerification* verification_;
+    RestartCollisions collisions_;
 };
 
 }  // namespace mtc::screens

@@ -5,6 +5,7 @@
 #include <QFont>
 
 #include "cnc_core/interp/ModalGroups.h"
+#include "screens/restart/RestartCollisions.h"
 #include "screens/restart/RestartRun.h"
 #include "screens/restart/RestartVerification.h"
 
@@ -60,8 +61,12 @@ QString buffer(const std::array<int, 40>& elements, int count) {
 }  // namespace
 
 RestartResultModel::RestartResultModel(const RestartRun* run,
-                                       const RestartVerification* verification, QObject* parent)
-    : QAbstractTableModel(parent), run_(run), verification_(verification) {}
+                                       const RestartVerification* verification,
+                                       const RestartCollisions* collisions, QObject* parent)
+    : QAbstractTableModel(parent),
+      run_(run),
+      verification_(verification),
+      collisions_(collisions) {}
 
 namespace {
 
@@ -134,8 +139,23 @@ void addPage60(QVector<RestartResultModel::Row>& rows, const mtc::core::Interpre
 
 }  // namespace
 
+void RestartResultModel::addCollisions(QVector<Row>& rows) const {
+    const QString summary = collisions_->summary();
+    if (summary.isEmpty()) return;
+    addSection(rows, RestartResultModel::tr("Way back against the part (ADJUST / REPOS)"));
+    const auto& result = collisions_->result();
+    if (!collisions_->colliding()) {
+        addRow(rows, summary, {}, {});
+        return;
+    }
+    for (std::size_t i = 0; i < result->collisions.size(); ++i)
+        rows.push_back({collisions_->where(i) + ": " + collisions_->what(i),
+                        collisions_->position(i), QString("—"), false, true});
+}
+
 void RestartResultModel::buildRows(QVector<Row>& rows) const {
     const mtc::core::ComputingProcess& computing = run_->sequence().computing();
+    addCollisions(rows);
     addGFunctions(rows, computing.state(), run_->before());
     addAuxiliary(rows, computing.state(), run_->before());
     addPage60(rows, computing.state(), run_->before());
@@ -210,7 +230,8 @@ void RestartResultModel::reload() {
     if (run_->started()) buildRows(all_);
     shown_.clear();
     for (const Row& row : all_)
-        if (!differencesOnly_ || row.section || row.restored != row.before) shown_.push_back(row);
+        if (!differencesOnly_ || row.section || row.collision || row.restored != row.before)
+            shown_.push_back(row);
     endResetModel();
 }
 
@@ -222,7 +243,7 @@ void RestartResultModel::setDifferencesOnly(bool only) {
 int RestartResultModel::differenceCount() const {
     int count = 0;
     for (const Row& row : all_)
-        if (!row.section && row.restored != row.before) ++count;
+        if (!row.section && !row.collision && row.restored != row.before) ++count;
     return count;
 }
 
@@ -237,17 +258,24 @@ int RestartResultModel::columnCount(const QModelIndex& parent) const {
 QVariant RestartResultModel::data(const QModelIndex& index, int role) const {
     if (!index.isValid() || index.row() >= shown_.size()) return {};
     const Row& row = shown_[index.row()];
-    const bool differs = !row.section && row.restored != row.before;
+    const bool differs = !row.section && !row.collision && row.restored != row.before;
     switch (role) {
         case Qt::DisplayRole:
             return index.column() == 0 ? row.item : index.column() == 1 ? row.restored : row.before;
         case DiffersRole:
             return differs;
+        case CollisionRole:
+            return row.collision;
+        case Qt::ToolTipRole:  // a collision row's position may not fit its column
+            return row.collision ? row.item + " — " + row.restored : QVariant();
         case Qt::BackgroundRole:
             if (row.section) return QBrush(QColor(0xdf, 0xe6, 0xef));
+            if (row.collision) return QBrush(QColor(0xff, 0xd4, 0xd4));
             return differs ? QBrush(QColor(0xff, 0xe8, 0x90)) : QVariant();
+        case Qt::ForegroundRole:
+            return row.collision ? QBrush(QColor(0xb0, 0x00, 0x00)) : QVariant();
         case Qt::FontRole: {
-            if (!row.section && !differs) return {};
+            if (!row.section && !differs && !row.collision) return {};
             QFont font;
             font.setBold(true);
             return font;

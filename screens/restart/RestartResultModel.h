@@ -5,6 +5,7 @@
 
 namespace mtc::screens {
 
+class RestartCollisions;
 class RestartRun;
 class RestartVerification;
 
@@ -18,11 +19,15 @@ class RestartResultModel : public QAbstractTableModel {
   public:
     /// Role: true when the row's two values differ.
     static constexpr int DiffersRole = Qt::UserRole + 1;
+    /// Role: true on a row that lists a collision of the way back (D-021).
+    static constexpr int CollisionRole = Qt::UserRole + 2;
 
-    /// Rows of `run` and the verification of its target (both must outlive
-    /// the model); empty until reload().
+    /// Rows of `run`, the verification of its target and the check of its
+    /// way back against the part (all must outlive the model); empty until
+    /// reload(). The collisions come first, in red, and stay in the
+    /// differences-only view.
     RestartResultModel(const RestartRun* run, const RestartVerification* verification,
-                       QObject* parent = nullptr);
+                       const RestartCollisions* collisions, QObject* parent = nullptr);
 
     /// Re-reads the run (after a computing process).
     void reload();
@@ -44,15 +49,18 @@ class RestartResultModel : public QAbstractTableModel {
         QString item;
         QString restored;
         QString before;
-        bool section = false;  ///< a heading row ("G functions", "Page 60", ...)
+        bool section = false;    ///< a heading row ("G functions", "Page 60", ...)
+        bool collision = false;  ///< a collision of the way back (never a difference)
     };
 
   private:
     void buildRows(QVector<Row>& rows) const;
     void addVerification(QVector<Row>& rows) const;
+    void addCollisions(QVector<Row>& rows) const;
 
     const RestartRun* run_;
     const RestartVerification* verification_;
+    const RestartCollisions* collisions_;
     QVector<Row> all_;
     QVector<Row> shown_;
     bool differencesOnly_ = false;

@@ -14,11 +14,16 @@ namespace mtc::screens {
 RestartResultScreen::RestartResultScreen(const mtc::hmi::ScreenContext& context,
                                          std::shared_ptr<RestartController> controller)
     : Screen(context), controller_(std::move(controller)) {
-    model_ = new RestartResultModel(controller_->run(), controller_->verification(), this);
+    model_ = new RestartResultModel(controller_->run(), controller_->verification(),
+                                    &controller_->collisions(), this);
     summary_ = new QLabel(this);
     summary_->setObjectName("resultSummary");
     summary_->setWordWrap(true);
     summary_->setStyleSheet("background: #dfe6ef; padding: 3px; font-weight: bold;");
+    collisions_ = new QLabel(this);
+    collisions_->setObjectName("resultCollisions");
+    collisions_->setWordWrap(true);
+    collisions_->hide();
     table_ = new QTableView(this);
     table_->setObjectName("resultTable");
     table_->setModel(model_);
@@ -33,6 +38,7 @@ RestartResultScreen::RestartResultScreen(const mtc::hmi::ScreenContext& context,
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
     layout->addWidget(summary_);
+    layout->addWidget(collisions_);
     layout->addWidget(table_, 1);
     layout->addWidget(hint_);
     setFocusProxy(table_);
@@ -49,6 +55,7 @@ void RestartResultScreen::activated() {
 
 void RestartResultScreen::render() {
     const RestartRun* run = controller_->run();
+    renderCollisions();
     if (!run->started()) {
         summary_->setText(tr("No computing process yet: select the target on the restart screen."));
         hint_->clear();
@@ -63,6 +70,18 @@ void RestartResultScreen::render() {
             .arg(model_->verificationSummary()) +
         (s.selection.runs > 1 ? tr("  ·  arrival %1").arg(s.selection.runs) : QString()));
     hint_->setText(controller_->phaseText());
+}
+
+void RestartResultScreen::renderCollisions() {
+    const RestartCollisions& check = controller_->collisions();
+    const QString text = check.summary();
+    collisions_->setVisible(!text.isEmpty());
+    collisions_->setText(text);
+    // Red when the way back meets the part, neutral when clear or unchecked.
+    collisions_->setStyleSheet(check.colliding()
+                                   ? "background: #c00000; color: white; padding: 3px; "
+                                     "font-weight: bold;"
+                                   : "background: #eef2f6; color: #303030; padding: 3px;");
 }
 
 mtc::hmi::SoftKeys RestartResultScreen::softKeys() {

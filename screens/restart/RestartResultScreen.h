@@ -32,10 +32,12 @@ class RestartResultScreen : public mtc::hmi::Screen {
 
   private:
     void render();
+    void renderCollisions();
 
     std::shared_ptr<RestartController> controller_;
     RestartResultModel* model_;
     QLabel* summary_;
+    QLabel* collisions_;  ///< the way back against the part: red when it collides
     QTableView* table_;
     QLabel* hint_;
 };

@@ -253,6 +253,8 @@ void PainterToolpathCanvas::drawMarks(QPainter& painter, const View& view) {
             path << project(view, p);
         painter.drawPolyline(path);
     }
+    for (const auto& p : marks.collisions)  // where the way back meets the part (D-021)
+        dot(true, p, QColor(0xd0, 0x00, 0x00));
     dot(marks.hasStart, marks.start, palette.start);
     dot(marks.hasTarget, marks.target, palette.target);
     dot(marks.hasReentry, marks.reentry, palette.reentry);

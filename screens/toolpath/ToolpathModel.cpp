@@ -166,6 +166,9 @@ ToolpathMarks ToolpathModel::marks() const {
         marks.hasRepos = true;
         marks.actual = reposPath_.front();
         marks.repos = reposPath_;
+        if (const auto& check = restart_->collisions().result())
+            for (const auto& collision : check->collisions)
+                marks.collisions.push_back(collision.scene);
     }
     markTool(marks);
     return marks;
@@ -186,24 +189,12 @@ void ToolpathModel::markTool(ToolpathMarks& marks) const {
 }
 
 void ToolpathModel::updateReposPath() {
-    using mtc::core::RestartPhase;
     reposPath_.clear();
-    const auto& sequence = restart_->run()->sequence();
-    const RestartPhase phase = sequence.phase();
-    const bool ahead = phase == RestartPhase::TargetReached || phase == RestartPhase::Adjusting ||
-                       phase == RestartPhase::ManualMode || phase == RestartPhase::AutomaticAgain ||
-                       phase == RestartPhase::Repositioning;
-    const auto& route = sequence.computing().route();
-    if (!ahead || !sequence.reentry().valid || !route.targetProgram) return;
-    auto& live = session_->interpreter(slot_);
-    mtc::core::ReposPreviewStart start;
-    start.state = live.state();
-    start.options = live.options();
-    start.target = {route.targetProgram->number, sequence.computing().selection().target.block, 1};
-    start.targetChain = route.targetChain;
-    start.beforeAdjust = phase == RestartPhase::TargetReached;
+    const auto& live = session_->interpreter(slot_);
+    const auto start = mtc::core::reposPreviewStart(restart_->run()->sequence(), live);
+    if (!start) return;  // not between the target reached and the re-entry
     const auto preview = mtc::core::previewRepositioning(
-        session_->processConfig(slot_), session_->store(), live.machineData(), start);
+        session_->processConfig(slot_), session_->store(), live.machineData(), *start);
     // The path starts where the simulated machine stands (the interpreter's
     // commanded position when it has not caught up yet).
     std::array<double, mtc::core::kMaxAxes> actual{};

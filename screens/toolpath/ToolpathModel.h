@@ -27,6 +27,9 @@ struct ToolpathMarks {
     /// The REPOS path (hasRepos): where the axes stand, then the end of every
     /// move the rest of ADJUST and REPOS commands (TP-007), scene points.
     std::vector<std::array<double, 3>> repos;
+    /// Where a move of the way back first meets the part at the target
+    /// (the result review's collisions, D-021), scene points.
+    std::vector<std::array<double, 3>> collisions;
     /// The tool where the axes are now (TP-015): the scene point of the
     /// machine's actual position, the edge in use (radius, length L1; 0 when
     /// the tool list has no such edge) and whether the station turns.

@@ -127,6 +127,7 @@ struct VtkToolpathCanvas::Scene {
     vtkNew<vtkGenericOpenGLRenderWindow> window;
     Part scene, developed;
     vtkNew<vtkActor> stock, cylinder, start, target, reentry, repos, tool;
+    vtkNew<vtkActor> collision;  ///< where the way back first meets the part (D-021)
     vtkNew<vtkAxesActor> triadAxes;
     vtkNew<vtkOrientationMarkerWidget> triad;
     vtkNew<vtkCallbackCommand> interaction;
@@ -154,9 +155,9 @@ VtkToolpathCanvas::VtkToolpathCanvas(ToolpathModel* model, QWidget* parent)
     scene_->scene.setUp(palette);
     scene_->developed.setUp(palette);
     scene_->window->AddRenderer(scene_->scene.renderer);
-    for (vtkActor* a :
-         {scene_->stock.Get(), scene_->cylinder.Get(), scene_->start.Get(), scene_->target.Get(),
-          scene_->reentry.Get(), scene_->repos.Get(), scene_->tool.Get()}) {
+    for (vtkActor* a : {scene_->stock.Get(), scene_->cylinder.Get(), scene_->start.Get(),
+                        scene_->target.Get(), scene_->reentry.Get(), scene_->repos.Get(),
+                        scene_->tool.Get(), scene_->collision.Get()}) {
         a->PickableOff();
         a->VisibilityOff();
         scene_->scene.renderer->AddActor(a);
@@ -445,6 +446,10 @@ void VtkToolpathCanvas::updateMarks() {
     sphere(scene_->start, marks.hasStart, marks.start, palette.start);
     sphere(scene_->target, marks.hasTarget, marks.target, palette.target);
     sphere(scene_->reentry, marks.hasReentry, marks.reentry, palette.reentry);
+    // The first collision of the way back (the review lists them all).
+    sphere(scene_->collision, !marks.collisions.empty(),
+           marks.collisions.empty() ? std::array<double, 3>{} : marks.collisions.front(),
+           QColor(0xd0, 0x00, 0x00));
     placeTool(scene_->tool, marks, size);
     setColour(scene_->tool->GetProperty(), palette.tool);
     scene_->repos->SetVisibility(marks.hasRepos);
