@@ -83,6 +83,16 @@ class CommandLineReader {
         return true;
     }
 
+    /// An option whose value may not be empty: stores it in `target`, or
+    /// sets `whenEmpty` as the error.
+    void requiredValue(std::string_view name, std::string_view inlineValue, bool hasInline,
+                       std::string& target, const char* whenEmpty) {
+        std::string value;
+        if (!optionValue(name, inlineValue, hasInline, value)) return;
+        target = value;
+        if (target.empty() && out_.error.empty()) out_.error = whenEmpty;
+    }
+
     void option(std::string_view arg) {
         const auto equals = arg.find('=');
         const bool hasInline = equals != std::string_view::npos;
@@ -99,12 +109,10 @@ class CommandLineReader {
             }
             flag(name);
         } else if (name == "--machine") {
-            if (optionValue(name, inlineValue, hasInline, value)) o.machineFile = value;
-            if (out_.error.empty() && o.machineFile.empty()) out_.error = "--machine needs a file";
+            requiredValue(name, inlineValue, hasInline, o.machineFile, "--machine needs a file");
         } else if (name == "--programs") {
-            if (optionValue(name, inlineValue, hasInline, value)) o.programsDir = value;
-            if (out_.error.empty() && o.programsDir.empty())
-                out_.error = "--programs needs a directory";
+            requiredValue(name, inlineValue, hasInline, o.programsDir,
+                          "--programs needs a directory");
         } else if (name == "--process") {
             if (optionValue(name, inlineValue, hasInline, value)) processValue(value);
         } else if (name == "--max-blocks") {
@@ -117,17 +125,14 @@ class CommandLineReader {
                 (value.size() < 3 || value[0] < '1' || value[0] > '4' || value[1] != '='))
                 out_.error = "--user-compiler needs SLOT=COMMAND with slot 1..4";
         } else if (name == "-o" || name == "--output") {
-            if (optionValue(name, inlineValue, hasInline, value)) o.outputPath = value;
-            if (out_.error.empty() && o.outputPath.empty()) out_.error = "-o needs a file";
+            requiredValue(name, inlineValue, hasInline, o.outputPath, "-o needs a file");
         } else if (name == "--target") {
-            if (optionValue(name, inlineValue, hasInline, value)) o.target = value;
-            if (out_.error.empty() && o.target.empty()) out_.error = "--target needs a path";
+            requiredValue(name, inlineValue, hasInline, o.target, "--target needs a path");
             o.restartOption = true;
         } else if (name == "--runs") {
             if (optionValue(name, inlineValue, hasInline, value)) runsValue(value);
         } else if (name == "--stl") {
-            if (optionValue(name, inlineValue, hasInline, value)) o.stlPath = value;
-            if (out_.error.empty() && o.stlPath.empty()) out_.error = "--stl needs a file";
+            requiredValue(name, inlineValue, hasInline, o.stlPath, "--stl needs a file");
             o.simulateOption = true;
         } else if (name == "--resolution") {
             if (optionValue(name, inlineValue, hasInline, value)) resolutionValue(value);
