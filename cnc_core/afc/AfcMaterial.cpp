@@ -81,19 +81,6 @@ MaterialShare AfcMaterial::alongLine(const std::array<double, 3>& a,
     return t0 <= t1 ? MaterialShare{t0, t1} : MaterialShare{};
 }
 
-void AfcMaterial::stockBox(std::array<double, 3>& low, std::array<double, 3>& high) const {
-    if (stock_.shape == Stock::Shape::Block) {
-        low = stock_.min;
-        high = stock_.max;
-        return;
-    }
-    const auto along = static_cast<std::size_t>(stock_.axis);
-    for (std::size_t d = 0; d < 3; ++d) {
-        low[d] = d == along ? stock_.from : -stock_.radius;
-        high[d] = d == along ? stock_.to : stock_.radius;
-    }
-}
-
 MaterialShare AfcMaterial::along(const Motion& motion) const {
     if (!known()) return {0.0, 1.0};
     const bool arc = motion.type == MotionType::ArcCW || motion.type == MotionType::ArcCCW;
@@ -117,7 +104,7 @@ MaterialShare AfcMaterial::along(const Motion& motion) const {
     high[b] = motion.center2 + radius;
     const std::array<double, 3> from = scenePoint(low), to = scenePoint(high);
     std::array<double, 3> stockLow{}, stockHigh{};
-    stockBox(stockLow, stockHigh);
+    stock_.box(stockLow, stockHigh);
     constexpr double kMargin = 1e-9;
     bool disjoint = false, within = stock_.shape == Stock::Shape::Block;
     for (std::size_t d = 0; d < 3; ++d) {

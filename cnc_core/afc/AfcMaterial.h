@@ -35,8 +35,6 @@ class AfcMaterial {
     bool inside(const std::array<double, 3>& point) const;
     /// Where an arc's 32 points cannot all be decided by its bounding box.
     MaterialShare alongArc(const Motion& motion) const;
-    /// The stock's bounding box in scene coordinates.
-    void stockBox(std::array<double, 3>& low, std::array<double, 3>& high) const;
     MaterialShare alongLine(const std::array<double, 3>& a, const std::array<double, 3>& b) const;
 
     Stock stock_;

@@ -1,5 +1,6 @@
 #include "cnc_core/toolpath/Stock.h"
 
+#include <cstddef>
 #include <locale>
 #include <sstream>
 
@@ -63,6 +64,21 @@ bool parseStock(const std::string& text, Stock& stock, std::string& error) {
         return false;
     }
     stock = s;
+    return true;
+}
+
+bool Stock::box(std::array<double, 3>& low, std::array<double, 3>& high) const {
+    if (shape == Shape::None) return false;
+    if (shape == Shape::Block) {
+        low = min;
+        high = max;
+        return true;
+    }
+    for (std::size_t d = 0; d < 3; ++d) {
+        const bool along = static_cast<int>(d) == axis;
+        low[d] = along ? from : -radius;
+        high[d] = along ? to : radius;
+    }
     return true;
 }
 

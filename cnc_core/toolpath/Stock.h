@@ -17,6 +17,11 @@ struct Stock {
     double radius = 0.0;  ///< cylinder radius
     double from = 0.0;    ///< cylinder: extent along its axis
     double to = 0.0;
+
+    /// The axis-aligned box around the stock in scene coordinates (a
+    /// cylinder's: its length along the axis, +-radius across); false and
+    /// nothing written when there is no stock.
+    bool box(std::array<double, 3>& low, std::array<double, 3>& high) const;
 };
 
 /// Reads "block XMIN XMAX YMIN YMAX ZMIN ZMAX" or "cylinder AXIS RADIUS FROM

@@ -67,7 +67,7 @@ void PainterToolpathCanvas::layout() {
 void PainterToolpathCanvas::resizeEvent(QResizeEvent* event) {
     ToolpathCanvas::resizeEvent(event);
     layout();
-    framedAll_ ? fitAll() : fit();  // the same framing at the new size
+    frame(framedAll_);  // the same framing at the new size
 }
 
 const mtc::core::ToolpathLayer* PainterToolpathCanvas::layerOf(const View& view) const {
@@ -104,16 +104,17 @@ void PainterToolpathCanvas::showPreset(ToolpathPreset preset) {
 }
 
 void PainterToolpathCanvas::fit() {
-    framedAll_ = false;
-    fitView(scene_, false);
-    if (split_) fitView(developed_, false);
-    update();
+    frame(false);
 }
 
 void PainterToolpathCanvas::fitAll() {
-    framedAll_ = true;
-    fitView(scene_, true);
-    if (split_) fitView(developed_, true);
+    frame(true);
+}
+
+void PainterToolpathCanvas::frame(bool all) {
+    framedAll_ = all;
+    fitView(scene_, all);
+    if (split_) fitView(developed_, all);
     update();
 }
 

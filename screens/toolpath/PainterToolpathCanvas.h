@@ -47,6 +47,8 @@ class PainterToolpathCanvas : public ToolpathCanvas {
     };
     void layout();
     void fitView(View& view, bool all);
+    /// Frames the part, or with `all` every move, and remembers which.
+    void frame(bool all);
     QPointF project(const View& view, const Vec& p) const;
     const mtc::core::ToolpathLayer* layerOf(const View& view) const;
     void drawView(QPainter& painter, const View& view);

@@ -95,15 +95,8 @@ mtc::core::ToolpathBounds ToolpathModel::frame(bool developed, bool all) const {
         for (const auto& p : m.repos)
             box.add(p[0], p[1], p[2]);
     }
-    if (!developed && stock_.shape == mtc::core::Stock::Shape::Block) {
-        box.add(stock_.min[0], stock_.min[1], stock_.min[2]);
-        box.add(stock_.max[0], stock_.max[1], stock_.max[2]);
-    } else if (!developed && stock_.shape == mtc::core::Stock::Shape::Cylinder) {
-        const int axis = stock_.axis;
-        std::array<double, 3> low{-stock_.radius, -stock_.radius, -stock_.radius};
-        std::array<double, 3> high{stock_.radius, stock_.radius, stock_.radius};
-        low[static_cast<std::size_t>(axis)] = stock_.from;
-        high[static_cast<std::size_t>(axis)] = stock_.to;
+    std::array<double, 3> low{}, high{};
+    if (!developed && stock_.box(low, high)) {
         box.add(low[0], low[1], low[2]);
         box.add(high[0], high[1], high[2]);
     }

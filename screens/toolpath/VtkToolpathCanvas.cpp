@@ -1,4 +1,5 @@
 #include "screens/toolpath/VtkToolpathCanvas.h"
+#include "screens/toolpath/VtkToolpathActors.h"
 
 #include <QVTKOpenGLNativeWidget.h>
 #include <vtkActor.h>
@@ -7,7 +8,6 @@
 #include <vtkCamera.h>
 #include <vtkCubeAxesActor.h>
 #include <vtkCubeSource.h>
-#include <vtkCylinderSource.h>
 #include <vtkGenericOpenGLRenderWindow.h>
 #include <vtkInteractorStyleTrackballCamera.h>
 #include <vtkMatrix4x4.h>
@@ -251,25 +251,6 @@ void VtkToolpathCanvas::moving() {
 }
 
 namespace {
-void setBounds(vtkCubeAxesActor* axes, const mtc::core::ToolpathBounds& b) {
-    double bounds[6] = {b.min[0], b.max[0], b.min[1], b.max[1], b.min[2], b.max[2]};
-    axes->SetBounds(bounds);
-}
-
-/// Tick labels on an axis far shorter than the longest (a plate's
-/// thickness) crowd into one blot: such an axis keeps its title and grid,
-/// its length is in the caption's extents.
-void labelLongAxesOnly(vtkCubeAxesActor* axes, const mtc::core::ToolpathBounds& b) {
-    const double longest = std::max(b.size(), 1e-9);
-    const auto labelled = [&](int i) {
-        return b.max[static_cast<std::size_t>(i)] - b.min[static_cast<std::size_t>(i)] >=
-               0.2 * longest;
-    };
-    axes->SetXAxisLabelVisibility(labelled(0));
-    axes->SetYAxisLabelVisibility(labelled(1));
-    axes->SetZAxisLabelVisibility(labelled(2));
-}
-
 QString extents(const mtc::core::ToolpathBounds& b, bool flat) {
     if (b.empty) return {};
     QString text = VtkToolpathCanvas::tr("extents %1 x %2")
@@ -279,45 +260,6 @@ QString extents(const mtc::core::ToolpathBounds& b, bool flat) {
     return text + " mm";
 }
 
-/// A translucent cylinder along scene axis `axis` (the source's is Y).
-void placeCylinder(vtkActor* actor, int axis, double radius, double from, double to) {
-    vtkNew<vtkCylinderSource> source;
-    source->SetRadius(radius);
-    source->SetHeight(std::max(to - from, 1e-3));
-    source->SetCenter(0, (from + to) / 2, 0);
-    source->SetResolution(72);
-    source->Update();
-    vtkNew<vtkPolyDataMapper> mapper;
-    mapper->SetInputData(source->GetOutput());
-    actor->SetMapper(mapper);
-    actor->SetOrientation(0, 0, 0);
-    if (axis == 2) actor->RotateX(90);   // Y -> Z
-    if (axis == 0) actor->RotateZ(-90);  // Y -> X
-    actor->VisibilityOn();
-}
-
-/// The tool at the actual position (TP-015): on the mill a cylinder of the
-/// edge's radius up the Z axis from the tip, as long as L1 (at least four
-/// radii); on the lathe a ball of the nose radius. Never smaller than a
-/// hundredth of the picture, so that it stays visible.
-void placeTool(vtkActor* actor, const ToolpathMarks& marks, double pictureSize) {
-    actor->SetVisibility(marks.hasTool);
-    if (!marks.hasTool) return;
-    const double radius = std::max(marks.toolRadius, pictureSize * 0.01);
-    if (marks.turning) {
-        vtkNew<vtkSphereSource> source;
-        source->SetRadius(radius);
-        source->Update();
-        vtkNew<vtkPolyDataMapper> mapper;
-        mapper->SetInputData(source->GetOutput());
-        actor->SetMapper(mapper);
-        actor->SetOrientation(0, 0, 0);
-    } else {
-        const double length = std::max(marks.toolLength, 4.0 * radius);
-        placeCylinder(actor, 2, radius, 0.0, length);
-    }
-    actor->SetPosition(marks.tool[0], marks.tool[1], marks.tool[2]);
-}
 }  // namespace
 
 void VtkToolpathCanvas::rebuild() {

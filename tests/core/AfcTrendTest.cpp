@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include "InterpTestSupport.h"
@@ -124,6 +125,23 @@ TEST(AfcMaterialArcs, ArcsOutsideInsideAndAcrossTheBlock) {
     EXPECT_EQ(across.from, 0.0);
     EXPECT_GT(across.to, 0.0);
     EXPECT_LT(across.to, 1.0);
+}
+
+TEST(StockBox, BlockCylinderAndNone) {
+    std::array<double, 3> low{}, high{};
+    Stock none;
+    EXPECT_FALSE(none.box(low, high));
+    Stock block;
+    std::string error;
+    ASSERT_TRUE(parseStock("block -10 10 -5 5 -3 0", block, error)) << error;
+    ASSERT_TRUE(block.box(low, high));
+    EXPECT_EQ(low, (std::array<double, 3>{-10, -5, -3}));
+    EXPECT_EQ(high, (std::array<double, 3>{10, 5, 0}));
+    Stock bar;
+    ASSERT_TRUE(parseStock("cylinder Z 40 0 120", bar, error)) << error;
+    ASSERT_TRUE(bar.box(low, high));
+    EXPECT_EQ(low, (std::array<double, 3>{-40, -40, 0}));
+    EXPECT_EQ(high, (std::array<double, 3>{40, 40, 120}));
 }
 
 }  // namespace

@@ -1,0 +1,28 @@
+#pragma once
+
+// Small helpers of the VTK toolpath view that place and label its actors
+// (VtkToolpathCanvas): the axes box, the stock cylinder, the tool marker.
+#include <vtkActor.h>
+#include <vtkCubeAxesActor.h>
+
+#include "cnc_core/toolpath/ToolpathGeometry.h"
+
+namespace mtc::screens {
+
+struct ToolpathMarks;
+
+/// The box the axes actor labels.
+void setBounds(vtkCubeAxesActor* axes, const mtc::core::ToolpathBounds& b);
+/// Tick labels on an axis far shorter than the longest (a plate's
+/// thickness) crowd into one blot: such an axis keeps its title and grid,
+/// its length is in the caption's extents (TP-014).
+void labelLongAxesOnly(vtkCubeAxesActor* axes, const mtc::core::ToolpathBounds& b);
+/// A cylinder along scene axis `axis` from `from` to `to`.
+void placeCylinder(vtkActor* actor, int axis, double radius, double from, double to);
+/// The tool at the actual position (TP-015): on the mill a cylinder of the
+/// edge's radius up the Z axis from the tip, as long as L1 (at least four
+/// radii); on the lathe a ball of the nose radius. Never smaller than a
+/// hundredth of the picture, so that it stays visible.
+void placeTool(vtkActor* actor, const ToolpathMarks& marks, double pictureSize);
+
+}  // namespace mtc::screens
