@@ -9,6 +9,7 @@
 #include "RestartStation.h"
 #include "cnc_core/removal/ReentryCollisions.h"
 #include "cnc_core/removal/RemovalRun.h"
+#include "tests/support/SlotRestartProgram.h"
 
 namespace mtc::test {
 namespace {
@@ -17,16 +18,8 @@ using core::removal::checkRestartReentry;
 using core::removal::ReentryCheck;
 using core::removal::ReentryCollision;
 
-// Mill (process 0): part 0..100 x 0..60 x -12..0 at G54, tool T2 (R5).
-// A slot 4 deep along Y30 from X20 to X80; the target turns it towards +Y.
-const char* kSlot =
-    "N0010 : T2 S1500 M3\n"
-    "N0020 G0 G54 X20 Y30 Z2\n"
-    "N0030 G1 Z-4 F200\n"
-    "N0040 X80\n"
-    "N0050 X80 Y45 ;target\n"
-    "N0060 G0 Z10\n"
-    "N0070 M30\n";
+// The slot of tests/support/SlotRestartProgram.h (mill, T2, target N0050).
+const char* kSlot = mtc::test::kSlotRestartProgram;
 
 // The way back goes up first, then over the part, then down into the slot.
 const char* kSafeReturn =
