@@ -4,7 +4,9 @@
 //   xvfb-run -a -s "-screen 0 1280x800x24" mtc_toolpath_canvas_bench [count] -platform xcb
 // Prints the build time of the view (program run, geometry, poly-data and
 // coarse copy), frame times while moving (coarse copy) and still (full
-// path), and the process's peak RSS.
+// path), the time of a panel tick while the program runs (the station's
+// 20 ms step, the view following it: tool, backplot, running block, and the
+// render; issue 19 §2), and the process's peak RSS.
 #include <QApplication>
 #include <QDir>
 #include <QElapsedTimer>
@@ -71,6 +73,43 @@ void measure(const char* what, mtc::screens::VtkToolpathCanvas* canvas, Step ste
     std::fflush(stdout);
 }
 
+/// Ticks of the running program: the station moves on by one panel tick
+/// (20 ms at x10 speed, so the backplot grows visibly), the screen follows
+/// and renders; per tick the whole time until the render is done.
+void measureTicks(const char* what, mtc::hmi::CellSession& session,
+                  mtc::screens::VtkToolpathCanvas* canvas) {
+    std::vector<double> times;
+    for (int i = 0; i < 41; ++i) {
+        const int renders = canvas->renderCount();
+        const auto t = Clock::now();
+        session.advance(0.2);
+        while (canvas->renderCount() == renders && msSince(t) < 5000)
+            QApplication::processEvents();
+        times.push_back(msSince(t));
+    }
+    const double first = times.front();
+    std::sort(times.begin(), times.end());
+    std::printf("%-40s first %7.1f ms, median %7.1f ms, max %7.1f ms\n", what, first,
+                times[times.size() / 2], times.back());
+    std::fflush(stdout);
+}
+
+/// The running program's ticks with the whole scene drawn each tick (as
+/// before TP-018), then with the steady picture kept as an image.
+void measureRunning(mtc::hmi::CellSession& session, mtc::screens::VtkToolpathCanvas* canvas) {
+    session.setTimerEnabled(false);
+    session.pressKey(0, mtc::core::ControlKey::Start);
+    for (int i = 0; i < 5; ++i)  // the approach and the first frames
+        session.advance(0.2);
+    QApplication::processEvents();
+    canvas->keepSteadyPicture(false);
+    measureTicks("running, whole scene each tick", session, canvas);
+    canvas->keepSteadyPicture(true);
+    const int kept = canvas->keptRenders();
+    measureTicks("running, steady picture kept", session, canvas);
+    std::printf("(%d of 41 ticks drawn from the kept picture)\n", canvas->keptRenders() - kept);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -112,6 +151,7 @@ int main(int argc, char** argv) {
     while (canvas->showingLevelOfDetail() && still.elapsed() < 5000)
         QApplication::processEvents(QEventLoop::AllEvents, 50);
     measure("still (full path)", canvas, [] {});
+    measureRunning(*session, canvas);
     std::printf("peak RSS %.1f MB (+%.1f MB for the view)\n", peakRssMb(), peakRssMb() - rss0);
     return 0;
 }

@@ -14,6 +14,12 @@ namespace mtc::core {
 
 namespace {
 
+/// The axes of `config` (the interpreter reports their problems).
+ProcessAxes axesOf(const ProcessConfig& config) {
+    DiagnosticList ignored;
+    return ProcessAxes::build(config, ignored);
+}
+
 std::string firstProblem(const DiagnosticList& diagnostics, const char* fallback) {
     for (const Diagnostic& d : diagnostics.items())
         if (d.severity == Severity::Error) return formatDiagnostic(d);
@@ -33,6 +39,7 @@ Station::Station(const ProcessConfig& config, const ProgramStore& programs,
       interpreter_(config, programs, output_, services),
       sps_(control_),
       restart_(control_, sps_, interpreter_, programs, output_, services.otherProcesses),
+      trace_(axesOf(config)),
       jog_(control_, interpreter_, machine_) {
     restart_.setAxisTransfer(services.axisTransfer);
     control_.setRunner(this);
@@ -52,7 +59,9 @@ void Station::Output::sent(const SourceLocation& where) {
 
 void Station::Output::motion(const Motion& m) {
     sent(m.where);
+    const std::size_t queued = machine.engine().queuedCount();
     machine.motion(m);
+    if (trace) trace->sent(m, machine.engine().queuedCount() > queued);
     if (listener) listener->motion(m);
 }
 
@@ -147,7 +156,13 @@ std::string Station::start(int number) {
     }
     machine_.reset();
     beginRun(Run::Program);
+    beginTrace(number);
     return {};
+}
+
+void Station::beginTrace(int number) {
+    trace_.begin(number);
+    output_.trace = &trace_;
 }
 
 std::string Station::startMdi() {
@@ -163,6 +178,7 @@ std::string Station::startMdi() {
     log_.addAll(DiagnosticSource::Mdi, refused);
     if (!alarm.empty()) return alarm;
     mdiDiagnostics_.clear();
+    output_.trace = nullptr;  // the last program's backplot stays as it was
     beginRun(Run::Mdi);
     return {};
 }
@@ -196,9 +212,8 @@ void Station::endMdi(bool completed) {
 void Station::logRunDiagnostics(const DiagnosticList& diagnostics) {
     if (run_ != Run::Mdi) return log_.addAll(DiagnosticSource::Run, diagnostics);
     for (Diagnostic d : diagnostics.items()) {
-        MdiSession::attachInputLine(d, mdiSession_.history().empty()
-                                           ? std::string()
-                                           : mdiSession_.history().back().text);
+        MdiSession::attachInputLine(
+            d, mdiSession_.history().empty() ? std::string() : mdiSession_.history().back().text);
         log_.add(DiagnosticSource::Mdi, d);
     }
 }
@@ -243,6 +258,11 @@ void Station::reset() {
     pending_ = Pending::None;
     stoppedBy_ = Pending::None;
     waitingAxis_.clear();
+    if (output_.trace) {  // the backplot ends where the axes stop
+        trace_.follow(machine_.engine());
+        trace_.cut();
+        output_.trace = nullptr;
+    }
     machine_.stop();
     machine_.reset();
     queued_.clear();
@@ -288,6 +308,7 @@ double Station::advance(double seconds, std::uint64_t maxBlocks) {
         if (used <= 0.0 && blocks == before) break;  // nothing can go on
     }
     jog_.settle();
+    if (output_.trace) trace_.follow(machine_.engine());
     if (blocks > 0 || machine_.seconds() != busyBefore) ++revision_;
     showCurrentBlock();
     return seconds > 0.0 ? seconds - left : 0.0;
@@ -301,6 +322,7 @@ bool Station::acceptRestart(const RestartSelection& selection, DiagnosticList& d
     logRestartDiagnostics();
     restartBefore_ = snapshot;
     restartStarted_ = true;
+    beginTrace(control_.selectedProgram());
     restartComputingMs_ = 0.0;
     computingSince_ = std::chrono::steady_clock::now();
     followRestartPhase();
@@ -417,7 +439,8 @@ void Station::feed(std::uint64_t& blocks, std::uint64_t maxBlocks) {
                                                                       : interpreter_.step();
         blocks += result.blocksInterpreted;
         runBlocks_ += result.blocksInterpreted;
-        if (output_.outputs != outputsBefore) recordQueuedBlock(lastProgram_, lastBlock_, callLevel);
+        if (output_.outputs != outputsBefore)
+            recordQueuedBlock(lastProgram_, lastBlock_, callLevel);
         if (!result.diagnostics.empty()) {
             runDiagnostics_.append(result.diagnostics);
             logRunDiagnostics(result.diagnostics);
@@ -466,8 +489,7 @@ bool Station::handle(const RunResult& result) {
 void Station::settle() {
     // Single block switched on while the look-ahead had queued more blocks:
     // the machine rests at the end of the block it was in.
-    machine_.setStopAtBlockEnds(control_.singleBlock() && run_ != Run::None &&
-                                !restart_.active());
+    machine_.setStopAtBlockEnds(control_.singleBlock() && run_ != Run::None && !restart_.active());
     if (machine_.atBlockStop() && run_ != Run::None && stoppedBy_ == Pending::None) {
         feeding_ = false;
         stoppedBy_ = Pending::SingleBlock;

@@ -10,15 +10,16 @@
 #include "cnc_core/cell/DiagnosticLog.h"
 #include "cnc_core/cell/ManualJog.h"
 #include "cnc_core/cell/QueuedBlockStates.h"
+#include "cnc_core/compiler/NcOptions.h"
 #include "cnc_core/interp/Interpreter.h"
 #include "cnc_core/machine/MachineConfig.h"
 #include "cnc_core/machine/ProcessControl.h"
 #include "cnc_core/machine/SimulatedMachine.h"
-#include "cnc_core/compiler/NcOptions.h"
 #include "cnc_core/mdi/MdiRun.h"
 #include "cnc_core/mdi/MdiSession.h"
 #include "cnc_core/restart/RestartSequence.h"
 #include "cnc_core/restart/SimulatedSps.h"
+#include "cnc_core/toolpath/RunTrace.h"
 
 namespace mtc::core {
 
@@ -126,6 +127,11 @@ class Station : private ProgramRunner {
     /// (the interpreter may be the look-ahead ahead); nullptr while the
     /// machine stands or runs a move no block of this run queued.
     const QueuedBlockState* executingBlockState() const { return queued_.executing(); }
+    /// The backplot (TP-016): the moves of the program run since its Start
+    /// (or since a restart was accepted) and how far the axes have travelled
+    /// along them. MDI entries and manual jogs are not in it; Control reset
+    /// ends it where the axes stopped.
+    const RunTrace& runTrace() const { return trace_; }
     /// Sees everything the interpreter (and the restart's jogging) sends to
     /// the machine, as it is sent (the CLI's motion list, recording tests).
     /// Not owned; nullptr = none.
@@ -216,6 +222,7 @@ class Station : private ProgramRunner {
         void sent(const SourceLocation& where);
         SimulatedMachine& machine;
         MachineSink* listener = nullptr;
+        RunTrace* trace = nullptr;  ///< the program run's backplot while one is traced
         std::uint64_t outputs = 0;  ///< calls so far; `last` is the latest one's location
         SourceLocation last;
     };
@@ -255,6 +262,9 @@ class Station : private ProgramRunner {
     void endMdi(bool completed);
     /// Keeps the interpreter's state after a block that queued work.
     void recordQueuedBlock(const ProgramPtr& program, std::uint32_t index, int callLevel);
+    /// A run of program `number` starts (Start, a restart accepted): a new
+    /// backplot.
+    void beginTrace(int number);
 
     const ProcessConfig& config_;
     ProcessControl control_;
@@ -292,6 +302,7 @@ class Station : private ProgramRunner {
     ProgramPtr lastProgram_;  ///< program and block interpreted last
     std::uint32_t lastBlock_ = 0;
     QueuedBlockStates queued_;
+    RunTrace trace_;
     ManualJog jog_;
     DiagnosticLog log_;
     std::size_t restartLogged_ = 0;  ///< restart diagnostics already in log_

@@ -257,7 +257,8 @@ double TrajectoryEngine::runTimed(QueueItem& timed, double room, bool& finished)
     const double share = dwelt_ / timed.seconds;
     const TimedCourse::Point course =
         timed.course ? timed.course->at(share) : TimedCourse::Point{share, 1.0};
-    timed.geometry.machinePoint(travel * course.distance, position_);
+    pathS_ = travel * course.distance;  // pathPosition() of a timed move too
+    timed.geometry.machinePoint(pathS_, position_);
     velocity_ = travel / timed.seconds * course.slope * rate;
     return room;
 }
@@ -402,6 +403,21 @@ bool TrajectoryEngine::moving() const {
 
 const QueueItem* TrajectoryEngine::currentMove() const {
     return moving() ? &queue_.front() : nullptr;
+}
+
+double TrajectoryEngine::travelledShare() const {
+    const QueueItem* move = currentMove();
+    if (move == nullptr || !(move->geometry.length() > 0.0)) return 0.0;
+    return std::clamp(pathS_ / move->geometry.length(), 0.0, 1.0);
+}
+
+std::size_t TrajectoryEngine::queuedMoves() const {
+    std::size_t moves = 0;
+    for (std::size_t i = 0; i < queue_.size(); ++i) {
+        const QueueItem::Kind kind = queue_.at(i).kind;
+        if (kind == QueueItem::Kind::Move || kind == QueueItem::Kind::Timed) ++moves;
+    }
+    return moves;
 }
 
 double TrajectoryEngine::distanceToGo(int axis) const {

@@ -125,8 +125,13 @@ class TrajectoryEngine {
     /// True while a move (or timed move) is being executed (its geometry is currentMove()).
     bool moving() const;
     const QueueItem* currentMove() const;
-    /// Path distance travelled along the current move.
+    /// Path distance travelled along the current move (timed moves too).
     double pathPosition() const { return pathS_; }
+    /// Share (0 ... 1) of the current move's path travelled; 0 when no move
+    /// is being executed.
+    double travelledShare() const;
+    /// Moves and timed moves in the queue (the one being executed included).
+    std::size_t queuedMoves() const;
     const SpindleSet& spindles() const { return spindles_; }
     const MotionLimits& limits() const { return limits_; }
     /// Tags of the actions executed since the last call, oldest first.

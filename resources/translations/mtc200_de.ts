@@ -3091,6 +3091,10 @@ all</source>
         <translation>Alles
 einpassen</translation>
     </message>
+    <message>
+        <source>running: %1</source>
+        <translation>läuft: %1</translation>
+    </message>
 </context>
 <context>
     <name>mtc::screens::VelocityPlot</name>

@@ -167,6 +167,7 @@ void PainterToolpathCanvas::drawView(QPainter& painter, const View& view) {
     drawContour(painter, view);
     drawLayer(painter, view);
     drawHighlight(painter, view);
+    drawBackplot(painter, view);  // over the highlight: the running block's travelled part shows
     if (!view.developed) drawMarks(painter, view);
     drawTriad(painter, view);
     const auto* layer = layerOf(view);
@@ -222,6 +223,27 @@ void PainterToolpathCanvas::drawContour(QPainter& painter, const View& view) {
     }
     // Dashed and thin: the tool-centre path in the motion colours stays on top.
     painter.setPen(QPen(model_->palette().contour, 1, Qt::DashLine));
+    painter.drawLines(lines);
+}
+
+void PainterToolpathCanvas::drawBackplot(QPainter& painter, const View& view) {
+    const ToolpathBackplot backplot = model_->backplot(view.developed);
+    if (backplot.empty()) return;
+    const auto& layer = *backplot.layer;
+    // Thinned out like the path beyond kMaxDrawnSegments; the stretch of a
+    // thinned step ends on a vertex of the path.
+    const std::uint32_t stride =
+        static_cast<std::uint32_t>(std::max<std::size_t>(1, backplot.segments / kMaxDrawnSegments));
+    QVector<QLineF> lines;
+    lines.reserve(static_cast<int>(backplot.segments / stride + 2));
+    for (std::uint32_t s = 0; s < backplot.segments; s += stride) {
+        const std::uint32_t end = std::min(s + stride, backplot.segments);
+        lines.push_back({project(view, layer.vertex(layer.segmentStart[s])),
+                         project(view, layer.vertex(layer.segmentStart[end - 1] + 1))});
+    }
+    if (backplot.partial)
+        lines.push_back({project(view, backplot.partialFrom), project(view, backplot.partialTo)});
+    painter.setPen(QPen(model_->palette().backplot, 3, Qt::SolidLine, Qt::RoundCap));
     painter.drawLines(lines);
 }
 

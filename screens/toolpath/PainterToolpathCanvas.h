@@ -55,6 +55,8 @@ class PainterToolpathCanvas : public ToolpathCanvas {
     void drawLayer(QPainter& painter, const View& view);
     /// The programmed contour of compensated moves (TC-012), under the path.
     void drawContour(QPainter& painter, const View& view);
+    /// What the running program has travelled since Start (TP-016), over the path.
+    void drawBackplot(QPainter& painter, const View& view);
     void drawHighlight(QPainter& painter, const View& view);
     void drawMarks(QPainter& painter, const View& view);
     /// The tool at the actual position: a disc of its radius (at least 5

@@ -204,7 +204,50 @@ QString ToolpathModel::partnerName() const {
     return link_->partner() == ToolpathLink::Partner::Editor ? tr("editor") : tr("restart");
 }
 
+const mtc::core::RunTrace* ToolpathModel::trace() const {
+    const mtc::core::RunTrace& trace = session_->station(slot_).runTrace();
+    if (!geometry_ || trace.run() == 0 || trace.program() != number_) return nullptr;
+    return &trace;
+}
+
+ToolpathBackplot ToolpathModel::backplot(bool developed) const {
+    ToolpathBackplot backplot;
+    const mtc::core::RunTrace* run = trace();
+    if (!run) return backplot;
+    const mtc::core::ToolpathGeometry& g = run->geometry();
+    const mtc::core::ToolpathLayer& layer = developed ? g.developed : g.scene;
+    const mtc::core::TracedExtent extent = run->extent(developed);
+    backplot.layer = &layer;
+    backplot.segments =
+        std::min<std::uint32_t>(extent.segments, static_cast<std::uint32_t>(layer.segmentCount()));
+    backplot.run = run->run();
+    backplot.revision = run->revision();
+    if (extent.share > 0.0 && backplot.segments < layer.segmentCount()) {
+        const std::uint32_t v = layer.segmentStart[backplot.segments];
+        backplot.partial = true;
+        backplot.partialFrom = layer.vertex(v);
+        const auto to = layer.vertex(v + 1);
+        for (std::size_t i = 0; i < 3; ++i)
+            backplot.partialTo[i] =
+                backplot.partialFrom[i] + (to[i] - backplot.partialFrom[i]) * extent.share;
+    }
+    return backplot;
+}
+
+bool ToolpathModel::followRunningBlock() {
+    if (!session_->control(slot_).programActive()) return false;
+    const mtc::core::RunTrace* run = trace();
+    const long move = run ? run->currentMove() : -1;
+    if (move < 0 || static_cast<std::size_t>(move) >= run->geometry().moves.size()) return false;
+    const mtc::core::ToolpathMove& m = run->geometry().moves[static_cast<std::size_t>(move)];
+    setHighlight(m.program, m.block);
+    return true;
+}
+
 void ToolpathModel::followPartner() {
+    // The running block wins over the linked screen's cursor (TP-017).
+    highlightRunning_ = followRunningBlock();
+    if (highlightRunning_) return;
     if (link_->partner() == ToolpathLink::Partner::Editor)
         followEditorCursor();
     else
@@ -270,6 +313,7 @@ void ToolpathModel::pick(long move) {
     if (!geometry_ || move < 0 || static_cast<std::size_t>(move) >= geometry_->moves.size()) return;
     const auto& m = geometry_->moves[static_cast<std::size_t>(move)];
     setHighlight(m.program, m.block);
+    highlightRunning_ = false;  // until the running program's next step (TP-017)
     currentMove_ = move;
     if (link_->partner() == ToolpathLink::Partner::Editor) {
         const auto program = session_->program(slot_, m.program);

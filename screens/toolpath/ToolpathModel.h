@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "cnc_core/language/Program.h"
+#include "cnc_core/toolpath/RunTrace.h"
 #include "cnc_core/toolpath/Stock.h"
 #include "cnc_core/toolpath/ToolpathRun.h"
 #include "screens/toolpath/ToolpathPalette.h"
@@ -38,6 +39,21 @@ struct ToolpathMarks {
     double toolRadius = 0.0;
     double toolLength = 0.0;
     bool turning = false;
+};
+
+/// What the view draws of the backplot in one layer (TP-016): the first
+/// `segments` segments of `layer` (the station's run trace), and when the
+/// axes are inside a segment, the travelled part of it (partialFrom to
+/// partialTo). `run` changes with every new run, `revision` with every change.
+struct ToolpathBackplot {
+    const mtc::core::ToolpathLayer* layer = nullptr;  ///< null: no backplot to draw
+    std::uint32_t segments = 0;
+    bool partial = false;
+    std::array<double, 3> partialFrom{}, partialTo{};
+    std::uint64_t run = 0;
+    std::uint64_t revision = 0;
+
+    bool empty() const { return !layer || (segments == 0 && !partial); }
 };
 
 /// The model behind the toolpath view of one station (no display code):
@@ -82,6 +98,12 @@ class ToolpathModel : public QObject {
     const std::vector<std::uint32_t>& highlighted() const { return highlighted_; }
     /// "P1 N0012 (line 14)" of the highlighted block, or "".
     QString highlightText() const { return highlightText_; }
+    /// The highlighted block is the one the running program executes (TP-017).
+    bool highlightsRunningBlock() const { return highlightRunning_; }
+    /// The backplot of the scene (developed) layer: what the station's
+    /// program run has travelled since its Start, when the run is one of the
+    /// program shown (TP-016); empty otherwise.
+    ToolpathBackplot backplot(bool developed) const;
     /// The tolerance the next build tessellates with (mm).
     void setTolerance(double millimetres);
     double tolerance() const { return settings_.tolerance; }
@@ -107,6 +129,11 @@ class ToolpathModel : public QObject {
 
   private:
     void followPartner();
+    /// While the station's program is active: highlights the block of the
+    /// move the machine executes (TP-017); false when there is none.
+    bool followRunningBlock();
+    /// The station's run trace when it is a run of the program shown.
+    const mtc::core::RunTrace* trace() const;
     void followRestartCursor();
     void followEditorCursor();
     /// Re-interprets the rest of ADJUST / REPOS while a restart waits for or
@@ -137,6 +164,7 @@ class ToolpathModel : public QObject {
     ToolpathPalette palette_;
     std::vector<std::uint32_t> highlighted_;
     QString highlightText_;
+    bool highlightRunning_ = false;
     int highlightProgram_ = -1;
     std::uint32_t highlightBlock_ = 0;
     long currentMove_ = -1;

@@ -26,6 +26,9 @@ struct ToolpathPalette {
     QColor contour{180, 120, 255};
     /// The tool where the axes are now (TP-015): pink.
     QColor tool{255, 128, 192};
+    /// The backplot: what the running program has travelled since Start
+    /// (TP-016), over the path: near white.
+    QColor backplot{245, 245, 235};
 
     /// Colour of a move kind.
     QColor colour(mtc::core::ToolpathKind kind) const {

@@ -113,7 +113,9 @@ void ToolpathScreen::renderText() {
     legend_->setText(legendText());
     QString line = tr("Linked to the %1").arg(model_->partnerName());
     if (!model_->highlightText().isEmpty())
-        line += " · " + tr("highlighted: %1").arg(model_->highlightText());
+        line += " · " + (model_->highlightsRunningBlock()
+                             ? tr("running: %1").arg(model_->highlightText())
+                             : tr("highlighted: %1").arg(model_->highlightText()));
     if (!model_->problem().isEmpty()) line += (line.isEmpty() ? "" : " · ") + model_->problem();
     if (!glReason_.isEmpty())
         line += (line.isEmpty() ? "" : " · ") + tr("2D view: %1").arg(glReason_);

@@ -31,96 +31,48 @@
 
 #include "cnc_core/toolpath/ToolpathPick.h"
 #include "screens/toolpath/ToolpathModel.h"
+#include "screens/toolpath/VtkToolpathCache.h"
 #include "screens/toolpath/VtkToolpathData.h"
+#include "screens/toolpath/VtkToolpathPart.h"
 
 namespace mtc::screens {
 
 namespace {
-constexpr int kStillMs = 250;  ///< full detail again after this pause
-/// Line width of the path in pixels: 1, because VTK 9.1 draws wider lines
-/// with a geometry shader, which is slow on Mesa llvmpipe (TP-010).
-constexpr float kPathWidth = 1.0f;
-constexpr float kContourWidth = 1.0f;  // told apart by its colour (legend under the view)
-constexpr double kPickPixels = 6.0;    ///< a click this close to a segment picks it
+constexpr int kStillMs = 250;        ///< full detail again after this pause
+constexpr double kPickPixels = 6.0;  ///< a click this close to a segment picks it
 
-void setColour(vtkProperty* property, const QColor& colour) {
-    property->SetColor(colour.redF(), colour.greenF(), colour.blueF());
+/// The marks other than the tool: what the steady picture shows of them.
+bool sameSteadyMarks(const ToolpathMarks& a, const ToolpathMarks& b) {
+    return a.hasStart == b.hasStart && a.hasTarget == b.hasTarget && a.hasReentry == b.hasReentry &&
+           a.hasRepos == b.hasRepos && a.start == b.start && a.target == b.target &&
+           a.reentry == b.reentry && a.repos == b.repos && a.collisions == b.collisions;
 }
 
-void setColour(vtkTextProperty* property, const QColor& colour) {
-    property->SetColor(colour.redF(), colour.greenF(), colour.blueF());
-}
-
-/// One picture area: the scene (3D) or the developed plane (2D).
-struct Part {
-    bool developed = false;
-    vtkNew<vtkRenderer> renderer;
-    vtkNew<vtkPolyDataMapper> mapper, coarseMapper;
-    vtkNew<vtkActor> path, coarsePath;  ///< full detail; coarse copy while moving
-    vtkSmartPointer<vtkPolyData> full, coarse;
-    mtc::core::DecimatedLayer decimated;  ///< what the coarse cells stand for
-    vtkNew<vtkPolyDataMapper> highlightMapper;
-    vtkNew<vtkActor> highlight;
-    /// The programmed contour where compensation moves the tool off it
-    /// (TC-012): thin, one colour, under the tool-centre path.
-    vtkNew<vtkPolyDataMapper> contourMapper;
-    vtkNew<vtkActor> contour;
-    vtkNew<vtkCubeAxesActor> axes;
-    vtkNew<vtkTextActor> caption;
-
-    void setUp(const ToolpathPalette& palette) {
-        const QColor& bg = palette.background;
-        renderer->SetBackground(bg.redF(), bg.greenF(), bg.blueF());
-        for (auto [m, actor] : {std::pair{mapper.Get(), path.Get()},
-                                std::pair{coarseMapper.Get(), coarsePath.Get()}}) {
-            m->SetScalarModeToUsePointData();
-            m->SetColorModeToDirectScalars();
-            actor->SetMapper(m);
-            actor->GetProperty()->SetLineWidth(kPathWidth);
-            actor->GetProperty()->SetLighting(false);
-        }
-        coarsePath->VisibilityOff();
-        contourMapper->ScalarVisibilityOff();
-        contour->SetMapper(contourMapper);
-        contour->GetProperty()->SetLineWidth(kContourWidth);
-        contour->GetProperty()->SetLighting(false);
-        setColour(contour->GetProperty(), palette.contour);
-        contour->PickableOff();
-        contour->VisibilityOff();
-        highlightMapper->ScalarVisibilityOff();
-        highlight->SetMapper(highlightMapper);
-        highlight->GetProperty()->SetLineWidth(6.0f);
-        highlight->GetProperty()->SetLighting(false);
-        setColour(highlight->GetProperty(), palette.highlight);
-        highlight->PickableOff();
-        axes->SetCamera(renderer->GetActiveCamera());
-        axes->DrawXGridlinesOn();
-        axes->DrawYGridlinesOn();
-        axes->DrawZGridlinesOn();
-        axes->SetGridLineLocation(vtkCubeAxesActor::VTK_GRID_LINES_FURTHEST);
-        // One labelled edge per axis, the one nearest the viewer: labels on
-        // several edges ran into each other and were drawn twice in the plane
-        // views, where front and back edges coincide (TP-014).
-        axes->SetFlyModeToClosestTriad();
-        for (int i = 0; i < 3; ++i) {
-            setColour(axes->GetTitleTextProperty(i), QColor(220, 220, 230));
-            setColour(axes->GetLabelTextProperty(i), QColor(200, 200, 210));
-        }
-        setColour(axes->GetXAxesGridlinesProperty(), palette.grid);
-        setColour(axes->GetYAxesGridlinesProperty(), palette.grid);
-        setColour(axes->GetZAxesGridlinesProperty(), palette.grid);
-        axes->PickableOff();
-        caption->GetTextProperty()->SetFontSize(14);
-        caption->GetTextProperty()->SetColor(1, 1, 1);
-        caption->SetPosition(8, 8);
-        renderer->AddActor(contour);
-        renderer->AddActor(path);
-        renderer->AddActor(coarsePath);
-        renderer->AddActor(highlight);
-        renderer->AddActor(axes);
-        renderer->AddActor2D(caption);
+/// The depth range of `part`'s camera: its steady and live props (the tool
+/// lives in the live renderer), with half their size to spare so that the
+/// tool stays inside it as it moves.
+void fitClippingRange(Part& part) {
+    double steady[6], live[6];
+    part.renderer->ComputeVisiblePropBounds(steady);
+    part.live->ComputeVisiblePropBounds(live);
+    double box[6];
+    for (int i = 0; i < 3; ++i) {
+        const bool hasSteady = steady[2 * i] <= steady[2 * i + 1];
+        const bool hasLive = live[2 * i] <= live[2 * i + 1];
+        if (!hasSteady && !hasLive) return part.renderer->ResetCameraClippingRange();
+        box[2 * i] = hasSteady ? (hasLive ? std::min(steady[2 * i], live[2 * i]) : steady[2 * i])
+                               : live[2 * i];
+        box[2 * i + 1] =
+            hasSteady ? (hasLive ? std::max(steady[2 * i + 1], live[2 * i + 1]) : steady[2 * i + 1])
+                      : live[2 * i + 1];
     }
-};
+    const double spare = 0.5 * std::max({box[1] - box[0], box[3] - box[2], box[5] - box[4], 1.0});
+    for (int i = 0; i < 3; ++i) {
+        box[2 * i] -= spare;
+        box[2 * i + 1] += spare;
+    }
+    part.renderer->ResetCameraClippingRange(box);
+}
 }  // namespace
 
 struct VtkToolpathCanvas::Scene {
@@ -136,6 +88,8 @@ struct VtkToolpathCanvas::Scene {
     int renders = 0, coarsePicks = 0;
     QTimer still;
     QPoint pressed;
+    std::unique_ptr<VtkStillCache> stillCache;  ///< the steady picture kept as an image (TP-018)
+    ToolpathMarks shownMarks;                   ///< the marks the steady picture shows
 };
 
 VtkToolpathCanvas::VtkToolpathCanvas(ToolpathModel* model, QWidget* parent)
@@ -155,12 +109,16 @@ VtkToolpathCanvas::VtkToolpathCanvas(ToolpathModel* model, QWidget* parent)
     scene_->scene.setUp(palette);
     scene_->developed.setUp(palette);
     scene_->window->AddRenderer(scene_->scene.renderer);
+    scene_->window->AddRenderer(scene_->scene.live);
+    scene_->stillCache = std::make_unique<VtkStillCache>(scene_->window);
+    scene_->stillCache->addArea(scene_->scene.renderer, scene_->scene.live);
+    scene_->stillCache->addArea(scene_->developed.renderer, scene_->developed.live);
     for (vtkActor* a : {scene_->stock.Get(), scene_->cylinder.Get(), scene_->start.Get(),
                         scene_->target.Get(), scene_->reentry.Get(), scene_->repos.Get(),
                         scene_->tool.Get(), scene_->collision.Get()}) {
         a->PickableOff();
         a->VisibilityOff();
-        scene_->scene.renderer->AddActor(a);
+        (a == scene_->tool.Get() ? scene_->scene.live : scene_->scene.renderer)->AddActor(a);
     }
     scene_->window->SetMultiSamples(0);  // lines only: no multisampling (TP-010)
 
@@ -193,7 +151,8 @@ VtkToolpathCanvas::VtkToolpathCanvas(ToolpathModel* model, QWidget* parent)
     connect(model_, &ToolpathModel::geometryChanged, this, &VtkToolpathCanvas::rebuild);
     connect(model_, &ToolpathModel::marksChanged, this, [this] {
         updateHighlight();
-        updateMarks();
+        updateMarks(false);
+        updateBackplot();
         requestRender();
     });
     rebuild();
@@ -205,6 +164,14 @@ VtkToolpathCanvas::~VtkToolpathCanvas() {
 
 int VtkToolpathCanvas::renderCount() const {
     return scene_->renders;
+}
+
+int VtkToolpathCanvas::keptRenders() const {
+    return scene_->stillCache->keptRenders();
+}
+
+void VtkToolpathCanvas::keepSteadyPicture(bool on) {
+    scene_->stillCache->setEnabled(on);
 }
 
 bool VtkToolpathCanvas::showingLevelOfDetail() const {
@@ -221,7 +188,8 @@ void VtkToolpathCanvas::requestRender() {
 }
 
 void VtkToolpathCanvas::renderNow() {
-    scene_->window->Render();
+    // While the view moves every frame is a new picture: nothing to keep.
+    scene_->stillCache->render(!scene_->coarse);
     ++scene_->renders;
 }
 
@@ -235,6 +203,7 @@ int VtkToolpathCanvas::picksOnLevelOfDetail() const {
 }
 
 void VtkToolpathCanvas::showLevelOfDetail(bool coarse) {
+    scene_->stillCache->invalidate();
     scene_->coarse = coarse && scene_->scene.coarse;
     for (Part* part : {&scene_->scene, &scene_->developed}) {
         if (!part->full) continue;
@@ -266,17 +235,22 @@ void VtkToolpathCanvas::rebuild() {
     const auto g = model_->geometry();
     const ToolpathPalette& palette = model_->palette();
     Scene& s = *scene_;
+    s.stillCache->invalidate();
     s.coarse = false;
     s.split = g && g->developed.segmentCount() > 0;
     if (s.split) {
-        if (!s.window->HasRenderer(s.developed.renderer))
-            s.window->AddRenderer(s.developed.renderer);
-        s.developed.renderer->SetViewport(0, 0, 0.5, 1);
+        for (vtkRenderer* r : {s.developed.renderer.Get(), s.developed.live.Get()}) {
+            if (!s.window->HasRenderer(r)) s.window->AddRenderer(r);
+            r->SetViewport(0, 0, 0.5, 1);
+        }
         s.scene.renderer->SetViewport(0.5, 0, 1, 1);
+        s.scene.live->SetViewport(0.5, 0, 1, 1);
         s.triad->SetViewport(0.5, 0, 0.62, 0.2);
     } else {
         s.window->RemoveRenderer(s.developed.renderer);
+        s.window->RemoveRenderer(s.developed.live);
         s.scene.renderer->SetViewport(0, 0, 1, 1);
+        s.scene.live->SetViewport(0, 0, 1, 1);
         s.triad->SetViewport(0, 0, 0.15, 0.2);
     }
     for (Part* part : {&s.scene, &s.developed}) {
@@ -350,8 +324,17 @@ void VtkToolpathCanvas::rebuild() {
         s.cylinder->GetProperty()->SetOpacity(0.2);
     }
     updateHighlight();
-    updateMarks();
+    updateMarks(true);
+    updateBackplot();
     showPreset(s.preset);
+}
+
+void VtkToolpathCanvas::updateBackplot() {
+    for (Part* part : {&scene_->scene, &scene_->developed}) {
+        const bool sealed = part->backplot->show(part->full ? model_->backplot(part->developed)
+                                                            : ToolpathBackplot{});
+        if (sealed) scene_->stillCache->invalidate();  // a piece joined the steady picture
+    }
 }
 
 void VtkToolpathCanvas::updateHighlight() {
@@ -367,11 +350,17 @@ void VtkToolpathCanvas::updateHighlight() {
     }
 }
 
-void VtkToolpathCanvas::updateMarks() {
+void VtkToolpathCanvas::updateMarks(bool always) {
     const ToolpathMarks marks = model_->marks();
     const ToolpathPalette& palette = model_->palette();
     const auto g = model_->geometry();
     const double size = g ? std::max(g->scene.bounds.size(), 1.0) : 100.0;
+    // The tool follows the station (live); the rest is steady picture.
+    placeTool(scene_->tool, marks, size);
+    setColour(scene_->tool->GetProperty(), palette.tool);
+    if (!always && sameSteadyMarks(marks, scene_->shownMarks)) return;
+    scene_->shownMarks = marks;
+    scene_->stillCache->invalidate();
     auto sphere = [&](vtkActor* actor, bool shown, const std::array<double, 3>& at,
                       const QColor& colour) {
         actor->SetVisibility(shown);
@@ -392,8 +381,6 @@ void VtkToolpathCanvas::updateMarks() {
     sphere(scene_->collision, !marks.collisions.empty(),
            marks.collisions.empty() ? std::array<double, 3>{} : marks.collisions.front(),
            QColor(0xd0, 0x00, 0x00));
-    placeTool(scene_->tool, marks, size);
-    setColour(scene_->tool->GetProperty(), palette.tool);
     scene_->repos->SetVisibility(marks.hasRepos);
     if (marks.hasRepos) {
         vtkNew<vtkPolyLineSource> line;  // the corners of ADJUST / REPOS (TP-007)
@@ -452,7 +439,7 @@ void VtkToolpathCanvas::frame(bool all) {
                                 box.max[1], box.min[2], box.max[2]};
             part->renderer->ResetCamera(bounds);
         }
-        part->renderer->ResetCameraClippingRange();
+        fitClippingRange(*part);
     }
     requestRender();
 }
@@ -460,7 +447,7 @@ void VtkToolpathCanvas::frame(bool all) {
 void VtkToolpathCanvas::zoom(double factor) {
     for (Part* part : {&scene_->scene, &scene_->developed}) {
         part->renderer->GetActiveCamera()->Zoom(factor);
-        part->renderer->ResetCameraClippingRange();
+        fitClippingRange(*part);
     }
     moving();
     requestRender();
@@ -497,7 +484,7 @@ void VtkToolpathCanvas::rotate(double azimuth, double elevation) {
     camera->Azimuth(azimuth);
     camera->Elevation(elevation);
     camera->OrthogonalizeViewUp();
-    scene_->scene.renderer->ResetCameraClippingRange();
+    fitClippingRange(scene_->scene);
     moving();
     requestRender();
 }

@@ -35,6 +35,10 @@ class VtkToolpathCanvas : public ToolpathCanvas {
     void renderNow();
     /// Renders done so far (coalescing check).
     int renderCount() const;
+    /// Renders that drew the steady picture from the kept image (TP-018).
+    int keptRenders() const;
+    /// Off: every render draws the whole scene (frame timing, tests).
+    void keepSteadyPicture(bool on);
     /// True while the coarse copy is shown (the view is moving).
     bool showingLevelOfDetail() const;
     /// Cells of the scene's coarse copy (0 when the full path is small enough).
@@ -54,7 +58,11 @@ class VtkToolpathCanvas : public ToolpathCanvas {
     struct Scene;
     void rebuild();
     void updateHighlight();
-    void updateMarks();
+    /// The restart's marks and REPOS path (steady picture: redrawn with
+    /// `always` or when they changed) and the tool (live, each time).
+    void updateMarks(bool always);
+    /// What the running program has travelled since Start (TP-016).
+    void updateBackplot();
     void requestRender();
     void moving();
     void showLevelOfDetail(bool coarse);

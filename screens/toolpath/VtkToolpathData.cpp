@@ -160,6 +160,31 @@ vtkSmartPointer<vtkPolyData> toolpathMoves(const ToolpathGeometry& geometry, boo
     return b.finish(false);
 }
 
+vtkSmartPointer<vtkPolyData> toolpathStretch(const ToolpathLayer& layer, std::uint32_t from,
+                                             std::uint32_t to,
+                                             const std::array<std::array<double, 3>, 2>* partial) {
+    const std::size_t count = to > from ? to - from : 0;
+    const std::size_t cells = count + (partial ? 1 : 0);  // the cell array's size is exact
+    Builder b(2 * cells, cells);
+    std::int32_t last = -1;
+    for (std::uint32_t s = from; s < to; ++s) {
+        const std::uint32_t v = layer.segmentStart[s];
+        const bool chained = s > from && v == layer.segmentStart[s - 1] + 1;
+        const std::int32_t start = chained ? last : b.point(layer, v, Rgb{});
+        last = b.point(layer, v + 1, Rgb{});
+        b.line(start, last);
+    }
+    if (partial) {
+        ToolpathLayer ends;  // the two points of the piece
+        for (const auto& p : *partial)
+            for (double c : p)
+                ends.xyz.push_back(static_cast<float>(c));
+        const std::int32_t start = b.point(ends, 0, Rgb{});
+        b.line(start, b.point(ends, 1, Rgb{}));
+    }
+    return b.finish(false);
+}
+
 vtkSmartPointer<vtkPolyData> toolpathContour(const ToolpathGeometry& geometry, bool developed) {
     const ToolpathLayer& layer = developed ? geometry.developedContour : geometry.contour;
     const std::size_t count = layer.segmentCount();

@@ -4,6 +4,7 @@
 // the toolpath benchmark only (VTK headers are heavy; keep them out of the rest).
 #include <vtkSmartPointer.h>
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -41,6 +42,13 @@ vtkSmartPointer<vtkPolyData> toolpathLevelOfDetail(const mtc::core::ToolpathGeom
 /// own points (only the vertices these segments use).
 vtkSmartPointer<vtkPolyData> toolpathMoves(const mtc::core::ToolpathGeometry& geometry,
                                            bool developed, const std::vector<std::uint32_t>& moves);
+
+/// Segments [from, to) of `layer`, without colours, and when `partial` is
+/// given, one more line from partial[0] to partial[1] (the backplot's piece
+/// of the segment the axes are on, TP-016).
+vtkSmartPointer<vtkPolyData> toolpathStretch(const mtc::core::ToolpathLayer& layer,
+                                             std::uint32_t from, std::uint32_t to,
+                                             const std::array<std::array<double, 3>, 2>* partial);
 
 /// The programmed contour of the compensated moves (the `contour` or
 /// `developedContour` layer, compensation.md TC-012), without colours: the

@@ -6,6 +6,8 @@
 // are coalesced. A compensated program shows its programmed contour beside
 // the tool-centre path, with a legend entry. A 200,000-segment program moves with a coarse copy
 // within the cell budget, and picking on that copy still selects the right block.
+// While a program runs the backplot is drawn and the steady picture is kept
+// as an image; a frame from it is the full frame.
 #include <QDir>
 #include <QLabel>
 #include <QSet>
@@ -265,6 +267,47 @@ class ToolpathGlTest : public QObject {
         QVERIFY2(hits >= 3, "clicks on segments in the zoomed view");
         QCOMPARE(canvas->picksOnLevelOfDetail(), hits);  // each click started a move: coarse
         QTRY_VERIFY(!canvas->showingLevelOfDetail());
+    }
+
+    /// TP-016, TP-018: while the program runs (Start) the backplot is in the
+    /// picture, the steady picture is kept as an image between the station's
+    /// steps, and a frame drawn from it is the frame drawn in full.
+    void runningProgramDrawsTheBackplotOverTheKeptSteadyPicture() {
+        PanelFixture panel;
+        panel.session->selectProgram(0, 1);
+        panel.window->showScreen("toolpath");
+        panel.session->setTimerEnabled(false);
+        ToolpathScreen* screen = toolpath(panel);
+        VtkToolpathCanvas* canvas = vtkCanvas(screen);
+        QVERIFY(canvas);
+        const auto& palette = screen->model()->palette();
+        const int nearWhite = count(canvas->picture(), palette.backplot);  // text, labels
+        panel.press(Qt::Key_F5, Qt::ShiftModifier);                        // Start
+        const int keptBefore = canvas->keptRenders();
+        for (int tick = 0; tick < 60; ++tick) {
+            panel.session->advance(0.2);
+            QCoreApplication::processEvents();  // the coalesced render of the step
+        }
+        QVERIFY(!screen->model()->backplot(false).empty());
+        QVERIFY2(canvas->keptRenders() > keptBefore + 10,
+                 qPrintable(QString::number(canvas->keptRenders() - keptBefore)));
+        const QImage kept = canvas->picture();
+        QVERIFY2(count(kept, palette.backplot) > nearWhite + 100,
+                 qPrintable(QString("%1 %2").arg(count(kept, palette.backplot)).arg(nearWhite)));
+        canvas->keepSteadyPicture(false);
+        const QImage full = canvas->picture();
+        QCOMPARE(kept.size(), full.size());
+        const QImage a = kept.convertToFormat(QImage::Format_RGB32);
+        const QImage b = full.convertToFormat(QImage::Format_RGB32);
+        int differing = 0;
+        for (int y = 0; y < a.height(); ++y)
+            for (int x = 0; x < a.width(); ++x)
+                if (a.pixel(x, y) != b.pixel(x, y)) ++differing;
+        if (differing != 0 && qEnvironmentVariableIsSet("MTC_KEEP_PICTURES")) {
+            kept.save("/tmp/kept.png");
+            full.save("/tmp/full.png");
+        }
+        QVERIFY2(differing == 0, qPrintable(QString("%1 pixels differ").arg(differing)));
     }
 };
 

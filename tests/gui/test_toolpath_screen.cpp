@@ -5,6 +5,7 @@
 #include <QDir>
 #include <QLabel>
 #include <QTemporaryDir>
+#include <cmath>
 
 #include "PanelFixture.h"
 #include "screens/restart/RestartController.h"
@@ -28,6 +29,21 @@ int count(const QImage& image, const QColor& colour) {
         for (int x = 0; x < rgb.width(); ++x)
             if (QColor(rgb.pixel(x, y)).rgb() == colour.rgb()) ++n;
     return n;
+}
+
+/// Length (mm) of the backplot the view draws in the scene.
+double travelled(const mtc::screens::ToolpathModel& model) {
+    const mtc::screens::ToolpathBackplot b = model.backplot(false);
+    if (b.empty()) return 0.0;
+    const auto distance = [](const std::array<double, 3>& p, const std::array<double, 3>& q) {
+        return std::hypot(p[0] - q[0], p[1] - q[1], p[2] - q[2]);
+    };
+    double length = 0.0;
+    for (std::uint32_t s = 0; s < b.segments; ++s)
+        length += distance(b.layer->vertex(b.layer->segmentStart[s]),
+                           b.layer->vertex(b.layer->segmentStart[s] + 1));
+    if (b.partial) length += distance(b.partialFrom, b.partialTo);
+    return length;
 }
 
 }  // namespace
@@ -160,6 +176,75 @@ class ToolpathScreenTest : public QObject {
         // Parked at the tool-change position, outside the part: every move framed.
         if (screen->softKeys().value(4).label == QString("Fit\nall")) panel.press(Qt::Key_F5);
         QVERIFY(count(screen->canvas()->picture(), model->palette().tool) > 20);
+    }
+
+    /// TP-016, TP-017: while the program runs (Start), the backplot grows
+    /// with the station's time and ends at the tool, the running block is
+    /// highlighted; Stop (feed hold) stops it growing, Control reset ends it
+    /// where the axes stopped, a new Start begins a new one.
+    void theBackplotGrowsWhileTheProgramRunsAndTheRunningBlockIsHighlighted() {
+        PanelFixture panel;
+        panel.session->selectProgram(0, 1);
+        panel.window->showScreen("toolpath");
+        panel.session->setTimerEnabled(false);  // the test gives the station its time
+        ToolpathScreen* screen = toolpath(panel);
+        const auto* model = screen->model();
+        const auto& palette = model->palette();
+        QVERIFY(model->backplot(false).empty());
+        QCOMPARE(count(screen->canvas()->picture(), palette.backplot), 0);
+        panel.press(Qt::Key_F5, Qt::ShiftModifier);  // Start
+        QVERIFY(panel.session->control(0).programActive());
+        const auto& station = panel.session->station(0);
+        // Until the first feed move (the contour: moves without waits follow).
+        const auto feeding = [&] {
+            const auto* move = station.machine().engine().currentMove();
+            return move && !move->rapid;
+        };
+        for (int tick = 0; tick < 2000 && !feeding(); ++tick)
+            panel.session->advance(0.05);
+        QVERIFY(feeding());
+        double before = travelled(*model);
+        QVERIFY2(before > 0.0, "the approach is in the backplot");
+        for (int tick = 0; tick < 5; ++tick) {
+            panel.session->advance(0.1);
+            const double now = travelled(*model);
+            QVERIFY2(now > before, qPrintable(QString("%1 after %2").arg(now).arg(before)));
+            before = now;
+            // It ends at the tool (the demo mill has no tool offsets in the plane).
+            const auto b = model->backplot(false);
+            const auto end = b.partial ? b.partialTo
+                                       : b.layer->vertex(b.layer->segmentStart[b.segments - 1] + 1);
+            QVERIFY(std::abs(end[0] - station.machine().position(0)) < 1e-3);
+            QVERIFY(std::abs(end[1] - station.machine().position(1)) < 1e-3);
+            // The running block is highlighted: the block the machine executes.
+            QVERIFY(model->highlightsRunningBlock());
+            const auto* executing = station.executingBlockState();
+            QVERIFY(executing);
+            const auto& g = *model->geometry();
+            QVERIFY(!model->highlighted().empty());
+            QCOMPARE(g.moves[model->highlighted().front()].block, executing->index);
+            QVERIFY(screen->findChild<QLabel*>("toolpathMessage")->text().contains("running: P1"));
+        }
+        QVERIFY(count(screen->canvas()->picture(), palette.backplot) > 10);
+        panel.press(Qt::Key_F6, Qt::ShiftModifier);  // Stop: feed hold
+        panel.session->advance(2.0);                 // the axes brake and stand
+        const double held = travelled(*model);
+        panel.session->advance(3.0);
+        QCOMPARE(travelled(*model), held);
+        panel.press(Qt::Key_F5, Qt::ShiftModifier);  // Start goes on
+        panel.session->advance(0.5);
+        QVERIFY(travelled(*model) > held);
+        panel.press(Qt::Key_F7, Qt::ShiftModifier);  // Control reset
+        const double stopped = travelled(*model);
+        panel.session->advance(1.0);
+        QCOMPARE(travelled(*model), stopped);
+        QVERIFY(!model->highlightsRunningBlock());
+        QVERIFY(count(screen->canvas()->picture(), palette.backplot) > 10);
+        panel.press(Qt::Key_F5, Qt::ShiftModifier);  // a new Start: a new backplot
+        QVERIFY(travelled(*model) < stopped);
+        for (int tick = 0; tick < 400 && travelled(*model) <= 0.0; ++tick)
+            panel.session->advance(0.1);
+        QVERIFY(travelled(*model) > 0.0);
     }
 
     void restartCursorAndToolpathFollowEachOther() {

@@ -1,0 +1,59 @@
+#include "screens/toolpath/VtkToolpathPart.h"
+
+namespace mtc::screens {
+
+void Part::setUp(const ToolpathPalette& palette) {
+    const QColor& bg = palette.background;
+    renderer->SetBackground(bg.redF(), bg.greenF(), bg.blueF());
+    for (auto [m, actor] :
+         {std::pair{mapper.Get(), path.Get()}, std::pair{coarseMapper.Get(), coarsePath.Get()}}) {
+        m->SetScalarModeToUsePointData();
+        m->SetColorModeToDirectScalars();
+        actor->SetMapper(m);
+        actor->GetProperty()->SetLineWidth(kPathWidth);
+        actor->GetProperty()->SetLighting(false);
+    }
+    coarsePath->VisibilityOff();
+    contourMapper->ScalarVisibilityOff();
+    contour->SetMapper(contourMapper);
+    contour->GetProperty()->SetLineWidth(kContourWidth);
+    contour->GetProperty()->SetLighting(false);
+    setColour(contour->GetProperty(), palette.contour);
+    contour->PickableOff();
+    contour->VisibilityOff();
+    highlightMapper->ScalarVisibilityOff();
+    highlight->SetMapper(highlightMapper);
+    highlight->GetProperty()->SetLineWidth(6.0f);
+    highlight->GetProperty()->SetLighting(false);
+    setColour(highlight->GetProperty(), palette.highlight);
+    highlight->PickableOff();
+    axes->SetCamera(renderer->GetActiveCamera());
+    axes->DrawXGridlinesOn();
+    axes->DrawYGridlinesOn();
+    axes->DrawZGridlinesOn();
+    axes->SetGridLineLocation(vtkCubeAxesActor::VTK_GRID_LINES_FURTHEST);
+    // One labelled edge per axis, the one nearest the viewer: labels on
+    // several edges ran into each other and were drawn twice in the plane
+    // views, where front and back edges coincide (TP-014).
+    axes->SetFlyModeToClosestTriad();
+    for (int i = 0; i < 3; ++i) {
+        setColour(axes->GetTitleTextProperty(i), QColor(220, 220, 230));
+        setColour(axes->GetLabelTextProperty(i), QColor(200, 200, 210));
+    }
+    setColour(axes->GetXAxesGridlinesProperty(), palette.grid);
+    setColour(axes->GetYAxesGridlinesProperty(), palette.grid);
+    setColour(axes->GetZAxesGridlinesProperty(), palette.grid);
+    axes->PickableOff();
+    caption->GetTextProperty()->SetFontSize(14);
+    caption->GetTextProperty()->SetColor(1, 1, 1);
+    caption->SetPosition(8, 8);
+    renderer->AddActor(contour);
+    renderer->AddActor(path);
+    renderer->AddActor(coarsePath);
+    live->AddActor(highlight);
+    renderer->AddActor(axes);
+    renderer->AddActor2D(caption);
+    backplot = std::make_unique<VtkBackplot>(renderer, live, palette.backplot);
+}
+
+}  // namespace mtc::screens

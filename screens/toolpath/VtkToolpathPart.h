@@ -1,0 +1,64 @@
+#pragma once
+
+// One picture area of the VTK toolpath view (VtkToolpathCanvas): the scene
+// (3D) or the developed plane (2D), with its renderer and actors.
+#include <vtkActor.h>
+#include <vtkCubeAxesActor.h>
+#include <vtkNew.h>
+#include <vtkPolyData.h>
+#include <vtkPolyDataMapper.h>
+#include <vtkProperty.h>
+#include <vtkRenderer.h>
+#include <vtkSmartPointer.h>
+#include <vtkTextActor.h>
+#include <vtkTextProperty.h>
+
+#include <QColor>
+#include <memory>
+
+#include "cnc_core/toolpath/ToolpathDecimation.h"
+#include "screens/toolpath/ToolpathPalette.h"
+#include "screens/toolpath/VtkToolpathBackplot.h"
+
+namespace mtc::screens {
+
+/// Line width of the path in pixels: 1, because VTK 9.1 draws wider lines
+/// with a geometry shader, which is slow on Mesa llvmpipe (TP-010).
+inline constexpr float kPathWidth = 1.0f;
+inline constexpr float kContourWidth = 1.0f;  // told apart by its colour (legend under the view)
+
+inline void setColour(vtkProperty* property, const QColor& colour) {
+    property->SetColor(colour.redF(), colour.greenF(), colour.blueF());
+}
+
+inline void setColour(vtkTextProperty* property, const QColor& colour) {
+    property->SetColor(colour.redF(), colour.greenF(), colour.blueF());
+}
+
+/// One picture area: the scene (3D) or the developed plane (2D).
+struct Part {
+    bool developed = false;
+    vtkNew<vtkRenderer> renderer;  ///< the steady picture (VtkStillCache)
+    /// What follows the station (the highlight, the backplot's open piece;
+    /// the scene's also the tool), over the steady picture.
+    vtkNew<vtkRenderer> live;
+    vtkNew<vtkPolyDataMapper> mapper, coarseMapper;
+    vtkNew<vtkActor> path, coarsePath;  ///< full detail; coarse copy while moving
+    vtkSmartPointer<vtkPolyData> full, coarse;
+    mtc::core::DecimatedLayer decimated;  ///< what the coarse cells stand for
+    vtkNew<vtkPolyDataMapper> highlightMapper;
+    vtkNew<vtkActor> highlight;
+    /// The programmed contour where compensation moves the tool off it
+    /// (TC-012): thin, one colour, under the tool-centre path.
+    vtkNew<vtkPolyDataMapper> contourMapper;
+    vtkNew<vtkActor> contour;
+    vtkNew<vtkCubeAxesActor> axes;
+    vtkNew<vtkTextActor> caption;
+    /// What the running program has travelled since Start (TP-016).
+    std::unique_ptr<VtkBackplot> backplot;
+
+    /// Colours, widths and the actors in drawing order (the backplot last).
+    void setUp(const ToolpathPalette& palette);
+};
+
+}  // namespace mtc::screens
