@@ -3095,6 +3095,10 @@ einpassen</translation>
         <source>running: %1</source>
         <translation>läuft: %1</translation>
     </message>
+    <message>
+        <source>travelled since Start</source>
+        <translation>seit Start verfahren</translation>
+    </message>
 </context>
 <context>
     <name>mtc::screens::VelocityPlot</name>

@@ -105,6 +105,8 @@ QString ToolpathScreen::legendText() const {
     const auto g = model_->geometry();
     if (g && g->contour.segmentCount() + g->developedContour.segmentCount() > 0)
         text += " &nbsp;&nbsp; " + swatch(p.contour, tr("programmed contour (G41/G42, edge, G48)"));
+    if (!model_->backplot(false).empty() || !model_->backplot(true).empty())
+        text += " &nbsp;&nbsp; " + swatch(p.backplot, tr("travelled since Start"));
     return text;
 }
 

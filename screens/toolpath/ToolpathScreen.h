@@ -59,8 +59,9 @@ class ToolpathScreen : public mtc::hmi::Screen {
     /// Frames the part (presets, Home, a new program) and says so on F5.
     void fitPart();
     void renderText();
-    /// The legend line: the motion colours of the tool-centre path, and the
-    /// programmed contour when the program has compensated moves.
+    /// The legend line: the motion colours of the tool-centre path, the
+    /// programmed contour when the program has compensated moves, and the
+    /// backplot when there is one (TP-016).
     QString legendText() const;
     QString defaultExportPath() const;
 

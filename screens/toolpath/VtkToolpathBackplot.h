@@ -21,7 +21,7 @@ namespace mtc::screens {
 /// whatever the length of the backplot.
 class VtkBackplot {
   public:
-    static constexpr std::uint32_t kPieceSegments = 16384;
+    static constexpr std::uint32_t kPieceSegments = 4096;
     /// Line width in pixels: wider than the path (1 px), narrower than the
     /// highlight (6 px), so the running block's travelled part shows on it.
     static constexpr float kWidth = 3.0f;

@@ -90,6 +90,9 @@ struct VtkToolpathCanvas::Scene {
     QPoint pressed;
     std::unique_ptr<VtkStillCache> stillCache;  ///< the steady picture kept as an image (TP-018)
     ToolpathMarks shownMarks;                   ///< the marks the steady picture shows
+    std::vector<std::uint32_t> shownHighlight;  ///< the moves the highlight shows
+    std::array<double, 4> toolShape{};          ///< has tool, turning, radius, length shown
+    double toolPictureSize = 0.0;               ///< picture size the tool was made for
 };
 
 VtkToolpathCanvas::VtkToolpathCanvas(ToolpathModel* model, QWidget* parent)
@@ -150,7 +153,7 @@ VtkToolpathCanvas::VtkToolpathCanvas(ToolpathModel* model, QWidget* parent)
     widget_->installEventFilter(this);
     connect(model_, &ToolpathModel::geometryChanged, this, &VtkToolpathCanvas::rebuild);
     connect(model_, &ToolpathModel::marksChanged, this, [this] {
-        updateHighlight();
+        updateHighlight(false);
         updateMarks(false);
         updateBackplot();
         requestRender();
@@ -323,7 +326,7 @@ void VtkToolpathCanvas::rebuild() {
         setColour(s.cylinder->GetProperty(), palette.stock);
         s.cylinder->GetProperty()->SetOpacity(0.2);
     }
-    updateHighlight();
+    updateHighlight(true);
     updateMarks(true);
     updateBackplot();
     showPreset(s.preset);
@@ -337,7 +340,10 @@ void VtkToolpathCanvas::updateBackplot() {
     }
 }
 
-void VtkToolpathCanvas::updateHighlight() {
+void VtkToolpathCanvas::updateHighlight(bool always) {
+    // The same block at every tick of a running program: nothing to upload.
+    if (!always && model_->highlighted() == scene_->shownHighlight) return;
+    scene_->shownHighlight = model_->highlighted();
     const auto g = model_->geometry();
     for (Part* part : {&scene_->scene, &scene_->developed}) {
         if (!g || !part->full) {
@@ -356,7 +362,15 @@ void VtkToolpathCanvas::updateMarks(bool always) {
     const auto g = model_->geometry();
     const double size = g ? std::max(g->scene.bounds.size(), 1.0) : 100.0;
     // The tool follows the station (live); the rest is steady picture.
-    placeTool(scene_->tool, marks, size);
+    // A new shape when the edge changes; otherwise only the position moves.
+    const std::array<double, 4> shape{marks.hasTool ? 1.0 : 0.0, marks.turning ? 1.0 : 0.0,
+                                      marks.toolRadius, marks.toolLength};
+    if (always || shape != scene_->toolShape || size != scene_->toolPictureSize)
+        placeTool(scene_->tool, marks, size);
+    else
+        scene_->tool->SetPosition(marks.tool[0], marks.tool[1], marks.tool[2]);
+    scene_->toolShape = shape;
+    scene_->toolPictureSize = size;
     setColour(scene_->tool->GetProperty(), palette.tool);
     if (!always && sameSteadyMarks(marks, scene_->shownMarks)) return;
     scene_->shownMarks = marks;

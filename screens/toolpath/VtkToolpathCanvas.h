@@ -57,7 +57,8 @@ class VtkToolpathCanvas : public ToolpathCanvas {
   private:
     struct Scene;
     void rebuild();
-    void updateHighlight();
+    /// The highlighted moves (uploaded again with `always` or when they changed).
+    void updateHighlight(bool always);
     /// The restart's marks and REPOS path (steady picture: redrawn with
     /// `always` or when they changed) and the tool (live, each time).
     void updateMarks(bool always);

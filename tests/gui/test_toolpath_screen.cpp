@@ -192,6 +192,7 @@ class ToolpathScreenTest : public QObject {
         const auto& palette = model->palette();
         QVERIFY(model->backplot(false).empty());
         QCOMPARE(count(screen->canvas()->picture(), palette.backplot), 0);
+        QVERIFY(!screen->findChild<QLabel*>("toolpathLegend")->text().contains("since Start"));
         panel.press(Qt::Key_F5, Qt::ShiftModifier);  // Start
         QVERIFY(panel.session->control(0).programActive());
         const auto& station = panel.session->station(0);
@@ -226,6 +227,7 @@ class ToolpathScreenTest : public QObject {
             QVERIFY(screen->findChild<QLabel*>("toolpathMessage")->text().contains("running: P1"));
         }
         QVERIFY(count(screen->canvas()->picture(), palette.backplot) > 10);
+        QVERIFY(screen->findChild<QLabel*>("toolpathLegend")->text().contains("since Start"));
         panel.press(Qt::Key_F6, Qt::ShiftModifier);  // Stop: feed hold
         panel.session->advance(2.0);                 // the axes brake and stand
         const double held = travelled(*model);
