@@ -23,6 +23,8 @@ constexpr qint64 kTickBudgetNs = 8'000'000;
 CellSession::CellSession(mtc::core::MachineConfig config, QObject* parent)
     : QObject(parent), cell_(std::move(config)) {
     announced_.assign(static_cast<std::size_t>(cell_.stationCount()), 0);
+    for (int slot = 0; slot < cell_.stationCount(); ++slot)
+        cell_.station(slot).setRunTracing(true);  // the toolpath view's backplot (TP-016)
     timer_.setInterval(kTickMs);
     connect(&timer_, &QTimer::timeout, this, &CellSession::tick);
     realTime_.start();

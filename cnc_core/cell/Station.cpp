@@ -161,6 +161,8 @@ std::string Station::start(int number) {
 }
 
 void Station::beginTrace(int number) {
+    output_.trace = nullptr;
+    if (!tracing_) return;
     trace_.begin(number);
     output_.trace = &trace_;
 }

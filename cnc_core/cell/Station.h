@@ -130,8 +130,12 @@ class Station : private ProgramRunner {
     /// The backplot (TP-016): the moves of the program run since its Start
     /// (or since a restart was accepted) and how far the axes have travelled
     /// along them. MDI entries and manual jogs are not in it; Control reset
-    /// ends it where the axes stopped.
+    /// ends it where the axes stopped. Empty unless tracing is on.
     const RunTrace& runTrace() const { return trace_; }
+    /// Keeps the backplot of the runs from the next Start on (the panel; off
+    /// by default: the CLI has no use for it, and it holds about 45 bytes per
+    /// segment of a run).
+    void setRunTracing(bool on) { tracing_ = on; }
     /// Sees everything the interpreter (and the restart's jogging) sends to
     /// the machine, as it is sent (the CLI's motion list, recording tests).
     /// Not owned; nullptr = none.
@@ -303,6 +307,7 @@ class Station : private ProgramRunner {
     std::uint32_t lastBlock_ = 0;
     QueuedBlockStates queued_;
     RunTrace trace_;
+    bool tracing_ = false;  ///< setRunTracing()
     ManualJog jog_;
     DiagnosticLog log_;
     std::size_t restartLogged_ = 0;  ///< restart diagnostics already in log_

@@ -15,7 +15,7 @@ namespace {
 using core::ControlKey;
 
 struct TraceFixture {
-    TraceFixture() : cell(demoCell()) {}
+    TraceFixture() : cell(demoCell()) { mill().setRunTracing(true); }
     core::Station& select(const std::string& source) {
         core::ProgramPtr program = cell.addProgram(0, 1, "trace.nc", source);
         EXPECT_FALSE(program->diagnostics.hasErrors()) << diagnosticsText(program->diagnostics);
@@ -113,6 +113,17 @@ TEST(RunTrace, FeedHoldStopsItControlResetCutsItStartBeginsAnew) {
     EXPECT_EQ(f.trace().extent(false).segments, 0u) << "a new Start begins a new backplot";
     mill.advance(1.0);
     EXPECT_FALSE(f.trace().geometry().moves.empty());
+}
+
+TEST(RunTrace, OnlyAStationThatTracesKeepsIt) {
+    core::Cell cell(demoCell());  // as the CLI has it: no backplot
+    core::Station& mill = cell.station(0);
+    cell.addProgram(0, 1, "trace.nc", kSquare);
+    ASSERT_TRUE(mill.selectProgram(1));
+    ASSERT_TRUE(mill.press(ControlKey::Start));
+    mill.advance(3.0);
+    EXPECT_EQ(mill.runTrace().run(), 0u);
+    EXPECT_TRUE(mill.runTrace().geometry().moves.empty());
 }
 
 TEST(RunTrace, AnArcIsTravelledAlongItsChords) {
