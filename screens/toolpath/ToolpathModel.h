@@ -63,7 +63,9 @@ struct ToolpathBackplot {
 /// screen (start block, target block, re-entry point, REPOS path). It
 /// follows the screen the station's ToolpathLink names (the restart
 /// controller or the editor): moving its cursor highlights the block;
-/// picking a segment here puts the cursor there (TP-006, TP-012).
+/// picking a segment here puts the cursor there (TP-006, TP-012). While the
+/// station's program runs, the running block is highlighted instead
+/// (TP-017), and the station's run trace is the backplot (TP-016).
 class ToolpathModel : public QObject {
     Q_OBJECT
   public:

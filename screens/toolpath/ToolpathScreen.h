@@ -23,9 +23,11 @@ bool openGlAvailable(QString& reason);
 
 /// Toolpath graphics of the station's selected program ("toolpath"): the 3D
 /// view (VTK) or, without OpenGL, the 2D view, with the current block
-/// highlighted (the cursor of the restart screen or of the editor, TP-012)
-/// and the restart screen's start and target blocks, re-entry point and
-/// REPOS path marked. Keys: 1/2/3/4 G17/G18/G19/isometric view,
+/// highlighted (the cursor of the restart screen or of the editor, TP-012;
+/// while the program runs the running block, TP-017), the backplot of the
+/// run since Start (TP-016), the tool where the axes are (TP-015) and the
+/// restart screen's start and target blocks, re-entry point and REPOS path
+/// marked. Keys: 1/2/3/4 G17/G18/G19/isometric view,
 /// 0 or Home fit, + / − zoom, arrows rotate, Shift+arrows pan, PgDn/PgUp
 /// next/previous move (moves the linked screen's cursor), P export PNG.
 class ToolpathScreen : public mtc::hmi::Screen {
