@@ -48,31 +48,6 @@ bool sameSteadyMarks(const ToolpathMarks& a, const ToolpathMarks& b) {
            a.reentry == b.reentry && a.repos == b.repos && a.collisions == b.collisions;
 }
 
-/// The depth range of `part`'s camera: its steady and live props (the tool
-/// lives in the live renderer), with half their size to spare so that the
-/// tool stays inside it as it moves.
-void fitClippingRange(Part& part) {
-    double steady[6], live[6];
-    part.renderer->ComputeVisiblePropBounds(steady);
-    part.live->ComputeVisiblePropBounds(live);
-    double box[6];
-    for (int i = 0; i < 3; ++i) {
-        const bool hasSteady = steady[2 * i] <= steady[2 * i + 1];
-        const bool hasLive = live[2 * i] <= live[2 * i + 1];
-        if (!hasSteady && !hasLive) return part.renderer->ResetCameraClippingRange();
-        box[2 * i] = hasSteady ? (hasLive ? std::min(steady[2 * i], live[2 * i]) : steady[2 * i])
-                               : live[2 * i];
-        box[2 * i + 1] =
-            hasSteady ? (hasLive ? std::max(steady[2 * i + 1], live[2 * i + 1]) : steady[2 * i + 1])
-                      : live[2 * i + 1];
-    }
-    const double spare = 0.5 * std::max({box[1] - box[0], box[3] - box[2], box[5] - box[4], 1.0});
-    for (int i = 0; i < 3; ++i) {
-        box[2 * i] -= spare;
-        box[2 * i + 1] += spare;
-    }
-    part.renderer->ResetCameraClippingRange(box);
-}
 }  // namespace
 
 struct VtkToolpathCanvas::Scene {
@@ -93,6 +68,9 @@ struct VtkToolpathCanvas::Scene {
     std::vector<std::uint32_t> shownHighlight;  ///< the moves the highlight shows
     std::array<double, 4> toolShape{};          ///< has tool, turning, radius, length shown
     double toolPictureSize = 0.0;               ///< picture size the tool was made for
+    std::array<double, 3> toolAt{};             ///< where the tool is drawn
+    /// Per area (scene, developed): backplot shown (0/1), its run and revision.
+    std::array<std::array<std::uint64_t, 3>, 2> shownBackplot{};
 };
 
 VtkToolpathCanvas::VtkToolpathCanvas(ToolpathModel* model, QWidget* parent)
@@ -153,10 +131,12 @@ VtkToolpathCanvas::VtkToolpathCanvas(ToolpathModel* model, QWidget* parent)
     widget_->installEventFilter(this);
     connect(model_, &ToolpathModel::geometryChanged, this, &VtkToolpathCanvas::rebuild);
     connect(model_, &ToolpathModel::marksChanged, this, [this] {
-        updateHighlight(false);
-        updateMarks(false);
-        updateBackplot();
-        requestRender();
+        // A station change that shows nothing new (a dwell, a spindle
+        // running up) renders nothing.
+        bool changed = updateHighlight(false);
+        changed = updateMarks(false) || changed;
+        changed = updateBackplot() || changed;
+        if (changed) requestRender();
     });
     rebuild();
 }
@@ -332,17 +312,25 @@ void VtkToolpathCanvas::rebuild() {
     showPreset(s.preset);
 }
 
-void VtkToolpathCanvas::updateBackplot() {
+bool VtkToolpathCanvas::updateBackplot() {
+    bool changed = false;
     for (Part* part : {&scene_->scene, &scene_->developed}) {
-        const bool sealed = part->backplot->show(part->full ? model_->backplot(part->developed)
-                                                            : ToolpathBackplot{});
-        if (sealed) scene_->stillCache->invalidate();  // a piece joined the steady picture
+        const ToolpathBackplot backplot =
+            part->full ? model_->backplot(part->developed) : ToolpathBackplot{};
+        const std::array<std::uint64_t, 3> shown{backplot.empty() ? 0u : 1u, backplot.run,
+                                                 backplot.revision};
+        std::array<std::uint64_t, 3>& before = scene_->shownBackplot[part->developed ? 1 : 0];
+        changed = changed || shown != before;
+        before = shown;
+        if (part->backplot->show(backplot))
+            scene_->stillCache->invalidate();  // a piece joined the steady picture
     }
+    return changed;
 }
 
-void VtkToolpathCanvas::updateHighlight(bool always) {
+bool VtkToolpathCanvas::updateHighlight(bool always) {
     // The same block at every tick of a running program: nothing to upload.
-    if (!always && model_->highlighted() == scene_->shownHighlight) return;
+    if (!always && model_->highlighted() == scene_->shownHighlight) return false;
     scene_->shownHighlight = model_->highlighted();
     const auto g = model_->geometry();
     for (Part* part : {&scene_->scene, &scene_->developed}) {
@@ -354,9 +342,10 @@ void VtkToolpathCanvas::updateHighlight(bool always) {
             toolpathMoves(*g, part->developed, model_->highlighted()));
         part->highlight->SetVisibility(!model_->highlighted().empty());
     }
+    return true;
 }
 
-void VtkToolpathCanvas::updateMarks(bool always) {
+bool VtkToolpathCanvas::updateMarks(bool always) {
     const ToolpathMarks marks = model_->marks();
     const ToolpathPalette& palette = model_->palette();
     const auto g = model_->geometry();
@@ -369,10 +358,13 @@ void VtkToolpathCanvas::updateMarks(bool always) {
         placeTool(scene_->tool, marks, size);
     else
         scene_->tool->SetPosition(marks.tool[0], marks.tool[1], marks.tool[2]);
+    const bool toolChanged = always || shape != scene_->toolShape ||
+                             size != scene_->toolPictureSize || marks.tool != scene_->toolAt;
     scene_->toolShape = shape;
     scene_->toolPictureSize = size;
+    scene_->toolAt = marks.tool;
     setColour(scene_->tool->GetProperty(), palette.tool);
-    if (!always && sameSteadyMarks(marks, scene_->shownMarks)) return;
+    if (!always && sameSteadyMarks(marks, scene_->shownMarks)) return toolChanged;
     scene_->shownMarks = marks;
     scene_->stillCache->invalidate();
     auto sphere = [&](vtkActor* actor, bool shown, const std::array<double, 3>& at,
@@ -409,6 +401,7 @@ void VtkToolpathCanvas::updateMarks(bool always) {
         setColour(scene_->repos->GetProperty(), palette.repos);
         scene_->repos->GetProperty()->SetLineWidth(3.0f);
     }
+    return true;
 }
 
 void VtkToolpathCanvas::showAxesFor(ToolpathPreset preset) {
@@ -453,7 +446,7 @@ void VtkToolpathCanvas::frame(bool all) {
                                 box.max[1], box.min[2], box.max[2]};
             part->renderer->ResetCamera(bounds);
         }
-        fitClippingRange(*part);
+        part->fitClippingRange();
     }
     requestRender();
 }
@@ -461,7 +454,7 @@ void VtkToolpathCanvas::frame(bool all) {
 void VtkToolpathCanvas::zoom(double factor) {
     for (Part* part : {&scene_->scene, &scene_->developed}) {
         part->renderer->GetActiveCamera()->Zoom(factor);
-        fitClippingRange(*part);
+        part->fitClippingRange();
     }
     moving();
     requestRender();
@@ -498,7 +491,7 @@ void VtkToolpathCanvas::rotate(double azimuth, double elevation) {
     camera->Azimuth(azimuth);
     camera->Elevation(elevation);
     camera->OrthogonalizeViewUp();
-    fitClippingRange(scene_->scene);
+    scene_->scene.fitClippingRange();
     moving();
     requestRender();
 }

@@ -57,13 +57,16 @@ class VtkToolpathCanvas : public ToolpathCanvas {
   private:
     struct Scene;
     void rebuild();
-    /// The highlighted moves (uploaded again with `always` or when they changed).
-    void updateHighlight(bool always);
+    /// The highlighted moves (uploaded again with `always` or when they
+    /// changed). True when the picture changed.
+    bool updateHighlight(bool always);
     /// The restart's marks and REPOS path (steady picture: redrawn with
-    /// `always` or when they changed) and the tool (live, each time).
-    void updateMarks(bool always);
-    /// What the running program has travelled since Start (TP-016).
-    void updateBackplot();
+    /// `always` or when they changed) and the tool (live, each time). True
+    /// when the picture changed.
+    bool updateMarks(bool always);
+    /// What the running program has travelled since Start (TP-016). True
+    /// when the picture changed.
+    bool updateBackplot();
     void requestRender();
     void moving();
     void showLevelOfDetail(bool coarse);

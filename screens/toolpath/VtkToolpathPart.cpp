@@ -1,5 +1,7 @@
 #include "screens/toolpath/VtkToolpathPart.h"
 
+#include <algorithm>
+
 namespace mtc::screens {
 
 void Part::setUp(const ToolpathPalette& palette) {
@@ -54,6 +56,27 @@ void Part::setUp(const ToolpathPalette& palette) {
     renderer->AddActor(axes);
     renderer->AddActor2D(caption);
     backplot = std::make_unique<VtkBackplot>(renderer, live, palette.backplot);
+}
+
+void Part::fitClippingRange() {
+    double a[6], b[6];  // steady, live
+    renderer->ComputeVisiblePropBounds(a);
+    live->ComputeVisiblePropBounds(b);
+    double box[6];
+    for (int i = 0; i < 3; ++i) {
+        const bool hasA = a[2 * i] <= a[2 * i + 1], hasB = b[2 * i] <= b[2 * i + 1];
+        if (!hasA && !hasB) return renderer->ResetCameraClippingRange();
+        box[2 * i] = !hasB ? a[2 * i] : !hasA ? b[2 * i] : std::min(a[2 * i], b[2 * i]);
+        box[2 * i + 1] = !hasB   ? a[2 * i + 1]
+                         : !hasA ? b[2 * i + 1]
+                                 : std::max(a[2 * i + 1], b[2 * i + 1]);
+    }
+    const double spare = 0.5 * std::max({box[1] - box[0], box[3] - box[2], box[5] - box[4], 1.0});
+    for (int i = 0; i < 3; ++i) {
+        box[2 * i] -= spare;
+        box[2 * i + 1] += spare;
+    }
+    renderer->ResetCameraClippingRange(box);
 }
 
 }  // namespace mtc::screens

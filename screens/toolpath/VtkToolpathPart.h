@@ -59,6 +59,10 @@ struct Part {
 
     /// Colours, widths and the actors in drawing order (the backplot last).
     void setUp(const ToolpathPalette& palette);
+    /// The depth range of the camera: the steady and live props (the tool
+    /// lives in the live renderer), with half their size to spare so that
+    /// the tool stays inside it as it moves.
+    void fitClippingRange();
 };
 
 }  // namespace mtc::screens

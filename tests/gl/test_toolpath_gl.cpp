@@ -309,6 +309,53 @@ class ToolpathGlTest : public QObject {
         }
         QVERIFY2(differing == 0, qPrintable(QString("%1 pixels differ").arg(differing)));
     }
+
+    /// TP-018: a station change that shows nothing new (here a dwell: the
+    /// machine's time goes on, the axes stand) renders nothing; the axes
+    /// moving again do.
+    void aStationChangeWithNothingNewToShowRendersNothing() {
+        QTemporaryDir dir;
+        writeProgram(QDir(dir.path()), 6,
+                     QString("iMTc/01006/01.00/0000000000/26.11.2026/16:00:00/N1010006.DAT/1\n"
+                             "%NPG:1:01:0:006\n!01.00\n#01Dwell\n$\n$\n$\n$\n*Dwell\n%NPG\n"
+                             "N0001 G1 G90 X-100 Y-50 Z-100 F3000\nN0002 G4 F3\n"
+                             "N0003 G1 X-60\nN0004 M30\n"));
+        mtc::hmi::PanelOptions options;
+        options.programsDir = dir.path();
+        PanelFixture panel(options);
+        panel.session->selectProgram(0, 6);
+        QVERIFY(panel.window->showScreen("toolpath"));
+        panel.session->setTimerEnabled(false);
+        VtkToolpathCanvas* canvas = vtkCanvas(toolpath(panel));
+        QVERIFY(canvas);
+        panel.press(Qt::Key_F5, Qt::ShiftModifier);  // Start
+        const auto& station = panel.session->station(0);
+        const auto dwelling = [&] {
+            const auto* front = station.machine().engine().queued(0);
+            return front && front->kind == mtc::core::motion::QueueItem::Kind::Dwell;
+        };
+        for (int tick = 0; tick < 2000 && !dwelling(); ++tick) {
+            panel.session->advance(0.05);
+            QCoreApplication::processEvents();
+        }
+        QVERIFY(dwelling());
+        panel.session->advance(0.1);
+        QCoreApplication::processEvents();  // the last move's end drawn
+        const int renders = canvas->renderCount();
+        const std::uint64_t revision = station.revision();
+        for (int tick = 0; tick < 10; ++tick) {
+            panel.session->advance(0.1);
+            QCoreApplication::processEvents();
+        }
+        QVERIFY(dwelling());
+        QVERIFY(station.revision() > revision);  // the station did change (its time)
+        QCOMPARE(canvas->renderCount(), renders);
+        for (int tick = 0; tick < 40 && canvas->renderCount() == renders; ++tick) {
+            panel.session->advance(0.1);  // the dwell ends, X moves
+            QCoreApplication::processEvents();
+        }
+        QVERIFY(canvas->renderCount() > renders);
+    }
 };
 
 QTEST_MAIN(ToolpathGlTest)
