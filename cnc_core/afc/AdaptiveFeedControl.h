@@ -219,7 +219,7 @@ class AdaptiveFeedControl {
     DiagnosticList parameterDiagnostics_;
     AfcParameters parameters_;
     TorqueModel model_;
-    std::map<std::string, double> stallTorques_;  ///< axis -> P-7-3652 value in 0.1 %
+    std::map<std::string, double, std::less<>> stallTorques_;  ///< axis -> P-7-3652 value in 0.1 %
     bool active_ = false;
     bool error510_ = false;
     bool minimumExceeded_ = false;

@@ -30,28 +30,29 @@ AfcTrendRecorder::AfcTrendRecorder(std::size_t capacity)
     : capacity_(std::max<std::size_t>(capacity, 2)) {}
 
 void AfcTrendRecorder::add(const AfcTrendSample& sample) {
-    Entry entry;
+    Entry& entry = entries_.emplace_back();
     entry.move.constant = sample;
-    append(std::move(entry));
+    entry.move.count = 1;
+    keep(entry);
 }
 
 void AfcTrendRecorder::add(const AfcObservedMove& move) {
-    Entry entry;
+    Entry& entry = entries_.emplace_back();
     entry.move = move;
     entry.move.count = std::max(1, move.count);
     entry.observed = true;
-    append(std::move(entry));
+    keep(entry);
 }
 
-void AfcTrendRecorder::append(Entry entry) {
+void AfcTrendRecorder::keep(Entry& entry) {
     ++revision_;
     entry.first = added_;
     const auto samples = static_cast<std::size_t>(entry.move.count);
     added_ += samples;
     count_ += samples;
-    entries_.push_back(std::move(entry));
     // Drop the oldest samples beyond the capacity: whole entries, then the
-    // first samples of the oldest one left.
+    // first samples of the oldest one left. The new entry itself is never
+    // dropped whole: the excess is always less than its samples.
     while (count_ > capacity_) {
         const auto left = static_cast<std::size_t>(entries_.front().move.count - skipped_);
         const std::size_t excess = count_ - capacity_;
@@ -70,17 +71,25 @@ AfcTrendSample AfcTrendRecorder::at(std::size_t index) const {
     if (entries_.empty()) return {};
     const std::uint64_t wanted =
         entries_.front().first + static_cast<std::uint64_t>(skipped_) + std::min(index, count_ - 1);
-    // The last entry that starts at or before the wanted sample.
-    auto after = std::upper_bound(entries_.begin(), entries_.end(), wanted,
-                                  [](std::uint64_t n, const Entry& e) { return n < e.first; });
-    const Entry& entry = *std::prev(after);
+    // The last entry that starts at or before the wanted sample (the front
+    // does: it holds the oldest kept sample).
+    std::size_t low = 0, high = entries_.size();
+    while (high - low > 1) {
+        const std::size_t middle = low + (high - low) / 2;
+        if (entries_[middle].first <= wanted)
+            low = middle;
+        else
+            high = middle;
+    }
+    const Entry& entry = entries_[low];
     return entry.sample(static_cast<int>(wanted - entry.first) + 1);
 }
 
 template <typename Visit>
 void AfcTrendRecorder::forEach(Visit visit) const {
     int from = skipped_ + 1;
-    for (const Entry& entry : entries_) {
+    for (std::size_t i = 0; i < entries_.size(); ++i) {
+        const Entry& entry = entries_[i];
         for (int k = from; k <= entry.move.count; ++k)
             visit(entry.sample(k));
         from = 1;

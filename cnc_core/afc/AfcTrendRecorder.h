@@ -2,12 +2,12 @@
 
 #include <cstddef>
 #include <cstdint>
-#include <deque>
 #include <string>
 #include <vector>
 
 #include "cnc_core/afc/AfcObservedMove.h"
 #include "cnc_core/afc/AfcTrendSample.h"
+#include "cnc_core/support/RingQueue.h"
 
 namespace mtc::core {
 
@@ -49,13 +49,14 @@ class AfcTrendRecorder {
         std::uint64_t first = 0;  ///< number of samples added before it
         AfcTrendSample sample(int k) const { return observed ? move.sample(k) : move.constant; }
     };
-    void append(Entry entry);
+    /// Counts the new back entry's samples and drops the oldest beyond the capacity.
+    void keep(Entry& entry);
     /// Calls `visit` with every kept sample, oldest first.
     template <typename Visit>
     void forEach(Visit visit) const;
 
     std::size_t capacity_;
-    std::deque<Entry> entries_;
+    RingQueue<Entry> entries_;
     int skipped_ = 0;  ///< samples of entries_.front() already dropped
     std::size_t count_ = 0;
     std::uint64_t added_ = 0;  ///< samples added since the last clear()

@@ -24,11 +24,12 @@ double TorqueModel::expectedTorque(double feed, double speedFraction, double eng
     const double speed = std::clamp(speedFraction, 0.0, 1.0);
     const double friction =
         feed > 0.0 ? p_.frictionAtRest + (p_.frictionAtMaxSpeed - p_.frictionAtRest) * speed : 0.0;
-    const double chip = feed > 0.0 && p_.referenceFeed > 0.0
+    // Cutting air (most moves of a program) needs no power of the feed.
+    const double engaged = std::max(0.0, engagement);
+    const double chip = engaged > 0.0 && feed > 0.0 && p_.referenceFeed > 0.0
                             ? std::pow(feed / p_.referenceFeed, p_.feedExponent)
                             : 0.0;
-    return p_.stallTorque + friction + p_.cuttingTorque * std::max(0.0, engagement) * chip +
-           p_.constantLoad;
+    return p_.stallTorque + friction + p_.cuttingTorque * engaged * chip + p_.constantLoad;
 }
 
 double TorqueModel::actualTorque(double feed, double speedFraction, double engagement,

@@ -2,12 +2,12 @@
 
 namespace mtc::core {
 
-void QueuedBlockStates::record(QueuedBlockState state) {
+QueuedBlockState& QueuedBlockStates::record() {
     if (states_.size() >= kCapacity) {
         states_.pop_front();
         matched_ = false;
     }
-    states_.push_back(std::move(state));
+    return states_.emplace_back();
 }
 
 void QueuedBlockStates::follow(const SourceLocation& at, bool idle) {
@@ -20,7 +20,7 @@ void QueuedBlockStates::follow(const SourceLocation& at, bool idle) {
         if (states_[i].program != at.program || states_[i].line != at.line) continue;
         // A loop queues the same line more than once: the oldest entry is
         // the one executed, the machine works the queue in order.
-        states_.erase(states_.begin(), states_.begin() + static_cast<std::ptrdiff_t>(i));
+        states_.dropFront(i);
         matched_ = true;
         return;
     }

@@ -561,7 +561,7 @@ void Station::finish(const RunResult& result) {
 }
 
 void Station::recordQueuedBlock(const ProgramPtr& program, std::uint32_t index, int callLevel) {
-    QueuedBlockState entry;
+    QueuedBlockState& entry = queued_.record();
     entry.program = output_.last.program;
     entry.line = output_.last.line;
     entry.source = program;
@@ -570,7 +570,6 @@ void Station::recordQueuedBlock(const ProgramPtr& program, std::uint32_t index, 
     const InterpreterState& state = interpreter_.state();
     assignModalState(entry.modal, state.modal);
     entry.mGroups = state.mGroups;
-    queued_.record(std::move(entry));
 }
 
 void Station::showCurrentBlock() {

@@ -103,7 +103,11 @@ bool ProcessControl::press(ControlKey key) {
 }
 
 bool ProcessControl::singleBlock() const {
-    return signals_.get(singleBlockSignal_) == 1;
+    if (singleBlockAt_ != signals_.changes()) {
+        singleBlockValue_ = signals_.get(singleBlockSignal_) == 1;
+        singleBlockAt_ = signals_.changes();
+    }
+    return singleBlockValue_;
 }
 
 bool ProcessControl::setMode(OperatingMode mode) {

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstdint>
 #include <optional>
 #include <string>
 
@@ -130,6 +131,10 @@ class ProcessControl {
     int process_;
     /// PxxCSBLK, asked before every block (built once, not per block).
     std::string singleBlockSignal_;
+    /// Its value as of the signal table's change count `singleBlockAt_`: a
+    /// map lookup per block was 4 % of a headless run.
+    mutable bool singleBlockValue_ = false;
+    mutable std::uint64_t singleBlockAt_ = ~std::uint64_t{0};
     OperatingMode mode_ = OperatingMode::Automatic;
     bool active_ = false;
     bool held_ = false;

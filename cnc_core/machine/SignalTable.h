@@ -25,6 +25,9 @@ class SignalTable {
     int get(const std::string& name) const;
     const std::map<std::string, int>& values() const { return values_; }
     const std::vector<SignalChange>& log() const { return log_; }
+    /// Counts every change since the table was made (never goes back, not
+    /// even with clearLog()): a reader may keep a value while it stands.
+    std::uint64_t changes() const { return step_; }
     /// Forgets the log (values stay).
     void clearLog() { log_.clear(); }
 

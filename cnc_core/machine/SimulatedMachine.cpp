@@ -87,7 +87,8 @@ double motionSeconds(const Motion& motion, const ProcessConfig& config) {
 SimulatedMachine::SimulatedMachine(const ProcessConfig& config)
     : config_(config),
       engine_(motion::MotionLimits::fromConfig(config)),
-      material_(std::make_unique<AfcMaterial>(config)) {}
+      material_(std::make_unique<AfcMaterial>(config)),
+      engagement_(cuttingEngagement(config)) {}
 
 SimulatedMachine::~SimulatedMachine() = default;
 

@@ -147,7 +147,8 @@ class SimulatedMachine : public MachineSink {
     AfcMoveInput afcInput(const Motion& motion, double planned) const;
     /// The override of the move's kind in force, as a share (1 below 1 %).
     double overrideShare(const Motion& motion) const;
-    double referenceSpeedFraction(const Motion& motion, double pathFeed) const;
+    /// `length`: the move's path length (mm), known to the caller.
+    double referenceSpeedFraction(const Motion& motion, double pathFeed, double length) const;
     double accelerationSeconds(const Motion& motion, double feed) const;
     /// Moves the auxiliary functions the engine reached into recentAux().
     void collectReached();
@@ -157,6 +158,7 @@ class SimulatedMachine : public MachineSink {
     AdaptiveFeedControl* afc_ = nullptr;
     AfcTrendRecorder* recorder_ = nullptr;
     std::unique_ptr<AfcMaterial> material_;  ///< where the raw part is (engagement)
+    double engagement_;                      ///< cuttingEngagement() of the process
     std::array<double, 4> spindleSpeed_{};   ///< last S per spindle 1..3 (rpm), as queued
     /// Trend clock: where the queued work ends at the programmed feeds
     /// (start of the next observed move; adaptive moves start at the exact

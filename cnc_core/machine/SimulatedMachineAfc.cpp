@@ -5,6 +5,7 @@
 // the trend.
 #include <algorithm>
 #include <cmath>
+#include <string_view>
 
 #include "cnc_core/afc/AfcMaterial.h"
 #include "cnc_core/afc/AfcMotion.h"
@@ -18,9 +19,10 @@ void SimulatedMachine::attachAdaptiveFeed(AdaptiveFeedControl* afc, AfcTrendReco
     recorder_ = recorder;
 }
 
-double SimulatedMachine::referenceSpeedFraction(const Motion& m, double pathFeed) const {
+double SimulatedMachine::referenceSpeedFraction(const Motion& m, double pathFeed,
+                                                double length) const {
     const int significance = afc_->effectiveSettings().referenceAxis;
-    const std::string name = afcAxisName(significance);
+    const std::string_view name = afcAxisName(significance);
     for (std::size_t i = 0; i < config_.axes.size() && i < kMaxAxes; ++i) {
         const AxisConfig& axis = config_.axes[i];
         if (significance >= 10 && axis.kind == AxisKind::Spindle &&
@@ -30,7 +32,6 @@ double SimulatedMachine::referenceSpeedFraction(const Motion& m, double pathFeed
                        : 0.0;
         if (significance < 10 && axis.name == name) {
             const double travel = std::abs(m.end[i] - m.start[i]);
-            const double length = motionPathLength(m);
             const double feed = length > 0 ? pathFeed * travel / length : 0.0;
             return axis.maxVelocity > 0 ? feed / axis.maxVelocity : 0.0;
         }
@@ -66,8 +67,8 @@ AfcMoveInput SimulatedMachine::afcInput(const Motion& m, double planned) const {
     move.feed = (m.type == MotionType::Rapid ? lastFeed_ : m.feed) * atOverride;
     move.plannedSeconds = planned / atOverride;
     move.accelerationSeconds = accelerationSeconds(m, move.feed);
-    move.speedFraction = referenceSpeedFraction(m, move.feed);
-    move.engagement = cuttingEngagement(config_);
+    move.speedFraction = referenceSpeedFraction(m, move.feed, move.length);
+    move.engagement = engagement_;
     move.materialKnown = material_->known();
     const MaterialShare share = material_->along(m);
     move.cutFrom = share.from;

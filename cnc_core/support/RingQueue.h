@@ -1,0 +1,87 @@
+#pragma once
+
+#include <cstddef>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+namespace mtc::core {
+
+/// A first-in first-out queue in one growing array used as a ring: pushing
+/// at the back and dropping at the front move no other element and allocate
+/// only when the queue outgrows every size it had before. std::deque
+/// allocates a node per element once an element is 512 bytes or more (the
+/// station's queued block states, the trend's records), which cost a
+/// malloc/free pair per block of a headless run.
+/// `T` must be default-constructible and move-assignable. A dropped slot of
+/// a type with a destructor is handed to `Release` so that it gives up what
+/// it holds (shared programs); a trivial one is reset when it is reused.
+/// Every element emplace_back() returns of a non-trivial type is a T() or
+/// what `Release` left of a dropped one: the caller assigns every field.
+/// The default way a dropped element gives up what it holds: it becomes T().
+struct ResetToDefault {
+    template <typename T>
+    void operator()(T& element) const {
+        element = T();
+    }
+};
+
+template <typename T, typename Release = ResetToDefault>
+class RingQueue {
+  public:
+    std::size_t size() const { return size_; }
+    bool empty() const { return size_ == 0; }
+
+    /// Element `i`, 0 = the oldest (front).
+    T& operator[](std::size_t i) { return slots_[slot(i)]; }
+    const T& operator[](std::size_t i) const { return slots_[slot(i)]; }
+    T& front() { return slots_[head_]; }
+    const T& front() const { return slots_[head_]; }
+    T& back() { return (*this)[size_ - 1]; }
+    const T& back() const { return (*this)[size_ - 1]; }
+
+    void push_back(const T& value) { emplace_back() = value; }
+    void push_back(T&& value) { emplace_back() = std::move(value); }
+    /// Appends a default element and returns it, to be filled in place
+    /// (large elements are then written once instead of copied twice).
+    T& emplace_back() {
+        if (size_ == slots_.size()) grow();
+        T& slot = slots_[this->slot(size_)];
+        if constexpr (std::is_trivially_destructible_v<T>) slot = T();  // else reset when dropped
+        ++size_;
+        return slot;
+    }
+    /// Drops the oldest element (the queue must not be empty).
+    void pop_front() { dropFront(1); }
+    /// Drops the `count` oldest elements (at most size()).
+    void dropFront(std::size_t count) {
+        if (count > size_) count = size_;
+        if constexpr (!std::is_trivially_destructible_v<T>) {
+            for (std::size_t i = 0; i < count; ++i)
+                Release{}(slots_[slot(i)]);
+        }
+        head_ = (head_ + count) & mask();
+        size_ -= count;
+    }
+    /// Drops every element; the array is kept for the next pushes.
+    void clear() { dropFront(size_); }
+
+  private:
+    std::size_t mask() const { return slots_.size() - 1; }
+    std::size_t slot(std::size_t i) const { return (head_ + i) & mask(); }
+    /// Doubles the array (a power of two, so a slot is a mask, not a
+    /// division) and moves the elements to its start in queue order.
+    void grow() {
+        std::vector<T> bigger(slots_.empty() ? 16 : slots_.size() * 2);
+        for (std::size_t i = 0; i < size_; ++i)
+            bigger[i] = std::move(slots_[slot(i)]);
+        slots_ = std::move(bigger);
+        head_ = 0;
+    }
+
+    std::vector<T> slots_;
+    std::size_t head_ = 0;
+    std::size_t size_ = 0;
+};
+
+}  // namespace mtc::core
