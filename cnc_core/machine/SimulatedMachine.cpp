@@ -87,8 +87,7 @@ double motionSeconds(const Motion& motion, const ProcessConfig& config) {
 SimulatedMachine::SimulatedMachine(const ProcessConfig& config)
     : config_(config),
       engine_(motion::MotionLimits::fromConfig(config)),
-      material_(std::make_unique<AfcMaterial>(config)),
-      engagement_(cuttingEngagement(config)) {}
+      material_(std::make_unique<AfcMaterial>(config)) {}
 
 SimulatedMachine::~SimulatedMachine() = default;
 

@@ -158,7 +158,6 @@ class SimulatedMachine : public MachineSink {
     AdaptiveFeedControl* afc_ = nullptr;
     AfcTrendRecorder* recorder_ = nullptr;
     std::unique_ptr<AfcMaterial> material_;  ///< where the raw part is (engagement)
-    double engagement_;                      ///< cuttingEngagement() of the process
     std::array<double, 4> spindleSpeed_{};   ///< last S per spindle 1..3 (rpm), as queued
     /// Trend clock: where the queued work ends at the programmed feeds
     /// (start of the next observed move; adaptive moves start at the exact

@@ -68,7 +68,7 @@ AfcMoveInput SimulatedMachine::afcInput(const Motion& m, double planned) const {
     move.plannedSeconds = planned / atOverride;
     move.accelerationSeconds = accelerationSeconds(m, move.feed);
     move.speedFraction = referenceSpeedFraction(m, move.feed, move.length);
-    move.engagement = engagement_;
+    move.engagement = cuttingEngagement(config_);
     move.materialKnown = material_->known();
     const MaterialShare share = material_->along(m);
     move.cutFrom = share.from;
