@@ -5,8 +5,15 @@
 #include <cstdio>
 
 #include "cnc_core/language/ExpressionParser.h"
+#include "cnc_core/language/WordRules.h"
 
 namespace mtc::core {
+
+using word_rules::addressKind;
+using word_rules::axisIndexAt;
+using word_rules::normalizeNumber;
+using word_rules::NumberCheck;
+using word_rules::valueMustBeWhole;
 
 namespace {
 
@@ -43,6 +50,7 @@ void BlockParser::parse(const BlockSource& source) {
         if (!context_.macros().empty() && blockUsesMacro()) {
             emitMacroBlock();
         } else {
+            if (source.lineCount == 1 && context_.plainBlockFastPath()) parsePlainWords();
             while (parseNextWord()) {
             }
         }
@@ -73,6 +81,7 @@ void BlockParser::finish() {
 bool BlockParser::parsePrefix() {
     // [/] [:] [Nxxxx[:yyyy]] [/] [:] [.LABEL] [:]  with at most one '/' and one
     // ':'; the skip slash stands before the colon (seed 000, 5.1: "N0003 /: ...").
+    if (context_.plainBlockFastPath() && takePlainBlockNumber()) return true;
     takeSkip();
     takePrimary();
     if (lexer_.peek() == 'N' && Lexer::isDigit(lexer_.peek(1)) && !parseBlockNumber()) return false;
@@ -206,84 +215,23 @@ bool BlockParser::parseNextWord() {
 }
 
 bool BlockParser::parseAddress(char letter, std::uint32_t start) {
-    WordKind kind = WordKind::Axis;  // set by every case that goes on to parseValue
+    WordKind kind = WordKind::Axis;
     bool indexed = false;
-    switch (letter) {
-        case 'G':
-            kind = WordKind::G;
-            break;
-        case 'M':
-            kind = WordKind::M;
-            break;
-        case 'Q':
-            kind = WordKind::Q;
-            break;
-        case 'T':
-            kind = WordKind::T;
-            break;
-        case 'E':
-            kind = WordKind::E;
-            break;
-        case 'F':
-            kind = WordKind::F;
-            break;
-        case 'D':
-            kind = WordKind::D;
-            break;
-        case 'S':
-            kind = WordKind::S, indexed = true;
-            break;
-        case 'I':
-        case 'J':
-        case 'K':
-            kind = WordKind::CircleCenter;
-            break;
-        case 'N':
+    if (!addressKind(letter, kind, indexed)) {
+        if (letter == 'N')
             return error("PARSE_MISPLACED_BLOCK_NUMBER", start,
                          "the block number must be the first word of the block");
-        default:
-            if (!isAxisLetter(letter))
-                return error("PARSE_UNKNOWN_WORD", start,
-                             std::string("'") + letter + "' is not an NC address letter");
-            kind = WordKind::Axis;
-            indexed = true;
+        return error("PARSE_UNKNOWN_WORD", start,
+                     std::string("'") + letter + "' is not an NC address letter");
     }
     std::uint8_t index = indexed ? scanAxisIndex() : 0;
     return parseValue(kind, letter, index, start);
 }
 
 std::uint8_t BlockParser::scanAxisIndex() {
-    // An index is a single digit 1..3 followed by '=', a sign, or blanks and
-    // then a value: "Y1 25", "Z1-42", "X2=0"; but "S2800", "Y1.5", "X1 Y2".
-    int digit = lexer_.peek();
-    if (digit < '1' || digit > '3') return 0;
-    int next = lexer_.peek(1);
-    bool isIndex = next == '=' || next == '+' || next == '-';
-    if (!isIndex && (next == ' ' || next == '\t')) {
-        std::uint32_t ahead = 2;
-        while (Lexer::isBlank(lexer_.peek(ahead)))
-            ++ahead;
-        int after = lexer_.peek(ahead);
-        isIndex = Lexer::isDigit(after) || after == '.' || after == '+' || after == '-' ||
-                  after == '@' || after == '=';
-    }
-    if (!isIndex) return 0;
-    lexer_.advance();
-    return static_cast<std::uint8_t>(digit - '0');
-}
-
-bool BlockParser::valueMustBeWhole(WordKind kind) const {
-    switch (kind) {
-        case WordKind::G:
-        case WordKind::M:
-        case WordKind::Q:
-        case WordKind::T:
-        case WordKind::E:
-        case WordKind::D:
-            return true;
-        default:
-            return false;
-    }
+    std::uint8_t index = axisIndexAt(text_.data(), lexer_.position(), lexer_.end());
+    if (index) lexer_.advance();
+    return index;
 }
 
 bool BlockParser::parseValue(WordKind kind, char letter, std::uint8_t index, std::uint32_t start) {
@@ -342,21 +290,15 @@ bool BlockParser::parseNumberValue(WordKind kind, char letter, std::uint8_t inde
         return error("PARSE_BAD_NUMBER", numberStart, "number with two decimal points");
     std::int64_t mantissa = number.mantissa;
     unsigned scale = number.scale;
-    while ((scale > 7 || mantissa > 2147483647) && scale > 0 && mantissa % 10 == 0) {
-        mantissa /= 10;
-        --scale;
-    }
-    if (valueMustBeWhole(kind) && (negative || scale > 0)) {
-        if (negative)
+    switch (normalizeNumber(kind, negative, mantissa, scale)) {
+        case NumberCheck::NegativeWhole:
             return error("PARSE_BAD_NUMBER", numberStart,
                          std::string("'") + letter + "' needs a positive whole number");
-        while (scale > 0 && mantissa % 10 == 0) {
-            mantissa /= 10;
-            --scale;
-        }
-        if (scale > 0)
+        case NumberCheck::NotWhole:
             return error("PARSE_BAD_NUMBER", numberStart,
                          std::string("'") + letter + "' needs a whole number");
+        case NumberCheck::Ok:
+            break;
     }
     std::uint32_t column = columnOf(start);
     if (number.exact && program_.words.size() - block_.firstWord < kMaxWords &&

@@ -58,6 +58,10 @@ class BlockParser {
     bool finishSimpleValue(Word& word, std::int32_t node, std::uint32_t start);
     void finish();
 
+    // Fast path for the common block shape (BlockParserPlain.cpp).
+    bool takePlainBlockNumber();
+    void parsePlainWords();
+
     // Keywords (BlockParserKeywords.cpp).
     bool parseKeyword(std::string_view name, std::uint32_t start);
     /// MQxxx / QQxxx: an M or Q word marked kWordSwift.
@@ -82,7 +86,6 @@ class BlockParser {
     std::uint32_t lineOf(std::uint32_t offset) const;
     std::uint32_t columnOf(std::uint32_t offset) const;
     TextSpan trimmedSpan(std::uint32_t begin, std::uint32_t end) const;
-    bool valueMustBeWhole(WordKind kind) const;
 
     ParseContext& context_;
     Program& program_;

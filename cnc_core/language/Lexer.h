@@ -108,12 +108,24 @@ class Lexer {
     /// Scans an unsigned decimal number at position() ("12", "12.5", ".5",
     /// "12."). Returns false (and does not move) when none starts here.
     bool scanNumber(NumberText& number) {
-        std::uint32_t p = pos_;
+        std::uint32_t after = scanNumberAt(text_, pos_, end_, number);
+        if (after == pos_) return false;
+        pos_ = after;
+        return true;
+    }
+
+    /// The number rule itself, on raw text [pos, end): digits with at most
+    /// one '.', at least one digit. Fills `number` and returns the offset
+    /// after it; returns `pos` (and leaves `number` alone) when none starts
+    /// there. Shared by scanNumber and the parser's plain-word fast path.
+    static std::uint32_t scanNumberAt(const char* text, std::uint32_t pos, std::uint32_t end,
+                                      NumberText& number) {
+        std::uint32_t p = pos;
         std::int64_t mantissa = 0;
         unsigned scale = 0, digits = 0;
         bool exact = true, point = false;
-        for (; p < end_; ++p) {
-            int c = static_cast<unsigned char>(text_[p]);
+        for (; p < end; ++p) {
+            int c = static_cast<unsigned char>(text[p]);
             if (isDigit(c)) {
                 ++digits;
                 if (mantissa < 100000000000000000LL) {
@@ -128,14 +140,13 @@ class Lexer {
                 break;
             }
         }
-        if (digits == 0) return false;
+        if (digits == 0) return pos;
         number.mantissa = mantissa;
         number.scale = scale;
         number.exact = exact;
-        number.begin = pos_;
+        number.begin = pos;
         number.end = p;
-        pos_ = p;
-        return true;
+        return p;
     }
 
     /// Scans label characters (letters, digits, '_', '*') at position().

@@ -17,7 +17,8 @@ class ParseContext {
     /// Most diagnostics one parse records; garbage input cannot flood memory.
     static constexpr std::size_t kMaxDiagnostics = 1000;
 
-    explicit ParseContext(Program& program) : program_(program) {}
+    explicit ParseContext(Program& program, bool plainBlockFastPath = true)
+        : program_(program), plainBlockFastPath_(plainBlockFastPath) {}
 
     Program& program() { return program_; }
     std::string_view source() const { return program_.source; }
@@ -32,9 +33,12 @@ class ParseContext {
     const std::vector<std::string>& macros() const { return macros_; }
     void addMacro(std::string_view name) { macros_.emplace_back(name); }
     bool isMacro(std::string_view name) const;
+    /// Whether the parser may take plain blocks by its fast path.
+    bool plainBlockFastPath() const { return plainBlockFastPath_; }
 
   private:
     Program& program_;
+    bool plainBlockFastPath_ = true;
     std::size_t reported_ = 0;
     std::vector<std::string> macros_;
 };

@@ -186,7 +186,7 @@ Program parseProgram(std::string source, const ParseOptions& options) {
     program.number = options.programNumber;
     program.name = options.name;
     program.source = std::move(source);
-    ParseContext context(program);
+    ParseContext context(program, options.plainBlockFastPath);
     for (const std::string& name : options.macroNames)
         context.addMacro(name);
     if (program.source.size() >= std::numeric_limits<std::uint32_t>::max() - 1) {

@@ -14,6 +14,10 @@ struct ParseOptions {
     /// first block: a block using one is kept whole as a compiler command,
     /// like a block using a DEFINE macro of the program itself.
     std::vector<std::string> macroNames;
+    /// The fast path for plain blocks (BlockParserPlain.cpp). It gives the
+    /// same program as the general path; only the tests that prove this
+    /// switch it off.
+    bool plainBlockFastPath = true;
 };
 
 /// Parses NC source text: a .DAT file (identification line, %NPG/%MAC header,

@@ -1,0 +1,174 @@
+// The parser's fast path for plain blocks (BlockParserPlain.cpp) must give
+// exactly the program the general path gives: the same blocks, words (every
+// field, the value bit for bit), expressions, labels and diagnostics. Every
+// input here is parsed both ways and compared field by field.
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "cnc_core/language/Parser.h"
+
+using namespace mtc::core;
+namespace fs = std::filesystem;
+
+namespace {
+
+Program parseWith(const std::string& text, bool fastPath) {
+    ParseOptions options;
+    options.plainBlockFastPath = fastPath;
+    return parseProgram(text, options);
+}
+
+std::string describeBlock(const Block& b) {
+    std::ostringstream out;
+    out << "first=" << b.firstWord << " count=" << b.wordCount << " flags=" << int(b.flags)
+        << " N=" << b.number << ":" << b.subNumber << " line=" << b.line << "+" << b.lineCount
+        << " label=" << b.label.offset << "/" << b.label.length << " comment=" << b.comment.offset
+        << "/" << b.comment.length << " source=" << b.sourceText.offset << "/"
+        << b.sourceText.length << " text=" << b.text.offset << "/" << b.text.length;
+    return out.str();
+}
+
+std::string describeWord(const Word& w) {
+    std::uint64_t bits = 0;
+    std::memcpy(&bits, &w.number, sizeof bits);
+    std::ostringstream out;
+    out << "kind=" << int(w.kind) << " letter=" << int(w.letter) << " index=" << int(w.axisIndex)
+        << " jump=" << int(w.jump) << " column=" << w.column << " expr=" << w.expr
+        << " target=" << w.target << " number=" << std::hex << bits << std::dec
+        << " text=" << w.text.offset << "/" << w.text.length << " event=" << w.eventProcess << ":"
+        << w.eventNumber << " flags=" << int(w.flags) << " args=" << w.args.offset << "/"
+        << w.args.length;
+    return out.str();
+}
+
+std::string describeDiagnostic(const Diagnostic& d) {
+    return std::to_string(int(d.severity)) + " " + d.code + " " + d.where.block + " " +
+           std::to_string(d.where.line) + ":" + std::to_string(d.where.column) + " " + d.message;
+}
+
+/// Parses `text` both ways; an empty string when they agree, else the first
+/// difference.
+std::string differenceBetweenPaths(const std::string& text) {
+    const Program fast = parseWith(text, true);
+    const Program general = parseWith(text, false);
+    if (fast.blocks.size() != general.blocks.size()) return "block count";
+    for (std::size_t i = 0; i < fast.blocks.size(); ++i) {
+        std::string a = describeBlock(fast.blocks[i]), b = describeBlock(general.blocks[i]);
+        if (a != b) return "block " + std::to_string(i) + ": fast " + a + " / general " + b;
+    }
+    if (fast.words.size() != general.words.size()) return "word count";
+    for (std::size_t i = 0; i < fast.words.size(); ++i) {
+        std::string a = describeWord(fast.words[i]), b = describeWord(general.words[i]);
+        if (a != b) return "word " + std::to_string(i) + ": fast " + a + " / general " + b;
+    }
+    if (fast.expressions.size() != general.expressions.size()) return "expression count";
+    if (fast.labels != general.labels) return "labels";
+    if (fast.usesCompilerKeywords != general.usesCompilerKeywords) return "compiler keywords";
+    const auto& fd = fast.diagnostics.items();
+    const auto& gd = general.diagnostics.items();
+    if (fd.size() != gd.size()) return "diagnostic count";
+    for (std::size_t i = 0; i < fd.size(); ++i) {
+        std::string a = describeDiagnostic(fd[i]), b = describeDiagnostic(gd[i]);
+        if (a != b) return "diagnostic: fast " + a + " / general " + b;
+    }
+    return "";
+}
+
+// Blocks at the edge of what the fast path takes: indexes, signs, points,
+// long and inexact numbers, whole-number words, prefixes it leaves to the
+// general path, missing blanks, tabs, comments and bad characters.
+const std::vector<std::string> kEdgeBlocks = {
+    "N0001 G1 X10 Y0 F1000",
+    "N0001 G01 X-12.5 Y+3 Z.5 F.25",
+    "N0002 X1 Y2 Z3",
+    "N0003 X1 25 Y1-3 Z2=4 S1 3000 S2=800 S2800",
+    "N0004 X1.5 Y1 .5 Z1 @1",
+    "N0005 G1.0 G1.5 M3. T-1",
+    "N0006 X1.2.3",
+    "N0007 X 5 Y- 2 Z+-1",
+    "N0008 X12345678901234567890 Y0.00000001 Z0.123456789 F99999999999",
+    "N0009 X2147483648 Y-2147483647 Z2147483647.0 A0.10000000",
+    "N0010 G1X10Y20F300",
+    "N0011\tG1\tX1 ;comment after words",
+    "N0012 ;only a comment",
+    "N0013 G1 X1 (text) Y2 [more]",
+    "N0014 /G1 X1",
+    "N0015 :G1 X1",
+    "N0016 .LABEL G1 X1",
+    "N0017:0001 G1 X1",
+    "N001 G1 X1",
+    "N00001 G1 X1",
+    "N0018.5 G1",
+    "N0019",
+    "N0020 N0021 G1",
+    "N0022 H5 R3 L2",
+    "N0023 GAX X1 MTD(1,,,2)=3",
+    "N0024 X-0 Y-0.0 Z0",
+    "N0025 G1 X1 Y",
+    "N0026 X=5 Y=-2 F=@3",
+    "N0027 x1 G1",
+    "N0028 G1 X1 \x01",
+    "G1 X1 Y2",
+    "   N0029 G1 X1",
+    "N0030 E5 D2 Q7 I-3.25 J0 K1.5 U1 V2 W3 A1 B2 C3",
+    "N0031 X1\r",
+    "N0032 G1 X1\n      Y2 Z3",
+    "N0033 G1 X1 Y2 PROGRAMMENDE",
+};
+
+TEST(ParserFastPath, EdgeBlocksParseAsOnTheGeneralPath) {
+    for (const std::string& block : kEdgeBlocks)
+        EXPECT_EQ(differenceBetweenPaths(block + "\n"), "") << block;
+    std::string all;
+    for (const std::string& block : kEdgeBlocks)
+        all += block + "\n";
+    EXPECT_EQ(differenceBetweenPaths(all), "");
+}
+
+TEST(ParserFastPath, ProjectProgramsParseAsOnTheGeneralPath) {
+    const fs::path root = MTC_SOURCE_DIR;
+    int files = 0;
+    for (const char* folder : {"resources/programs", "tests/golden/interp", "tests/golden/compiler",
+                               "tests/golden/restart", "tests/golden/cli"}) {
+        if (!fs::is_directory(root / folder)) continue;
+        for (const auto& entry : fs::directory_iterator(root / folder)) {
+            if (!entry.is_regular_file()) continue;
+            std::ifstream in(entry.path(), std::ios::binary);
+            std::stringstream text;
+            text << in.rdbuf();
+            EXPECT_EQ(differenceBetweenPaths(text.str()), "") << entry.path();
+            ++files;
+        }
+    }
+    EXPECT_GT(files, 50);
+}
+
+TEST(ParserFastPath, RandomPlainLikeBlocksParseAsOnTheGeneralPath) {
+    // Mostly the characters of plain blocks, so that most blocks reach deep
+    // into the fast path before something unusual sends them to the general one.
+    const char alphabet[] = "NGXYZFSIJKMTEDQAUH0123456789012345678901234567890.-+ \t=@;(:/.x";
+    std::mt19937 rng(20261126u);
+    std::uniform_int_distribution<int> pick(0, static_cast<int>(sizeof alphabet) - 2);
+    for (int program = 0; program < 400; ++program) {
+        std::string text;
+        for (int block = 0; block < 25; ++block) {
+            char number[8];
+            std::snprintf(number, sizeof number, "N%04d", static_cast<int>(rng() % 10000));
+            if (rng() % 8 != 0) text += number;
+            for (int c = static_cast<int>(rng() % 30); c > 0; --c)
+                text += alphabet[pick(rng)];
+            text += '\n';
+        }
+        const std::string difference = differenceBetweenPaths(text);
+        ASSERT_EQ(difference, "") << text;
+    }
+}
+
+}  // namespace
