@@ -73,23 +73,17 @@ AfcTrendSample AfcTrendRecorder::at(std::size_t index) const {
         entries_.front().first + static_cast<std::uint64_t>(skipped_) + std::min(index, count_ - 1);
     // The last entry that starts at or before the wanted sample (the front
     // does: it holds the oldest kept sample).
-    std::size_t low = 0, high = entries_.size();
-    while (high - low > 1) {
-        const std::size_t middle = low + (high - low) / 2;
-        if (entries_[middle].first <= wanted)
-            low = middle;
-        else
-            high = middle;
-    }
-    const Entry& entry = entries_[low];
+    const auto after = std::upper_bound(
+        entries_.begin() + 1, entries_.end(), wanted,
+        [](std::uint64_t sample, const Entry& entry) { return sample < entry.first; });
+    const Entry& entry = *std::prev(after);
     return entry.sample(static_cast<int>(wanted - entry.first) + 1);
 }
 
 template <typename Visit>
 void AfcTrendRecorder::forEach(Visit visit) const {
     int from = skipped_ + 1;
-    for (std::size_t i = 0; i < entries_.size(); ++i) {
-        const Entry& entry = entries_[i];
+    for (const Entry& entry : entries_) {
         for (int k = from; k <= entry.move.count; ++k)
             visit(entry.sample(k));
         from = 1;

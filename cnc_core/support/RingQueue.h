@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstddef>
+#include <iterator>
 #include <type_traits>
 #include <utility>
 #include <vector>
@@ -28,7 +29,13 @@ struct ResetToDefault {
 
 template <typename T, typename Release = ResetToDefault>
 class RingQueue {
+    template <typename Queue, typename Element>
+    class Iterator;
+
   public:
+    using iterator = Iterator<RingQueue, T>;
+    using const_iterator = Iterator<const RingQueue, const T>;
+
     std::size_t size() const { return size_; }
     bool empty() const { return size_ == 0; }
 
@@ -39,6 +46,13 @@ class RingQueue {
     const T& front() const { return slots_[head_]; }
     T& back() { return (*this)[size_ - 1]; }
     const T& back() const { return (*this)[size_ - 1]; }
+
+    /// Random-access iterators from the oldest element to past the newest
+    /// (std::upper_bound, range loops). Pushing or dropping invalidates them.
+    iterator begin() { return {this, 0}; }
+    iterator end() { return {this, size_}; }
+    const_iterator begin() const { return {this, 0}; }
+    const_iterator end() const { return {this, size_}; }
 
     void push_back(const T& value) { emplace_back() = value; }
     void push_back(T&& value) { emplace_back() = std::move(value); }
@@ -82,6 +96,58 @@ class RingQueue {
     std::vector<T> slots_;
     std::size_t head_ = 0;
     std::size_t size_ = 0;
+};
+
+/// A position in the queue (0 = front), valid until the next push or drop.
+template <typename T, typename Release>
+template <typename Queue, typename Element>
+class RingQueue<T, Release>::Iterator {
+  public:
+    using iterator_category = std::random_access_iterator_tag;
+    using value_type = std::remove_const_t<Element>;
+    using difference_type = std::ptrdiff_t;
+    using pointer = Element*;
+    using reference = Element&;
+
+    Iterator() = default;
+    Iterator(Queue* queue, std::size_t index) : queue_(queue), index_(index) {}
+
+    reference operator*() const { return (*queue_)[index_]; }
+    pointer operator->() const { return &(*queue_)[index_]; }
+    reference operator[](difference_type n) const { return *(*this + n); }
+    Iterator& operator++() { return *this += 1; }
+    Iterator operator++(int) {
+        Iterator before = *this;
+        ++*this;
+        return before;
+    }
+    Iterator& operator--() { return *this -= 1; }
+    Iterator operator--(int) {
+        Iterator before = *this;
+        --*this;
+        return before;
+    }
+    Iterator& operator+=(difference_type n) {
+        index_ = static_cast<std::size_t>(static_cast<difference_type>(index_) + n);
+        return *this;
+    }
+    Iterator& operator-=(difference_type n) { return *this += -n; }
+    friend Iterator operator+(Iterator it, difference_type n) { return it += n; }
+    friend Iterator operator+(difference_type n, Iterator it) { return it += n; }
+    friend Iterator operator-(Iterator it, difference_type n) { return it -= n; }
+    friend difference_type operator-(const Iterator& a, const Iterator& b) {
+        return static_cast<difference_type>(a.index_) - static_cast<difference_type>(b.index_);
+    }
+    friend bool operator==(const Iterator& a, const Iterator& b) { return a.index_ == b.index_; }
+    friend bool operator!=(const Iterator& a, const Iterator& b) { return a.index_ != b.index_; }
+    friend bool operator<(const Iterator& a, const Iterator& b) { return a.index_ < b.index_; }
+    friend bool operator>(const Iterator& a, const Iterator& b) { return b < a; }
+    friend bool operator<=(const Iterator& a, const Iterator& b) { return !(b < a); }
+    friend bool operator>=(const Iterator& a, const Iterator& b) { return !(a < b); }
+
+  private:
+    Queue* queue_ = nullptr;
+    std::size_t index_ = 0;
 };
 
 }  // namespace mtc::core

@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <memory>
 #include <string>
 
@@ -28,6 +29,30 @@ TEST(RingQueue, KeepsOrderWhenItWrapsAndGrowsWhileWrapped) {
     EXPECT_EQ(contents(queue), "10 11 12 13 14 15 16 17 18 19 20 21 22 23 24 25 ");
     queue.pop_front();
     EXPECT_EQ(queue.front(), 11);
+}
+
+TEST(RingQueue, IteratorsWalkAWrappedQueueInOrderAndSearchIt) {
+    RingQueue<int> queue;
+    for (int i = 0; i < 16; ++i)
+        queue.push_back(i * 10);
+    queue.dropFront(12);
+    for (int i = 16; i < 20; ++i)
+        queue.push_back(i * 10);  // 120 .. 190, wrapped around the array's end
+    std::string walked;
+    for (int value : queue)
+        walked += std::to_string(value) + " ";
+    EXPECT_EQ(walked, "120 130 140 150 160 170 180 190 ");
+    const RingQueue<int>& constQueue = queue;
+    EXPECT_EQ(constQueue.end() - constQueue.begin(), 8);
+    auto found = std::upper_bound(constQueue.begin(), constQueue.end(), 165);
+    ASSERT_NE(found, constQueue.end());
+    EXPECT_EQ(*found, 170);
+    EXPECT_EQ(found - constQueue.begin(), 5);
+    EXPECT_EQ(*std::prev(found), 160);
+    EXPECT_EQ(std::upper_bound(constQueue.begin(), constQueue.end(), 500), constQueue.end());
+    for (int& value : queue)
+        value += 1;
+    EXPECT_EQ(contents(queue), "121 131 141 151 161 171 181 191 ");
 }
 
 TEST(RingQueue, DropFrontStopsAtTheSizeAndClearKeepsWorking) {
