@@ -4,7 +4,6 @@
 // input here is parsed both ways and compared field by field.
 #include <gtest/gtest.h>
 
-#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <random>
@@ -13,6 +12,7 @@
 #include <vector>
 
 #include "cnc_core/language/Parser.h"
+#include "tests/support/ProgramDifference.h"
 
 using namespace mtc::core;
 namespace fs = std::filesystem;
@@ -25,60 +25,10 @@ Program parseWith(const std::string& text, bool fastPath) {
     return parseProgram(text, options);
 }
 
-std::string describeBlock(const Block& b) {
-    std::ostringstream out;
-    out << "first=" << b.firstWord << " count=" << b.wordCount << " flags=" << int(b.flags)
-        << " N=" << b.number << ":" << b.subNumber << " line=" << b.line << "+" << b.lineCount
-        << " label=" << b.label.offset << "/" << b.label.length << " comment=" << b.comment.offset
-        << "/" << b.comment.length << " source=" << b.sourceText.offset << "/"
-        << b.sourceText.length << " text=" << b.text.offset << "/" << b.text.length;
-    return out.str();
-}
-
-std::string describeWord(const Word& w) {
-    std::uint64_t bits = 0;
-    std::memcpy(&bits, &w.number, sizeof bits);
-    std::ostringstream out;
-    out << "kind=" << int(w.kind) << " letter=" << int(w.letter) << " index=" << int(w.axisIndex)
-        << " jump=" << int(w.jump) << " column=" << w.column << " expr=" << w.expr
-        << " target=" << w.target << " number=" << std::hex << bits << std::dec
-        << " text=" << w.text.offset << "/" << w.text.length << " event=" << w.eventProcess << ":"
-        << w.eventNumber << " flags=" << int(w.flags) << " args=" << w.args.offset << "/"
-        << w.args.length;
-    return out.str();
-}
-
-std::string describeDiagnostic(const Diagnostic& d) {
-    return std::to_string(int(d.severity)) + " " + d.code + " " + d.where.block + " " +
-           std::to_string(d.where.line) + ":" + std::to_string(d.where.column) + " " + d.message;
-}
-
 /// Parses `text` both ways; an empty string when they agree, else the first
 /// difference.
 std::string differenceBetweenPaths(const std::string& text) {
-    const Program fast = parseWith(text, true);
-    const Program general = parseWith(text, false);
-    if (fast.blocks.size() != general.blocks.size()) return "block count";
-    for (std::size_t i = 0; i < fast.blocks.size(); ++i) {
-        std::string a = describeBlock(fast.blocks[i]), b = describeBlock(general.blocks[i]);
-        if (a != b) return "block " + std::to_string(i) + ": fast " + a + " / general " + b;
-    }
-    if (fast.words.size() != general.words.size()) return "word count";
-    for (std::size_t i = 0; i < fast.words.size(); ++i) {
-        std::string a = describeWord(fast.words[i]), b = describeWord(general.words[i]);
-        if (a != b) return "word " + std::to_string(i) + ": fast " + a + " / general " + b;
-    }
-    if (fast.expressions.size() != general.expressions.size()) return "expression count";
-    if (fast.labels != general.labels) return "labels";
-    if (fast.usesCompilerKeywords != general.usesCompilerKeywords) return "compiler keywords";
-    const auto& fd = fast.diagnostics.items();
-    const auto& gd = general.diagnostics.items();
-    if (fd.size() != gd.size()) return "diagnostic count";
-    for (std::size_t i = 0; i < fd.size(); ++i) {
-        std::string a = describeDiagnostic(fd[i]), b = describeDiagnostic(gd[i]);
-        if (a != b) return "diagnostic: fast " + a + " / general " + b;
-    }
-    return "";
+    return mtc::core::testing::programDifference(parseWith(text, true), parseWith(text, false));
 }
 
 // Blocks at the edge of what the fast path takes: indexes, signs, points,

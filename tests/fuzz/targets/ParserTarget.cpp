@@ -1,9 +1,12 @@
 // Parser: every index and span of the parsed program lies inside its
-// vectors and its source, every diagnostic has a code, a message and a place.
+// vectors and its source, every diagnostic has a code, a message and a place;
+// the fast path for plain blocks gives exactly what the general path gives.
 #include <string>
 
 #include "../FuzzTargets.h"
+#include "cnc_core/language/Parser.h"
 #include "cnc_core/program/DatFile.h"
+#include "tests/support/ProgramDifference.h"
 
 namespace mtc::fuzz {
 namespace {
@@ -55,7 +58,12 @@ void fuzzParser(std::string_view input) {
     core::ParseOptions options;
     options.programNumber = 7;
     options.macroNames = {"FAST", "SLOW", "M860", "X1"};
-    checkProgram(core::DatFile::parse(text, "loose.nc", options), input);
+    const Program loose = core::DatFile::parse(text, "loose.nc", options);
+    checkProgram(loose, input);
+    options.plainBlockFastPath = false;
+    const Program general = core::DatFile::parse(text, "loose.nc", options);
+    require(core::testing::programDifference(loose, general).empty(),
+            "the fast path for plain blocks parses as the general path", input);
 }
 
 }  // namespace mtc::fuzz
