@@ -1,5 +1,7 @@
 #include "hmi/ErrorLog.h"
 
+#include "hmi/PanelLanguage.h"
+
 namespace mtc::hmi {
 
 QString originName(ErrorOrigin origin) {
@@ -48,11 +50,18 @@ ErrorEntry entryFromDiagnostic(const mtc::core::Diagnostic& d, ErrorOrigin origi
     entry.program = d.where.program;
     entry.block = QString::fromStdString(d.where.block);
     entry.line = d.where.line;
-    entry.code = QString::fromStdString(d.code);
-    entry.message = QString::fromStdString(d.message);
-    for (const std::string& detail : d.details)
-        entry.details << QString::fromStdString(detail);
+    setEntryText(entry, d);
     return entry;
+}
+
+void setEntryText(ErrorEntry& entry, const mtc::core::Diagnostic& diagnostic) {
+    const mtc::core::DiagnosticText text =
+        mtc::core::diagnosticText(diagnostic, installedCoreLanguage());
+    entry.code = QString::fromStdString(diagnostic.code);
+    entry.message = QString::fromStdString(text.brief);
+    entry.details.clear();
+    for (const std::string& line : text.additional)
+        entry.details << QString::fromStdString(line);
 }
 
 void ErrorLog::add(const ErrorEntry& entry) {

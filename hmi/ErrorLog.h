@@ -30,9 +30,16 @@ struct ErrorEntry {
     QStringList details;  ///< additional text
 };
 
-/// The entry of a diagnostic (the data as it is: code, program, block,
-/// line, details), with `origin`.
+/// The entry of a diagnostic (code, program, block, line), with `origin`.
+/// Its brief message and additional text are in the panel's language
+/// (installedCoreLanguage(), docs/DECISIONS.md D-023): in German the core's
+/// table gives the brief message and the core's English message, which
+/// names the values, opens the additional text.
 ErrorEntry entryFromDiagnostic(const mtc::core::Diagnostic& diagnostic, ErrorOrigin origin);
+
+/// Sets the brief message and additional text of `entry` from `diagnostic`
+/// in the panel's language (as entryFromDiagnostic() does).
+void setEntryText(ErrorEntry& entry, const mtc::core::Diagnostic& diagnostic);
 
 /// The errors of one station for the error window, newest source last:
 /// the compiler's errors per program (replaced by every compile of that

@@ -80,4 +80,9 @@ QString installedPanelLanguage() {
     return translator ? translator->property("language").toString() : QString("en");
 }
 
+mtc::core::Language installedCoreLanguage() {
+    return mtc::core::languageFromTag(installedPanelLanguage().toStdString())
+        .value_or(mtc::core::Language::English);
+}
+
 }  // namespace mtc::hmi

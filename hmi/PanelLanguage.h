@@ -3,6 +3,8 @@
 #include <QString>
 #include <QStringList>
 
+#include "cnc_core/text/Messages.h"
+
 namespace mtc::hmi {
 
 /// The panel's languages: "de" (German, the MTC200's own) and "en".
@@ -32,6 +34,10 @@ bool installPanelTranslation(const QString& language, QString& error);
 
 /// The language whose catalogue is installed ("en" before any).
 QString installedPanelLanguage();
+
+/// installedPanelLanguage() as the core's value: the language the core's
+/// diagnostics are shown in (docs/DECISIONS.md D-023).
+mtc::core::Language installedCoreLanguage();
 
 /// True when the installed catalogue has a translation of `source` in
 /// `context` (the test of the core's names, which lupdate cannot see).

@@ -157,10 +157,7 @@ void ProgramWorkspace::reportLoadProblems() {
         ErrorEntry entry;
         entry.warning = d.severity == mtc::core::Severity::Warning;
         entry.program = d.where.program;
-        entry.code = QString::fromStdString(d.code);
-        entry.message = QString::fromStdString(d.message);
-        for (const std::string& detail : d.details)
-            entry.details << QString::fromStdString(detail);
+        setEntryText(entry, d);
         errors_.add(entry);
     }
 }
@@ -240,10 +237,12 @@ ErrorEntry entryFromCompilerError(const mtc::core::CompilerError& error) {
                       ? QString("A%1").arg(error.generalNumber, 4, 10, QChar('0'))
                       : QString::fromStdString(error.block);
     entry.line = error.sourceLine;
-    entry.code = QString::fromStdString(error.code);
-    entry.message = QString::fromStdString(error.message);
-    for (const auto& line : error.details)
-        entry.details << QString::fromStdString(line);
+    mtc::core::Diagnostic diagnostic;
+    diagnostic.severity = error.severity;
+    diagnostic.code = error.code;
+    diagnostic.message = error.message;
+    diagnostic.details = error.details;
+    setEntryText(entry, diagnostic);
     return entry;
 }
 

@@ -1,0 +1,42 @@
+#pragma once
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "cnc_core/language/Diagnostic.h"
+
+namespace mtc::core {
+
+/// The languages a diagnostic can be shown in. The core writes every
+/// message in English (the CLI's contract); German comes from the message
+/// table (docs/DECISIONS.md D-023). The panel passes its language down as
+/// this value: the core never asks Qt or the locale.
+enum class Language { English, German };
+
+/// "de", "de_DE", "de-AT" → German; "en", "en_GB", "C" → English; anything
+/// else → nullopt.
+std::optional<Language> languageFromTag(std::string_view tag);
+
+/// The German brief message of a diagnostic code; empty when the table has
+/// no row for it (a user compiler's own code, for instance).
+std::string_view germanMessage(std::string_view code);
+
+/// Every code of the table, in table order (for the completeness test).
+std::vector<std::string_view> messageCodes();
+
+/// A diagnostic as the operator reads it: a brief message and the lines of
+/// its additional text.
+struct DiagnosticText {
+    std::string brief;
+    std::vector<std::string> additional;
+};
+
+/// English: the core's message and details as they are. German: the
+/// table's brief message for the code, and as additional text the core's
+/// message (it names the values: word, axis, number, file) followed by the
+/// details. A code without a German row keeps the English text.
+DiagnosticText diagnosticText(const Diagnostic& diagnostic, Language language);
+
+}  // namespace mtc::core
