@@ -181,6 +181,389 @@
     </message>
 </context>
 <context>
+    <name>GneModel</name>
+    <message>
+        <source>nothing selected</source>
+        <translation>nichts ausgewählt</translation>
+    </message>
+    <message>
+        <source>%1 cannot be inserted here</source>
+        <translation>%1 kann hier nicht eingefügt werden</translation>
+    </message>
+    <message>
+        <source>nothing to delete</source>
+        <translation>nichts zu löschen</translation>
+    </message>
+    <message>
+        <source>when read, line %1: %2</source>
+        <translation>beim Lesen, Zeile %1: %2</translation>
+    </message>
+    <message>
+        <source>row %1 (%2): the contour needs a START with both coordinates</source>
+        <translation>Zeile %1 (%2): die Kontur braucht ein START mit beiden Koordinaten</translation>
+    </message>
+    <message>
+        <source>row %1 (%2): %3</source>
+        <translation>Zeile %1 (%2): %3</translation>
+    </message>
+    <message>
+        <source>the section does not expand: %1</source>
+        <translation>der Abschnitt lässt sich nicht auflösen: %1</translation>
+    </message>
+    <message>
+        <source>NC blocks need a machining cycle: insert a CYCLE_xx for the contour, or save as function call</source>
+        <translation>NC-Sätze brauchen einen Bearbeitungszyklus: einen CYCLE_xx für die Kontur einfügen oder als Funktionsaufruf speichern</translation>
+    </message>
+    <message>
+        <source>end point, 1st axis</source>
+        <translation>Endpunkt, 1. Achse</translation>
+    </message>
+    <message>
+        <source>end point, 2nd axis</source>
+        <translation>Endpunkt, 2. Achse</translation>
+    </message>
+    <message>
+        <source>1 = tangential to the previous element</source>
+        <translation>1 = tangential zum vorigen Element</translation>
+    </message>
+    <message>
+        <source>chosen solution (0 = first)</source>
+        <translation>gewählte Lösung (0 = erste)</translation>
+    </message>
+    <message>
+        <source>start point, 1st axis</source>
+        <translation>Startpunkt, 1. Achse</translation>
+    </message>
+    <message>
+        <source>start point, 2nd axis</source>
+        <translation>Startpunkt, 2. Achse</translation>
+    </message>
+    <message>
+        <source>direction in degrees from the 1st axis</source>
+        <translation>Richtung in Grad zur 1. Achse</translation>
+    </message>
+    <message>
+        <source>length of the line</source>
+        <translation>Länge der Geraden</translation>
+    </message>
+    <message>
+        <source>centre, 1st axis (absolute)</source>
+        <translation>Mittelpunkt, 1. Achse (absolut)</translation>
+    </message>
+    <message>
+        <source>centre, 2nd axis (absolute)</source>
+        <translation>Mittelpunkt, 2. Achse (absolut)</translation>
+    </message>
+    <message>
+        <source>radius of the arc</source>
+        <translation>Radius des Kreisbogens</translation>
+    </message>
+    <message>
+        <source>radius of the rounding</source>
+        <translation>Radius der Rundung</translation>
+    </message>
+    <message>
+        <source>width of the chamfer</source>
+        <translation>Breite der Fase</translation>
+    </message>
+    <message>
+        <source>DIN 509 form: E or F</source>
+        <translation>Form nach DIN 509: E oder F</translation>
+    </message>
+    <message>
+        <source>radius (empty = DIN 509 table)</source>
+        <translation>Radius (leer = Tabelle DIN 509)</translation>
+    </message>
+    <message>
+        <source>depth into the cylinder t1</source>
+        <translation>Tiefe in den Zylinder t1</translation>
+    </message>
+    <message>
+        <source>width (empty = DIN 509 table)</source>
+        <translation>Breite (leer = Tabelle DIN 509)</translation>
+    </message>
+    <message>
+        <source>form F: depth into the face t2</source>
+        <translation>Form F: Tiefe in die Planfläche t2</translation>
+    </message>
+    <message>
+        <source>%1 must be given</source>
+        <translation>%1 muss angegeben werden</translation>
+    </message>
+    <message>
+        <source>%1: &apos;%2&apos; is not a number</source>
+        <translation>%1: &apos;%2&apos; ist keine Zahl</translation>
+    </message>
+    <message>
+        <source>%1 = %2 is outside %3 .. %4</source>
+        <translation>%1 = %2 liegt außerhalb %3 .. %4</translation>
+    </message>
+    <message>
+        <source>%1 must be a whole number</source>
+        <translation>%1 muss eine ganze Zahl sein</translation>
+    </message>
+    <message>
+        <source>no such value</source>
+        <translation>diesen Wert gibt es nicht</translation>
+    </message>
+    <message>
+        <source>FORM: write E or F (DIN 509)</source>
+        <translation>FORM: E oder F schreiben (DIN 509)</translation>
+    </message>
+    <message>
+        <source>contour number (the cycles machine it by this number)</source>
+        <translation>Konturnummer (die Zyklen bearbeiten die Kontur unter dieser Nummer)</translation>
+    </message>
+    <message>
+        <source>0 = final part contour, 1 = raw (blank) contour</source>
+        <translation>0 = Fertigteilkontur, 1 = Rohteilkontur</translation>
+    </message>
+    <message>
+        <source>the text to engrave</source>
+        <translation>der zu gravierende Text</translation>
+    </message>
+    <message>
+        <source>TEXT: 1 to 40 characters without &apos;&quot;&apos;</source>
+        <translation>TEXT: 1 bis 40 Zeichen ohne &apos;&quot;&apos;</translation>
+    </message>
+    <message>
+        <source>%1 (empty = %2)</source>
+        <translation>%1 (leer = %2)</translation>
+    </message>
+    <message>
+        <source>number of the contour or form to machine</source>
+        <translation>Nummer der zu bearbeitenden Kontur oder Form</translation>
+    </message>
+    <message>
+        <source>tool number</source>
+        <translation>Werkzeugnummer</translation>
+    </message>
+    <message>
+        <source>feed (mm/rev or mm/min as programmed)</source>
+        <translation>Vorschub (mm/U oder mm/min wie programmiert)</translation>
+    </message>
+    <message>
+        <source>spindle speed, 0 = leave unchanged</source>
+        <translation>Spindeldrehzahl, 0 = unverändert</translation>
+    </message>
+    <message>
+        <source>cutting edge orientation assumed (0..9)</source>
+        <translation>angenommene Schneidenlage (0..9)</translation>
+    </message>
+    <message>
+        <source>tool nose radius assumed</source>
+        <translation>angenommener Schneidenradius</translation>
+    </message>
+    <message>
+        <source>corner angle of the insert assumed (degrees)</source>
+        <translation>angenommener Eckenwinkel der Wendeplatte (Grad)</translation>
+    </message>
+    <message>
+        <source>setting angle of the tool assumed (degrees)</source>
+        <translation>angenommener Einstellwinkel des Werkzeugs (Grad)</translation>
+    </message>
+    <message>
+        <source>safety clearance for approach and retract</source>
+        <translation>Sicherheitsabstand für An- und Abfahren</translation>
+    </message>
+    <message>
+        <source>left end of the blank</source>
+        <translation>linkes Ende des Rohteils</translation>
+    </message>
+    <message>
+        <source>right end of the blank</source>
+        <translation>rechtes Ende des Rohteils</translation>
+    </message>
+    <message>
+        <source>outer radius of the blank</source>
+        <translation>Außenradius des Rohteils</translation>
+    </message>
+    <message>
+        <source>bore radius</source>
+        <translation>Bohrungsradius</translation>
+    </message>
+    <message>
+        <source>blank corner X</source>
+        <translation>Rohteilecke X</translation>
+    </message>
+    <message>
+        <source>blank corner Y</source>
+        <translation>Rohteilecke Y</translation>
+    </message>
+    <message>
+        <source>opposite corner X</source>
+        <translation>gegenüberliegende Ecke X</translation>
+    </message>
+    <message>
+        <source>opposite corner Y</source>
+        <translation>gegenüberliegende Ecke Y</translation>
+    </message>
+    <message>
+        <source>top face of the blank</source>
+        <translation>Oberseite des Rohteils</translation>
+    </message>
+    <message>
+        <source>bottom face of the blank</source>
+        <translation>Unterseite des Rohteils</translation>
+    </message>
+    <message>
+        <source>geometry number</source>
+        <translation>Geometrienummer</translation>
+    </message>
+    <message>
+        <source>right flank of the recess</source>
+        <translation>rechte Flanke des Einstichs</translation>
+    </message>
+    <message>
+        <source>radius the recess starts from</source>
+        <translation>Radius, von dem der Einstich ausgeht</translation>
+    </message>
+    <message>
+        <source>width of the recess</source>
+        <translation>Breite des Einstichs</translation>
+    </message>
+    <message>
+        <source>depth of the recess</source>
+        <translation>Tiefe des Einstichs</translation>
+    </message>
+    <message>
+        <source>centre of the 1st end</source>
+        <translation>Mittelpunkt des 1. Endes</translation>
+    </message>
+    <message>
+        <source>centre of the 2nd end</source>
+        <translation>Mittelpunkt des 2. Endes</translation>
+    </message>
+    <message>
+        <source>width of the hole</source>
+        <translation>Breite des Langlochs</translation>
+    </message>
+    <message>
+        <source>centre of the arc</source>
+        <translation>Mittelpunkt des Bogens</translation>
+    </message>
+    <message>
+        <source>radius of the middle line</source>
+        <translation>Radius der Mittellinie</translation>
+    </message>
+    <message>
+        <source>start angle (degrees)</source>
+        <translation>Startwinkel (Grad)</translation>
+    </message>
+    <message>
+        <source>end angle (degrees, counter-clockwise from A1)</source>
+        <translation>Endwinkel (Grad, gegen den Uhrzeigersinn ab A1)</translation>
+    </message>
+    <message>
+        <source>centre</source>
+        <translation>Mittelpunkt</translation>
+    </message>
+    <message>
+        <source>radius</source>
+        <translation>Radius</translation>
+    </message>
+    <message>
+        <source>radius of the circumscribed circle</source>
+        <translation>Radius des Umkreises</translation>
+    </message>
+    <message>
+        <source>number of corners</source>
+        <translation>Anzahl der Ecken</translation>
+    </message>
+    <message>
+        <source>angle of the first corner (degrees)</source>
+        <translation>Winkel der ersten Ecke (Grad)</translation>
+    </message>
+    <message>
+        <source>start of the base line</source>
+        <translation>Anfang der Grundlinie</translation>
+    </message>
+    <message>
+        <source>character height</source>
+        <translation>Schrifthöhe</translation>
+    </message>
+    <message>
+        <source>angle of the base line (degrees)</source>
+        <translation>Winkel der Grundlinie (Grad)</translation>
+    </message>
+    <message>
+        <source>centre of the base circle</source>
+        <translation>Mittelpunkt des Grundkreises</translation>
+    </message>
+    <message>
+        <source>radius of the base circle</source>
+        <translation>Radius des Grundkreises</translation>
+    </message>
+    <message>
+        <source>angle of the first character (degrees)</source>
+        <translation>Winkel des ersten Zeichens (Grad)</translation>
+    </message>
+    <message>
+        <source>corner</source>
+        <translation>Ecke</translation>
+    </message>
+    <message>
+        <source>opposite corner</source>
+        <translation>gegenüberliegende Ecke</translation>
+    </message>
+    <message>
+        <source>corner radius</source>
+        <translation>Eckenradius</translation>
+    </message>
+    <message>
+        <source>length along the angle</source>
+        <translation>Länge in Winkelrichtung</translation>
+    </message>
+    <message>
+        <source>width</source>
+        <translation>Breite</translation>
+    </message>
+    <message>
+        <source>angle of the length side (degrees)</source>
+        <translation>Winkel der Längsseite (Grad)</translation>
+    </message>
+    <message>
+        <source>depth of cut per pass (radius)</source>
+        <translation>Zustellung je Schnitt (Radius)</translation>
+    </message>
+    <message>
+        <source>allowance in X (radius)</source>
+        <translation>Aufmaß in X (Radius)</translation>
+    </message>
+    <message>
+        <source>allowance in Z</source>
+        <translation>Aufmaß in Z</translation>
+    </message>
+    <message>
+        <source>uniform allowance left for the contour cut</source>
+        <translation>gleichmäßiges Aufmaß für den Konturschnitt</translation>
+    </message>
+    <message>
+        <source>feed (mm/min)</source>
+        <translation>Vorschub (mm/min)</translation>
+    </message>
+    <message>
+        <source>tool radius assumed</source>
+        <translation>angenommener Werkzeugradius</translation>
+    </message>
+    <message>
+        <source>0 on the contour, 1 left (G41), 2 right (G42)</source>
+        <translation>0 auf der Kontur, 1 links (G41), 2 rechts (G42)</translation>
+    </message>
+    <message>
+        <source>safety plane</source>
+        <translation>Sicherheitsebene</translation>
+    </message>
+    <message>
+        <source>cutting depth (absolute Z)</source>
+        <translation>Schnitttiefe (absolut Z)</translation>
+    </message>
+    <message>
+        <source>plunge feed, 0 = F</source>
+        <translation>Eintauchvorschub, 0 = F</translation>
+    </message>
+</context>
+<context>
     <name>KeyMap</name>
     <message>
         <source>Soft keys of the current screen (labels in the bar at the bottom)</source>

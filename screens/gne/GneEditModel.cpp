@@ -1,5 +1,6 @@
 #include "screens/gne/GneEditModel.h"
 
+#include <QtGlobal>  // QT_TRANSLATE_NOOP only: the texts stay plain English strings
 #include <algorithm>
 
 #include "cnc_core/contour/GneText.h"
@@ -249,9 +250,9 @@ void GneEditModel::remember() {
     modified_ = true;
 }
 
-bool GneEditModel::setField(int index, const std::string& text, std::string& message) {
+bool GneEditModel::setField(int index, const std::string& text, gnefields::ModelText& message) {
     if (rows_.empty()) {
-        message = "nothing selected";
+        message = {QT_TRANSLATE_NOOP("GneModel", "nothing selected")};
         return false;
     }
     const GneRow r = rows_[static_cast<std::size_t>(current_)];
@@ -311,7 +312,7 @@ std::vector<std::string> GneEditModel::insertChoices() const {
     return choices;
 }
 
-bool GneEditModel::insert(const std::string& choice, std::string& message) {
+bool GneEditModel::insert(const std::string& choice, gnefields::ModelText& message) {
     static const std::vector<std::pair<std::string, gne::ElementKind>> kinds = {
         {"START", gne::ElementKind::Start},  {"LINE", gne::ElementKind::Line},
         {"CW", gne::ElementKind::ArcCW},     {"CCW", gne::ElementKind::ArcCCW},
@@ -319,7 +320,7 @@ bool GneEditModel::insert(const std::string& choice, std::string& message) {
         {"RELIEF", gne::ElementKind::Relief}};
     const std::vector<std::string> allowed = insertChoices();
     if (std::find(allowed.begin(), allowed.end(), choice) == allowed.end()) {
-        message = choice + " cannot be inserted here";
+        message = {QT_TRANSLATE_NOOP("GneModel", "%1 cannot be inserted here"), {choice}};
         return false;
     }
     const GneRow r = rows_.empty() ? GneRow{-1, -1} : rows_[static_cast<std::size_t>(current_)];
@@ -364,9 +365,9 @@ bool GneEditModel::insert(const std::string& choice, std::string& message) {
     return true;
 }
 
-bool GneEditModel::removeCurrent(std::string& message) {
+bool GneEditModel::removeCurrent(gnefields::ModelText& message) {
     if (rows_.empty()) {
-        message = "nothing to delete";
+        message = {QT_TRANSLATE_NOOP("GneModel", "nothing to delete")};
         return false;
     }
     const GneRow r = rows_[static_cast<std::size_t>(current_)];
@@ -446,22 +447,28 @@ bool GneEditModel::window(double& low0, double& low1, double& high0, double& hig
     return high0 > low0 && high1 > low1;
 }
 
-std::string GneEditModel::problems() const {
-    std::string out;
+std::vector<gnefields::ModelText> GneEditModel::problemTexts() const {
+    std::vector<gnefields::ModelText> texts;
     for (const gne::GneDiagnostic& d : readProblems_)
-        out += "when read, line " + std::to_string(d.line) + ": " + d.message + "\n";
-    return out + sectionProblems();
+        texts.push_back({QT_TRANSLATE_NOOP("GneModel", "when read, line %1: %2"),
+                         {std::to_string(d.line), d.message},
+                         d.code});
+    const std::vector<gnefields::ModelText> section = sectionProblemTexts();
+    texts.insert(texts.end(), section.begin(), section.end());
+    return texts;
 }
 
-std::string GneEditModel::sectionProblems() const {
-    std::string out;
+std::vector<gnefields::ModelText> GneEditModel::sectionProblemTexts() const {
+    std::vector<gnefields::ModelText> texts;
     for (std::size_t row = 0; row < rows_.size(); ++row) {  // the start point is given
         const gne::GneItem& item = items_[static_cast<std::size_t>(rows_[row].item)];
         if (!item.isContour || rows_[row].element >= 0) continue;
         const auto& e = item.contour.elements;
         if (e.empty() || e[0].kind != gne::ElementKind::Start || !e[0].end[0] || !e[0].end[1])
-            out += "row " + std::to_string(row + 1) + " (" + rowText(static_cast<int>(row)) +
-                   "): the contour needs a START with both coordinates\n";
+            texts.push_back(
+                {QT_TRANSLATE_NOOP("GneModel",
+                                   "row %1 (%2): the contour needs a START with both coordinates"),
+                 {std::to_string(row + 1), rowText(static_cast<int>(row))}});
     }
     for (const gne::GneDiagnostic& d : expansion_.diagnostics) {
         if (d.line < kLineBase) continue;  // the program's other instructions
@@ -472,10 +479,11 @@ std::string GneEditModel::sectionProblems() const {
             if (rows_[k].item == static_cast<int>(item) &&
                 rows_[k].element == static_cast<int>(element) - 1)
                 row = static_cast<int>(k);
-        out += "row " + std::to_string(row + 1) + " (" + trimmed(rowText(row)) + "): " + d.message +
-               "\n";
+        texts.push_back({QT_TRANSLATE_NOOP("GneModel", "row %1 (%2): %3"),
+                         {std::to_string(row + 1), trimmed(rowText(row)), d.message},
+                         d.code});
     }
-    return out;
+    return texts;
 }
 
 }  // namespace mtc::screens

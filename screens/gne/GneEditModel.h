@@ -61,14 +61,14 @@ class GneEditModel {
     std::vector<gnefields::Field> fields() const;
     /// Sets value `index` of the current row from operator `text`; false
     /// with a message when refused (the old value stays).
-    bool setField(int index, const std::string& text, std::string& message);
+    bool setField(int index, const std::string& text, gnefields::ModelText& message);
 
     /// What may be inserted after the current row ("LINE", "CYCLE_11", ...).
     std::vector<std::string> insertChoices() const;
     /// Inserts `choice` after the current row and selects it.
-    bool insert(const std::string& choice, std::string& message);
+    bool insert(const std::string& choice, gnefields::ModelText& message);
     /// Deletes the current row (a CONT row deletes the whole contour).
-    bool removeCurrent(std::string& message);
+    bool removeCurrent(gnefields::ModelText& message);
 
     /// Number of solutions of the current element (>1: alternatives).
     int alternativeCount() const;
@@ -90,23 +90,25 @@ class GneEditModel {
     bool window(double& low0, double& low1, double& high0, double& high1) const;
     /// What the reader found wrong when the section was opened (dropped
     /// words, ...) and sectionProblems(), one per line ("" = none).
-    std::string problems() const;
+    std::string problems() const { return gnefields::englishLines(problemTexts()); }
+    std::vector<gnefields::ModelText> problemTexts() const;
     /// Why the section as it is now does not solve or expand, by row ("" =
     /// it does): both exits refuse to save while this is not empty.
-    std::string sectionProblems() const;
+    std::string sectionProblems() const { return gnefields::englishLines(sectionProblemTexts()); }
+    std::vector<gnefields::ModelText> sectionProblemTexts() const;
 
     /// The section as keyword lines (function call with parameters).
     std::string keywordText() const;
     /// The section as NC blocks: cycles expanded, windows and geometry as
     /// comments. False with `problem` when the section does not expand.
-    bool ncBlocks(std::string& text, std::string& problem) const;
+    bool ncBlocks(std::string& text, gnefields::ModelText& problem) const;
     /// What goes back into the program for `kind`, numbered as the
     /// program (GS-007): lines that stem from program lines keep their
     /// block numbers and comments, new lines get "N0053:0001" after the
     /// numbered line before them. An unchanged section as function call is
     /// returned exactly as it was. False with `problem` when NC blocks are
     /// refused (see ncBlocks).
-    bool output(GneOutput kind, std::string& text, std::string& problem) const;
+    bool output(GneOutput kind, std::string& text, gnefields::ModelText& problem) const;
     /// The program text with the section replaced by `output` (lines).
     std::string splice(const std::string& output) const;
     /// Line of the section's first line in splice()'s result.
@@ -116,7 +118,7 @@ class GneEditModel {
     /// The section as keyword lines with the program lines they stem from.
     std::vector<GneOutputLine> keywordLines() const;
     /// The section as NC block lines (see ncBlocks) with their origins.
-    bool ncBlockLines(std::vector<GneOutputLine>& lines, std::string& problem) const;
+    bool ncBlockLines(std::vector<GneOutputLine>& lines, gnefields::ModelText& problem) const;
 
     struct Snapshot {
         std::vector<mtc::core::gne::GneItem> items;

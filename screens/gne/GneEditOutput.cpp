@@ -1,6 +1,7 @@
 // GneEditModel, second half: the section as it goes back into the program
 // (keyword lines, NC blocks, block numbers of GS-007, the splice).
 
+#include <QtGlobal>  // QT_TRANSLATE_NOOP only: the texts stay plain English strings
 #include <algorithm>
 
 #include "cnc_core/contour/GneText.h"
@@ -38,10 +39,12 @@ std::string GneEditModel::keywordText() const {
     return text;
 }
 
-bool GneEditModel::ncBlockLines(std::vector<GneOutputLine>& lines, std::string& problem) const {
-    const std::string open = sectionProblems();
+bool GneEditModel::ncBlockLines(std::vector<GneOutputLine>& lines,
+                                gnefields::ModelText& problem) const {
+    const std::vector<gnefields::ModelText> open = sectionProblemTexts();
     if (!open.empty()) {
-        problem = "the section does not expand: " + open.substr(0, open.find('\n'));
+        problem = {QT_TRANSLATE_NOOP("GneModel", "the section does not expand: %1"),
+                   {open.front().english()}};
         return false;
     }
     lines.clear();
@@ -67,15 +70,15 @@ bool GneEditModel::ncBlockLines(std::vector<GneOutputLine>& lines, std::string& 
         next += count;
     }
     if (!anyCycle) {
-        problem =
-            "NC blocks need a machining cycle: insert a CYCLE_xx for the contour, or save "
-            "as function call";
+        problem = {QT_TRANSLATE_NOOP("GneModel",
+                                     "NC blocks need a machining cycle: insert a CYCLE_xx for the "
+                                     "contour, or save as function call")};
         return false;
     }
     return true;
 }
 
-bool GneEditModel::ncBlocks(std::string& text, std::string& problem) const {
+bool GneEditModel::ncBlocks(std::string& text, gnefields::ModelText& problem) const {
     std::vector<GneOutputLine> lines;
     if (!ncBlockLines(lines, problem)) return false;
     text.clear();
@@ -84,7 +87,7 @@ bool GneEditModel::ncBlocks(std::string& text, std::string& problem) const {
     return true;
 }
 
-bool GneEditModel::output(GneOutput kind, std::string& text, std::string& problem) const {
+bool GneEditModel::output(GneOutput kind, std::string& text, gnefields::ModelText& problem) const {
     std::vector<GneOutputLine> lines;
     if (kind == GneOutput::NcBlocks) {
         if (!ncBlockLines(lines, problem)) return false;

@@ -5,6 +5,8 @@
 #include <cstdio>
 #include <cstdlib>
 
+#include <QtGlobal>  // QT_TRANSLATE_NOOP only: the texts stay plain English strings
+
 #include "cnc_core/contour/GneSchema.h"
 #include "cnc_core/contour/GneText.h"
 #include "cnc_core/text/Numbers.h"
@@ -45,40 +47,59 @@ struct SlotSpec {
 
 std::vector<SlotSpec> slotsOf(ElementKind kind) {
     const double c = kCoordinateLimit;
-    const SlotSpec end0{Slot::End0, "end point, 1st axis", -c, c, false};
-    const SlotSpec end1{Slot::End1, "end point, 2nd axis", -c, c, false};
-    const SlotSpec tan{Slot::Tangent, "1 = tangential to the previous element", 0, 1, true};
-    const SlotSpec alt{Slot::Alternative, "chosen solution (0 = first)", 0, 9, true};
+    const SlotSpec end0{Slot::End0, QT_TRANSLATE_NOOP("GneModel", "end point, 1st axis"), -c, c,
+                        false};
+    const SlotSpec end1{Slot::End1, QT_TRANSLATE_NOOP("GneModel", "end point, 2nd axis"), -c, c,
+                        false};
+    const SlotSpec tan{Slot::Tangent,
+                       QT_TRANSLATE_NOOP("GneModel", "1 = tangential to the previous element"), 0,
+                       1, true};
+    const SlotSpec alt{Slot::Alternative,
+                       QT_TRANSLATE_NOOP("GneModel", "chosen solution (0 = first)"), 0, 9, true};
     switch (kind) {
         case ElementKind::Start:
-            return {{Slot::End0, "start point, 1st axis", -c, c, false},
-                    {Slot::End1, "start point, 2nd axis", -c, c, false}};
+            return {
+                {Slot::End0, QT_TRANSLATE_NOOP("GneModel", "start point, 1st axis"), -c, c, false},
+                {Slot::End1, QT_TRANSLATE_NOOP("GneModel", "start point, 2nd axis"), -c, c, false}};
         case ElementKind::Line:
             return {end0,
                     end1,
-                    {Slot::Angle, "direction in degrees from the 1st axis", -360, 360, false},
-                    {Slot::Length, "length of the line", 0.001, c, false},
+                    {Slot::Angle,
+                     QT_TRANSLATE_NOOP("GneModel", "direction in degrees from the 1st axis"), -360,
+                     360, false},
+                    {Slot::Length, QT_TRANSLATE_NOOP("GneModel", "length of the line"), 0.001, c,
+                     false},
                     tan,
                     alt};
         case ElementKind::ArcCW:
         case ElementKind::ArcCCW:
-            return {end0,
-                    end1,
-                    {Slot::Centre0, "centre, 1st axis (absolute)", -c, c, false},
-                    {Slot::Centre1, "centre, 2nd axis (absolute)", -c, c, false},
-                    {Slot::Radius, "radius of the arc", 0.001, c, false},
-                    tan,
-                    alt};
+            return {
+                end0,
+                end1,
+                {Slot::Centre0, QT_TRANSLATE_NOOP("GneModel", "centre, 1st axis (absolute)"), -c, c,
+                 false},
+                {Slot::Centre1, QT_TRANSLATE_NOOP("GneModel", "centre, 2nd axis (absolute)"), -c, c,
+                 false},
+                {Slot::Radius, QT_TRANSLATE_NOOP("GneModel", "radius of the arc"), 0.001, c, false},
+                tan,
+                alt};
         case ElementKind::Round:
-            return {{Slot::Radius, "radius of the rounding", 0.001, c, false}};
+            return {{Slot::Radius, QT_TRANSLATE_NOOP("GneModel", "radius of the rounding"), 0.001,
+                     c, false}};
         case ElementKind::Chamfer:
-            return {{Slot::Width, "width of the chamfer", 0.001, c, false}};
+            return {{Slot::Width, QT_TRANSLATE_NOOP("GneModel", "width of the chamfer"), 0.001, c,
+                     false}};
         case ElementKind::Relief:
-            return {{Slot::Form, "DIN 509 form: E or F", 0, 0, false},
-                    {Slot::Radius, "radius (empty = DIN 509 table)", 0.001, 50, false},
-                    {Slot::Depth, "depth into the cylinder t1", 0.001, 50, false},
-                    {Slot::Width, "width (empty = DIN 509 table)", 0.001, 100, false},
-                    {Slot::FaceDepth, "form F: depth into the face t2", 0.001, 50, false}};
+            return {
+                {Slot::Form, QT_TRANSLATE_NOOP("GneModel", "DIN 509 form: E or F"), 0, 0, false},
+                {Slot::Radius, QT_TRANSLATE_NOOP("GneModel", "radius (empty = DIN 509 table)"),
+                 0.001, 50, false},
+                {Slot::Depth, QT_TRANSLATE_NOOP("GneModel", "depth into the cylinder t1"), 0.001,
+                 50, false},
+                {Slot::Width, QT_TRANSLATE_NOOP("GneModel", "width (empty = DIN 509 table)"), 0.001,
+                 100, false},
+                {Slot::FaceDepth, QT_TRANSLATE_NOOP("GneModel", "form F: depth into the face t2"),
+                 0.001, 50, false}};
     }
     return {};
 }
@@ -155,10 +176,10 @@ std::string trimmed(const std::string& s) {
 
 /// Checks `text` against a range; sets `value` (nullopt for "") or `message`.
 bool checked(const std::string& name, const std::string& text, double minimum, double maximum,
-             bool integer, bool required, std::optional<double>& value, std::string& message) {
+             bool integer, bool required, std::optional<double>& value, ModelText& message) {
     if (text.empty()) {
         if (required) {
-            message = name + " must be given";
+            message = {QT_TRANSLATE_NOOP("GneModel", "%1 must be given"), {name}};
             return false;
         }
         value.reset();
@@ -166,16 +187,16 @@ bool checked(const std::string& name, const std::string& text, double minimum, d
     }
     double v = 0;
     if (!parseNumber(text, v)) {
-        message = name + ": '" + text + "' is not a number";
+        message = {QT_TRANSLATE_NOOP("GneModel", "%1: '%2' is not a number"), {name, text}};
         return false;
     }
     if (v < minimum || v > maximum) {
-        message = name + " = " + text + " is outside " + core::formatGeneral(minimum) + " .. " +
-                  core::formatGeneral(maximum);
+        message = {QT_TRANSLATE_NOOP("GneModel", "%1 = %2 is outside %3 .. %4"),
+                   {name, text, core::formatGeneral(minimum), core::formatGeneral(maximum)}};
         return false;
     }
     if (integer && std::floor(v) != v) {
-        message = name + " must be a whole number";
+        message = {QT_TRANSLATE_NOOP("GneModel", "%1 must be a whole number"), {name}};
         return false;
     }
     value = v;
@@ -197,7 +218,7 @@ std::vector<Field> elementFields(const gne::ContourElement& e, gne::GnePlane pla
     std::vector<Field> fields;
     gne::ContourElement copy = e;
     for (const SlotSpec& s : slotsOf(e.kind)) {
-        Field f{slotName(s.slot, plane), s.meaning, "", false};
+        Field f{slotName(s.slot, plane), s.meaning, "", false, ""};
         if (s.slot == Slot::Form)
             f.value = std::string(1, e.reliefForm), f.required = true;
         else if (s.slot == Slot::Tangent)
@@ -213,10 +234,10 @@ std::vector<Field> elementFields(const gne::ContourElement& e, gne::GnePlane pla
 }
 
 bool setElementField(gne::ContourElement& e, gne::GnePlane plane, int index, const std::string& raw,
-                     std::string& message) {
+                     ModelText& message) {
     const std::vector<SlotSpec> slots = slotsOf(e.kind);
     if (index < 0 || index >= static_cast<int>(slots.size())) {
-        message = "no such value";
+        message = {QT_TRANSLATE_NOOP("GneModel", "no such value")};
         return false;
     }
     const SlotSpec& s = slots[static_cast<std::size_t>(index)];
@@ -225,7 +246,7 @@ bool setElementField(gne::ContourElement& e, gne::GnePlane plane, int index, con
     if (s.slot == Slot::Form) {
         const char form = t.size() == 1 ? static_cast<char>(std::toupper(t[0])) : '?';
         if (form != 'E' && form != 'F') {
-            message = "FORM: write E or F (DIN 509)";
+            message = {QT_TRANSLATE_NOOP("GneModel", "FORM: write E or F (DIN 509)")};
             return false;
         }
         e.reliefForm = form;
@@ -246,12 +267,15 @@ bool setElementField(gne::ContourElement& e, gne::GnePlane plane, int index, con
 }
 
 std::vector<Field> contourFields(const gne::Contour& c) {
-    return {{"NR", "contour number (the cycles machine it by this number)",
-             std::to_string(c.number), true},
-            {"RAW", "0 = final part contour, 1 = raw (blank) contour", c.raw ? "1" : "0", true}};
+    return {
+        {"NR",
+         QT_TRANSLATE_NOOP("GneModel", "contour number (the cycles machine it by this number)"),
+         std::to_string(c.number), true, ""},
+        {"RAW", QT_TRANSLATE_NOOP("GneModel", "0 = final part contour, 1 = raw (blank) contour"),
+         c.raw ? "1" : "0", true, ""}};
 }
 
-bool setContourField(gne::Contour& c, int index, const std::string& raw, std::string& message) {
+bool setContourField(gne::Contour& c, int index, const std::string& raw, ModelText& message) {
     std::optional<double> value;
     if (index == 0) {
         if (!checked("NR", trimmed(raw), 1, 9999, true, true, value, message)) return false;
@@ -263,7 +287,7 @@ bool setContourField(gne::Contour& c, int index, const std::string& raw, std::st
         c.raw = *value != 0.0;
         return true;
     }
-    message = "no such value";
+    message = {QT_TRANSLATE_NOOP("GneModel", "no such value")};
     return false;
 }
 
@@ -273,29 +297,29 @@ std::vector<Field> callFields(const gne::GneCall& call) {
     if (!spec) return fields;
     for (std::size_t i = 0; i < spec->params.size(); ++i) {
         const gne::ParamSpec& p = spec->params[i];
-        std::string meaning = p.meaning;
-        if (!p.required) meaning += " (empty = " + gne::formatValue(p.defaultValue) + ")";
-        fields.push_back(
-            {p.name, meaning, i < call.values.size() ? text(call.values[i]) : "", p.required});
+        fields.push_back({p.name, p.meaning, i < call.values.size() ? text(call.values[i]) : "",
+                          p.required, p.required ? "" : gne::formatValue(p.defaultValue)});
     }
-    if (spec->hasText) fields.push_back({"TEXT", "the text to engrave", call.text, true});
+    if (spec->hasText)
+        fields.push_back(
+            {"TEXT", QT_TRANSLATE_NOOP("GneModel", "the text to engrave"), call.text, true, ""});
     return fields;
 }
 
-bool setCallField(gne::GneCall& call, int index, const std::string& raw, std::string& message) {
+bool setCallField(gne::GneCall& call, int index, const std::string& raw, ModelText& message) {
     const gne::CallSpec* spec = gne::findCallSpec(call.keyword);
     const int count = spec ? static_cast<int>(spec->params.size()) : 0;
     if (spec && spec->hasText && index == count) {
         const std::string t = trimmed(raw);
         if (t.empty() || t.find('"') != std::string::npos || t.size() > 40) {
-            message = "TEXT: 1 to 40 characters without '\"'";
+            message = {QT_TRANSLATE_NOOP("GneModel", "TEXT: 1 to 40 characters without '\"'")};
             return false;
         }
         call.text = t;
         return true;
     }
     if (!spec || index < 0 || index >= count) {
-        message = "no such value";
+        message = {QT_TRANSLATE_NOOP("GneModel", "no such value")};
         return false;
     }
     const gne::ParamSpec& p = spec->params[static_cast<std::size_t>(index)];

@@ -12,6 +12,7 @@
 #include "hmi/CellSession.h"
 #include "hmi/ProgramWorkspace.h"
 #include "screens/gne/GneCanvas.h"
+#include "screens/gne/GneTexts.h"
 
 namespace mtc::screens {
 
@@ -91,7 +92,7 @@ GneScreen::GneScreen(const mtc::hmi::ScreenContext& context,
     connect(fields_, &QTableWidget::currentCellChanged, this, [this](int row, int, int, int) {
         const auto fields = model_.fields();
         fieldHelp_->setText(row >= 0 && row < static_cast<int>(fields.size())
-                                ? q(fields[static_cast<std::size_t>(row)].meaning)
+                                ? gneMeaning(fields[static_cast<std::size_t>(row)])
                                 : QString());
     });
 }
@@ -143,7 +144,7 @@ void GneScreen::refresh() {
         rows_->addItem(q(model_.rowText(row)));
     rows_->setCurrentRow(model_.currentRow());
     refreshFields();
-    problems_->setText(q(model_.problems()).trimmed());
+    problems_->setText(gneLines(model_.problemTexts()));
     canvas_->update();
     emit softKeysChanged();
 }
@@ -156,7 +157,7 @@ void GneScreen::refreshFields() {
         const auto& f = fields[static_cast<std::size_t>(i)];
         fields_->setItem(i, 0, new QTableWidgetItem(q(f.name) + (f.required ? " *" : "")));
         fields_->setItem(i, 1, new QTableWidgetItem(f.value.empty() ? "?" : q(f.value)));
-        fields_->item(i, 0)->setToolTip(q(f.meaning));
+        fields_->item(i, 0)->setToolTip(gneMeaning(f));
     }
     if (!fields.empty()) fields_->setCurrentCell(std::min(keep, fields_->rowCount() - 1), 1);
 }
@@ -265,9 +266,9 @@ void GneScreen::startInput(const QString& initial) {
 
 void GneScreen::applyInput() {
     const int index = fields_->currentRow();
-    std::string error;
+    gnefields::ModelText error;
     if (!model_.setField(index, input_->text().toStdString(), error)) {
-        showMessage(tr("%1 - the old value is kept").arg(q(error)), true);
+        showMessage(tr("%1 - the old value is kept").arg(gneText(error)), true);
         input_->selectAll();
         return;  // the entry stays open for a correction
     }
@@ -286,9 +287,9 @@ void GneScreen::closeInput() {
 }
 
 void GneScreen::clearField() {
-    std::string error;
+    gnefields::ModelText error;
     if (!model_.setField(fields_->currentRow(), "", error)) {
-        showMessage(tr("%1 - the old value is kept").arg(q(error)), true);
+        showMessage(tr("%1 - the old value is kept").arg(gneText(error)), true);
         return;
     }
     const int row = fields_->currentRow();
@@ -348,15 +349,15 @@ void GneScreen::choose() {
 }
 
 void GneScreen::insertChoice(const std::string& choice) {
-    std::string error;
-    if (!model_.insert(choice, error)) return showMessage(q(error), true);
+    gnefields::ModelText error;
+    if (!model_.insert(choice, error)) return showMessage(gneText(error), true);
     refresh();
     showMessage(tr("%1 inserted: enter its values (Enter)").arg(q(choice)));
 }
 
 void GneScreen::deleteRow() {
-    std::string error;
-    if (!model_.removeCurrent(error)) return showMessage(q(error), true);
+    gnefields::ModelText error;
+    if (!model_.removeCurrent(error)) return showMessage(gneText(error), true);
     refresh();
     showMessage(tr("Row deleted (Undo: F4 or Ctrl+Z)"));
 }
@@ -390,13 +391,14 @@ void GneScreen::toggleZoom() {
 void GneScreen::finish(GneOutput output) {
     if (program_ == 0) return showMessage(tr("No program: open the GNE from the editor"), true);
     if (output == GneOutput::FunctionCall) {
-        if (const std::string open = model_.sectionProblems(); !open.empty())
-            return showMessage(tr("Not saved - the section is not complete: %1")
-                                   .arg(q(open.substr(0, open.find('\n')))),
-                               true);
+        const std::vector<gnefields::ModelText> open = model_.sectionProblemTexts();
+        if (!open.empty())
+            return showMessage(
+                tr("Not saved - the section is not complete: %1").arg(gneText(open.front())), true);
     }
-    std::string text, problem;
-    if (!model_.output(output, text, problem)) return showMessage(q(problem), true);
+    std::string text;
+    gnefields::ModelText problem;
+    if (!model_.output(output, text, problem)) return showMessage(gneText(problem), true);
     QString error;
     if (!workspace_->save(program_, q(model_.splice(text)), error)) return showMessage(error, true);
     workspace_->requestEdit(program_, model_.spliceLine());

@@ -19,6 +19,7 @@
 
 #include "PanelFixture.h"
 #include "cnc_core/compiler/Compiler.h"
+#include "cnc_core/contour/GneSchema.h"
 #include "cnc_core/language/Parser.h"
 #include "cnc_core/program/ProgramStore.h"
 #include "cnc_core/toolpath/ToolpathRun.h"
@@ -418,8 +419,9 @@ class GneScreenTest : public QObject {
         QCOMPARE(model.firstLine(), 9);
         QCOMPARE(model.rows().size(), std::size_t{1});
         QVERIFY2(model.problems().empty(), model.problems().c_str());
-        std::string blocks, problem;
-        QVERIFY2(model.ncBlocks(blocks, problem), problem.c_str());
+        std::string blocks;
+        mtc::screens::gnefields::ModelText problem;
+        QVERIFY2(model.ncBlocks(blocks, problem), problem.english().c_str());
         QVERIFY2(blocks.find("G1 X10 Z-20") != std::string::npos, blocks.c_str());
         // The contour's own section ends before the tool change.
         model.open(program, 5);
@@ -427,7 +429,7 @@ class GneScreenTest : public QObject {
         QCOMPARE(model.lastLine(), 7);
         QCOMPARE(model.currentRow(), 3);  // the LINE of line 5
         // A form numbered 3 as well is refused by the expansion, named by its row.
-        std::string message;
+        mtc::screens::gnefields::ModelText message;
         QVERIFY(model.insert("FORM_20", message));
         QVERIFY(model.setField(0, "3", message));
         QVERIFY2(model.sectionProblems().find("already used") != std::string::npos,
@@ -459,6 +461,31 @@ class GneScreenTest : public QObject {
         QCOMPARE(fieldValue(panel, 4), QString("8"));
         QVERIFY(rows->currentItem()->text().endsWith("R8"));
         QVERIFY(!gneScreen(panel)->model().canUndo());  // nothing was changed
+    }
+
+    // The model's texts in German (issue 20 §1): a value's meaning, a
+    // refusal with the values it names, and every parameter meaning of the
+    // core's GNE calls (which lupdate cannot see) in the catalogue.
+    void germanPanelShowsTheModelTextsInGerman() {
+        mtc::hmi::PanelOptions german = options();
+        german.language = "de";
+        PanelFixture panel(german);
+        for (const mtc::core::gne::CallSpec& spec : mtc::core::gne::callSpecs())
+            for (const mtc::core::gne::ParamSpec& p : spec.params)
+                QVERIFY2(mtc::hmi::installedCatalogueHas("GneModel", p.meaning), p.meaning);
+        editAt(panel, 9, 15);  // on CCW
+        panel.press(Qt::Key_F4);
+        panel.press(Qt::Key_Return);  // to the values: Z X K I R TAN ALT
+        for (int i = 0; i < 4; ++i)
+            panel.press(Qt::Key_Down);
+        auto* help = child<QLabel>(panel, "gne", "gneFieldHelp");
+        QCOMPARE(help->text(), QString("Radius des Kreisbogens"));
+        typeValue(panel, "-3");
+        auto* message = child<QLabel>(panel, "gne", "gneMessage");
+        QVERIFY2(message->text().startsWith("R = -3 liegt außerhalb 0.001 .. ") &&
+                     message->text().endsWith(" - der alte Wert bleibt"),
+                 qPrintable(message->text()));
+        panel.press(Qt::Key_Escape);
     }
 
     void alternativeSelectionChangesTheDrawing() {
