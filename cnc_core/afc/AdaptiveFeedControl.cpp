@@ -64,6 +64,7 @@ void AdaptiveFeedControl::followStore() const {
     memo_.revision = revision;
     memo_.known = 0;
     memo_.settingsKnown = false;
+    memo_.stallKnown = false;
 }
 
 double AdaptiveFeedControl::element(int number) const {
@@ -94,7 +95,7 @@ void AdaptiveFeedControl::setSignal(const char* name, int value) {
     signals_->set(signal, value);
 }
 
-AfcSettings AdaptiveFeedControl::effectiveSettings() const {
+const AfcSettings& AdaptiveFeedControl::effectiveSettings() const {
     followStore();
     if (!memo_.settingsKnown) {
         memo_.settings =
@@ -298,19 +299,27 @@ AfcStatus AdaptiveFeedControl::recordStallTorque(const std::string& axis, double
                                    time_ + i * kSampleSeconds);
     const double tenths = std::round(sum / samples * 10.0);  // P-7-3652 unit: 0.1 %
     stallTorques_[axis] = tenths;
+    memo_.stallKnown = false;
     if (axis == afcAxisName(effectiveSettings().referenceAxis))
         setStatus(14, std::fabs(tenths) / 10.0);
     return AfcStatus::Ok;
 }
 
 double AdaptiveFeedControl::stallCompensation() const {
+    followStore();
+    if (memo_.stallKnown) return memo_.stall;
     const double shown = element(14);
+    double compensation = shown;
     auto found = stallTorques_.find(afcAxisName(effectiveSettings().referenceAxis));
-    if (found == stallTorques_.end()) return shown;
-    const double recorded = found->second / 10.0;
-    // 014 shows |P-7-3652| (seed 002 5.2); the torque formulas of Fig. 4-2,
-    // 5-5 and 5-7 subtract the measured stall torque itself, sign included.
-    return std::fabs(std::fabs(recorded) - shown) < 0.05 ? recorded : shown;
+    if (found != stallTorques_.end()) {
+        const double recorded = found->second / 10.0;
+        // 014 shows |P-7-3652| (seed 002 5.2); the torque formulas of Fig. 4-2,
+        // 5-5 and 5-7 subtract the measured stall torque itself, sign included.
+        if (std::fabs(std::fabs(recorded) - shown) < 0.05) compensation = recorded;
+    }
+    memo_.stall = compensation;
+    memo_.stallKnown = true;
+    return compensation;
 }
 
 double AdaptiveFeedControl::measuredStallTorque(const std::string& axis) const {
@@ -370,8 +379,14 @@ void AdaptiveFeedControl::observe(double feed, double speedFraction, double enga
 
 AfcTrendSample AdaptiveFeedControl::trendSample(double time, double effectiveFeed,
                                                 bool measuringIdle) const {
-    const AfcSettings s = effectiveSettings();
     AfcTrendSample sample;
+    fillTrendSample(sample, time, effectiveFeed, measuringIdle);
+    return sample;
+}
+
+void AdaptiveFeedControl::fillTrendSample(AfcTrendSample& sample, double time, double effectiveFeed,
+                                          bool measuringIdle) const {
+    const AfcSettings& s = effectiveSettings();
     sample.time = time;
     sample.torqueActual = lastActual_;
     sample.machiningTorque = lastMachining_;
@@ -388,7 +403,6 @@ AfcTrendSample AdaptiveFeedControl::trendSample(double time, double effectiveFee
     sample.measuringIdle = measuringIdle;
     sample.excessiveThrust = excessiveThrust_;
     sample.thrustMissing = thrustMissing_;
-    return sample;
 }
 
 }  // namespace mtc::core

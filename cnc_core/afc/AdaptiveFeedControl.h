@@ -56,7 +56,9 @@ class AdaptiveFeedControl {
     const DiagnosticList& parameterDiagnostics() const { return parameterDiagnostics_; }
     /// The settings in force now: page 30 when its element 002 is not 0,
     /// else the process parameters (the precedence rule of seed 002 ch. 5).
-    AfcSettings effectiveSettings() const;
+    /// The reference is to the remembered settings, which a later call
+    /// refreshes in place after the store changed.
+    const AfcSettings& effectiveSettings() const;
 
     /// G26 with the G codes now active. With 002 = 0 the process parameters
     /// are copied into page 30 first (002 = Bxx.063). Sets 001 = 1, 011 = 0,
@@ -157,15 +159,19 @@ class AdaptiveFeedControl {
     /// G26 is off (the trend shows the machining before G26 and the ITM
     /// moves too): 011 stays.
     void observe(double feed, double speedFraction, double engagement, double offset = 0.0);
-    /// The torques of `sample` become the last observed ones (the last
+    /// These torques become the last observed ones (those of the last
     /// sample of an observed move, AfcObservedMove).
-    void takeObservation(const AfcTrendSample& sample) {
-        lastActual_ = sample.torqueActual;
-        lastMachining_ = sample.machiningTorque;
+    void takeObservation(double torqueActual, double machiningTorque) {
+        lastActual_ = torqueActual;
+        lastMachining_ = machiningTorque;
     }
     /// The state of the last advance()/observe() as a trend point at `time`;
     /// `measuringIdle`: the sample lies in the measuring period of ITM.
     AfcTrendSample trendSample(double time, double effectiveFeed, bool measuringIdle = false) const;
+    /// The same written into `sample` (filled in place where it is kept: a
+    /// sample built and then copied stalled on its byte-sized flags).
+    void fillTrendSample(AfcTrendSample& sample, double time, double effectiveFeed,
+                         bool measuringIdle = false) const;
     /// The stall torque the machining and idling torques are corrected by:
     /// the signed P-7-3652 result of the reference axis while 014 still
     /// shows its absolute value, else 014 as written (operator, MTD).
@@ -211,6 +217,10 @@ class AdaptiveFeedControl {
         std::uint32_t known = 0;  ///< bit n: value[n] holds element n
         bool settingsKnown = false;
         AfcSettings settings;
+        /// stallCompensation(), asked for every observed move; also forgotten
+        /// when a stall torque is recorded.
+        bool stallKnown = false;
+        double stall = 0.0;
     };
     mutable PageMemo memo_;
     SignalTable* signals_;

@@ -68,32 +68,36 @@ bool measureIdle(AdaptiveFeedControl& afc, const AfcMoveInput& move, ItmWindow& 
 }
 
 /// A move without G26: the torque is only observed for the trend, as one
-/// record whose samples are made when the trend is read.
+/// record whose samples are made when the trend is read. The record is
+/// written where the recorder keeps it (one per feed move of a run).
 void observePlainMove(AdaptiveFeedControl& afc, const AfcMoveInput& move, const ItmWindow& itm,
                       AfcTrendRecorder* recorder) {
     if (!recorder || move.plannedSeconds <= 0) return;
-    AfcObservedMove observed;
-    const double feed = move.length / move.plannedSeconds * 60.0;
-    observed.constant = afc.trendSample(move.startTime, feed);
-    observed.model = afc.model();
-    observed.startTime = move.startTime;
-    observed.plannedSeconds = move.plannedSeconds;
-    observed.count = samplesFor(move.plannedSeconds);
-    observed.feed = feed;
-    observed.speedFraction = move.speedFraction;
-    // The engagement rule of the whole cut, asked where the cut starts.
-    observed.engagement =
-        move.cutFrom < move.cutTo ? engagementAt(move, itm, move.cutFrom, 0.0, false) : 0.0;
-    observed.cutFrom = move.cutFrom;
-    observed.cutTo = move.cutTo;
-    observed.itmMeasured = itm.measured;
-    observed.itmFrom = itm.from;
-    observed.itmTo = itm.to;
-    observed.idleTorque = observed.constant.idleTorque;
-    observed.stallCompensation = afc.stallCompensation();
+    double lastActual = 0.0;
+    double lastMachining = 0.0;
+    recorder->addObserved([&](AfcObservedMove& observed) {
+        const double feed = move.length / move.plannedSeconds * 60.0;
+        afc.fillTrendSample(observed.constant, move.startTime, feed);
+        observed.model = afc.model();
+        observed.startTime = move.startTime;
+        observed.plannedSeconds = move.plannedSeconds;
+        observed.count = samplesFor(move.plannedSeconds);
+        observed.feed = feed;
+        observed.speedFraction = move.speedFraction;
+        // The engagement rule of the whole cut, asked where the cut starts.
+        observed.engagement =
+            move.cutFrom < move.cutTo ? engagementAt(move, itm, move.cutFrom, 0.0, false) : 0.0;
+        observed.cutFrom = move.cutFrom;
+        observed.cutTo = move.cutTo;
+        observed.itmMeasured = itm.measured;
+        observed.itmFrom = itm.from;
+        observed.itmTo = itm.to;
+        observed.idleTorque = observed.constant.idleTorque;
+        observed.stallCompensation = afc.stallCompensation();
+        observed.torquesAt(observed.count, lastActual, lastMachining);
+    });
     afc.setClock(move.startTime);
-    afc.takeObservation(observed.sample(observed.count));
-    recorder->add(observed);
+    afc.takeObservation(lastActual, lastMachining);
 }
 
 /// Seconds from `elapsed` / `travelled` until the engagement may change or

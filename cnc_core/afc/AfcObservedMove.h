@@ -39,6 +39,8 @@ struct AfcObservedMove {
 
     /// Sample `k`, 1 .. count: `k` steps of plannedSeconds / count into the move.
     AfcTrendSample sample(int k) const;
+    /// The actual torque (S-0-0084) and the machining torque (007) of sample `k`.
+    void torquesAt(int k, double& actual, double& machining) const;
 };
 
 }  // namespace mtc::core

@@ -37,11 +37,7 @@ void AfcTrendRecorder::add(const AfcTrendSample& sample) {
 }
 
 void AfcTrendRecorder::add(const AfcObservedMove& move) {
-    Entry& entry = entries_.emplace_back();
-    entry.move = move;
-    entry.move.count = std::max(1, move.count);
-    entry.observed = true;
-    keep(entry);
+    addObserved([&move](AfcObservedMove& kept) { kept = move; });
 }
 
 void AfcTrendRecorder::keep(Entry& entry) {

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <string>
@@ -25,6 +26,16 @@ class AfcTrendRecorder {
     void add(const AfcTrendSample& sample);
     /// Appends the move's samples 1 .. move.count (at least one).
     void add(const AfcObservedMove& move);
+    /// Adds an observed move that `fill(AfcObservedMove&)` writes in place
+    /// (every field; one per feed move of a run, so it is not built and copied).
+    template <typename Fill>
+    void addObserved(Fill fill) {
+        Entry& entry = entries_.emplace_back_for_overwrite();
+        fill(entry.move);
+        entry.observed = true;  // entry.first: keep()
+        entry.move.count = std::max(1, entry.move.count);
+        keep(entry);
+    }
     /// Number of samples kept.
     std::size_t size() const { return count_; }
     std::size_t capacity() const { return capacity_; }

@@ -67,6 +67,10 @@ Motion onDevelopedSurface(const Motion& m, const ProcessConfig& config) {
 }  // namespace
 
 double motionSeconds(const Motion& motion, const ProcessConfig& config) {
+    return motionSeconds(motion, config, motionPathLength(motion));
+}
+
+double motionSeconds(const Motion& motion, const ProcessConfig& config, double length) {
     if (motion.type == MotionType::Rapid) {
         double slowest = 0.0;
         const int count = std::min<int>(motion.axisCount, static_cast<int>(config.axes.size()));
@@ -81,7 +85,7 @@ double motionSeconds(const Motion& motion, const ProcessConfig& config) {
     if (motion.feed <= 0) return 0.0;
     if (motion.transformation == 32 && motion.effectiveRadius > 0)
         return motionPathLength(onDevelopedSurface(motion, config)) / motion.feed * 60.0;
-    return motionPathLength(motion) / motion.feed * 60.0;
+    return length / motion.feed * 60.0;
 }
 
 SimulatedMachine::SimulatedMachine(const ProcessConfig& config)
@@ -94,19 +98,20 @@ SimulatedMachine::~SimulatedMachine() = default;
 void SimulatedMachine::motion(const Motion& m) {
     ++motions_;
     lastReportsAfc_ = afc_ && (afc_->active() || afc_->idleMeasurementRequested());
-    const double planned = motionSeconds(m, config_);
+    const double length = motionPathLength(m);
+    const double planned = motionSeconds(m, config_, length);
     lastAdapted_ = false;
     lastFraction_ = 1.0;
-    lastFeed_ =
-        m.type == MotionType::Rapid && planned > 0 ? motionPathLength(m) / planned * 60.0 : m.feed;
+    lastFeed_ = m.type == MotionType::Rapid && planned > 0 ? length / planned * 60.0 : m.feed;
     for (int i = 0; i < m.axisCount && i < kMaxAxes; ++i)
         lastEnd_[static_cast<std::size_t>(i)] = m.end[static_cast<std::size_t>(i)];
     if (afc_ && afc_->available() && planned > 0) {
         // G26 controls and ITM measures: the move's course is theirs.
-        if (afc_->active() || afc_->idleMeasurementRequested()) return adaptiveMove(m, planned);
+        if (afc_->active() || afc_->idleMeasurementRequested())
+            return adaptiveMove(m, planned, length);
     }
     if (afc_ && afc_->available() && planned > 0 && recorder_ && m.type != MotionType::Rapid) {
-        observeMove(m, planned);  // the trend observes the torque; the move is a plain one
+        observeMove(m, planned, length);  // the trend observes the torque; the move is a plain one
     } else {
         afcClock_ = std::max(afcClock_, seconds()) + planned;
         if (afc_) afc_->setClock(afcClock_);  // the end of the queued work

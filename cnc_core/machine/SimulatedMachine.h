@@ -23,6 +23,8 @@ class AfcTrendRecorder;
 /// slowest axis needs at its max_velocity. Rotary axes count in degrees.
 /// Returns 0 for a move of length 0 and for feed moves without a feed.
 double motionSeconds(const Motion& motion, const ProcessConfig& config);
+/// The same with the move's path length (motionPathLength) known to the caller.
+double motionSeconds(const Motion& motion, const ProcessConfig& config, double length);
 
 /// The machine behind a station's interpreter (cnc_core/cell/Station): it
 /// takes every output into the bounded look-ahead queue of the trajectory
@@ -141,10 +143,12 @@ class SimulatedMachine : public MachineSink {
     void standWhereStopped();
     /// G26 / ITM: the move is worked out by adaptive feed control now and
     /// queued as a timed move.
-    void adaptiveMove(const Motion& motion, double planned);
+    void adaptiveMove(const Motion& motion, double planned, double length);
     /// G25 with a trend recorder: the torque is only observed (trend, 007).
-    void observeMove(const Motion& motion, double planned);
-    AfcMoveInput afcInput(const Motion& motion, double planned) const;
+    void observeMove(const Motion& motion, double planned, double length);
+    /// What adaptive feed control needs of the move; `length`: its path
+    /// length (mm). The acceleration time only matters to ITM (adaptive moves).
+    AfcMoveInput afcInput(const Motion& motion, double planned, double length) const;
     /// The override of the move's kind in force, as a share (1 below 1 %).
     double overrideShare(const Motion& motion) const;
     /// `length`: the move's path length (mm), known to the caller.

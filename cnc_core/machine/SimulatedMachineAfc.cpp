@@ -58,15 +58,14 @@ double SimulatedMachine::overrideShare(const Motion& m) const {
     return percent >= 1.0 ? percent / 100.0 : 1.0;
 }
 
-AfcMoveInput SimulatedMachine::afcInput(const Motion& m, double planned) const {
+AfcMoveInput SimulatedMachine::afcInput(const Motion& m, double planned, double length) const {
     // The controller acts on the feed the axes really get: the programmed
     // one at the override in force when the move is worked out (MOT-011).
     const double atOverride = overrideShare(m);
     AfcMoveInput move;
-    move.length = motionPathLength(m);
+    move.length = length;
     move.feed = (m.type == MotionType::Rapid ? lastFeed_ : m.feed) * atOverride;
     move.plannedSeconds = planned / atOverride;
-    move.accelerationSeconds = accelerationSeconds(m, move.feed);
     move.speedFraction = referenceSpeedFraction(m, move.feed, move.length);
     move.engagement = cuttingEngagement(config_);
     move.materialKnown = material_->known();
@@ -77,8 +76,9 @@ AfcMoveInput SimulatedMachine::afcInput(const Motion& m, double planned) const {
     return move;
 }
 
-void SimulatedMachine::adaptiveMove(const Motion& m, double planned) {
-    AfcMoveInput move = afcInput(m, planned);
+void SimulatedMachine::adaptiveMove(const Motion& m, double planned, double length) {
+    AfcMoveInput move = afcInput(m, planned, length);
+    move.accelerationSeconds = accelerationSeconds(m, move.feed);
     // It starts when the queue before it is worked off (at the overrides in
     // force; a hold now does not move it).
     const double drain = engine_.secondsToDrain();
@@ -97,8 +97,8 @@ void SimulatedMachine::adaptiveMove(const Motion& m, double planned) {
     engine_.pushTimedMove(m, result.seconds * overrideShare(m), result.fraction, result.course);
 }
 
-void SimulatedMachine::observeMove(const Motion& m, double planned) {
-    AfcMoveInput move = afcInput(m, planned);
+void SimulatedMachine::observeMove(const Motion& m, double planned, double length) {
+    AfcMoveInput move = afcInput(m, planned, length);
     move.startTime = std::max(afcClock_, seconds());
     const AfcMoveResult result = simulateAfcMove(*afc_, move, recorder_);
     lastFeed_ = result.meanFeed;

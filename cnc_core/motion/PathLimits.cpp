@@ -26,9 +26,10 @@ PathLimits pathLimits(const SegmentGeometry& g, const MotionLimits& limits) {
     double velocity = kNone, acceleration = kNone, planeAcceleration = kNone;
     for (int i = 0; i < g.axisCount(); ++i) {
         const double share = g.maxTangentComponent(i);
+        const bool inArcPlane = g.arc() && (i == g.planeAxis1() || i == g.planeAxis2());
+        if (share <= 1e-12 && !inArcPlane) continue;  // an axis that does not move
         const AxisLimit l = planeLimit(g, limits, i);
-        if (g.arc() && (i == g.planeAxis1() || i == g.planeAxis2()))
-            planeAcceleration = std::min(planeAcceleration, l.acceleration);
+        if (inArcPlane) planeAcceleration = std::min(planeAcceleration, l.acceleration);
         if (share <= 1e-12) continue;
         velocity = std::min(velocity, l.velocity / share);
         acceleration = std::min(acceleration, l.acceleration / share);

@@ -54,14 +54,20 @@ class RingQueue {
     const_iterator begin() const { return {this, 0}; }
     const_iterator end() const { return {this, size_}; }
 
-    void push_back(const T& value) { emplace_back() = value; }
-    void push_back(T&& value) { emplace_back() = std::move(value); }
+    void push_back(const T& value) { emplace_back_for_overwrite() = value; }
+    void push_back(T&& value) { emplace_back_for_overwrite() = std::move(value); }
     /// Appends a default element and returns it, to be filled in place
     /// (large elements are then written once instead of copied twice).
     T& emplace_back() {
+        T& slot = emplace_back_for_overwrite();
+        if constexpr (std::is_trivially_destructible_v<T>) slot = T();  // else reset when dropped
+        return slot;
+    }
+    /// Appends an element and returns it as its slot's last use left it (a
+    /// trivial type is not reset): the caller assigns the whole element.
+    T& emplace_back_for_overwrite() {
         if (size_ == slots_.size()) grow();
         T& slot = slots_[this->slot(size_)];
-        if constexpr (std::is_trivially_destructible_v<T>) slot = T();  // else reset when dropped
         ++size_;
         return slot;
     }
