@@ -35,7 +35,8 @@ BlockParser::BlockParser(ParseContext& context)
     : context_(context),
       program_(context.program()),
       text_(context.program().source),
-      lexer_(text_, 0, 0) {}
+      lexer_(text_, 0, 0),
+      plainFastPath_(context.plainBlockFastPath()) {}
 
 void BlockParser::parse(const BlockSource& source) {
     source_ = source;
@@ -50,7 +51,7 @@ void BlockParser::parse(const BlockSource& source) {
         if (!context_.macros().empty() && blockUsesMacro()) {
             emitMacroBlock();
         } else {
-            if (source.lineCount == 1 && context_.plainBlockFastPath()) parsePlainWords();
+            if (source.lineCount == 1 && plainFastPath_) parsePlainWords();
             while (parseNextWord()) {
             }
         }
@@ -81,7 +82,7 @@ void BlockParser::finish() {
 bool BlockParser::parsePrefix() {
     // [/] [:] [Nxxxx[:yyyy]] [/] [:] [.LABEL] [:]  with at most one '/' and one
     // ':'; the skip slash stands before the colon (seed 000, 5.1: "N0003 /: ...").
-    if (context_.plainBlockFastPath() && takePlainBlockNumber()) return true;
+    if (plainFastPath_ && takePlainBlockNumber()) return true;
     takeSkip();
     takePrimary();
     if (lexer_.peek() == 'N' && Lexer::isDigit(lexer_.peek(1)) && !parseBlockNumber()) return false;
@@ -112,21 +113,16 @@ void BlockParser::takePrimary() {
 }
 
 bool BlockParser::parseBlockNumber() {
-    std::uint32_t start = lexer_.position();
-    lexer_.advance();  // 'N'
-    std::int64_t number = 0;
-    int digits = 0;
-    while (Lexer::isDigit(lexer_.peek())) {
-        if (digits < 9) number = number * 10 + (lexer_.peek() - '0');
-        ++digits;
-        lexer_.advance();
-    }
-    if (digits > 4 || lexer_.peek() == '.') {
+    const std::uint32_t start = lexer_.position();
+    const word_rules::BlockNumberDigits digits =
+        word_rules::blockNumberDigitsAt(text_.data(), start + 1, lexer_.end());  // after 'N'
+    lexer_.seek(digits.end);
+    if (digits.count > word_rules::kBlockNumberDigits || lexer_.peek() == '.') {
         return error("PARSE_BAD_BLOCK_NUMBER", start,
                      "block number must be 'N' and four digits (N0000..N9999)");
     }
-    block_.number = static_cast<std::int32_t>(number);
-    if (digits < 4)
+    block_.number = static_cast<std::int32_t>(digits.value);
+    if (digits.count < word_rules::kBlockNumberDigits)
         warning("PARSE_SHORT_BLOCK_NUMBER", start,
                 "block number should have four digits (" + formatBlockId(block_.number) + ")");
     // Compiled programs: "N0053:0001" (colon directly followed by 4 digits).

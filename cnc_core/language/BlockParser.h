@@ -91,6 +91,8 @@ class BlockParser {
     Program& program_;
     std::string_view text_;
     Lexer lexer_;
+    /// ParseOptions::plainBlockFastPath, fixed for the whole parse.
+    const bool plainFastPath_;
     BlockSource source_;
     Block block_;
     bool primarySeen_ = false;

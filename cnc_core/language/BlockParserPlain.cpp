@@ -4,8 +4,8 @@
 // with no lexer calls per character and stores the packed words itself.
 //
 // It never decides anything the general path would decide differently: it
-// uses the same rules (Lexer::scanNumberAt, addressKind, axisIndexAt,
-// normalizeNumber, WordList::tryPushNumber), takes a word only when the
+// uses the same rules (Lexer::scanNumberAt, blockNumberDigitsAt, addressKind,
+// axisIndexAt, normalizeNumber, WordList::tryPushNumber), takes a word only when the
 // general path would take it without a diagnostic, and at the first word it
 // does not take it stops and leaves the lexer at that word, where the general
 // path (parseNextWord) goes on. The parser tests compare both paths.
@@ -16,12 +16,13 @@ namespace mtc::core {
 
 using word_rules::addressKind;
 using word_rules::axisIndexAt;
+using word_rules::BlockNumberDigits;
+using word_rules::blockNumberDigitsAt;
+using word_rules::kBlockNumberDigits;
 using word_rules::normalizeNumber;
 using word_rules::NumberCheck;
 
 namespace {
-
-constexpr std::uint32_t kBlockNumberDigits = 4;
 
 bool isPlainBlank(char c) {
     return c == ' ' || c == '\t';
@@ -33,13 +34,10 @@ bool BlockParser::takePlainBlockNumber() {
     const char* text = text_.data();
     const std::uint32_t begin = source_.begin;
     const std::uint32_t end = source_.end;
-    const std::uint32_t digitsEnd = begin + 1 + kBlockNumberDigits;
-    if (digitsEnd > end || text[begin] != 'N') return false;
-    std::int32_t number = 0;
-    for (std::uint32_t i = begin + 1; i < digitsEnd; ++i) {
-        if (!Lexer::isDigit(static_cast<unsigned char>(text[i]))) return false;
-        number = number * 10 + (text[i] - '0');
-    }
+    if (begin >= end || text[begin] != 'N') return false;
+    const BlockNumberDigits digits = blockNumberDigitsAt(text, begin + 1, end);
+    if (digits.count != kBlockNumberDigits) return false;
+    const std::uint32_t digitsEnd = digits.end;
     // After the number only a blank or the block end; and no skip slash,
     // primary colon or label, which the general prefix takes.
     if (digitsEnd < end && !isPlainBlank(text[digitsEnd])) return false;
@@ -47,7 +45,7 @@ bool BlockParser::takePlainBlockNumber() {
     while (next < end && Lexer::isBlank(static_cast<unsigned char>(text[next])))
         ++next;
     if (next < end && (text[next] == '/' || text[next] == ':' || text[next] == '.')) return false;
-    block_.number = number;
+    block_.number = static_cast<std::int32_t>(digits.value);
     lexer_.seek(digitsEnd);
     return true;
 }

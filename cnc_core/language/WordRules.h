@@ -94,6 +94,30 @@ inline std::uint8_t axisIndexAt(const char* text, std::uint32_t pos, std::uint32
     return isIndex ? static_cast<std::uint8_t>(digit - '0') : 0;
 }
 
+/// A block number has this many digits ("N0012"); fewer get a warning, more
+/// are an error.
+constexpr std::uint32_t kBlockNumberDigits = 4;
+
+/// The digits of a block number from `pos` of raw text [.., end) (after its
+/// 'N'): the value of the first nine and how many there are.
+struct BlockNumberDigits {
+    std::int64_t value = 0;
+    std::uint32_t count = 0;
+    std::uint32_t end = 0;  ///< offset after the last digit
+};
+
+inline BlockNumberDigits blockNumberDigitsAt(const char* text, std::uint32_t pos,
+                                             std::uint32_t end) {
+    BlockNumberDigits digits;
+    std::uint32_t p = pos;
+    for (; p < end && Lexer::isDigit(static_cast<unsigned char>(text[p])); ++p) {
+        if (digits.count < 9) digits.value = digits.value * 10 + (text[p] - '0');
+        ++digits.count;
+    }
+    digits.end = p;
+    return digits;
+}
+
 /// Why a written number cannot be the value of its word.
 enum class NumberCheck { Ok, NegativeWhole, NotWhole };
 
