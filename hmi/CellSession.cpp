@@ -7,6 +7,7 @@
 #include "cnc_core/machine_data/SharedMachineDataFile.h"
 #include "cnc_core/tooldata/SetupDataEditor.h"
 #include "hmi/NcOptionsHolder.h"
+#include "hmi/PanelLanguage.h"
 
 namespace mtc::hmi {
 
@@ -25,6 +26,9 @@ CellSession::CellSession(mtc::core::MachineConfig config, QObject* parent)
     announced_.assign(static_cast<std::size_t>(cell_.stationCount()), 0);
     for (int slot = 0; slot < cell_.stationCount(); ++slot)
         cell_.station(slot).setRunTracing(true);  // the toolpath view's backplot (TP-016)
+    // Alarms and MDI messages built from a diagnostic in the panel's language
+    // (installed before the session is made; D-024).
+    cell_.setLanguage(installedCoreLanguage());
     timer_.setInterval(kTickMs);
     connect(&timer_, &QTimer::timeout, this, &CellSession::tick);
     realTime_.start();
@@ -179,7 +183,7 @@ QStringList CellSession::openMachineDataFile(const QString& path) {
     const mtc::core::MachineDataLoadResult result = sharedData_->open(machineData());
     savedRevision_ = machineData().revision();
     for (const mtc::core::Diagnostic& d : result.diagnostics.items())
-        machineDataMessages_ << QString::fromStdString(d.message);
+        machineDataMessages_ << coreMessageLine(d);
     // Tool lists and zero offsets beside it (a refused file changes nothing);
     // the editor looks at the files before they are read (SetupDataEditor).
     const mtc::core::SetupDataFiles files = mtc::core::setupDataFilesBeside(path.toStdString());
@@ -187,7 +191,7 @@ QStringList CellSession::openMachineDataFile(const QString& path) {
     mtc::core::DiagnosticList setup;
     setupData().load(files, setup);
     for (const mtc::core::Diagnostic& d : setup.items())
-        machineDataMessages_ << QString::fromStdString(d.message);
+        machineDataMessages_ << coreMessageLine(d);
     refreshTimer_.start();
     for (int slot = 0; slot < processCount(); ++slot)
         emit processChanged(slot);
@@ -206,7 +210,7 @@ bool CellSession::saveMachineData(QString& error) {
     const std::uint64_t before = machineData().revision();
     const mtc::core::MachineDataSync sync = sharedData_->save(machineData());
     for (const mtc::core::Diagnostic& d : sync.diagnostics.items())
-        machineDataMessages_ << QString::fromStdString(d.message);
+        machineDataMessages_ << coreMessageLine(d);
     if (!sync.ok) {
         error = QString::fromStdString(sync.error);
         return false;
@@ -227,8 +231,8 @@ void CellSession::refreshSetupData() {
     mtc::core::DiagnosticList notes;
     const bool takenOver = setupEditor_->refresh(notes);
     for (const mtc::core::Diagnostic& d : notes.items())
-        machineDataMessages_ << QString::fromStdString(d.message);
-    if (!notes.empty()) emit setupDataNotice(QString::fromStdString(notes.items().back().message));
+        machineDataMessages_ << coreMessageLine(d);
+    if (!notes.empty()) emit setupDataNotice(coreMessageLine(notes.items().back()));
     if (takenOver)
         for (int slot = 0; slot < processCount(); ++slot)
             emit processChanged(slot);

@@ -85,4 +85,8 @@ mtc::core::Language installedCoreLanguage() {
         .value_or(mtc::core::Language::English);
 }
 
+QString coreMessageLine(const mtc::core::Diagnostic& diagnostic) {
+    return QString::fromStdString(mtc::core::messageLine(diagnostic, installedCoreLanguage()));
+}
+
 }  // namespace mtc::hmi

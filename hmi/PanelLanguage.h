@@ -39,6 +39,10 @@ QString installedPanelLanguage();
 /// diagnostics are shown in (docs/DECISIONS.md D-023).
 mtc::core::Language installedCoreLanguage();
 
+/// A core diagnostic in one line in the installed language (the message
+/// lines of the screens; core::messageLine(), docs/DECISIONS.md D-024).
+QString coreMessageLine(const mtc::core::Diagnostic& diagnostic);
+
 /// True when the installed catalogue has a translation of `source` in
 /// `context` (the test of the core's names, which lupdate cannot see).
 bool installedCatalogueHas(const char* context, const char* source);

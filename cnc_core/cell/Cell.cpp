@@ -78,6 +78,12 @@ ParseOptions Cell::parseOptions(int number, const std::string& name) const {
     return options;
 }
 
+void Cell::setLanguage(Language language) {
+    language_ = language;
+    for (auto& station : stations_)
+        station->setLanguage(language);
+}
+
 void Cell::setNcOptions(NcOptions options) {
     std::vector<std::string> before = macroNames();
     ncOptions_ = std::move(options);

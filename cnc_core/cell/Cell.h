@@ -68,6 +68,12 @@ class Cell {
     const std::string& programDirectory() const { return programDirectory_; }
     void setProgramDirectory(std::string directory) { programDirectory_ = std::move(directory); }
 
+    /// The language of the alarms and messages the cell builds from a
+    /// diagnostic: English (the CLI's texts) unless the panel passes its own
+    /// (docs/DECISIONS.md D-024). Sets it for every station.
+    void setLanguage(Language language);
+    Language language() const { return language_; }
+
     /// The NC options (compiler active, user compilers, global macros).
     const NcOptions& ncOptions() const { return ncOptions_; }
     /// Takes new NC options; when the global macro names change, the
@@ -114,6 +120,7 @@ class Cell {
     Variables variables_;
     NcOptions ncOptions_;
     std::string programDirectory_;
+    Language language_ = Language::English;
     std::vector<std::unique_ptr<Station>> stations_;
     std::vector<std::unique_ptr<ProgramCompilation>> compilations_;
 };

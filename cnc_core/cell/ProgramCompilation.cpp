@@ -415,7 +415,7 @@ std::string ProgramCompilation::prepareOne(int number, DiagnosticList& diagnosti
         Diagnostic keyword;
         if (findCompilerWord(*cell_.program(slot_, number), keyword)) {
             diagnostics.add(keyword);
-            return formatDiagnostic(keyword);
+            return formatDiagnostic(keyword, cell_.language());
         }
         return {};
     }

@@ -20,9 +20,10 @@ ProcessAxes axesOf(const ProcessConfig& config) {
     return ProcessAxes::build(config, ignored);
 }
 
-std::string firstProblem(const DiagnosticList& diagnostics, const char* fallback) {
+std::string firstProblem(const DiagnosticList& diagnostics, const char* fallback,
+                         Language language) {
     for (const Diagnostic& d : diagnostics.items())
-        if (d.severity == Severity::Error) return formatDiagnostic(d);
+        if (d.severity == Severity::Error) return formatDiagnostic(d, language);
     return fallback;
 }
 
@@ -137,6 +138,12 @@ bool Station::selectProgram(int number) {
     return ok;
 }
 
+void Station::setLanguage(Language language) {
+    language_ = language;
+    mdiSession_.setLanguage(language);
+    restart_.setLanguage(language);
+}
+
 std::string Station::prepare(int number) {
     if (!preparer_) return {};
     DiagnosticList diagnostics;
@@ -152,7 +159,7 @@ std::string Station::start(int number) {
     DiagnosticList diagnostics;
     if (!interpreter_.select(number, 0, &diagnostics)) {
         log_.addAll(DiagnosticSource::Run, diagnostics);
-        return firstProblem(diagnostics, "the program cannot be selected");
+        return firstProblem(diagnostics, "the program cannot be selected", language_);
     }
     machine_.reset();
     beginRun(Run::Program);
@@ -174,7 +181,7 @@ std::string Station::startMdi() {
     std::string alarm =
         mdiSession_.take(ncOptions_ ? ncOptions_->globalMacros : kNoMacros, program, refused);
     if (alarm.empty() && !mdi_.begin(interpreter_, program, &refused)) {
-        alarm = firstProblem(refused, "the MDI entry cannot be selected");
+        alarm = firstProblem(refused, "the MDI entry cannot be selected", language_);
         mdiSession_.ended(false, refused);
     }
     log_.addAll(DiagnosticSource::Mdi, refused);
@@ -548,13 +555,13 @@ void Station::finish(const RunResult& result) {
         mdiDiagnostics_ = result.diagnostics;
         for (const Diagnostic& d : mdiDiagnostics_.items())
             if (d.severity == Severity::Error) {
-                alarm = formatMdiDiagnostic(d);
+                alarm = formatMdiDiagnostic(d, language_);
                 break;
             }
         if (alarm.empty() && result.status != RunStatus::Ended)
             alarm = "MDI: the entry stopped with an error";
     } else if (result.status == RunStatus::Error || result.status == RunStatus::BudgetExceeded) {
-        alarm = firstProblem(result.diagnostics, "the program stopped with an error");
+        alarm = firstProblem(result.diagnostics, "the program stopped with an error", language_);
     }
     control_.programFinished(alarm);
     if (mdi) endMdi(alarm.empty());

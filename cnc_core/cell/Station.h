@@ -136,6 +136,10 @@ class Station : private ProgramRunner {
     /// by default: the CLI has no use for it, and it holds about 45 bytes per
     /// segment of a run).
     void setRunTracing(bool on) { tracing_ = on; }
+    /// The language of the alarms and the MDI message built from a
+    /// diagnostic (the panel's; English by default: the CLI's texts).
+    /// docs/DECISIONS.md D-024.
+    void setLanguage(Language language);
     /// Sees everything the interpreter (and the restart's jogging) sends to
     /// the machine, as it is sent (the CLI's motion list, recording tests).
     /// Not owned; nullptr = none.
@@ -287,6 +291,7 @@ class Station : private ProgramRunner {
     ProgramPreparer preparer_;
     const NcOptions* ncOptions_ = nullptr;
     MdiSession mdiSession_;
+    Language language_ = Language::English;
     MdiRun mdi_;
     DiagnosticList mdiDiagnostics_;
 

@@ -174,14 +174,13 @@ std::string mdiInputDetail(int line, const std::string& text) {
     return "MDI input line " + std::to_string(line) + ": " + text;
 }
 
-std::string formatMdiDiagnostic(const Diagnostic& d) {
+std::string formatMdiDiagnostic(const Diagnostic& d, Language language) {
+    const bool german = language == Language::German;
     std::string text = "MDI";
-    if (d.where.line > 0) text += " line " + std::to_string(d.where.line);
-    text += ": ";
-    text += d.severity == Severity::Error ? "error" : "warning";
-    text += " [" + d.code + "]";
+    if (d.where.line > 0) text += (german ? " Zeile " : " line ") + std::to_string(d.where.line);
+    text += ": " + severityWord(d, language) + " [" + d.code + "]";
     if (!d.where.block.empty()) text += " " + d.where.block;
-    text += ": " + d.message;
+    text += ": " + messageLine(d, language);
     for (const auto& detail : d.details)
         text += "\n    " + detail;
     return text;

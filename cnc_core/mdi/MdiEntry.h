@@ -8,6 +8,7 @@
 #include "cnc_core/language/Diagnostic.h"
 #include "cnc_core/language/Program.h"
 #include "cnc_core/machine/ProcessControl.h"
+#include "cnc_core/text/Messages.h"
 
 /// Manual data input (MDI): the NC blocks an operator types at the panel and
 /// starts in MDI mode. Seed 001 ch. 4 and ch. 12: in the graphical panel the
@@ -53,7 +54,9 @@ std::string mdiRefusal(const ProcessControl& control);
 std::string mdiInputDetail(int line, const std::string& text);
 
 /// "MDI line 2: error [CODE]: message" — one diagnostic of an MDI entry for
-/// the alarm line and logs (details on further lines).
-std::string formatMdiDiagnostic(const Diagnostic& diagnostic);
+/// the alarm line and logs (details on further lines). German: "MDI Zeile 2:
+/// Fehler [CODE]: " and messageLine() (docs/DECISIONS.md D-024).
+std::string formatMdiDiagnostic(const Diagnostic& diagnostic,
+                                Language language = Language::English);
 
 }  // namespace mtc::core

@@ -59,7 +59,7 @@ std::string MdiSession::take(const std::vector<MacroDefinition>& globals, Progra
         diagnostics.append(entry.diagnostics);
         reportRefusal(entry.diagnostics);
         const Diagnostic* error = firstError(entry.diagnostics);
-        return error ? formatMdiDiagnostic(*error) : "MDI: the input cannot run";
+        return error ? formatMdiDiagnostic(*error, language_) : "MDI: the input cannot run";
     }
     program = entry.program;
     running_ = input_;
@@ -109,7 +109,7 @@ void MdiSession::setMessage(std::string text, bool error) {
 void MdiSession::reportRefusal(const DiagnosticList& diagnostics) {
     const Diagnostic* error = firstError(diagnostics);
     if (!error) return setMessage("MDI: the input cannot run", true);
-    const std::string text = formatMdiDiagnostic(*error);
+    const std::string text = formatMdiDiagnostic(*error, language_);
     setMessage(text.substr(0, text.find('\n')), true);
 }
 

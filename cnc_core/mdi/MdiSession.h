@@ -8,6 +8,7 @@
 #include "cnc_core/compiler/CompilerTypes.h"
 #include "cnc_core/language/Diagnostic.h"
 #include "cnc_core/language/Program.h"
+#include "cnc_core/text/Messages.h"
 
 namespace mtc::core {
 
@@ -35,6 +36,9 @@ class MdiSession {
     /// The last message for the operator and whether it is an error.
     const std::string& message() const { return message_; }
     bool messageIsError() const { return messageIsError_; }
+    /// The language of the message and the alarm texts built from a
+    /// diagnostic (the panel's; English by default, docs/DECISIONS.md D-024).
+    void setLanguage(Language language) { language_ = language; }
 
     /// Checks the input (macros, keywords, syntax) without running it; the
     /// result is message(), the refusals go to `diagnostics`. True when
@@ -61,6 +65,7 @@ class MdiSession {
     std::deque<MdiHistoryItem> history_;
     std::string message_;
     bool messageIsError_ = false;
+    Language language_ = Language::English;
 };
 
 }  // namespace mtc::core

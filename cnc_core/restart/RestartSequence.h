@@ -9,6 +9,7 @@
 #include "cnc_core/machine/ProcessControl.h"
 #include "cnc_core/restart/ComputingProcess.h"
 #include "cnc_core/restart/SimulatedSps.h"
+#include "cnc_core/text/Messages.h"
 
 namespace mtc::core {
 
@@ -83,6 +84,9 @@ class RestartSequence : public ControlKeyHandler, private AuxObserver {
     void setAxisTransfer(AxisTransfer* transfer) { computing_.setAxisTransfer(transfer); }
     /// Program analyses kept across restarts (the verifier; not owned).
     void setRouteCache(RestartRouteCache* cache) { computing_.setRouteCache(cache); }
+    /// The language of the alarm that a failed restart raises (the panel's;
+    /// English by default, docs/DECISIONS.md D-024).
+    void setLanguage(Language language) { language_ = language; }
     /// "GAX X1" while the computing process waits for another process, else "".
     std::string waitingFor() const { return computing_.filter().waitingFor(); }
     /// Where the restart stands.
@@ -154,6 +158,7 @@ class RestartSequence : public ControlKeyHandler, private AuxObserver {
     std::optional<std::uint32_t> reposBlock_;
     std::size_t adjustDepth_ = 0;  ///< call stack size inside ADJUST (its own level)
     DiagnosticList diagnostics_;
+    Language language_ = Language::English;
 };
 
 }  // namespace mtc::core

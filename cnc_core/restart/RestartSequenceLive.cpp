@@ -178,8 +178,9 @@ void RestartSequence::fail(const std::string& code, const std::string& message) 
     const std::vector<StackLevel> levels = live_.callStack();
     const StackLevel at = levels.empty() ? StackLevel{} : levels.back();
     diagnostics_.error(code, {at.program, at.block, at.line, 0}, message);
+    const std::string alarm = messageLine(diagnostics_.items().back(), language_);
     resetAll(RestartPhase::Failed);
-    control_.setAlarm(message);
+    control_.setAlarm(alarm);
 }
 
 void RestartSequence::resetAll(RestartPhase phase) {

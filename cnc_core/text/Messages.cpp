@@ -48,4 +48,34 @@ DiagnosticText diagnosticText(const Diagnostic& diagnostic, Language language) {
     return text;
 }
 
+std::string messageLine(const Diagnostic& diagnostic, Language language) {
+    const std::string_view german =
+        language == Language::German ? germanMessage(diagnostic.code) : std::string_view{};
+    if (german.empty()) return diagnostic.message;
+    std::string line(german);
+    if (!diagnostic.message.empty()) line += " — " + diagnostic.message;
+    return line;
+}
+
+std::string severityWord(const Diagnostic& diagnostic, Language language) {
+    const bool error = diagnostic.severity == Severity::Error;
+    if (language == Language::German) return error ? "Fehler" : "Warnung";
+    return error ? "error" : "warning";
+}
+
+std::string formatDiagnostic(const Diagnostic& d, Language language) {
+    if (language == Language::English) return formatDiagnostic(d);
+    std::string text = severityWord(d, language) + " [" + d.code + "]";
+    if (d.where.program != 0) text += " Programm " + std::to_string(d.where.program);
+    if (!d.where.block.empty()) text += " " + d.where.block;
+    if (d.where.line > 0) {
+        text += " Zeile " + std::to_string(d.where.line);
+        if (d.where.column > 0) text += ":" + std::to_string(d.where.column);
+    }
+    text += ": " + messageLine(d, language);
+    for (const auto& detail : d.details)
+        text += "\n    " + detail;
+    return text;
+}
+
 }  // namespace mtc::core

@@ -39,4 +39,18 @@ struct DiagnosticText {
 /// details. A code without a German row keeps the English text.
 DiagnosticText diagnosticText(const Diagnostic& diagnostic, Language language);
 
+/// The diagnostic in one line, for the places without an additional text
+/// (the alarm line, a screen's message line). English: the core's message.
+/// German: the table's brief message, " — ", the core's English message
+/// (its values); a code without a German row keeps the English message.
+std::string messageLine(const Diagnostic& diagnostic, Language language);
+
+/// "error" / "warning", or "Fehler" / "Warnung".
+std::string severityWord(const Diagnostic& diagnostic, Language language);
+
+/// formatDiagnostic() in `language`: the German frame ("Fehler [CODE]
+/// Programm 5 N0010 Zeile 3:7: ") and messageLine() as the message, the
+/// details as they are. English: formatDiagnostic() exactly (the CLI's text).
+std::string formatDiagnostic(const Diagnostic& diagnostic, Language language);
+
 }  // namespace mtc::core

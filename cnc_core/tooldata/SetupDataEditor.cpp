@@ -42,13 +42,15 @@ bool readTables(const std::string& path, const char* code, Parse parse, Tables& 
 
 }  // namespace
 
-std::string SetupDataEdit::reason() const {
+std::string SetupDataEdit::reason(Language language) const {
     for (const Diagnostic& d : diagnostics.items()) {
         if (d.severity != Severity::Error) continue;
         // The value checks write "<input>:0: key ..."; the rest names a file.
+        Diagnostic shown = d;
         const std::size_t mark = d.message.find(":0: ");
-        return mark != std::string::npos && d.message.find(' ') > mark ? d.message.substr(mark + 4)
-                                                                       : d.message;
+        if (mark != std::string::npos && d.message.find(' ') > mark)
+            shown.message = d.message.substr(mark + 4);
+        return messageLine(shown, language);
     }
     return {};
 }

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "cnc_core/program/FileLock.h"
+#include "cnc_core/text/Messages.h"
 #include "cnc_core/tooldata/SetupData.h"
 
 namespace mtc::core {
@@ -25,7 +26,8 @@ struct SetupDataEdit {
 
     /// The first error's message without the "<input>:0: " prefix of the
     /// value checks ("key 'radius' = '-1': out of range (...)"), "" when none.
-    std::string reason() const;
+    /// German: the code's brief message before it (messageLine(), D-024).
+    std::string reason(Language language = Language::English) const;
 };
 
 /// Every operator change of the tool lists and zero offsets, from the panel

@@ -2,6 +2,7 @@
 
 #include "cnc_core/cell/Station.h"
 #include "hmi/CellSession.h"
+#include "hmi/PanelLanguage.h"
 
 namespace mtc::screens {
 
@@ -22,7 +23,7 @@ QString RestartCollisions::summary() const {
         QString why = tr("the part at the target could not be made");
         for (const auto& d : result_->diagnostics.items())
             if (d.code.rfind("REMOVAL_", 0) == 0) {
-                why = QString::fromStdString(d.message);
+                why = hmi::coreMessageLine(d);
                 break;
             }
         return tr("Way back not checked against the part: %1").arg(why);

@@ -4,6 +4,7 @@
 
 #include "cnc_core/interp/Interpreter.h"
 #include "hmi/CellSession.h"
+#include "hmi/PanelLanguage.h"
 #include "screens/restart/ProgramListingModel.h"
 #include "screens/restart/RestartRun.h"
 #include "screens/restart/RestartVerification.h"
@@ -88,7 +89,7 @@ QString RestartController::describe(const mtc::core::Diagnostic& d) {
     if (d.where.program) where += QString("P%1").arg(d.where.program);
     if (!d.where.block.empty()) where += " " + QString::fromStdString(d.where.block);
     if (d.where.line) where += " " + tr("line %1").arg(d.where.line);
-    const QString text = QString::fromStdString(d.message);
+    const QString text = hmi::coreMessageLine(d);
     return where.isEmpty() ? text : where.trimmed() + ": " + text;
 }
 

@@ -5,6 +5,7 @@
 #include <QFont>
 
 #include "cnc_core/interp/ModalGroups.h"
+#include "hmi/PanelLanguage.h"
 #include "screens/restart/RestartCollisions.h"
 #include "screens/restart/RestartRun.h"
 #include "screens/restart/RestartVerification.h"
@@ -185,7 +186,7 @@ void RestartResultModel::addVerification(QVector<Row>& rows) const {
         QString why = RestartResultModel::tr("the restart fails");
         for (const auto& d : target->diagnostics.items())
             if (d.severity == mtc::core::Severity::Error) {
-                why = QString::fromStdString(d.code + ": " + d.message);
+                why = QString::fromStdString(d.code) + ": " + hmi::coreMessageLine(d);
                 break;
             }
         addRow(rows, RestartResultModel::tr("Verification"), why, QString("—"));

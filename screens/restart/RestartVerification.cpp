@@ -4,6 +4,7 @@
 #include <QLocale>
 
 #include "hmi/CellSession.h"
+#include "hmi/PanelLanguage.h"
 
 namespace mtc::screens {
 
@@ -39,9 +40,8 @@ bool RestartVerification::startProgram(int program, QString& why) {
         panelOptions(*session_, session_->processConfig(slot_).index));
     mtc::core::DiagnosticList diagnostics;
     if (!verifier_->begin(program, diagnostics, &session_->interpreter(slot_).state())) {
-        why = diagnostics.items().empty()
-                  ? tr("program %1 cannot be verified").arg(program)
-                  : QString::fromStdString(diagnostics.items().front().message);
+        why = diagnostics.items().empty() ? tr("program %1 cannot be verified").arg(program)
+                                          : hmi::coreMessageLine(diagnostics.items().front());
         verifier_.reset();
         return false;
     }
@@ -79,7 +79,7 @@ QString RestartVerification::programText() const {
                        .arg(QString::fromStdString(report.coverageLine()));
     for (const auto& d : report.diagnostics.items())
         if (d.severity == mtc::core::Severity::Error) {
-            text += " — " + QString::fromStdString(d.message);
+            text += " — " + hmi::coreMessageLine(d);
             break;
         }
     return text;

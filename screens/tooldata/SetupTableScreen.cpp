@@ -10,6 +10,7 @@
 
 #include "cnc_core/tooldata/SetupDataEditor.h"
 #include "hmi/CellSession.h"
+#include "hmi/PanelLanguage.h"
 #include "hmi/PromptedInput.h"
 #include "screens/tooldata/CursorTableModel.h"
 
@@ -152,10 +153,12 @@ void SetupTableScreen::setHeading(const QString& heading) {
 QString SetupTableScreen::outcomeText(const mtc::core::SetupDataEdit& edit, const QString& done,
                                       const QString& refusedWhat) const {
     if (!edit.changed)
-        return tr("Refused: %1").arg(QString::fromStdString(edit.reason())) + "\n" + refusedWhat;
+        return tr("Refused: %1")
+                   .arg(QString::fromStdString(edit.reason(hmi::installedCoreLanguage()))) +
+               "\n" + refusedWhat;
     QString text = done + " " + tr("(effective from the next block)");
     for (const mtc::core::Diagnostic& d : edit.diagnostics.items())
-        text += "\n" + QString::fromStdString(d.message);
+        text += "\n" + hmi::coreMessageLine(d);
     if (!edit.saved && !edit.diagnostics.hasErrors())
         text += "\n" + tr("Not kept in a file: the panel runs without a machine data file");
     return text;

@@ -143,6 +143,26 @@ TEST(MessageTable, DetailsEqualToTheMessageAreNotRepeated) {
               (std::vector<std::string>{"User compiler 1: failed", "exit status 2"}));
 }
 
+// One-line texts (alarm line, message lines, D-024): German brief message
+// first, the English message with its values after it; English unchanged.
+TEST(MessageTable, OneLineTextsInGermanKeepTheValues) {
+    Diagnostic d =
+        errorWith("AXIS_UNKNOWN", "this process has no axis A", {"MDI input line 2: G1 A1"});
+    d.where.program = 5;
+    d.where.block = "N0010";
+    d.where.line = 3;
+    EXPECT_EQ(messageLine(d, Language::English), "this process has no axis A");
+    EXPECT_EQ(messageLine(d, Language::German),
+              "Achse oder Spindel im Prozess nicht vorhanden — this process has no axis A");
+    EXPECT_EQ(formatDiagnostic(d, Language::English), formatDiagnostic(d));
+    EXPECT_EQ(formatDiagnostic(d, Language::German),
+              "Fehler [AXIS_UNKNOWN] Programm 5 N0010 Zeile 3: Achse oder Spindel im Prozess "
+              "nicht vorhanden — this process has no axis A\n    MDI input line 2: G1 A1");
+    const Diagnostic own = errorWith("MY_COMPILER_7", "user text", {});
+    EXPECT_EQ(messageLine(own, Language::German), "user text");
+    EXPECT_EQ(severityWord(own, Language::German), "Fehler");
+}
+
 TEST(MessageTable, LanguageTags) {
     EXPECT_EQ(languageFromTag("de"), Language::German);
     EXPECT_EQ(languageFromTag("de_DE.UTF-8"), Language::German);

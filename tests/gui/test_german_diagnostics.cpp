@@ -3,6 +3,9 @@
 // the German brief message of the diagnostic's code from the core's message
 // table, and its additional text (F2) keeps the core's English message with
 // the values it names; in English the window shows the core's message.
+// The one-line places (D-024): the alarm line and the message lines of the
+// MDI, restart and tool screens show the German brief message, then the
+// core's English message.
 #include <QLabel>
 #include <QListWidget>
 #include <QPlainTextEdit>
@@ -17,6 +20,14 @@ class GermanDiagnosticsTest : public QObject {
     Q_OBJECT
   private:
     QTemporaryDir dir_;
+
+    static constexpr const char* kAxisUnknownLine =
+        "Achse oder Spindel im Prozess nicht vorhanden — this process has no axis A";
+
+    static QString alarmLine(PanelFixture& panel) {
+        auto* alarm = panel.window->findChild<QLabel*>("headerAlarm");
+        return alarm ? alarm->text() : QString("no alarm line");
+    }
 
     mtc::hmi::PanelOptions options(const QString& language) {
         emptiedDirectory(dir_.path());
@@ -92,6 +103,58 @@ class GermanDiagnosticsTest : public QObject {
         const QString brief = list->item(row)->text();
         QVERIFY2(brief.contains("this process has no axis A"), qPrintable(brief));
         QVERIFY2(!brief.contains("Achse"), qPrintable(brief));
+        const QString alarm = alarmLine(panel);
+        QVERIFY2(alarm.contains("MDI line 2: error [AXIS_UNKNOWN]"), qPrintable(alarm));
+        QVERIFY2(!alarm.contains("Achse"), qPrintable(alarm));
+    }
+
+    void germanAlarmLineAndMdiMessage() {
+        PanelFixture panel(options("de"));
+        panel.session->setSpeed(1000);
+        runMdi(panel, {"G1 X5 F500", "G1 X8 A10"});
+        const QString message = child<QLabel>(panel, "mdi", "mdiMessage")->text();
+        QVERIFY2(message.startsWith("MDI Zeile 2: Fehler [AXIS_UNKNOWN]"), qPrintable(message));
+        QVERIFY2(message.contains(kAxisUnknownLine), qPrintable(message));
+        QTRY_VERIFY2(alarmLine(panel).contains(kAxisUnknownLine), qPrintable(alarmLine(panel)));
+        QVERIFY2(alarmLine(panel).contains("MDI Zeile 2: Fehler [AXIS_UNKNOWN]"),
+                 qPrintable(alarmLine(panel)));
+        QVERIFY2(!alarmLine(panel).contains("error ["), qPrintable(alarmLine(panel)));
+    }
+
+    void germanRestartMessage() {
+        mtc::hmi::PanelOptions o;
+        o.language = "de";
+        PanelFixture panel(o);
+        QVERIFY(panel.session->selectProgram(0, 1));
+        panel.press(Qt::Key_F1, Qt::ShiftModifier);  // M key NC program restart
+        QCOMPARE(panel.window->currentScreenName(), QString("restart"));
+        panel.press(Qt::Key_Home);
+        panel.press(Qt::Key_Down);
+        panel.press(Qt::Key_Down);  // N0002: no jump or call
+        panel.press(Qt::Key_F1);    // Plane+
+        const QString message =
+            panel.window->screen(0, "restart")->findChild<QLabel*>("restartMessage")->text();
+        QVERIFY2(message.contains("Satz ohne Sprung oder Aufruf für Ebene+ — the block has no "
+                                  "jump or call"),
+                 qPrintable(message));
+    }
+
+    void germanToolScreenRefusal() {
+        QTemporaryDir data;
+        mtc::hmi::PanelOptions o;
+        o.language = "de";
+        o.dataFile = data.filePath("cell.mdt");
+        PanelFixture panel(o);
+        panel.session->setTimerEnabled(false);
+        QVERIFY(panel.window->showScreen("tools"));
+        panel.press(Qt::Key_Return);  // edit R of T1 E1
+        QTest::keyClicks(QApplication::focusWidget(), "-1");
+        panel.press(Qt::Key_Return);
+        const QString message =
+            panel.window->screen(0, "tools")->findChild<QLabel*>("toolMessage")->text();
+        QVERIFY2(message.contains("Werkzeugwert ungültig — key 'radius' = '-1': out of range"),
+                 qPrintable(message));
+        QVERIFY2(!message.contains("Refused"), qPrintable(message));
     }
 };
 
