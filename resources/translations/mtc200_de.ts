@@ -778,10 +778,6 @@
         <translation>Das Grundbild: wo jede Achse steht (Werkstück- und Maschinenkoordinaten, Restweg), Vorschübe und Override, Spindeln, Werkzeug und Schneide, die aktiven G-Funktionen, die Nullpunktverschiebung und der Satz, den die Maschine ausführt, mit seinen Nachbarn. Im Handbetrieb werden die Achsen hier verfahren.</translation>
     </message>
     <message>
-        <source>the simulator&apos;s own layout (docs/DECISIONS.md D-014)</source>
-        <translation>eigene Gestaltung des Simulators (docs/DECISIONS.md D-014)</translation>
-    </message>
-    <message>
         <source>↑ / ↓</source>
         <translation>↑ / ↓</translation>
     </message>
@@ -1084,6 +1080,10 @@
     <message>
         <source>frame the part: the cutting moves and the stock (F5 then frames every move, the rapids of an approach or tool change too)</source>
         <translation>das Werkstück einpassen: die Schnittbewegungen und das Rohteil (F5 passt dann alle Bewegungen ein, auch die Eilgänge einer Anfahrt oder eines Werkzeugwechsels)</translation>
+    </message>
+    <message>
+        <source>the simulator&apos;s own layout</source>
+        <translation>eigene Gestaltung des Simulators</translation>
     </message>
 </context>
 <context>
@@ -1486,10 +1486,6 @@ CSV</translation>
         <translation>Programm %1 hat ungespeicherte Änderungen: zuerst Speichern (F1) oder Verwerfen (F7)</translation>
     </message>
     <message>
-        <source>%1 lines opened in %2 ms</source>
-        <translation>%1 Zeilen in %2 ms geöffnet</translation>
-    </message>
-    <message>
         <source>Saved (program memory; built-in program without file)</source>
         <translation>Gespeichert (Programmspeicher; eingebautes Programm ohne Datei)</translation>
     </message>
@@ -1573,6 +1569,10 @@ ver­werfen</translation>
     <message>
         <source>The user compilers run; the status follows in the program directory</source>
         <translation>Die Anwender-Compiler laufen; der Status folgt im Programmverzeichnis</translation>
+    </message>
+    <message>
+        <source>%1 lines opened</source>
+        <translation>%1 Zeilen geöffnet</translation>
     </message>
 </context>
 <context>
@@ -2051,16 +2051,16 @@ display</source>
         <translation>nicht aktiv</translation>
     </message>
     <message>
-        <source>Syntax check:           in the controller at download (NO-005)</source>
-        <translation>Syntaxprüfung:          in der Steuerung beim Download (NO-005)</translation>
-    </message>
-    <message>
         <source>Global macro  %1</source>
         <translation>Globales Makro  %1</translation>
     </message>
     <message>
         <source>Global macro  &lt;new&gt;</source>
         <translation>Globales Makro  &lt;neu&gt;</translation>
+    </message>
+    <message>
+        <source>Syntax check:           in the controller at download</source>
+        <translation>Syntaxprüfung:          in der Steuerung beim Download</translation>
     </message>
 </context>
 <context>
@@ -2110,16 +2110,8 @@ aktiv: Nein</translation>
         <translation>Zurück</translation>
     </message>
     <message>
-        <source>Command of user compiler %1 (empty = none; called as COMMAND INPUT OUTPUT ERRORS, C-011):</source>
-        <translation>Befehl des Anwender-Compilers %1 (leer = keiner; Aufruf als BEFEHL EINGABE AUSGABE FEHLER, C-011):</translation>
-    </message>
-    <message>
         <source>The INDRAMAT compiler is switched with &quot;Compiler active&quot;.</source>
         <translation>Der INDRAMAT-Compiler wird mit „Compiler aktiv“ geschaltet.</translation>
-    </message>
-    <message>
-        <source>The syntax check is done by the controller at download; it has no setting (NO-005).</source>
-        <translation>Die Syntaxprüfung macht die Steuerung beim Download; sie hat keine Einstellung (NO-005).</translation>
     </message>
     <message>
         <source>Change the global macro:</source>
@@ -2160,6 +2152,14 @@ Programme, die die globalen Makros benutzten, stehen wieder auf N.</translation>
 Programs that use the global macros are set to N again.</source>
         <translation>Übernommen: %1
 Programme, die die globalen Makros benutzen, stehen wieder auf N.</translation>
+    </message>
+    <message>
+        <source>Command of user compiler %1 (empty = none; called as COMMAND INPUT OUTPUT ERRORS):</source>
+        <translation>Befehl des Anwender-Compilers %1 (leer = keiner; Aufruf als BEFEHL EINGABE AUSGABE FEHLER):</translation>
+    </message>
+    <message>
+        <source>The syntax check is done by the controller at download; it has no setting.</source>
+        <translation>Die Syntaxprüfung macht die Steuerung beim Download; sie hat keine Einstellung.</translation>
     </message>
 </context>
 <context>

@@ -23,7 +23,7 @@ std::vector<ScreenHelpText> buildTexts() {
              "to go), feeds and overrides, spindles, the tool and its edge, the active G "
              "functions, the zero offset and the block the machine executes with its "
              "neighbours. In manual mode the axes are jogged here."),
-         QT_TRANSLATE_NOOP("ScreenHelp", "the simulator's own layout (docs/DECISIONS.md D-014)"),
+         QT_TRANSLATE_NOOP("ScreenHelp", "the simulator's own layout"),
          {{QT_TRANSLATE_NOOP("ScreenHelp", "↑ / ↓"),
            QT_TRANSLATE_NOOP("ScreenHelp", "choose the axis to jog (manual mode)")},
           {QT_TRANSLATE_NOOP("ScreenHelp", "+ / −"),

@@ -68,7 +68,7 @@ QString NcOptionsModel::text(const Row& row) const {
             return "  " + tr("INDRAMAT compiler:      %1")
                               .arg(holder_->compilerActive() ? tr("active") : tr("not active"));
         case RowKind::SyntaxCheck:
-            return "  " + tr("Syntax check:           in the controller at download (NO-005)");
+            return "  " + tr("Syntax check:           in the controller at download");
         case RowKind::Macro:
             return tr("Global macro  %1").arg(macroEntry(row.index));
         case RowKind::NewMacro:

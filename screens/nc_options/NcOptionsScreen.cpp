@@ -106,7 +106,7 @@ void NcOptionsScreen::changeCurrent() {
         case RowKind::UserCompiler:
             openInput(Input::UserCompiler, row.index,
                       tr("Command of user compiler %1 (empty = none; called as COMMAND "
-                         "INPUT OUTPUT ERRORS, C-011):")
+                         "INPUT OUTPUT ERRORS):")
                           .arg(row.index),
                       QString::fromStdString(
                           mtc::core::userCompilerCommand(holder_->userCompilers(), row.index)));
@@ -115,9 +115,7 @@ void NcOptionsScreen::changeCurrent() {
             say(tr("The INDRAMAT compiler is switched with \"Compiler active\"."));
             break;
         case RowKind::SyntaxCheck:
-            say(
-                tr("The syntax check is done by the controller at download; it has no setting "
-                   "(NO-005)."));
+            say(tr("The syntax check is done by the controller at download; it has no setting."));
             break;
         case RowKind::Macro:
             openInput(Input::ChangeMacro, row.index, tr("Change the global macro:"),
