@@ -615,6 +615,101 @@
     </message>
 </context>
 <context>
+    <name>MachineData</name>
+    <message>
+        <source>Adaptive feed control</source>
+        <translation>Adaptive Vorschubregelung</translation>
+    </message>
+    <message>
+        <source>Adapt. feed control active</source>
+        <translation>Adapt. Vorschubregelung aktiv</translation>
+    </message>
+    <message>
+        <source>Reference axis</source>
+        <translation>Bezugsachse</translation>
+    </message>
+    <message>
+        <source>Amplification</source>
+        <translation>Verstärkung</translation>
+    </message>
+    <message>
+        <source>Measuring period idling torque</source>
+        <translation>Messdauer Leerlaufmoment</translation>
+    </message>
+    <message>
+        <source>Current idling torque</source>
+        <translation>Aktuelles Leerlaufmoment</translation>
+    </message>
+    <message>
+        <source>Maximum idling torque</source>
+        <translation>Maximales Leerlaufmoment</translation>
+    </message>
+    <message>
+        <source>Current machining torque</source>
+        <translation>Aktuelles Bearbeitungsmoment</translation>
+    </message>
+    <message>
+        <source>Peak machining torque</source>
+        <translation>Spitzenwert Bearbeitungsmoment</translation>
+    </message>
+    <message>
+        <source>Minimum machining torque</source>
+        <translation>Minimales Bearbeitungsmoment</translation>
+    </message>
+    <message>
+        <source>Limiting machining torque</source>
+        <translation>Grenzwert Bearbeitungsmoment</translation>
+    </message>
+    <message>
+        <source>Current feed reduction</source>
+        <translation>Aktuelle Vorschubreduzierung</translation>
+    </message>
+    <message>
+        <source>Peak feed reduction</source>
+        <translation>Spitzenwert Vorschubreduzierung</translation>
+    </message>
+    <message>
+        <source>Maximum feed reduction</source>
+        <translation>Maximale Vorschubreduzierung</translation>
+    </message>
+    <message>
+        <source>Stall torque</source>
+        <translation>Blockiermoment</translation>
+    </message>
+    <message>
+        <source>NC program restart and REPOS</source>
+        <translation>Satzvorlauf und Wiederanfahren (REPOS)</translation>
+    </message>
+    <message>
+        <source>Rotary axis mode spindle %1</source>
+        <translation>Rundachsbetrieb Spindel %1</translation>
+    </message>
+    <message>
+        <source>Transformation selection</source>
+        <translation>Transformationsanwahl</translation>
+    </message>
+    <message>
+        <source>T no. tool spindle %1</source>
+        <translation>T-Nr. Werkzeugspindel %1</translation>
+    </message>
+    <message>
+        <source>M(16) and Q function buffers</source>
+        <translation>Puffer der M(16)- und Q-Funktionen</translation>
+    </message>
+    <message>
+        <source>M(16) functions</source>
+        <translation>M(16)-Funktionen</translation>
+    </message>
+    <message>
+        <source>Q functions</source>
+        <translation>Q-Funktionen</translation>
+    </message>
+    <message>
+        <source>Aux. Function %1</source>
+        <translation>Hilfsfunktion %1</translation>
+    </message>
+</context>
+<context>
     <name>PanelOptions</name>
     <message>
         <source>MTC200 operator panel simulator</source>

@@ -2,6 +2,8 @@
 
 #include <QStringLiteral>
 
+#include "screens/machine_data/MachineDataTexts.h"
+
 namespace mtc::screens {
 
 MachineDataModel::MachineDataModel(const mtc::core::MachineDataStore* store, QObject* parent)
@@ -84,7 +86,7 @@ QVariant MachineDataModel::data(const QModelIndex& index, int role) const {
             return index.row() == cursor_ ? QStringLiteral("\u2192") + number : " " + number;
         }
         case Title:
-            return QString::fromStdString(e.designation);
+            return machineDataText(e.designation);
         case Value:
             return valueText(index.row());
         case Unit:

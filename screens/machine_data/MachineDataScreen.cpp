@@ -13,6 +13,7 @@
 #include "hmi/CellSession.h"
 #include "hmi/PromptedInput.h"
 #include "screens/machine_data/MachineDataModel.h"
+#include "screens/machine_data/MachineDataTexts.h"
 
 namespace mtc::screens {
 
@@ -122,14 +123,15 @@ void MachineDataScreen::updateHeader() {
     QString text =
         tr("Page %1  %2    process %3 (%4)")
             .arg(page->number)
-            .arg(QString::fromStdString(page->title))
+            .arg(machineDataText(page->title))
             .arg(processNumber())
             .arg(QString::fromStdString(context().session->processConfig(context().process).name));
     if (model_->sub() > 0)
-        text += "    " + tr("sub %1: %2")
-                             .arg(model_->sub())
-                             .arg(QString::fromStdString(
-                                 page->subTitles[static_cast<std::size_t>(model_->sub() - 1)]));
+        text +=
+            "    " +
+            tr("sub %1: %2")
+                .arg(model_->sub())
+                .arg(machineDataText(page->subTitles[static_cast<std::size_t>(model_->sub() - 1)]));
     header_->setText(text);
     table_->scrollTo(model_->index(model_->cursor(), 0));
 }
@@ -187,9 +189,7 @@ bool MachineDataScreen::browseKey(int key) {
 QString MachineDataScreen::elementName() const {
     const mtc::core::MachineDataElement* e = model_->currentElement();
     if (!e) return {};
-    return QString("%1 %2")
-        .arg(e->number, 3, 10, QChar('0'))
-        .arg(QString::fromStdString(e->designation));
+    return QString("%1 %2").arg(e->number, 3, 10, QChar('0')).arg(machineDataText(e->designation));
 }
 
 void MachineDataScreen::startEdit() {

@@ -11,6 +11,8 @@
 #include "PanelFixture.h"
 #include "cnc_core/machine_data/MachineDataStore.h"
 #include "cnc_core/machine_data/SharedMachineDataFile.h"
+#include "cnc_core/machine_data/StandardPages.h"
+#include "screens/machine_data/MachineDataTexts.h"
 
 namespace {
 
@@ -81,6 +83,38 @@ class MachineDataScreenTest : public QObject {
         QVERIFY2(panel.header().contains("Page 30"), "the mill has no user page");
         panel.press(Qt::Key_Left);
         QVERIFY(panel.header().contains("Page 61"));
+    }
+
+    void germanPageTitlesAndElementNames() {
+        mtc::hmi::PanelOptions options;
+        options.language = "de";
+        MachineDataPanel panel(options);
+        QVERIFY(panel.open());
+        QVERIFY2(panel.header().contains("30  Adaptive Vorschubregelung"),
+                 qPrintable(panel.header()));
+        QCOMPARE(panel.cell(2, 1), QString("Verstärkung"));
+        panel.press(Qt::Key_Right);
+        QVERIFY2(panel.header().contains("60  Satzvorlauf und Wiederanfahren (REPOS)"),
+                 qPrintable(panel.header()));
+        QCOMPARE(panel.cell(1, 1), QString("Rundachsbetrieb Spindel 2"));
+        QCOMPARE(panel.cell(5, 1), QString("T-Nr. Werkzeugspindel 2"));
+        panel.press(Qt::Key_Right);
+        QVERIFY2(panel.header().contains("M(16)-Funktionen"), qPrintable(panel.header()));
+        QCOMPARE(panel.cell(39, 1), QString("Hilfsfunktion 40"));
+        // Every name of the core's standard pages has its German text.
+        QStringList untranslated;
+        for (const mtc::core::MachineDataPage& page :
+             {mtc::core::adaptiveFeedPage(), mtc::core::restartPage(),
+              mtc::core::functionBufferPage()}) {
+            std::vector<std::string> names = page.subTitles;
+            names.push_back(page.title);
+            for (const auto& element : page.elements)
+                names.push_back(element.designation);
+            for (const std::string& name : names)
+                if (mtc::screens::machineDataText(name) == QString::fromStdString(name))
+                    untranslated << QString::fromStdString(name);
+        }
+        QVERIFY2(untranslated.isEmpty(), qPrintable(untranslated.join("; ")));
     }
 
     void lathePageFollowsTheStation() {
