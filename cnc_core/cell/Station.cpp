@@ -140,6 +140,7 @@ bool Station::selectProgram(int number) {
 
 void Station::setLanguage(Language language) {
     language_ = language;
+    control_.setLanguage(language);
     mdiSession_.setLanguage(language);
     restart_.setLanguage(language);
 }

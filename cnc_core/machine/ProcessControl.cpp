@@ -94,9 +94,9 @@ bool ProcessControl::press(ControlKey key) {
         case ControlKey::Repos:
             // Without an NC program restart past its computing process there is
             // nothing to reposition to: the SPS would not set PxxCREPOS.
-            alarm_ =
-                "REPOS refused: no multi-block retrace possible (no NC program restart "
-                "has reached its target block)";
+            raiseAlarm("ALARM_REPOS_NO_RESTART",
+                       "REPOS refused: no multi-block retrace possible (no NC program restart "
+                       "has reached its target block)");
             return false;
     }
     return false;
@@ -112,7 +112,8 @@ bool ProcessControl::singleBlock() const {
 
 bool ProcessControl::setMode(OperatingMode mode) {
     if (active_ && mode != mode_) {
-        alarm_ = "Mode change refused: a program is active (press Stop first)";
+        raiseAlarm("ALARM_MODE_PROGRAM_ACTIVE",
+                   "Mode change refused: a program is active (press Stop first)");
         return false;
     }
     setModeBySps(mode);
@@ -130,16 +131,16 @@ bool ProcessControl::start() {
     const std::string p = signalPrefix();
     const bool mdi = mode_ == OperatingMode::Mdi;
     if (mode_ == OperatingMode::Manual) {
-        alarm_ = "Start refused: select automatic mode first";
+        raiseAlarm("ALARM_START_NOT_AUTOMATIC", "Start refused: select automatic mode first");
         return false;
     }
     if (!mdi && selectedProgram_ == 0) {
-        alarm_ = "Start refused: no program selected";
+        raiseAlarm("ALARM_START_NO_PROGRAM", "Start refused: no program selected");
         return false;
     }
     if (active_ && !held_) return true;  // already running
     if (!runner_) {
-        alarm_ = "Start refused: no NC core attached";
+        raiseAlarm("ALARM_START_NO_CORE", "Start refused: no NC core attached");
         return false;
     }
     signals_.set(p + "CADV", 1);
@@ -165,7 +166,7 @@ bool ProcessControl::start() {
 
 bool ProcessControl::selectProgram(int number) {
     if (active_) {
-        alarm_ = "Program selection refused: a program is active";
+        raiseAlarm("ALARM_SELECT_PROGRAM_ACTIVE", "Program selection refused: a program is active");
         return false;
     }
     selectedProgram_ = number;

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "cnc_core/machine/SignalTable.h"
+#include "cnc_core/text/Messages.h"
 
 namespace mtc::core {
 
@@ -99,6 +100,13 @@ class ProcessControl {
     void setCurrentBlock(std::string block) { currentBlock_ = std::move(block); }
     /// Raises an alarm (empty text clears it).
     void setAlarm(std::string text) { alarm_ = std::move(text); }
+    /// Raises the alarm `code` (ALARM_...): `english`, or its German text
+    /// when the language is German (alarmText(), D-025).
+    void raiseAlarm(const char* code, const char* english) {
+        alarm_ = alarmText(code, english, language_);
+    }
+    /// The language of raiseAlarm() (the panel's; English by default).
+    void setLanguage(Language language) { language_ = language; }
     /// Marks the program as running / finished (sets PxxSACTIV).
     void setProgramActive(bool active);
     /// The runner Start/Stop/Reset act on (not owned; nullptr = none, then
@@ -144,6 +152,7 @@ class ProcessControl {
     std::string currentBlock_;
     std::string alarm_;
     std::string prompt_;
+    Language language_ = Language::English;
     SignalTable signals_;
 };
 

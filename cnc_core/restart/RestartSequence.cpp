@@ -270,7 +270,9 @@ std::optional<bool> RestartSequence::handleKey(ControlKey key) {
         case ControlKey::Repos:
             return repositionKey();
         case ControlKey::Mdi:  // MDI-005: no MDI inside an NC program restart
-            control_.setAlarm("MDI refused: an NC program restart is active (Control reset first)");
+            control_.raiseAlarm(
+                "ALARM_MDI_RESTART_ACTIVE",
+                "MDI refused: an NC program restart is active (Control reset first)");
             return false;
         case ControlKey::ProgramRestart:
         case ControlKey::SingleBlock:  // ProcessControl switches it; advance() reads it
@@ -285,7 +287,8 @@ bool RestartSequence::reposPhase() const {
 
 bool RestartSequence::repositionKey() {
     if (!reposPhase()) {
-        control_.setAlarm(
+        control_.raiseAlarm(
+            "ALARM_REPOS_NOT_YET",
             "REPOS refused: multi-block retrace is not possible yet (PxxSREPOS = 0, the "
             "computing process has not reached the target block)");
         return false;
@@ -302,14 +305,16 @@ bool RestartSequence::repositionKey() {
 
 bool RestartSequence::start() {
     if (control_.mode() != OperatingMode::Automatic) {
-        control_.setAlarm("Start refused: select automatic mode first");
+        control_.raiseAlarm("ALARM_START_NOT_AUTOMATIC",
+                            "Start refused: select automatic mode first");
         return false;
     }
     const bool canStart =
         held_ || phase_ == RestartPhase::TargetReached || phase_ == RestartPhase::AutomaticAgain;
     if (!canStart) return true;  // already running (or waiting for the SPS)
     if (phase_ == RestartPhase::TargetReached && signal("CREPOS") != 1) {
-        control_.setAlarm("Start refused: multi-block retrace (PxxCREPOS) is not active");
+        control_.raiseAlarm("ALARM_START_NO_REPOS",
+                            "Start refused: multi-block retrace (PxxCREPOS) is not active");
         return false;
     }
     setSignal("CADV", 1);
@@ -345,7 +350,8 @@ bool RestartSequence::changeMode(OperatingMode mode) {
                          phase_ == RestartPhase::ManualMode ||
                          phase_ == RestartPhase::AutomaticAgain;
     if (!interrupted && !between) {
-        control_.setAlarm("Mode change refused: the NC program restart is running (Stop first)");
+        control_.raiseAlarm("ALARM_MODE_RESTART_RUNNING",
+                            "Mode change refused: the NC program restart is running (Stop first)");
         return false;
     }
     if (interrupted && mode == OperatingMode::Manual) {

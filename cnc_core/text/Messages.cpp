@@ -57,6 +57,12 @@ std::string messageLine(const Diagnostic& diagnostic, Language language) {
     return line;
 }
 
+std::string alarmText(std::string_view code, const std::string& english, Language language) {
+    const std::string_view german =
+        language == Language::German ? germanMessage(code) : std::string_view{};
+    return german.empty() ? english : std::string(german);
+}
+
 std::string severityWord(const Diagnostic& diagnostic, Language language) {
     const bool error = diagnostic.severity == Severity::Error;
     if (language == Language::German) return error ? "Fehler" : "Warnung";

@@ -45,6 +45,12 @@ DiagnosticText diagnosticText(const Diagnostic& diagnostic, Language language);
 /// (its values); a code without a German row keeps the English message.
 std::string messageLine(const Diagnostic& diagnostic, Language language);
 
+/// An alarm the core raises without a diagnostic ("Start refused: no
+/// program selected") under a stable code (ALARM_...): German: the table's
+/// text for the code; English, or a code without a row: `english`
+/// (docs/DECISIONS.md D-025).
+std::string alarmText(std::string_view code, const std::string& english, Language language);
+
 /// "error" / "warning", or "Fehler" / "Warnung".
 std::string severityWord(const Diagnostic& diagnostic, Language language);
 

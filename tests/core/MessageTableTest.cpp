@@ -163,6 +163,16 @@ TEST(MessageTable, OneLineTextsInGermanKeepTheValues) {
     EXPECT_EQ(severityWord(own, Language::German), "Fehler");
 }
 
+// Alarms without a diagnostic (D-025): German from the table, English as
+// written, a code without a row as written.
+TEST(MessageTable, AlarmsOfTheControlKeys) {
+    const std::string english = "Start refused: no program selected";
+    EXPECT_EQ(alarmText("ALARM_START_NO_PROGRAM", english, Language::German),
+              "Start abgelehnt: kein Programm angewählt");
+    EXPECT_EQ(alarmText("ALARM_START_NO_PROGRAM", english, Language::English), english);
+    EXPECT_EQ(alarmText("ALARM_NOBODY_WROTE", english, Language::German), english);
+}
+
 TEST(MessageTable, LanguageTags) {
     EXPECT_EQ(languageFromTag("de"), Language::German);
     EXPECT_EQ(languageFromTag("de_DE.UTF-8"), Language::German);

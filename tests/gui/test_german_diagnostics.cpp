@@ -121,6 +121,25 @@ class GermanDiagnosticsTest : public QObject {
         QVERIFY2(!alarmLine(panel).contains("error ["), qPrintable(alarmLine(panel)));
     }
 
+    void refusalOfAMachineKeyInThePanelsLanguage_data() {
+        QTest::addColumn<QString>("language");
+        QTest::addColumn<QString>("alarm");
+        QTest::newRow("de") << "de"
+                            << "Start abgelehnt: zuerst Automatik anwählen";
+        QTest::newRow("en") << "en"
+                            << "Start refused: select automatic mode first";
+    }
+
+    void refusalOfAMachineKeyInThePanelsLanguage() {
+        QFETCH(QString, language);
+        QFETCH(QString, alarm);
+        PanelFixture panel(options(language));
+        panel.press(Qt::Key_F3, Qt::ShiftModifier);  // M key Manual
+        QCOMPARE(panel.session->control(0).mode(), OperatingMode::Manual);
+        panel.press(Qt::Key_F5, Qt::ShiftModifier);  // Start: refused in manual mode
+        QTRY_VERIFY2(alarmLine(panel).contains(alarm), qPrintable(alarmLine(panel)));
+    }
+
     void germanRestartMessage() {
         mtc::hmi::PanelOptions o;
         o.language = "de";
