@@ -3,6 +3,9 @@
 // (seed 000, 2.3-2.6 and 5.1).
 #include <gtest/gtest.h>
 
+#include <cstdint>
+#include <string>
+
 #include "SearchPointerTestSupport.h"
 #include "cnc_core/restart/RestartRoute.h"
 
@@ -96,6 +99,35 @@ TEST_F(SearchSelectionTest, FindFoldedMatchesEveryPositionOfTheText) {
     EXPECT_EQ(ProgramScan::findFolded("short", "longer than the text"), std::string::npos);
     EXPECT_EQ(ProgramScan::findFolded("@[`{", "@[`{"), 0u) << "no folding outside A-Z";
     EXPECT_EQ(ProgramScan::findFolded("`{", "@["), std::string::npos);
+    // The anchor filter also lets through the byte that differs in bit 5 from
+    // a non-letter ('@' for '`', 0x10 for '0'): the full comparison rejects it.
+    EXPECT_EQ(ProgramScan::findFolded(std::string(40, '@') + "`", "`"), 40u);
+    EXPECT_EQ(ProgramScan::findFolded(std::string(40, '\x10') + "0", "0"), 40u);
+}
+
+TEST_F(SearchSelectionTest, FindFoldedAgreesWithAPlainSearchOnRandomTexts) {
+    // Every start and length around the 32- and 16-byte steps and the tail,
+    // needles of NC characters in both cases, many candidates per step.
+    auto lower = [](std::string s) {
+        for (char& c : s)
+            if (c >= 'A' && c <= 'Z') c = static_cast<char>(c | 0x20);
+        return s;
+    };
+    const std::string alphabet = "GgXx01 .@`;\n";
+    std::uint32_t seed = 12345;
+    auto next = [&seed] { return seed = seed * 1664525u + 1013904223u; };
+    for (int round = 0; round < 2000; ++round) {
+        std::string text(next() % 150, ' ');
+        for (char& c : text)
+            c = alphabet[next() % alphabet.size()];
+        std::string needle(1 + next() % 4, ' ');
+        for (char& c : needle)
+            c = alphabet[next() % alphabet.size()];
+        const std::size_t from = text.empty() ? 0 : next() % (text.size() + 1);
+        const std::size_t expected = lower(text).find(lower(needle), from);
+        ASSERT_EQ(ProgramScan::findFolded(text, needle, from), expected)
+            << "text '" << text << "' needle '" << needle << "' from " << from;
+    }
 }
 
 TEST_F(SearchSelectionTest, StartBlockIsN0000UnlessTheLastPrimaryBlockIsChosen) {
