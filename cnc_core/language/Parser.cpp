@@ -55,6 +55,8 @@ void LineScanner::run() {
     auto size = static_cast<std::uint32_t>(text_.size());
     std::uint32_t pos = layout_.blocksBegin;
     std::uint32_t line = layout_.firstLine;
+    lastLine_ =
+        std::max<std::uint32_t>(line, 2) - 1;  // the header's last line when no block follows
     while (pos < size) {
         const void* newline = std::memchr(data + pos, '\n', size - pos);
         std::uint32_t next =
@@ -195,7 +197,7 @@ Program parseProgram(std::string source, const ParseOptions& options) {
         return program;
     }
     reserveFor(program);
-    SourceLayout layout = readSourceLayout(context);
+    const SourceLayout layout = options.fileLayout ? readSourceLayout(context) : SourceLayout{};
     program.hasDatHeader = layout.dat;
     if (program.name.empty()) program.name = program.title;
     LineScanner(context, layout).run();

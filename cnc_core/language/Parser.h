@@ -18,6 +18,10 @@ struct ParseOptions {
     /// same program as the general path; only the tests that prove this
     /// switch it off.
     bool plainBlockFastPath = true;
+    /// Read an identification line and a %NPG / %MAC header (a program file
+    /// or a loose file of blocks). False for an MDI entry, which is blocks
+    /// only: a header line typed there is a block, and an error.
+    bool fileLayout = true;
 };
 
 /// Parses NC source text: a .DAT file (identification line, %NPG/%MAC header,

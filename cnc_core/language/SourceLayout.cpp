@@ -18,6 +18,8 @@ struct Line {
 class LineReader {
   public:
     LineReader(std::string_view text, std::uint32_t begin) : text_(text), pos_(begin) {}
+    /// Number of the last line read (0 before the first).
+    std::uint32_t lastNumber() const { return number_; }
     bool next(Line& line) {
         if (pos_ >= text_.size()) return false;
         std::size_t nl = text_.find('\n', pos_);
@@ -155,7 +157,9 @@ SourceLayout LayoutReader::read() {
         startsWith(trimmed(view(after)), "%CHBEGIN%"))
         readCycleDeclarations(lines, after, after, haveAfter);
     layout.blocksBegin = haveAfter ? after.begin : static_cast<std::uint32_t>(text_.size());
-    layout.firstLine = haveAfter ? after.number : 0;
+    // No block line: the blocks would begin after the file's last line (a
+    // problem reported at the end of the file then names that line).
+    layout.firstLine = haveAfter ? after.number : lines.lastNumber() + 1;
     return layout;
 }
 

@@ -57,9 +57,9 @@ std::vector<bool> expandLines(MdiEntry& entry, const std::vector<MacroDefinition
         std::string expanded;
         std::string problem;
         if (isFileHeaderLine(line)) {
-            // A %NPG / %MAC line would make the parser read the entry as a
-            // program file, whose problems name no input line (fuzz finding
-            // mdi ba78da4).
+            // The parser reads an MDI entry as blocks only (fileLayout off:
+            // fuzz findings mdi ba78da4, 633c4f6), where '%' is a bad
+            // character; this says what the line is.
             entry.diagnostics.error("MDI_HEADER_REFUSED", lineLocation(i),
                                     "a program file's header line (%...) is not an NC block; "
                                     "MDI takes blocks only",
@@ -149,6 +149,7 @@ MdiEntry prepareMdiEntry(const std::string& input, const std::vector<MacroDefini
     const std::vector<bool> refused = expandLines(entry, globals);
     ParseOptions options;
     options.name = kMdiProgramName;
+    options.fileLayout = false;  // "%NPG" typed in MDI is no program header
     // One expanded line per input line: the parser's lines are the input's.
     auto program =
         std::make_shared<Program>(parseProgram(parseText(entry.expanded, refused), options));

@@ -115,6 +115,13 @@ TEST(DatFileLayout, HeaderProblems) {
     EXPECT_EQ(codes(open), std::vector<std::string>{"DAT_UNTERMINATED_HEADER"});
     EXPECT_EQ(open.blocks.size(), 2u);  // the blocks are still read
 
+    // Only a header, never closed: the missing PROGRAMMENDE is reported at
+    // the file's last line (it said line 0 before: fuzz finding mdi 633c4f6).
+    Program onlyHeader = parse("id\n%NPG:0:01:0:001\n*title\n");
+    const Diagnostic* atEnd = find(onlyHeader, "DAT_MISSING_PROGRAMMENDE");
+    ASSERT_NE(atEnd, nullptr);
+    EXPECT_EQ(atEnd->where.line, 3);
+
     Program noEnd = parse("id\n%NPG:0:01:0:001\n%NPG\nN0000 G1\n");
     EXPECT_EQ(codes(noEnd), std::vector<std::string>{"DAT_MISSING_PROGRAMMENDE"});
     EXPECT_FALSE(noEnd.diagnostics.hasErrors());

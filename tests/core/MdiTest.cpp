@@ -89,6 +89,20 @@ TEST(MdiEntryTest, AProgramFileHeaderLineIsRefusedWithItsLine) {
     EXPECT_EQ(entry.diagnostics.items()[0].where.line, 2);
 }
 
+TEST(MdiEntryTest, AnEntryIsNeverReadAsAProgramFile) {
+    // Fuzz finding mdi 633c4f6: a byte order mark before "%NPG" slipped past
+    // the header refusal, and the parser read the entry as a .DAT file whose
+    // missing PROGRAMMENDE it reported at line 0.
+    const MdiEntry entry = prepareMdiEntry("\xEF\xBB\xBF%NPG\nS-0\n", kMacros);
+    EXPECT_FALSE(entry.runnable());
+    ASSERT_FALSE(entry.diagnostics.items().empty());
+    for (const Diagnostic& d : entry.diagnostics.items()) {
+        EXPECT_GE(d.where.line, 1) << d.code << ": " << d.message;
+        EXPECT_NE(d.code.rfind("DAT_", 0), 0u) << d.code << ": no program file problems in MDI";
+    }
+    EXPECT_EQ(entry.diagnostics.items()[0].where.line, 1);
+}
+
 TEST(MdiEntryTest, ParseErrorsCarryTheInputLine) {
     const MdiEntry entry = prepareMdiEntry("G1 X5 F100\nG1 X=(3+\n", kMacros);
     EXPECT_FALSE(entry.runnable());
