@@ -13,10 +13,14 @@
 #include "cnc_core/program/FileText.h"
 #include "cnc_core/program/ProgramLoader.h"
 #include "resources/EmbeddedResources.h"
+#include "tests/support/TempDir.h"
 
 using namespace mtc::core;
 using namespace mtc::core::testing;
 namespace fs = std::filesystem;
+using mtc::test::readWholeFile;
+using mtc::test::TempDir;
+using mtc::test::writeWholeFile;
 
 namespace {
 
@@ -32,38 +36,6 @@ const char* kShaft =
     "N0001 G2 X40 Y0 I20 J0 F900\n"
     "N0002 M30\n"
     "N0003 PROGRAMMENDE\n";
-
-/// A fresh directory under the test temp dir, removed at the end.
-class TempDir {
-  public:
-    TempDir() {
-        const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
-        path_ = fs::temp_directory_path() / ("mtc-datfile-" + std::to_string(::getpid()) + "-" +
-                                             test->test_suite_name() + "-" + test->name());
-        fs::remove_all(path_);
-        fs::create_directories(path_);
-    }
-    ~TempDir() {
-        std::error_code ignored;
-        fs::remove_all(path_, ignored);
-    }
-    std::string file(const std::string& name) const { return (path_ / name).string(); }
-    const fs::path& path() const { return path_; }
-
-  private:
-    fs::path path_;
-};
-
-void writeFile(const std::string& path, const std::string& text) {
-    std::ofstream(path, std::ios::binary) << text;
-}
-
-std::string readFile(const std::string& path) {
-    std::ifstream file(path, std::ios::binary);
-    std::ostringstream content;
-    content << file.rdbuf();
-    return content.str();
-}
 
 TEST(DatFileLayout, IdentificationHeaderAndBlocks) {
     Program p = parse(kShaft);
@@ -210,16 +182,16 @@ TEST(DatFileName, ParseAndFormat) {
 }
 
 TEST(DatFileIo, ReadWriteRoundTripIsByteIdentical) {
-    TempDir dir;
+    TempDir dir("mtc-datfile");
     std::string path = dir.file("N1010007.DAT");
-    writeFile(path, kShaft);
+    writeWholeFile(path, kShaft);
     Program p = DatFile::read(path);
     ASSERT_TRUE(p.diagnostics.empty());
     EXPECT_EQ(p.number, 7);
     std::string copy = dir.file("N1010008.DAT");
     DiagnosticList diagnostics;
     ASSERT_TRUE(DatFile::write(copy, p, DatFileName{1, 1, 0, 8}, diagnostics));
-    EXPECT_EQ(readFile(copy), kShaft);
+    EXPECT_EQ(readWholeFile(copy), kShaft);
     Program again = DatFile::read(copy);
     EXPECT_EQ(again.blocks.size(), p.blocks.size());
     EXPECT_EQ(describeBlock(again, 1), describeBlock(p, 1));
@@ -241,10 +213,10 @@ TEST(DatFileIo, LooseProgramGetsHeaderAndProgramEnd) {
 }
 
 TEST(DatFileIo, ReadingAFileWithErrorsKeepsEverything) {
-    TempDir dir;
+    TempDir dir("mtc-datfile");
     std::string text =
         "id\n%NPG:1:01:0:003\n%NPG\nN0000 G1 H9\nN0001 G1 X5 " + std::string(80, 'Y') + "\n";
-    writeFile(dir.file("N1010003.DAT"), text);
+    writeWholeFile(dir.file("N1010003.DAT"), text);
     Program p = DatFile::read(dir.file("N1010003.DAT"));
     EXPECT_EQ(p.source, text);
     EXPECT_NE(find(p, "PARSE_UNKNOWN_WORD"), nullptr);
@@ -257,7 +229,7 @@ TEST(DatFileIo, UnreadableFileAndNameMismatch) {
     Program missing = DatFile::read("/nonexistent/dir/N1010001.DAT");
     ASSERT_EQ(codes(missing), std::vector<std::string>{"FILE_UNREADABLE"});
     EXPECT_EQ(missing.number, 1);
-    TempDir dir;
+    TempDir dir("mtc-datfile");
     Program directory = DatFile::read(dir.path().string());
     EXPECT_EQ(codes(directory), std::vector<std::string>{"FILE_UNREADABLE"});
 
@@ -267,13 +239,13 @@ TEST(DatFileIo, UnreadableFileAndNameMismatch) {
 }
 
 TEST(DatFileIo, ReadFileText) {
-    TempDir dir;
+    TempDir dir("mtc-datfile");
     std::string text, error;
     std::string binary("N0000 G1\0\xff\n", 11);
-    writeFile(dir.file("a.DAT"), binary);
+    writeWholeFile(dir.file("a.DAT"), binary);
     ASSERT_TRUE(readFileText(dir.file("a.DAT"), text, error));
     EXPECT_EQ(text, binary);
-    writeFile(dir.file("empty.DAT"), "");
+    writeWholeFile(dir.file("empty.DAT"), "");
     ASSERT_TRUE(readFileText(dir.file("empty.DAT"), text, error));
     EXPECT_TRUE(text.empty());
     EXPECT_FALSE(readFileText(dir.file("missing.DAT"), text, error));
@@ -282,13 +254,13 @@ TEST(DatFileIo, ReadFileText) {
 }
 
 TEST(AtomicWrite, ReplacesTheFileAndLeavesNoTemporary) {
-    TempDir dir;
+    TempDir dir("mtc-datfile");
     std::string path = dir.file("N1010001.DAT");
-    writeFile(path, "old content\n");
+    writeWholeFile(path, "old content\n");
     fs::permissions(path, fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read);
     std::string error;
     ASSERT_TRUE(writeFileAtomically(path, "new content\n", error)) << error;
-    EXPECT_EQ(readFile(path), "new content\n");
+    EXPECT_EQ(readWholeFile(path), "new content\n");
     EXPECT_EQ(fs::status(path).permissions() & fs::perms::all,
               fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read);
     int files = 0;
@@ -300,7 +272,7 @@ TEST(AtomicWrite, ReplacesTheFileAndLeavesNoTemporary) {
 }
 
 TEST(AtomicWrite, FailureLeavesTheOldFile) {
-    TempDir dir;
+    TempDir dir("mtc-datfile");
     std::string error;
     EXPECT_FALSE(writeFileAtomically(dir.file("missing/N1010001.DAT"), "x", error));
     EXPECT_FALSE(error.empty());
@@ -322,13 +294,14 @@ TEST(AtomicWrite, FailureLeavesTheOldFile) {
 }
 
 TEST(ProgramLoaderTest, LoadsADirectory) {
-    TempDir dir;
-    writeFile(dir.file("N1010007.DAT"), kShaft);
-    writeFile(dir.file("N1012005.DAT"), "N0000 G1 X1\nN0001 H5\n");  // process 2, with an error
-    writeFile(dir.file("N2010007.DAT"), "N0000 G0\n");               // same process/number
-    writeFile(dir.file("N1030019.DAT"), "id\n%MAC:1:03:0:019\n%MAC\nN0000 .*CYC\nN0001 RTS\n");
-    writeFile(dir.file("notes.DAT"), "G1\n");
-    writeFile(dir.file("N1010001.ERR"), "ignored\n");
+    TempDir dir("mtc-datfile");
+    writeWholeFile(dir.file("N1010007.DAT"), kShaft);
+    writeWholeFile(dir.file("N1012005.DAT"),
+                   "N0000 G1 X1\nN0001 H5\n");               // process 2, with an error
+    writeWholeFile(dir.file("N2010007.DAT"), "N0000 G0\n");  // same process/number
+    writeWholeFile(dir.file("N1030019.DAT"), "id\n%MAC:1:03:0:019\n%MAC\nN0000 .*CYC\nN0001 RTS\n");
+    writeWholeFile(dir.file("notes.DAT"), "G1\n");
+    writeWholeFile(dir.file("N1010001.ERR"), "ignored\n");
     ProgramStore store;
     ProgramLoader loader(store);
     EXPECT_EQ(loader.loadDirectory(dir.path().string()), 3u);

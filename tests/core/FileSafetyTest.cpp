@@ -10,16 +10,17 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <utime.h>
 #include <filesystem>
 #include <fstream>
 #include <random>
 #include <sstream>
-#include <utime.h>
 
 #include "KillDuringWork.h"
 #include "cnc_core/compiler/CompilerFiles.h"
 #include "cnc_core/program/AtomicWrite.h"
 #include "cnc_core/program/ProgramLoader.h"
+#include "tests/support/TempDir.h"
 
 namespace {
 
@@ -28,29 +29,12 @@ namespace fs = std::filesystem;
 
 class FileSafety : public ::testing::Test {
   protected:
-    void SetUp() override {
-        const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
-        dir_ = fs::temp_directory_path() /
-               ("mtc-files-" + std::to_string(::getpid()) + "-" + test->name());
-        fs::remove_all(dir_);
-        fs::create_directories(dir_);
-    }
-    void TearDown() override {
-        std::error_code ignored;
-        fs::permissions(dir_, fs::perms::owner_all, fs::perm_options::add, ignored);
-        fs::remove_all(dir_, ignored);
-    }
-    std::string file(const std::string& name) const { return (dir_ / name).string(); }
-    static std::string read(const std::string& path) {
-        std::ifstream in(path, std::ios::binary);
-        std::ostringstream text;
-        text << in.rdbuf();
-        return text.str();
-    }
+    std::string file(const std::string& name) const { return dir_.file(name); }
+    static std::string read(const std::string& path) { return mtc::test::readWholeFile(path); }
     static void write(const std::string& path, const std::string& text) {
-        std::ofstream(path, std::ios::binary) << text;
+        mtc::test::writeWholeFile(path, text);
     }
-    fs::path dir_;
+    mtc::test::TempDir dir_{"mtc-files"};
 };
 
 TEST_F(FileSafety, ATargetThatIsNoRegularFileIsRefused) {
@@ -67,7 +51,7 @@ TEST_F(FileSafety, ATargetThatIsNoRegularFileIsRefused) {
     // replaced on a machine where the test runs as root if the check failed).
     EXPECT_FALSE(checkReplaceable("/dev/null", error));
     EXPECT_NE(error.find("device"), std::string::npos) << error;
-    for (const auto& entry : fs::directory_iterator(dir_))
+    for (const auto& entry : fs::directory_iterator(dir_.path()))
         EXPECT_EQ(entry.path().string().find(".tmp"), std::string::npos)
             << "no temporary left: " << entry.path();
 }
@@ -101,8 +85,8 @@ TEST_F(FileSafety, ASymbolicLinkIsWrittenThroughToItsRealFile) {
 
 TEST_F(FileSafety, AReadOnlyFileIsNotReplaced) {
     write(file("N1010001.DAT"), "program");
-    fs::permissions(file("N1010001.DAT"), fs::perms::owner_read | fs::perms::group_read |
-                                              fs::perms::others_read);
+    fs::permissions(file("N1010001.DAT"),
+                    fs::perms::owner_read | fs::perms::group_read | fs::perms::others_read);
     std::string error;
     EXPECT_FALSE(writeFileAtomically(file("N1010001.DAT"), "other", error));
     EXPECT_NE(error.find("read-only"), std::string::npos) << error;
@@ -135,16 +119,16 @@ CompileResult failed(const std::string& message) {
 TEST_F(FileSafety, CompileRefusesToWriteOverItsSource) {
     write(file("X.DAT"), "N0001 G1 X1\n");
     std::string errorPath, error;
-    EXPECT_FALSE(writeCompileFiles(file("X.DAT"), file("X.DAT"), compiled("object\n"), errorPath,
-                                   error));
+    EXPECT_FALSE(
+        writeCompileFiles(file("X.DAT"), file("X.DAT"), compiled("object\n"), errorPath, error));
     EXPECT_NE(error.find("source program itself"), std::string::npos) << error;
     EXPECT_EQ(read(file("X.DAT")), "N0001 G1 X1\n");
     // The same file under another name: a link, or a path with ./ in it.
     fs::create_symlink(file("X.DAT"), file("Y.NCO"));
-    EXPECT_FALSE(writeCompileFiles(file("X.DAT"), file("Y.NCO"), compiled("object\n"), errorPath,
-                                   error));
-    EXPECT_FALSE(writeCompileFiles(file("X.DAT"), (dir_ / "." / "X.DAT").string(),
-                                   compiled("o\n"), errorPath, error));
+    EXPECT_FALSE(
+        writeCompileFiles(file("X.DAT"), file("Y.NCO"), compiled("object\n"), errorPath, error));
+    EXPECT_FALSE(writeCompileFiles(file("X.DAT"), (dir_.path() / "." / "X.DAT").string(), compiled("o\n"),
+                                   errorPath, error));
     fs::create_hard_link(file("X.DAT"), file("Z.ERR"));
     EXPECT_FALSE(writeCompileFiles(file("X.DAT"), file("Z.NCO"), failed("bad"), errorPath, error))
         << "the error file would be the source";
@@ -222,7 +206,7 @@ TEST_F(FileSafety, TheProgramDirectoryIsCleanedAndOddEntriesAreReported) {
     ASSERT_EQ(::mkfifo(file("N1010004.DAT").c_str(), 0644), 0);
     ProgramStore store;
     ProgramLoader loader(store);
-    EXPECT_EQ(loader.loadDirectory(dir_.string()), 1u);
+    EXPECT_EQ(loader.loadDirectory(dir_.path().string()), 1u);
     EXPECT_FALSE(fs::exists(file("N1010001.DAT.tmpAb12Cd")));
     EXPECT_FALSE(fs::exists(file("N1010001.NCO.tmpXy34Zw")));
     EXPECT_TRUE(fs::exists(file("N1010002.DAT.tmpYoung1")));

@@ -12,6 +12,7 @@
 #include "InterpTestSupport.h"
 #include "cnc_core/machine_data/SharedMachineDataFile.h"
 #include "cnc_core/program/FileLock.h"
+#include "tests/support/TempDir.h"
 
 namespace {
 
@@ -19,15 +20,6 @@ using namespace mtc::core;
 namespace fs = std::filesystem;
 
 constexpr int kRounds = 100;
-
-std::string freshDirectory() {
-    const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
-    const fs::path dir = fs::temp_directory_path() /
-                         ("mtc-mdlock-" + std::to_string(::getpid()) + "-" + test->name());
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-    return dir.string();
-}
 
 /// Page 60 element `element` (T number of a tool spindle: INT 0..9999999).
 MachineDataAddress tSpindle(int element) {
@@ -85,24 +77,30 @@ void runTwo(void (*writer)(const std::string&, int), const std::string& path) {
 }
 
 TEST(MachineDataConcurrency, TwoLockedReadModifyWritersLoseNothing) {
-    const std::string path = freshDirectory() + "/cell.mdt";
+    const mtc::test::TempDir dir(
+        "mtc-mdlock");  // children leave by _exit: only the test removes it
+    const std::string path = dir.file("cell.mdt");
     runTwo(incrementInRounds, path);
     EXPECT_EQ(valueIn(path, tSpindle(5)), kRounds);
     EXPECT_EQ(valueIn(path, tSpindle(6)), kRounds);
-    std::cout << "[ measured ] 2 writers x " << kRounds << " locked increments: "
-              << valueIn(path, tSpindle(5)) + valueIn(path, tSpindle(6)) << " of "
-              << 2 * kRounds << " kept\n";
+    std::cout << "[ measured ] 2 writers x " << kRounds
+              << " locked increments: " << valueIn(path, tSpindle(5)) + valueIn(path, tSpindle(6))
+              << " of " << 2 * kRounds << " kept\n";
 }
 
 TEST(MachineDataConcurrency, TwoLongLivedCopiesNeverWriteBackOldValues) {
-    const std::string path = freshDirectory() + "/cell.mdt";
+    const mtc::test::TempDir dir(
+        "mtc-mdlock");  // children leave by _exit: only the test removes it
+    const std::string path = dir.file("cell.mdt");
     runTwo(setInRounds, path);
     EXPECT_EQ(valueIn(path, tSpindle(5)), kRounds) << "writer A's last value";
     EXPECT_EQ(valueIn(path, tSpindle(6)), kRounds) << "writer B's last value";
 }
 
 TEST(MachineDataConcurrency, RefreshTakesOverAnotherProgramsChange) {
-    const std::string path = freshDirectory() + "/cell.mdt";
+    const mtc::test::TempDir dir(
+        "mtc-mdlock");  // children leave by _exit: only the test removes it
+    const std::string path = dir.file("cell.mdt");
     MachineDataStore panel(mtc::test::demoCell());
     SharedMachineDataFile panelFile(path);
     panelFile.open(panel);
@@ -128,7 +126,9 @@ TEST(MachineDataConcurrency, RefreshTakesOverAnotherProgramsChange) {
 }
 
 TEST(MachineDataConcurrency, AHeldLockMakesTheOtherWriterWaitThenGiveUpWithAReason) {
-    const std::string path = freshDirectory() + "/cell.mdt";
+    const mtc::test::TempDir dir(
+        "mtc-mdlock");  // children leave by _exit: only the test removes it
+    const std::string path = dir.file("cell.mdt");
     FileLock first(path);
     ASSERT_TRUE(first.locked()) << first.error();
     FileLock second(path, 0.05);

@@ -18,48 +18,13 @@
 #include "InterpTestSupport.h"
 #include "KillDuringWork.h"
 #include "cnc_core/machine_data/MachineDataFile.h"
+#include "tests/support/TempDir.h"
 
 namespace {
 
 using namespace mtc::core;
 using namespace mtc::test;
 namespace fs = std::filesystem;
-
-/// A fresh directory per test, removed at the end.
-class TempDir {
-  public:
-    TempDir() {
-        const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
-        path_ = fs::temp_directory_path() /
-                ("mtc-mdfile-" + std::to_string(::getpid()) + "-" + test->name());
-        fs::remove_all(path_);
-        fs::create_directories(path_);
-    }
-    ~TempDir() { fs::remove_all(path_); }
-    std::string file(const std::string& name) const { return (path_ / name).string(); }
-    /// Names of the files in the directory, sorted.
-    std::vector<std::string> names() const {
-        std::vector<std::string> result;
-        for (const auto& entry : fs::directory_iterator(path_))
-            result.push_back(entry.path().filename().string());
-        std::sort(result.begin(), result.end());
-        return result;
-    }
-
-  private:
-    fs::path path_;
-};
-
-std::string readText(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
-
-void writeText(const std::string& path, const std::string& text) {
-    std::ofstream(path, std::ios::binary) << text;
-}
 
 double valueOf(const MachineDataStore& store, MachineDataAddress address) {
     double value = -12345;
@@ -79,7 +44,7 @@ void fill(MachineDataStore& store, double base) {
 }
 
 TEST(MachineDataFile, RoundTripKeepsEveryValue) {
-    TempDir dir;
+    TempDir dir("mtc-mdfile");
     MachineDataFile file(dir.file("cell.mdt"));
     MachineDataStore original(demoCell());
     fill(original, 42);
@@ -110,7 +75,7 @@ TEST(MachineDataFile, MinusZeroIsStoredAsZeroWhateverWasThereBefore) {
 }
 
 TEST(MachineDataFile, MissingFileMeansDefaultsWithoutWarning) {
-    TempDir dir;
+    TempDir dir("mtc-mdfile");
     MachineDataStore store(demoCell());
     const MachineDataLoadResult result = MachineDataFile(dir.file("none.mdt")).load(store);
     EXPECT_FALSE(result.fileFound);
@@ -120,9 +85,9 @@ TEST(MachineDataFile, MissingFileMeansDefaultsWithoutWarning) {
 
 /// Loads a damaged file and checks: defaults, warning, file kept aside unchanged.
 void expectDamaged(const std::string& text, const std::string& reasonPart) {
-    TempDir dir;
+    TempDir dir("mtc-mdfile");
     const std::string path = dir.file("cell.mdt");
-    writeText(path, text);
+    writeWholeFile(path, text);
     MachineDataStore store(demoCell());
     fill(store, 7);  // the load must replace these by the defaults
     const MachineDataLoadResult result = MachineDataFile(path).load(store);
@@ -135,7 +100,7 @@ void expectDamaged(const std::string& text, const std::string& reasonPart) {
     ASSERT_TRUE(result.keptAside);
     EXPECT_NE(d.message.find(result.asidePath), std::string::npos);
     EXPECT_FALSE(fs::exists(path)) << "the damaged file is renamed, not overwritten";
-    EXPECT_EQ(readText(result.asidePath), text) << "kept aside byte for byte";
+    EXPECT_EQ(readWholeFile(result.asidePath), text) << "kept aside byte for byte";
     EXPECT_EQ(MachineDataFile::serialize(store),
               MachineDataFile::serialize(MachineDataStore(demoCell())));
 }
@@ -168,7 +133,7 @@ TEST(MachineDataFile, ChangedValueBreaksTheChecksum) {
 }
 
 TEST(MachineDataFile, ValuesThatNoLongerFitAreReported) {
-    TempDir dir;
+    TempDir dir("mtc-mdfile");
     const std::string path = dir.file("cell.mdt");
     MachineDataStore lathe(demoCell());
     fill(lathe, 11);
@@ -189,7 +154,7 @@ TEST(MachineDataFile, ValuesThatNoLongerFitAreReported) {
 }
 
 TEST(MachineDataFile, OtherCellIsToldAboutAndAbsurdInputRefused) {
-    TempDir dir;
+    TempDir dir("mtc-mdfile");
     const std::string path = dir.file("cell.mdt");
     MachineConfig other = demoCell();
     other.name = "another cell";
@@ -206,7 +171,7 @@ TEST(MachineDataFile, OtherCellIsToldAboutAndAbsurdInputRefused) {
 }
 
 TEST(MachineDataFile, SaveIntoMissingDirectoryFailsAndSaysWhy) {
-    TempDir dir;
+    TempDir dir("mtc-mdfile");
     std::string error;
     EXPECT_FALSE(
         MachineDataFile(dir.file("no/such/dir.mdt")).save(MachineDataStore(demoCell()), error));
@@ -225,7 +190,7 @@ TEST(MachineDataFile, SaveIntoMissingDirectoryFailsAndSaysWhy) {
 }
 
 TEST(MachineDataFile, KilledDuringSaveLeavesTheOldOrTheNewFile) {
-    TempDir dir;
+    TempDir dir("mtc-mdfile");
     const std::string path = dir.file("cell.mdt");
     std::mt19937 random(20240501);
     std::uniform_int_distribution<int> delayMicroseconds(200, 20000);
@@ -240,8 +205,8 @@ TEST(MachineDataFile, KilledDuringSaveLeavesTheOldOrTheNewFile) {
     }
     int complete = 0;
     for (int attempt = 0; attempt < 25; ++attempt) {
-        ASSERT_TRUE(killDuringWork([&](int steps) { saveForever(path, steps); },
-                                   delayMicroseconds(random)))
+        ASSERT_TRUE(
+            killDuringWork([&](int steps) { saveForever(path, steps); }, delayMicroseconds(random)))
             << "the saving child never finished a save";
         ASSERT_TRUE(fs::exists(path)) << "a killed save removed the old file";
         MachineDataStore store(demoCell());

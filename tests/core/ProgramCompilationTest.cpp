@@ -13,6 +13,7 @@
 
 #include "InterpTestSupport.h"
 #include "cnc_core/cell/Cell.h"
+#include "tests/support/TempDir.h"
 
 namespace mtc::test {
 namespace {
@@ -27,21 +28,10 @@ const std::string kBroken = "N0001 G1 G90 X0 Y0 F800\nN0002 X5 RD=@3\nN0003 Y5\n
 /// A program folder in a temporary directory, removed afterwards.
 class ProgramCompilationTest : public ::testing::Test {
   protected:
-    void SetUp() override {
-        const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
-        dir_ = fs::temp_directory_path() /
-               ("mtc-compilation-" + std::to_string(::getpid()) + "-" + test->name());
-        fs::remove_all(dir_);
-        fs::create_directories(dir_);
-    }
-    void TearDown() override {
-        std::error_code ignored;
-        fs::remove_all(dir_, ignored);
-    }
     /// A cell on the folder with program `number` from file `name`.
     void addFile(core::Cell& cell, int number, const std::string& name, const std::string& text) {
-        std::ofstream(dir_ / name, std::ios::binary) << text;
-        cell.setProgramDirectory(dir_.string());
+        std::ofstream(dir_.path() / name, std::ios::binary) << text;
+        cell.setProgramDirectory(dir_.path().string());
         cell.addProgram(0, number, name, text);
     }
     static void activateCompiler(core::Cell& cell) {
@@ -49,9 +39,9 @@ class ProgramCompilationTest : public ::testing::Test {
         options.compilerActive = true;
         cell.setNcOptions(options);
     }
-    bool exists(const std::string& name) const { return fs::exists(dir_ / name); }
+    bool exists(const std::string& name) const { return dir_.exists(name); }
 
-    fs::path dir_;
+    mtc::test::TempDir dir_{"mtc-compilation"};
 };
 
 TEST_F(ProgramCompilationTest, StartCompilesOnDemandAndRunsTheObject) {
@@ -92,7 +82,7 @@ TEST_F(ProgramCompilationTest, ErrorsRefuseStartAndSurviveTheSession) {
     // The next session reads the status and the messages from the files.
     core::Cell cell(demoCell());
     activateCompiler(cell);
-    cell.setProgramDirectory(dir_.string());
+    cell.setProgramDirectory(dir_.path().string());
     cell.addProgram(0, 8, "P8.DAT", kBroken);
     core::ProgramCompilation& compilation = cell.compilation(0);
     EXPECT_EQ(compilation.status(8), CompileStatus::Error);
@@ -119,7 +109,7 @@ TEST_F(ProgramCompilationTest, SavingMakesTheProgramUncompiledAndRemovesItsObjec
     EXPECT_EQ(compilation.status(7), CompileStatus::NotCompiled);
     EXPECT_FALSE(exists("P7.NCO"));
     EXPECT_EQ(cell.program(0, 7)->source, edited);
-    std::ifstream file(dir_ / "P7.DAT", std::ios::binary);
+    std::ifstream file(dir_.path() / "P7.DAT", std::ios::binary);
     EXPECT_EQ(std::string(std::istreambuf_iterator<char>(file), {}), edited);
     EXPECT_EQ(heard, (std::vector<int>{7, 7}));
 }
@@ -148,7 +138,7 @@ TEST_F(ProgramCompilationTest, AUserCompilerRunsOnlyWhenApproved) {
     core::Cell cell(demoCell());
     core::NcOptions options;
     options.compilerActive = true;
-    const fs::path marker = dir_ / "ran";
+    const fs::path marker = dir_.path() / "ran";
     options.userCompilers.before[0] = "touch " + marker.string();
     cell.setNcOptions(options);
     addFile(cell, 7, "P7.DAT", kRounded);
@@ -201,7 +191,7 @@ void useGatedCompiler(core::Cell& cell, const fs::path& gate) {
 
 TEST_F(ProgramCompilationTest, UserCompilersRunBesideTheStationAndStartWaitsForThem) {
     core::Cell cell(demoCell());
-    const fs::path gate = dir_ / "gate";
+    const fs::path gate = dir_.path() / "gate";
     useGatedCompiler(cell, gate);
     addFile(cell, 7, "P7.DAT", kRounded);
     core::ProgramCompilation& compilation = cell.compilation(0);
@@ -234,7 +224,7 @@ TEST_F(ProgramCompilationTest, UserCompilersRunBesideTheStationAndStartWaitsForT
 
 TEST_F(ProgramCompilationTest, ABackgroundResultOfAnOldSourceIsDropped) {
     core::Cell cell(demoCell());
-    const fs::path gate = dir_ / "gate";
+    const fs::path gate = dir_.path() / "gate";
     useGatedCompiler(cell, gate);
     addFile(cell, 7, "P7.DAT", kRounded);
     core::ProgramCompilation& compilation = cell.compilation(0);
