@@ -127,8 +127,8 @@ TEST_F(FileSafety, CompileRefusesToWriteOverItsSource) {
     fs::create_symlink(file("X.DAT"), file("Y.NCO"));
     EXPECT_FALSE(
         writeCompileFiles(file("X.DAT"), file("Y.NCO"), compiled("object\n"), errorPath, error));
-    EXPECT_FALSE(writeCompileFiles(file("X.DAT"), (dir_.path() / "." / "X.DAT").string(), compiled("o\n"),
-                                   errorPath, error));
+    EXPECT_FALSE(writeCompileFiles(file("X.DAT"), (dir_.path() / "." / "X.DAT").string(),
+                                   compiled("o\n"), errorPath, error));
     fs::create_hard_link(file("X.DAT"), file("Z.ERR"));
     EXPECT_FALSE(writeCompileFiles(file("X.DAT"), file("Z.NCO"), failed("bad"), errorPath, error))
         << "the error file would be the source";
