@@ -64,6 +64,13 @@ class Station : private ProgramRunner {
     AdaptiveFeedControl& adaptiveFeed() { return *afc_; }
     /// The adaptive feed trend the machine records.
     const AfcTrendRecorder& afcTrend() const { return trend_; }
+    /// Whether the machine records that trend (default: yes, page 61 shows
+    /// it). A headless run that never reads it turns it off: the trend is
+    /// the only reader of the torque observed on a move without G26, so
+    /// times, positions, page 30 and the signals stay the same (MOT-019).
+    void keepAfcTrend(bool keep) {
+        machine_.attachAdaptiveFeed(afc_.get(), keep ? &trend_ : nullptr);
+    }
 
     /// A machine control key (M key), as the operator presses it. Returns
     /// false (the alarm says why) when it is not allowed now.

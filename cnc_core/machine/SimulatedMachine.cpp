@@ -110,7 +110,7 @@ void SimulatedMachine::motion(const Motion& m) {
         if (afc_->active() || afc_->idleMeasurementRequested())
             return adaptiveMove(m, planned, length);
     }
-    if (afc_ && afc_->available() && planned > 0 && recorder_ && m.type != MotionType::Rapid) {
+    if (afc_ && afc_->available() && planned > 0 && m.type != MotionType::Rapid) {
         observeMove(m, planned, length);  // the trend observes the torque; the move is a plain one
     } else {
         afcClock_ = std::max(afcClock_, seconds()) + planned;

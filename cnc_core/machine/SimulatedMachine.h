@@ -144,7 +144,8 @@ class SimulatedMachine : public MachineSink {
     /// G26 / ITM: the move is worked out by adaptive feed control now and
     /// queued as a timed move.
     void adaptiveMove(const Motion& motion, double planned, double length);
-    /// G25 with a trend recorder: the torque is only observed (trend, 007).
+    /// G25: the torque is only observed, for the trend recorder; without
+    /// one only the trend clock and the feed follow the move.
     void observeMove(const Motion& motion, double planned, double length);
     /// What adaptive feed control needs of the move; `length`: its path
     /// length (mm). The acceleration time only matters to ITM (adaptive moves).

@@ -98,6 +98,17 @@ void SimulatedMachine::adaptiveMove(const Motion& m, double planned, double leng
 }
 
 void SimulatedMachine::observeMove(const Motion& m, double planned, double length) {
+    if (!recorder_) {
+        // Nobody keeps the trend (the CLI): the observed torque would only
+        // go into trend samples, so only the clock and the feed are kept,
+        // with the same arithmetic as simulateAfcMove's plain move.
+        const double seconds = planned / overrideShare(m);
+        const double startTime = std::max(afcClock_, this->seconds());
+        lastFeed_ = length / seconds * 60.0;
+        afcClock_ = startTime + seconds;
+        afc_->setClock(afcClock_);
+        return;
+    }
     AfcMoveInput move = afcInput(m, planned, length);
     move.startTime = std::max(afcClock_, seconds());
     const AfcMoveResult result = simulateAfcMove(*afc_, move, recorder_);

@@ -4,6 +4,7 @@
 // override, rapid override and adaptive feed control too.
 #include <gtest/gtest.h>
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -170,12 +171,15 @@ struct Outcome {
     std::vector<double> positions;
     std::vector<int> aux;
     double machiningTorque = 0.0;  ///< page 30 element 007
+    std::map<int, double> page30;  ///< elements 008, 011, 012
+    std::vector<int> signals;      ///< EXCTH, THMIS
     std::size_t trendSamples = 0;
 };
 
-Outcome runIn(double tick, const std::string& source, int feedOverride) {
+Outcome runIn(double tick, const std::string& source, int feedOverride, bool keepTrend = true) {
     MillFixture f;
     core::Station& mill = f.select(source);
+    mill.keepAfcTrend(keepTrend);
     mill.setFeedOverride(feedOverride);
     EXPECT_TRUE(mill.press(ControlKey::Start));
     f.runToEnd(tick);
@@ -186,6 +190,10 @@ Outcome runIn(double tick, const std::string& source, int feedOverride) {
         out.positions.push_back(mill.machine().position(axis));
     out.aux = auxValues(mill);
     f.cell.machineData().read({30, 0, 0, 7}, out.machiningTorque);
+    for (int element : {8, 11, 12})
+        f.cell.machineData().read({30, 0, 0, element}, out.page30[element]);
+    out.signals = {mill.control().signalTable().get("P00SEXCTH"),
+                   mill.control().signalTable().get("P00STHMIS")};
     out.trendSamples = mill.afcTrend().size();
     return out;
 }
@@ -197,7 +205,8 @@ void expectSame(const Outcome& a, const Outcome& b) {
         EXPECT_NEAR(a.positions[i], b.positions[i], 1e-9) << "axis " << i;
     EXPECT_EQ(a.aux, b.aux);
     EXPECT_NEAR(a.machiningTorque, b.machiningTorque, 1e-9);
-    EXPECT_EQ(a.trendSamples, b.trendSamples);
+    EXPECT_EQ(a.page30, b.page30);
+    EXPECT_EQ(a.signals, b.signals);
 }
 
 TEST(StationMotion, TicksDoNotChangeTheResultWithOverridesSpindlesAndAdaptiveFeed) {
@@ -211,8 +220,30 @@ TEST(StationMotion, TicksDoNotChangeTheResultWithOverridesSpindlesAndAdaptiveFee
         EXPECT_GT(panel.seconds, 5.0);
         EXPECT_GT(panel.trendSamples, 0u);
         expectSame(panel, cli);
+        EXPECT_EQ(panel.trendSamples, cli.trendSamples);
         const Outcome odd = runIn(0.0137, source, percent);
         expectSame(odd, cli);
+        EXPECT_EQ(odd.trendSamples, cli.trendSamples);
+    }
+}
+
+// MOT-019: the CLI's stations keep no trend; nothing else may change. The
+// plain moves before the G26 block set the clock its torque noise is read at,
+// so a trend clock that ran differently without the trend shows here.
+TEST(StationMotion, AStationWithoutTrendGivesTheSameRunAsOneWithIt) {
+    // Inside the demo mill's stock (X -150..-50, Y -80..-20, Z -132..-120).
+    const std::string source =
+        "N0001 S1=3000 M3\nN0002 G0 G90 X-145 Y-50 Z-110\nN0003 G1 Z-125 F600\n"
+        "N0004 G2 X-125 Y-50 I-135 J-50 F1200\nN0005 G1 X-120 F900\n"
+        "N0006 G1 G26 X-60 F1500\nN0007 G25\nN0008 G1 X-145 Y-30 F2000\nN0009 M30\n";
+    for (int percent : {100, 70, 130}) {
+        const Outcome withTrend = runIn(0.02, source, percent, true);
+        const Outcome without = runIn(0.02, source, percent, false);
+        EXPECT_GT(withTrend.trendSamples, 0u);
+        EXPECT_EQ(without.trendSamples, 0u);
+        EXPECT_GT(withTrend.page30.at(12), 0.0) << "G26 reduced the feed";
+        expectSame(withTrend, without);
+        expectSame(runIn(1e9, source, percent, false), without);
     }
 }
 
