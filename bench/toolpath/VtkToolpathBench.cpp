@@ -1,6 +1,8 @@
 // VTK part of the toolpath view (issue 8), outside ctest:
-//   mtc_toolpath_bench [count]    geometry, poly-data and coarse copy for
-//                                 `count` (1,000,000) segments: times, peak RSS
+//   mtc_toolpath_bench [--arcs] [count]   geometry, poly-data and coarse copy
+//                                 for `count` (1,000,000) straight moves
+//                                 (--arcs: a contour with quarter arcs of
+//                                 radius 10 mm): times, peak RSS
 //   xvfb-run -a -s "-screen 0 1280x800x24" mtc_toolpath_bench --frames [count]
 //       [--canvas] [--samples N (-1: VTK's default)] [--size W H]
 //                                 frame times of an X window (Mesa llvmpipe
@@ -61,6 +63,41 @@ ToolpathGeometry million(int count) {
         m.end[0] = pass % 2 ? 100.0 - step * 0.1 : step * 0.1;
         m.end[1] = pass * 0.06;
         m.end[2] = -(pass / 100) * 0.5;
+        m.blockIndex = static_cast<std::uint32_t>(i);
+        builder.motion(m);
+    }
+    return builder.take();
+}
+
+/// `count` moves of a contour repeated over and over, a third of them
+/// quarter arcs of radius 10 mm (the shape of the 1,000,000-block run
+/// benchmark, scripts/gen-bench-program.sh): what an arc-heavy program draws.
+ToolpathGeometry arcHeavy(int count) {
+    const MachineConfig cell =
+        readMachineConfig(mtc::resources::find(mtc::resources::kDemoCellName)).config;
+    DiagnosticList ignored;
+    ToolpathBuilder builder(ProcessAxes::build(*cell.process(0), ignored));
+    struct Step {
+        MotionType type;
+        double x, y, cx, cy;
+    };
+    static constexpr Step kContour[] = {
+        {MotionType::Linear, 10, 0, 0, 0},  {MotionType::ArcCCW, 20, 10, 10, 10},
+        {MotionType::Linear, 20, 20, 0, 0}, {MotionType::ArcCW, 10, 30, 20, 30},
+        {MotionType::Linear, 0, 30, 0, 0},  {MotionType::Linear, 0, 0, 0, 0}};
+    Motion m;
+    m.axisCount = 3;
+    for (int i = 0; i < count; ++i) {
+        const Step& step = kContour[i % 6];
+        m.start = m.end;
+        m.type = step.type;
+        m.end[0] = step.x;
+        m.end[1] = step.y;
+        const bool arc = step.type != MotionType::Linear;
+        m.planeAxis1 = arc ? 0 : -1;
+        m.planeAxis2 = arc ? 1 : -1;
+        m.center1 = step.cx;
+        m.center2 = step.cy;
         m.blockIndex = static_cast<std::uint32_t>(i);
         builder.motion(m);
     }
@@ -168,11 +205,13 @@ void frames(const std::vector<Variant>& variants, int samples, int width, int he
 }  // namespace
 
 int main(int argc, char** argv) {
-    bool withFrames = false, canvasOnly = false;
+    bool withFrames = false, canvasOnly = false, arcs = false;
     int count = 1'000'000, samples = 0, width = 1000, height = 700;
     for (int i = 1; i < argc; ++i) {
         if (std::strcmp(argv[i], "--frames") == 0)
             withFrames = true;
+        else if (std::strcmp(argv[i], "--arcs") == 0)
+            arcs = true;
         else if (std::strcmp(argv[i], "--canvas") == 0)
             withFrames = canvasOnly = true;
         else if (std::strcmp(argv[i], "--samples") == 0 && i + 1 < argc)
@@ -185,7 +224,7 @@ int main(int argc, char** argv) {
     }
     const double rss0 = peakRssMb();
     const auto t0 = Clock::now();
-    ToolpathGeometry g = million(count);
+    ToolpathGeometry g = arcs ? arcHeavy(count) : million(count);
     std::printf("geometry: %zu segments in %.1f ms, %.1f MB held, peak RSS +%.1f MB\n",
                 g.scene.segmentCount(), msSince(t0), g.memoryBytes() / 1e6, peakRssMb() - rss0);
     mtc::screens::ToolpathPalette palette;

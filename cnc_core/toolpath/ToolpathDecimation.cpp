@@ -25,6 +25,12 @@ std::uint32_t firstOf(const ToolpathMove& m, bool developed) {
 /// stop early once over the budget.
 constexpr std::size_t kLongestRun = 4096;
 
+/// Largest tolerance of the coarse copy as a share of the layer's extent.
+constexpr double kLargestToleranceShare = 1.0 / 20.0;
+
+/// Runs in the sample of a large path's first guess (sampledGuess).
+constexpr std::size_t kSampleRuns = 64;
+
 /// Runs of the layer in segment order; a new run starts where a chain
 /// breaks, (unless `joinKinds`) where the move kind changes, and after
 /// `longest` segments.
@@ -129,6 +135,61 @@ DecimatedLayer everyNthRun(const ToolpathLayer& layer, const std::vector<Run>& r
     return out;
 }
 
+/// Where the search of a large path starts (sampledGuess).
+struct SearchStart {
+    double tolerance = 0.0;
+    std::size_t thinning = 1;  ///< > 1: keep every n-th run at the largest tolerance
+};
+
+/// Where the search for the tolerance of a large path starts: the
+/// tolerance, doubling from `tolerance` up to `largest`, at which every
+/// k-th run (about kSampleRuns of them) keeps its share of the budget, one
+/// doubling back for the sample's error; when even `largest` does not keep
+/// it, the share of the runs the budget holds at `largest`. A try over
+/// every run of a million-move path costs 0.1-0.5 s, and most tries fail.
+SearchStart sampledGuess(const ToolpathLayer& layer, const std::vector<Run>& runs, double tolerance,
+                         double largest, std::size_t budget) {
+    const std::size_t every = runs.size() / kSampleRuns;
+    if (every < 2) return {tolerance, 1};
+    std::vector<Run> sample;
+    for (std::size_t r = 0; r < runs.size(); r += every)
+        sample.push_back(runs[r]);
+    const std::size_t share = std::max<std::size_t>(budget * sample.size() / runs.size(), 1);
+    DecimatedLayer scratch;
+    double tol = tolerance;
+    while (tol < largest) {
+        if (tryDecimate(layer, sample, tol, share, scratch))
+            return {std::max(tolerance, tol / 2.0), 1};
+        tol *= 2.0;
+    }
+    tryDecimate(layer, sample, largest, std::numeric_limits<std::size_t>::max(), scratch);
+    const double needed = static_cast<double>(scratch.cellCount()) / static_cast<double>(share);
+    std::size_t thinning = 1;
+    while (thinning < needed / 2.0 && thinning < runs.size())  // one step back, as above
+        thinning *= 2;
+    return {largest, thinning};
+}
+
+/// The runs r = 0, n, 2n, ... simplified with `tolerance`, for the smallest
+/// n = 2^k that keeps the budget: a path that retraces itself many times
+/// (a contour repeated over and over) shows a share of its passes, each
+/// still drawn within the tolerance.
+DecimatedLayer everyNthRunAt(const ToolpathLayer& layer, const std::vector<Run>& runs,
+                             double tolerance, std::size_t budget, std::size_t firstStep) {
+    std::vector<Run> kept;
+    DecimatedLayer out;
+    for (std::size_t step = std::max<std::size_t>(firstStep, 2); step < runs.size(); step *= 2) {
+        kept.clear();
+        for (std::size_t r = 0; r < runs.size(); r += step)
+            kept.push_back(runs[r]);
+        if (tryDecimate(layer, kept, tolerance, budget, out)) {
+            out.dropped = true;
+            return out;
+        }
+    }
+    return everyNthRun(layer, runs, budget);
+}
+
 }  // namespace
 
 std::pair<std::uint32_t, std::uint32_t> DecimatedLayer::segmentsOf(std::size_t cell) const {
@@ -166,11 +227,19 @@ DecimatedLayer decimateLayer(const ToolpathGeometry& g, bool developed, double t
     if (runs.size() > budget) return everyNthRun(layer, runs, budget);
     const double size = std::max(layer.bounds.size(), 1e-3);
     double tol = std::max(tolerance, size * 1e-9);
+    // Beyond this share of the picture a cell no longer follows the path
+    // (TP-010): a path that retraces itself is thinned out instead.
+    const double largest = std::max(tol, size * kLargestToleranceShare);
+    const SearchStart start = sampledGuess(layer, runs, tol, largest, budget);
+    if (start.thinning > 1) return everyNthRunAt(layer, runs, largest, budget, start.thinning);
     DecimatedLayer out;
-    // Terminates: at tol >= 2 x size every run is one cell, and runs <= budget.
-    while (!tryDecimate(layer, runs, tol, budget, out))
+    tol = start.tolerance;
+    while (tol < largest) {  // doubling: ends within log2(largest / tol) tries
+        if (tryDecimate(layer, runs, tol, budget, out)) return out;
         tol *= 2.0;
-    return out;
+    }
+    if (tryDecimate(layer, runs, largest, budget, out)) return out;
+    return everyNthRunAt(layer, runs, largest, budget, 2);
 }
 
 }  // namespace mtc::core

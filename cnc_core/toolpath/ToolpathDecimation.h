@@ -29,9 +29,11 @@ struct DecimatedLayer {
 
 /// Simplifies layer `developed ? g.developed : g.scene` (Douglas-Peucker per
 /// run of one chain and one move kind) with `tolerance` (mm), doubling the
-/// tolerance until at most `budget` cells remain. When even one cell per run
-/// is over the budget, runs of different kinds on a chain are joined (first
-/// kind's colour) and, as the last resort, every n-th run is kept.
+/// tolerance until at most `budget` cells remain, but not beyond 1/20 of the
+/// layer's extent: then every n-th run is kept at that tolerance (a path
+/// that retraces itself). When even one cell per run is over the budget,
+/// runs of different kinds on a chain are joined (first kind's colour) and,
+/// as the last resort, every n-th run is kept as one cell.
 DecimatedLayer decimateLayer(const ToolpathGeometry& g, bool developed, double tolerance,
                              std::size_t budget);
 

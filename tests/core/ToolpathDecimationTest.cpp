@@ -131,6 +131,30 @@ TEST(ToolpathDecimation, KindsAreJoinedWhenTheirRunsAloneBreakTheBudget) {
     expectWithinTolerance(g, d);
 }
 
+TEST(ToolpathDecimation, APathThatRetracesItselfIsThinnedOutNotBlurred) {
+    // 3000 passes over one circle of radius 10 mm, 64 chords each, each pass
+    // its own chain (a contour programmed over and over). One cell per pass
+    // would draw every pass as a single chord across the circle; the copy
+    // keeps every n-th pass instead, at most 1/20 of the picture off (TP-010).
+    ToolpathGeometry g;
+    auto onCircle = [](int i, double z) {
+        const double a = 2.0 * M_PI * i / 64.0;
+        return Point{10.0 * std::cos(a), 10.0 * std::sin(a), z};
+    };
+    for (int pass = 0; pass < 3000; ++pass) {
+        g.moves.push_back({0, static_cast<std::uint32_t>(pass), 0, ToolpathKind::Feed, 30,
+                           static_cast<std::uint32_t>(g.scene.segmentCount()), 0});
+        for (int i = 0; i < 64; ++i)
+            g.scene.addSegment(onCircle(i, 0.001 * pass), onCircle(i + 1, 0.001 * pass));
+    }
+    const DecimatedLayer d = decimateLayer(g, false, 0.01, 5000);
+    EXPECT_TRUE(d.dropped);
+    EXPECT_LE(d.tolerance, g.scene.bounds.size() / 20.0 + 1e-12);
+    EXPECT_LE(d.cellCount(), 5000u);
+    EXPECT_GE(d.cellCount(), 5000u / 8) << "thinned out more than the budget needs";
+    expectWithinTolerance(g, d);
+}
+
 TEST(ToolpathDecimation, TooManyChainsKeepEveryNthRun) {
     ToolpathGeometry g;
     for (int i = 0; i < 1000; ++i) {  // 1000 separate dashes: 1000 chains
