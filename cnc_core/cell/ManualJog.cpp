@@ -30,18 +30,23 @@ ManualJog::ManualJog(ProcessControl& control, Interpreter& interpreter, Simulate
     : control_(control), interpreter_(interpreter), machine_(machine) {}
 
 std::string ManualJog::check(int axis) const {
-    if (control_.mode() != OperatingMode::Manual) return "Jogging needs manual mode (M key Manual)";
-    if (control_.programActive()) return "Jogging is refused while a program is active";
-    if (axis < 0 || axis >= interpreter_.axes().count()) return "No such axis to jog";
+    if (control_.mode() != OperatingMode::Manual)
+        return refusal("ALARM_JOG_NOT_MANUAL", "Jogging needs manual mode (M key Manual)");
+    if (control_.programActive())
+        return refusal("ALARM_JOG_PROGRAM_ACTIVE", "Jogging is refused while a program is active");
+    if (axis < 0 || axis >= interpreter_.axes().count())
+        return refusal("ALARM_JOG_NO_AXIS", "No such axis to jog");
     const AxisModel& model = interpreter_.axes().axis(axis);
-    if (model.spindle && !model.rotary) return "A spindle is not jogged; it turns with M3/M4";
-    if (releasing_) return "The axis is still braking";
+    if (model.spindle && !model.rotary)
+        return refusal("ALARM_JOG_SPINDLE", "A spindle is not jogged; it turns with M3/M4");
+    if (releasing_) return refusal("ALARM_JOG_BRAKING", "The axis is still braking");
     return {};
 }
 
 std::string ManualJog::moveBy(int axis, double distance, bool rapid) {
-    if (std::string refusal = check(axis); !refusal.empty()) return refusal;
-    if (!std::isfinite(distance) || distance == 0.0) return "No jog distance";
+    if (std::string refused = check(axis); !refused.empty()) return refused;
+    if (!std::isfinite(distance) || distance == 0.0)
+        return refusal("ALARM_JOG_NO_DISTANCE", "No jog distance");
     // From where the previous jog goes (the axis may still be on its way).
     const double from = machine_.idle() ? machine_.position(axis)
                                         : machine_.lastMoveEnd()[static_cast<std::size_t>(axis)];
@@ -49,8 +54,8 @@ std::string ManualJog::moveBy(int axis, double distance, bool rapid) {
 }
 
 std::string ManualJog::start(int axis, int direction, bool rapid) {
-    if (std::string refusal = check(axis); !refusal.empty()) return refusal;
-    if (!machine_.idle()) return "The axes are still moving";
+    if (std::string refused = check(axis); !refused.empty()) return refused;
+    if (!machine_.idle()) return refusal("ALARM_JOG_AXES_MOVING", "The axes are still moving");
     const AxisModel& model = interpreter_.axes().axis(axis);
     const double from = machine_.position(axis);
     double target = direction > 0 ? from + kEndlessJogReach : from - kEndlessJogReach;
@@ -58,20 +63,27 @@ std::string ManualJog::start(int axis, int direction, bool rapid) {
     return queue(axis, target, rapid);
 }
 
+std::string ManualJog::refusal(const char* code, const char* english,
+                               const std::vector<std::string>& values) const {
+    return alarmText(code, english, control_.language(), values);
+}
+
 std::string ManualJog::queue(int axis, double target, bool rapid) {
     const AxisModel& model = interpreter_.axes().axis(axis);
     const std::string name = interpreter_.programmedAxisName(axis);
     if (model.limited() && (target < model.minPosition - 1e-9 || target > model.maxPosition + 1e-9))
-        return "Travel limit: " + name + " may move from " + format(model.minPosition) + " to " +
-               format(model.maxPosition) + " (jog to " + format(target) + " refused)";
+        return refusal(
+            "ALARM_JOG_TRAVEL_LIMIT", "Travel limit: %1 may move from %2 to %3 (jog to %4 refused)",
+            {name, format(model.minPosition), format(model.maxPosition), format(target)});
     if (std::abs(target - machine_.position(axis)) < 1e-9 && machine_.idle())
-        return name + " is at its travel limit";
+        return refusal("ALARM_JOG_AT_LIMIT", "%1 is at its travel limit", {name});
     Motion move;
     move.type = rapid ? MotionType::Rapid : MotionType::Linear;
     move.axisCount = interpreter_.axes().count();
     for (int a = 0; a < move.axisCount && a < kMaxAxes; ++a)
         move.start[static_cast<std::size_t>(a)] =
-            machine_.idle() ? machine_.position(a) : machine_.lastMoveEnd()[static_cast<std::size_t>(a)];
+            machine_.idle() ? machine_.position(a)
+                            : machine_.lastMoveEnd()[static_cast<std::size_t>(a)];
     move.end = move.start;
     move.end[static_cast<std::size_t>(axis)] = target;
     move.programmedEnd = move.end;
@@ -84,14 +96,20 @@ std::string ManualJog::queue(int axis, double target, bool rapid) {
 
 std::string ManualJog::spindle(int spindle, int rotation, double rpm) {
     if (control_.mode() != OperatingMode::Manual)
-        return "The spindle keys need manual mode (M key Manual)";
-    if (control_.programActive()) return "The spindle keys are refused while a program is active";
-    if (spindle < 1 || spindle > 3 || !machine_.hasSpindle(spindle)) return "No such spindle";
-    told_[static_cast<std::size_t>(spindle)] = {rotation, rpm >= 0.0 ? rpm : commandOf(spindle).rpm};
+        return refusal("ALARM_SPINDLE_NOT_MANUAL",
+                       "The spindle keys need manual mode (M key Manual)");
+    if (control_.programActive())
+        return refusal("ALARM_SPINDLE_PROGRAM_ACTIVE",
+                       "The spindle keys are refused while a program is active");
+    if (spindle < 1 || spindle > 3 || !machine_.hasSpindle(spindle))
+        return refusal("ALARM_SPINDLE_NONE", "No such spindle");
+    told_[static_cast<std::size_t>(spindle)] = {rotation,
+                                                rpm >= 0.0 ? rpm : commandOf(spindle).rpm};
     const SourceLocation manual;  // no block: the operator's keys
     if (rpm >= 0.0) machine_.auxiliary({manual, 'S', spindle, rpm});
     const int function = rotation > 0 ? 3 : rotation < 0 ? 4 : 5;
-    machine_.auxiliary({manual, 'M', spindle, spindle == 1 ? function : spindle * 100.0 + function});
+    machine_.auxiliary(
+        {manual, 'M', spindle, spindle == 1 ? function : spindle * 100.0 + function});
     return {};
 }
 
@@ -100,12 +118,14 @@ ManualJog::SpindleCommand ManualJog::commandOf(int spindle) const {
     using Rotation = motion::SpindleSet::Rotation;
     const motion::SpindleSet& spindles = machine_.spindles();
     const Rotation rotation = spindles.rotation(spindle);
-    return {rotation == Rotation::Clockwise ? 1 : rotation == Rotation::CounterClockwise ? -1 : 0,
+    return {rotation == Rotation::Clockwise          ? 1
+            : rotation == Rotation::CounterClockwise ? -1
+                                                     : 0,
             spindles.commandedSpeed(spindle)};
 }
 
 std::string ManualJog::spindleKey(int spindle, SpindleKey key) {
-    if (spindle < 1 || spindle > 3) return "No such spindle";
+    if (spindle < 1 || spindle > 3) return refusal("ALARM_SPINDLE_NONE", "No such spindle");
     SpindleCommand next = commandOf(spindle);
     switch (key) {
         case SpindleKey::Clockwise:

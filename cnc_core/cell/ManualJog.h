@@ -2,6 +2,7 @@
 
 #include <array>
 #include <string>
+#include <vector>
 
 namespace mtc::core {
 
@@ -27,7 +28,8 @@ inline constexpr double kManualSpindleStep = 100.0;
 /// runs to the limit at most and stops there. When the axes are at rest the
 /// interpreter takes their positions (the next program or MDI block starts
 /// there) and Bxx.036 = Yes cancels the program's state as the seed says
-/// (seed 000, 2.9). Every refusal is a sentence for the alarm line.
+/// (seed 000, 2.9). Every refusal is a sentence for the alarm line, in the
+/// station's language (ProcessControl::language()).
 class ManualJog {
   public:
     ManualJog(ProcessControl& control, Interpreter& interpreter, SimulatedMachine& machine);
@@ -57,6 +59,10 @@ class ManualJog {
   private:
     std::string check(int axis) const;
     std::string queue(int axis, double target, bool rapid);
+    /// A refusal with the stable code `code` in the station's language
+    /// (alarmText(), docs/DECISIONS.md D-026).
+    std::string refusal(const char* code, const char* english,
+                        const std::vector<std::string>& values = {}) const;
 
     ProcessControl& control_;
     Interpreter& interpreter_;

@@ -3,6 +3,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "cnc_core/machine/SignalTable.h"
 #include "cnc_core/text/Messages.h"
@@ -101,12 +102,16 @@ class ProcessControl {
     /// Raises an alarm (empty text clears it).
     void setAlarm(std::string text) { alarm_ = std::move(text); }
     /// Raises the alarm `code` (ALARM_...): `english`, or its German text
-    /// when the language is German (alarmText(), D-025).
-    void raiseAlarm(const char* code, const char* english) {
-        alarm_ = alarmText(code, english, language_);
+    /// when the language is German, with `values` for "%1"… (alarmText(),
+    /// D-025, D-026).
+    void raiseAlarm(const char* code, const char* english,
+                    const std::vector<std::string>& values = {}) {
+        alarm_ = alarmText(code, english, language_, values);
     }
-    /// The language of raiseAlarm() (the panel's; English by default).
+    /// The language of raiseAlarm() and of the core's refusals and prompts
+    /// for this station (the panel's; English by default).
     void setLanguage(Language language) { language_ = language; }
+    Language language() const { return language_; }
     /// Marks the program as running / finished (sets PxxSACTIV).
     void setProgramActive(bool active);
     /// The runner Start/Stop/Reset act on (not owned; nullptr = none, then
@@ -118,6 +123,10 @@ class ProcessControl {
     /// hold: the program stays active and held until Start; `message`
     /// becomes the prompt (Start, Control reset and the program end clear it).
     void programStopped(std::string message);
+    /// programStopped() with the prompt `code` (PROMPT_...) in the language.
+    void programStopped(const char* code, const char* english) {
+        programStopped(alarmText(code, english, language_));
+    }
 
     /// Installs (or with nullptr removes) the handler that sees every key
     /// first. Not owned; it must remove itself before it is destroyed.

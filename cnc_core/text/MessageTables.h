@@ -22,6 +22,9 @@ struct MessageTable {
 MessageTable programMessages();
 /// The NC compiler, look-ahead, radius compensation, GNE, user compilers.
 MessageTable compilerMessages();
+/// Alarms, prompts and messages without a diagnostic: the machine control
+/// keys, jogging, Start, GAX, a held program, MDI (D-025, D-026).
+MessageTable alarmMessages();
 /// Machine configuration, machine data, tool and offset files, adaptive feed
 /// control, NC program restart, material removal.
 MessageTable setupMessages();

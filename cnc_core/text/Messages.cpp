@@ -9,7 +9,8 @@ namespace {
 using messages::MessageTable;
 
 std::vector<MessageTable> allTables() {
-    return {messages::programMessages(), messages::compilerMessages(), messages::setupMessages()};
+    return {messages::programMessages(), messages::compilerMessages(), messages::setupMessages(),
+            messages::alarmMessages()};
 }
 
 }  // namespace
@@ -57,10 +58,27 @@ std::string messageLine(const Diagnostic& diagnostic, Language language) {
     return line;
 }
 
-std::string alarmText(std::string_view code, const std::string& english, Language language) {
+std::string alarmText(std::string_view code, const std::string& english, Language language,
+                      const std::vector<std::string>& values) {
     const std::string_view german =
         language == Language::German ? germanMessage(code) : std::string_view{};
-    return german.empty() ? english : std::string(german);
+    const std::string_view text = german.empty() ? std::string_view(english) : german;
+    return values.empty() ? std::string(text) : fillIn(text, values);
+}
+
+std::string fillIn(std::string_view text, const std::vector<std::string>& values) {
+    std::string filled;
+    for (std::size_t i = 0; i < text.size(); ++i) {
+        const std::size_t index =
+            i + 1 < text.size() ? static_cast<std::size_t>(text[i + 1] - '1') : values.size();
+        if (text[i] == '%' && index < values.size() && index < 9) {
+            filled += values[index];
+            ++i;
+        } else {
+            filled += text[i];
+        }
+    }
+    return filled;
 }
 
 std::string severityWord(const Diagnostic& diagnostic, Language language) {

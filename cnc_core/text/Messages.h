@@ -45,11 +45,18 @@ DiagnosticText diagnosticText(const Diagnostic& diagnostic, Language language);
 /// (its values); a code without a German row keeps the English message.
 std::string messageLine(const Diagnostic& diagnostic, Language language);
 
-/// An alarm the core raises without a diagnostic ("Start refused: no
-/// program selected") under a stable code (ALARM_...): German: the table's
-/// text for the code; English, or a code without a row: `english`
-/// (docs/DECISIONS.md D-025).
-std::string alarmText(std::string_view code, const std::string& english, Language language);
+/// An alarm, prompt or message the core raises without a diagnostic
+/// ("Start refused: no program selected") under a stable code (ALARM_...,
+/// PROMPT_..., MDI_...): German: the table's text for the code; English, or
+/// a code without a row: `english` (docs/DECISIONS.md D-025). "%1" … "%9"
+/// in the text chosen are replaced by `values` (D-026); a text without
+/// values is returned as it is.
+std::string alarmText(std::string_view code, const std::string& english, Language language,
+                      const std::vector<std::string>& values = {});
+
+/// `text` with "%1" … "%9" replaced by values[0] … values[8] in one pass (a
+/// value that contains "%2" stays as it is); a "%" with no such value stays.
+std::string fillIn(std::string_view text, const std::vector<std::string>& values);
 
 /// "error" / "warning", or "Fehler" / "Warnung".
 std::string severityWord(const Diagnostic& diagnostic, Language language);

@@ -7,23 +7,6 @@ namespace mtc::core::messages {
 
 namespace {
 constexpr MessageEntry kSetupMessages[] = {
-    // Alarms of the machine control keys without a diagnostic (D-025)
-    {"ALARM_MDI_RESTART_ACTIVE", "MDI abgelehnt: Satzvorlauf aktiv (erst Steuerung rücksetzen)"},
-    {"ALARM_MODE_PROGRAM_ACTIVE",
-     "Betriebsartwechsel abgelehnt: ein Programm ist aktiv (erst Stop drücken)"},
-    {"ALARM_MODE_RESTART_RUNNING",
-     "Betriebsartwechsel abgelehnt: der Satzvorlauf läuft (erst Stop)"},
-    {"ALARM_REPOS_NOT_YET",
-     "REPOS abgelehnt: Wiederanfahren noch nicht möglich (PxxSREPOS = 0, der Rechenlauf hat "
-     "den Zielsatz noch nicht erreicht)"},
-    {"ALARM_REPOS_NO_RESTART",
-     "REPOS abgelehnt: kein Wiederanfahren möglich (kein Satzvorlauf hat seinen Zielsatz "
-     "erreicht)"},
-    {"ALARM_SELECT_PROGRAM_ACTIVE", "Programmanwahl abgelehnt: ein Programm ist aktiv"},
-    {"ALARM_START_NOT_AUTOMATIC", "Start abgelehnt: zuerst Automatik anwählen"},
-    {"ALARM_START_NO_CORE", "Start abgelehnt: kein NC-Kern angeschlossen"},
-    {"ALARM_START_NO_PROGRAM", "Start abgelehnt: kein Programm angewählt"},
-    {"ALARM_START_NO_REPOS", "Start abgelehnt: Wiederanfahren (PxxCREPOS) nicht aktiv"},
     // Machine configuration file
     {"CFG_AXIS", "Achse doppelt definiert"},
     {"CFG_AXIS_COUNT", "Zu viele Achsen und Spindeln im Prozess"},

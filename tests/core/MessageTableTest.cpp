@@ -173,6 +173,18 @@ TEST(MessageTable, AlarmsOfTheControlKeys) {
     EXPECT_EQ(alarmText("ALARM_NOBODY_WROTE", english, Language::German), english);
 }
 
+// Alarms with values (D-026): both languages fill "%1"… from the same
+// values; a value is never filled again, a "%" without a value stays.
+TEST(MessageTable, AlarmsWithValues) {
+    const std::string english = "%1 is at its travel limit";
+    EXPECT_EQ(alarmText("ALARM_JOG_AT_LIMIT", english, Language::German, {"Z"}),
+              "Z steht an der Verfahrgrenze");
+    EXPECT_EQ(alarmText("ALARM_JOG_AT_LIMIT", english, Language::English, {"Z"}),
+              "Z is at its travel limit");
+    EXPECT_EQ(fillIn("%2 of %1, 100%", {"a%2", "b"}), "b of a%2, 100%");
+    EXPECT_EQ(fillIn("%3 %0 %", {"a"}), "%3 %0 %");
+}
+
 TEST(MessageTable, LanguageTags) {
     EXPECT_EQ(languageFromTag("de"), Language::German);
     EXPECT_EQ(languageFromTag("de_DE.UTF-8"), Language::German);

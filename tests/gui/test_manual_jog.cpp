@@ -1,7 +1,8 @@
 // Jogging on the base screen in manual mode (issue 17 §2), by the real
 // keys: ↑/↓ choose the axis, + / − jog it by the step F6 chooses, a held
 // key in continuous mode moves until it is released, the mouse wheel is
-// the handwheel, a jog beyond the travel limit is refused with an alarm.
+// the handwheel, a jog beyond the travel limit is refused with an alarm
+// (in the panel's language).
 // Time is stepped by the test through CellSession::advance.
 #include <QLabel>
 #include <QWheelEvent>
@@ -98,18 +99,39 @@ class ManualJogTest : public QObject {
         QCOMPARE(panel.session->station(0).machine().position(0), 0.003);
     }
 
+    // The refusal in the panel's language (docs/DECISIONS.md D-026): the
+    // core's text for the code ALARM_JOG_TRAVEL_LIMIT with its values.
+    void aJogBeyondTheTravelLimitIsRefusedWithAnAlarm_data() {
+        QTest::addColumn<QString>("language");
+        QTest::addColumn<QString>("rapid");
+        QTest::addColumn<QString>("alarm");
+        QTest::newRow("en") << "en"
+                            << "rapid"
+                            << "Travel limit: X may move from -400.000 to 400.000 (jog to 410.000 "
+                               "refused)";
+        QTest::newRow("de") << "de"
+                            << "Eilgang"
+                            << "Verfahrgrenze: X darf von -400.000 bis 400.000 fahren (Tippen nach "
+                               "410.000 abgelehnt)";
+    }
+
     void aJogBeyondTheTravelLimitIsRefusedWithAnAlarm() {
-        PanelFixture panel;
+        QFETCH(QString, language);
+        QFETCH(QString, rapid);
+        QFETCH(QString, alarm);
+        mtc::hmi::PanelOptions options;
+        options.language = language;
+        PanelFixture panel(options);
         manualBaseScreen(panel);
         panel.press(Qt::Key_F6);  // 10 mm steps
         panel.press(Qt::Key_F7);  // rapid
-        QVERIFY(label(panel, "jogLine").contains("rapid"));
+        QVERIFY(label(panel, "jogLine").contains(rapid));
         for (int i = 0; i < 40; ++i)
             panel.press(Qt::Key_Plus);
         settle(panel);
         QCOMPARE(panel.session->station(0).machine().position(0), 400.0);
         panel.press(Qt::Key_Plus);
-        QVERIFY2(label(panel, "headerAlarm").contains("Travel limit"),
+        QVERIFY2(label(panel, "headerAlarm").contains(alarm),
                  qPrintable(label(panel, "headerAlarm")));
         settle(panel);
         QCOMPARE(panel.session->station(0).machine().position(0), 400.0);
