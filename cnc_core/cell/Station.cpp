@@ -539,7 +539,8 @@ bool Station::waitForAxis() {
     // time does not grow), the other processes go on.
     if (axis != waitingAxis_) {
         waitingAxis_ = axis;
-        control_.setAlarm("Waiting for axis " + axis + " (GAX: another process holds it)");
+        control_.raiseAlarm("ALARM_WAIT_AXIS",
+                            "Waiting for axis %1 (GAX: another process holds it)", {axis});
         ++revision_;
     }
     return true;

@@ -40,6 +40,8 @@ constexpr MessageEntry kAlarmMessages[] = {
     {"ALARM_SPINDLE_NONE", "Keine solche Spindel"},
     {"ALARM_SPINDLE_NOT_MANUAL", "Spindeltasten nur im Handbetrieb (M-Taste Handbetrieb)"},
     {"ALARM_SPINDLE_PROGRAM_ACTIVE", "Spindeltasten abgelehnt: ein Programm ist aktiv"},
+    // The GAX wait for an axis another process holds (D-026)
+    {"ALARM_WAIT_AXIS", "Warten auf Achse %1 (GAX: ein anderer Prozess belegt sie)"},
 };
 }  // namespace
 

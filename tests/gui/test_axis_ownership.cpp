@@ -1,8 +1,8 @@
 // GAX / FAX between the two stations of the panel (docs/decisions/restart.md
 // the lathe's GAX waits while the mill holds the axis, its message
-// line says so, the mill keeps running; the mill's FAX lets the lathe go on;
-// Control reset withdraws a waiting GAX. Machine keys as the operator presses
-// them.
+// line says so (in the panel's language), the mill keeps running; the mill's
+// FAX lets the lathe go on; Control reset withdraws a waiting GAX. Machine
+// keys as the operator presses them.
 #include <QLabel>
 #include <QtTest>
 
@@ -37,8 +37,22 @@ class AxisOwnershipTest : public QObject {
   private slots:
     void initTestCase() { useTestSettings(); }
 
+    // The wait in the panel's language (docs/DECISIONS.md D-026).
+    void gaxWaitsUntilTheOtherStationFreesTheAxis_data() {
+        QTest::addColumn<QString>("language");
+        QTest::addColumn<QString>("alarm");
+        QTest::newRow("en") << "en"
+                            << "Waiting for axis X (GAX: another process holds it)";
+        QTest::newRow("de") << "de"
+                            << "Warten auf Achse X (GAX: ein anderer Prozess belegt sie)";
+    }
+
     void gaxWaitsUntilTheOtherStationFreesTheAxis() {
-        PanelFixture panel;
+        QFETCH(QString, language);
+        QFETCH(QString, alarm);
+        mtc::hmi::PanelOptions options;
+        options.language = language;
+        PanelFixture panel(options);
         startMillHoldingX(panel);
         startLatheWantingX(panel);
         auto& lathe = panel.session->control(1);
@@ -46,9 +60,9 @@ class AxisOwnershipTest : public QObject {
         QVERIFY(lathe.programActive());
         QVERIFY(!lathe.programHeld());
         QCOMPARE(lathe.signalTable().get("P01SHOLD"), 0);
-        QVERIFY2(QString::fromStdString(lathe.alarm()).contains("Waiting for axis X"),
-                 lathe.alarm().c_str());
-        QVERIFY(panel.window->findChild<QLabel*>("headerAlarm")->text().contains("Waiting"));
+        QCOMPARE(QString::fromStdString(lathe.alarm()), alarm);
+        const QString header = panel.window->findChild<QLabel*>("headerAlarm")->text();
+        QVERIFY2(header.endsWith(alarm), qPrintable(header));
         // The mill goes on meanwhile; the lathe's simulated time stands still.
         const double millBefore = panel.session->machine(0).seconds();
         const double latheBefore = panel.session->machine(1).seconds();
