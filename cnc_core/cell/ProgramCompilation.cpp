@@ -432,13 +432,16 @@ std::string ProgramCompilation::prepareOne(int number, DiagnosticList& diagnosti
     const auto result = current == CompileStatus::Compiled ? runtimeResult(number) : nullptr;
     if (!result && userCompilerBusy()) {
         runSource();
-        return "Start refused: program " + std::to_string(number) +
-               " is being compiled (user compiler) \u2014 Start again when done";
+        return alarmText("ALARM_START_USER_COMPILER_BUSY",
+                         "Start refused: program %1 is being compiled (user compiler) \u2014 "
+                         "Start again when done",
+                         cell_.language(), {std::to_string(number)});
     }
     if (!result) {
         runSource();
-        return "Start refused: program " + std::to_string(number) +
-               " has compiler errors \u2014 see error window";
+        return alarmText("ALARM_START_COMPILER_ERRORS",
+                         "Start refused: program %1 has compiler errors \u2014 see error window",
+                         cell_.language(), {std::to_string(number)});
     }
     if (running(number) == result && store.findRuntime(process(), number)) return {};
     const auto source = cell_.program(slot_, number);

@@ -42,6 +42,12 @@ constexpr MessageEntry kAlarmMessages[] = {
     {"ALARM_SPINDLE_PROGRAM_ACTIVE", "Spindeltasten abgelehnt: ein Programm ist aktiv"},
     // The GAX wait for an axis another process holds (D-026)
     {"ALARM_WAIT_AXIS", "Warten auf Achse %1 (GAX: ein anderer Prozess belegt sie)"},
+    // Start of a program the NC compiler has not made runnable (D-026)
+    {"ALARM_START_COMPILER_ERRORS",
+     "Start abgelehnt: Programm %1 hat Compilerfehler \u2014 siehe Fehlerfenster"},
+    {"ALARM_START_USER_COMPILER_BUSY",
+     "Start abgelehnt: Programm %1 wird compiliert (Anwender-Compiler) \u2014 danach erneut "
+     "Start"},
 };
 }  // namespace
 

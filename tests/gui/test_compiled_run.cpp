@@ -83,7 +83,7 @@ class CompiledRunTest : public QObject {
   private:
     QTemporaryDir dir_;
 
-    mtc::hmi::PanelOptions options() {
+    mtc::hmi::PanelOptions options(const QString& language = "en") {
         const QDir dir = emptiedDirectory(dir_.path());
         writeProgram(dir, 5, programHeader(5, "Rounded corner") + kRoundedCorner);
         writeProgram(dir, 6, programHeader(6, "Broken rounding") + kBrokenRounding);
@@ -95,6 +95,7 @@ class CompiledRunTest : public QObject {
                           "; NC options of the test cell\nDEFINE ROUND5 AS RD5\nDEFINE 9X AS X9\n");
         mtc::hmi::PanelOptions o;
         o.programsDir = dir_.path();
+        o.language = language;
         return o;
     }
 
@@ -170,8 +171,26 @@ class CompiledRunTest : public QObject {
         QVERIFY2(!text.contains("ROUND"), qPrintable(text));  // no macro left in the object
     }
 
+    // The refusal in the panel's language (docs/DECISIONS.md D-026).
+    void startIsRefusedWithCompilerErrors_data() {
+        QTest::addColumn<QString>("language");
+        QTest::addColumn<QString>("alarm");
+        QTest::addColumn<QString>("restart");
+        QTest::newRow("en")
+            << "en"
+            << "Start refused: program 6 has compiler errors \u2014 see error window"
+            << "compiler errors";
+        QTest::newRow("de") << "de"
+                            << "Start abgelehnt: Programm 6 hat Compilerfehler \u2014 siehe "
+                               "Fehlerfenster"
+                            << "Compilerfehler";
+    }
+
     void startIsRefusedWithCompilerErrors() {
-        PanelFixture panel(options());
+        QFETCH(QString, language);
+        QFETCH(QString, alarm);
+        QFETCH(QString, restart);
+        PanelFixture panel(options(language));
         selectCompiled(panel, 6);
         QVERIFY2(directoryRow(panel, 6).contains("[E]"), qPrintable(directoryRow(panel, 6)));
         panel.press(Qt::Key_F5, Qt::ShiftModifier);  // Start
@@ -179,16 +198,14 @@ class CompiledRunTest : public QObject {
         QVERIFY(!control.programActive());
         QCOMPARE(control.selectedProgram(), 6);
         QCOMPARE(panel.session->machine(0).position(0), 0.0);
-        auto* alarm = panel.window->findChild<QLabel*>("headerAlarm");
-        QTRY_VERIFY2(alarm->text().contains("program 6 has compiler errors") &&
-                         alarm->text().contains("see error window"),
-                     qPrintable(alarm->text()));
+        auto* header = panel.window->findChild<QLabel*>("headerAlarm");
+        QTRY_VERIFY2(header->text().endsWith(alarm), qPrintable(header->text()));
         // No runtime program: the restart refuses as well.
         QVERIFY(!panel.session->store().findRuntime(control.process(), 6));
         panel.press(Qt::Key_F1, Qt::ShiftModifier);  // M key NC program restart
         QCOMPARE(panel.window->currentScreenName(), QString("restart"));
         auto* message = child<QLabel>(panel, "restart", "restartMessage");
-        QTRY_VERIFY2(message->text().contains("compiler errors"), qPrintable(message->text()));
+        QTRY_VERIFY2(message->text().contains(restart), qPrintable(message->text()));
     }
 
     void warningsOnlyCompileStaysRunnableAfterRestart() {
