@@ -20,6 +20,8 @@ ProcessAxes axesOf(const ProcessConfig& config) {
     return ProcessAxes::build(config, ignored);
 }
 
+constexpr const char* kSingleBlockPrompt = "Single block: press Start for the next block";
+
 std::string firstProblem(const DiagnosticList& diagnostics, const char* fallback,
                          Language language) {
     for (const Diagnostic& d : diagnostics.items())
@@ -505,7 +507,7 @@ void Station::settle() {
         stoppedBy_ = Pending::SingleBlock;
         ++revision_;
         interpreter_.publishRotaryAxisModes();
-        control_.programStopped("Single block: press Start for the next block");
+        control_.programStopped("PROMPT_SINGLE_BLOCK", kSingleBlockPrompt);
         return;
     }
     if (pending_ == Pending::None || !machine_.idle()) return;
@@ -517,12 +519,13 @@ void Station::settle() {
             feeding_ = false;
             stoppedBy_ = pending;
             interpreter_.publishRotaryAxisModes();
-            control_.programStopped("Single block: press Start for the next block");
+            control_.programStopped("PROMPT_SINGLE_BLOCK", kSingleBlockPrompt);
             return;
         case Pending::ProgrammedStop:
             feeding_ = false;
             stoppedBy_ = pending;
-            control_.programStopped("Programmed stop: press Start to continue");
+            control_.programStopped("PROMPT_PROGRAMMED_STOP",
+                                    "Programmed stop: press Start to continue");
             return;
         case Pending::End:
             finish(ending_);

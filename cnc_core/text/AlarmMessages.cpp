@@ -40,14 +40,17 @@ constexpr MessageEntry kAlarmMessages[] = {
     {"ALARM_SPINDLE_NONE", "Keine solche Spindel"},
     {"ALARM_SPINDLE_NOT_MANUAL", "Spindeltasten nur im Handbetrieb (M-Taste Handbetrieb)"},
     {"ALARM_SPINDLE_PROGRAM_ACTIVE", "Spindeltasten abgelehnt: ein Programm ist aktiv"},
-    // The GAX wait for an axis another process holds (D-026)
-    {"ALARM_WAIT_AXIS", "Warten auf Achse %1 (GAX: ein anderer Prozess belegt sie)"},
     // Start of a program the NC compiler has not made runnable (D-026)
     {"ALARM_START_COMPILER_ERRORS",
      "Start abgelehnt: Programm %1 hat Compilerfehler \u2014 siehe Fehlerfenster"},
     {"ALARM_START_USER_COMPILER_BUSY",
      "Start abgelehnt: Programm %1 wird compiliert (Anwender-Compiler) \u2014 danach erneut "
      "Start"},
+    // The GAX wait for an axis another process holds (D-026)
+    {"ALARM_WAIT_AXIS", "Warten auf Achse %1 (GAX: ein anderer Prozess belegt sie)"},
+    // Prompts of a held program (D-026)
+    {"PROMPT_PROGRAMMED_STOP", "Programmierter Halt: Start drücken zum Fortsetzen"},
+    {"PROMPT_SINGLE_BLOCK", "Einzelsatz: Start drücken für den nächsten Satz"},
 };
 }  // namespace
 

@@ -102,25 +102,55 @@ class PositionScreenTest : public QObject {
         QVERIFY(text(panel, "programState").startsWith("Ready"));
     }
 
+    // The state on the base screen and the core's prompt in the header, in
+    // the panel's language (the prompts: docs/DECISIONS.md D-026).
+    void singleBlockAndTheProgrammedStopAreShown_data() {
+        QTest::addColumn<QString>("language");
+        QTest::addColumn<QStringList>("stop");    // state, prompt
+        QTest::addColumn<QStringList>("single");  // state, prompt
+        QTest::addColumn<QString>("ready");
+        QTest::newRow("en") << "en"
+                            << QStringList{"Programmed stop",
+                                           "Programmed stop: press Start to continue"}
+                            << QStringList{"Single block",
+                                           "Single block: press Start for the next block"}
+                            << "Ready";
+        QTest::newRow("de") << "de"
+                            << QStringList{"Programmierter Halt",
+                                           "Programmierter Halt: Start drücken zum Fortsetzen"}
+                            << QStringList{"Einzelsatz",
+                                           "Einzelsatz: Start drücken für den nächsten Satz"}
+                            << "Bereit";
+    }
+
     void singleBlockAndTheProgrammedStopAreShown() {
-        PanelFixture panel;
+        QFETCH(QString, language);
+        QFETCH(QStringList, stop);
+        QFETCH(QStringList, single);
+        QFETCH(QString, ready);
+        mtc::hmi::PanelOptions options;
+        options.language = language;
+        PanelFixture panel(options);
         panel.session->setTimerEnabled(false);
         panel.session->addProgram(0, 61, "stop.nc",
                                   "N0001 G90 G1 X10 F600\nN0002 M00\nN0003 X20\nN0004 M30\n");
         QVERIFY(panel.session->selectProgram(0, 61));
         panel.press(Qt::Key_F11);  // the base screen from anywhere
         QCOMPARE(panel.window->currentScreenName(), QString("position"));
+        auto* header = panel.window->findChild<QLabel*>("headerAlarm");
         panel.press(Qt::Key_F5, Qt::ShiftModifier);
         panel.session->advance(2.0);
-        QVERIFY2(text(panel, "programState").startsWith("Programmed stop"),
+        QVERIFY2(text(panel, "programState").startsWith(stop[0]),
                  qPrintable(text(panel, "programState")));
+        QCOMPARE(header->text(), stop[1]);
         panel.press(Qt::Key_F8, Qt::ShiftModifier);  // single block on
         panel.press(Qt::Key_F5, Qt::ShiftModifier);
         panel.session->advance(2.0);
-        QVERIFY2(text(panel, "programState").startsWith("Single block"),
+        QVERIFY2(text(panel, "programState").startsWith(single[0]),
                  qPrintable(text(panel, "programState")));
+        QCOMPARE(header->text(), single[1]);
         panel.press(Qt::Key_F7, Qt::ShiftModifier);  // Control reset
-        QVERIFY(text(panel, "programState").startsWith("Ready"));
+        QVERIFY(text(panel, "programState").startsWith(ready));
     }
 
     void softKeysLeadToTheProgramDirectoryAndBack() {
