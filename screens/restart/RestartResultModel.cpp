@@ -267,7 +267,9 @@ QVariant RestartResultModel::data(const QModelIndex& index, int role) const {
             return differs;
         case CollisionRole:
             return row.collision;
-        case Qt::ToolTipRole:  // a collision row's position may not fit its column
+        case SectionRole:
+            return row.section;
+        case Qt::ToolTipRole:  // the whole collision, where and what, on one line
             return row.collision ? row.item + " — " + row.restored : QVariant();
         case Qt::BackgroundRole:
             if (row.section) return QBrush(QColor(0xdf, 0xe6, 0xef));

@@ -21,6 +21,9 @@ class RestartResultModel : public QAbstractTableModel {
     static constexpr int DiffersRole = Qt::UserRole + 1;
     /// Role: true on a row that lists a collision of the way back (D-021).
     static constexpr int CollisionRole = Qt::UserRole + 2;
+    /// Role: true on a heading row ("G functions", "Page 60", ...), whose
+    /// title the review shows across every column.
+    static constexpr int SectionRole = Qt::UserRole + 3;
 
     /// Rows of `run`, the verification of its target and the check of its
     /// way back against the part (all must outlive the model); empty until

@@ -5,6 +5,7 @@
 #include <QTableView>
 #include <QVBoxLayout>
 
+#include "hmi/ColumnFit.h"
 #include "screens/restart/RestartController.h"
 #include "screens/restart/RestartResultModel.h"
 #include "screens/restart/RestartRun.h"
@@ -28,8 +29,12 @@ RestartResultScreen::RestartResultScreen(const mtc::hmi::ScreenContext& context,
     table_->setObjectName("resultTable");
     table_->setModel(model_);
     table_->verticalHeader()->hide();
-    table_->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
-    table_->horizontalHeader()->setSectionResizeMode(0, QHeaderView::ResizeToContents);
+    // Headings across the table (before the columns are fitted: they do
+    // not widen the item column), then columns as wide as their texts
+    // need, long texts wrapped at blanks: the collision's position was cut
+    // at 144 dpi (issue 19).
+    connect(model_, &QAbstractItemModel::modelReset, this, &RestartResultScreen::spanHeadings);
+    new mtc::hmi::ColumnFit(table_);
     table_->setSelectionBehavior(QAbstractItemView::SelectRows);
     table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
     hint_ = new QLabel(this);
@@ -45,6 +50,13 @@ RestartResultScreen::RestartResultScreen(const mtc::hmi::ScreenContext& context,
     connect(controller_->run(), &RestartRun::phaseChanged, this, [this] {
         if (isVisible()) activated();
     });
+}
+
+void RestartResultScreen::spanHeadings() {
+    table_->clearSpans();
+    for (int row = 0; row < model_->rowCount(); ++row)
+        if (model_->index(row, 0).data(RestartResultModel::SectionRole).toBool())
+            table_->setSpan(row, 0, 1, model_->columnCount());
 }
 
 void RestartResultScreen::activated() {

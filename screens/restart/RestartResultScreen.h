@@ -33,6 +33,8 @@ class RestartResultScreen : public mtc::hmi::Screen {
   private:
     void render();
     void renderCollisions();
+    /// Heading rows span the table (set again after every reload).
+    void spanHeadings();
 
     std::shared_ptr<RestartController> controller_;
     RestartResultModel* model_;

@@ -3,10 +3,14 @@
 // computing process reaches the target the review lists in red every ADJUST /
 // REPOS move that would cut the part (block, phase, position) before Start,
 // and says so when the way back is clear.
+#include <QHeaderView>
 #include <QLabel>
+#include <QStyle>
 #include <QTableView>
+#include <QTextLayout>
 
 #include "PanelFixture.h"
+#include "hmi/ColumnFit.h"
 #include "screens/restart/RestartController.h"
 #include "screens/restart/RestartResultModel.h"
 #include "screens/restart/RestartRun.h"
@@ -58,6 +62,69 @@ QList<QStringList> collisionRows(QAbstractItemModel* model) {
             rows << QStringList{model->index(row, 0).data().toString(),
                                 model->index(row, 1).data().toString()};
     return rows;
+}
+
+/// The size of `text` in `font` wrapped at `width` as the style paints a
+/// cell's text (QTextLayout, word wrap): the widest line, the lines' height.
+QSizeF wrapped(const QString& text, const QFont& font, int width) {
+    QTextLayout layout(text, font);
+    QTextOption option;
+    option.setWrapMode(QTextOption::WordWrap);
+    layout.setTextOption(option);
+    layout.beginLayout();
+    QSizeF size(0, 0);
+    for (QTextLine line = layout.createLine(); line.isValid(); line = layout.createLine()) {
+        line.setLineWidth(width);
+        size.setWidth(std::max(size.width(), line.naturalTextWidth()));
+        size.setHeight(size.height() + line.height());
+    }
+    layout.endLayout();
+    return size;
+}
+
+/// The first cell or title of `table` whose text is cut, described; "" when
+/// every text is shown whole: each cell's text, wrapped at blanks in its
+/// room (the width of its columns, a heading spans several, less the
+/// delegate's margins and the grid line), is no wider than that room and no
+/// higher than its row; each title fits its section on one line (the
+/// header's own size hint).
+QString firstCutText(const QTableView* table) {
+    const QAbstractItemModel* model = table->model();
+    const int margin =
+        2 * (table->style()->pixelMetric(QStyle::PM_FocusFrameHMargin, nullptr, table) + 1) + 1;
+    for (int column = 0; column < model->columnCount(); ++column) {
+        const int titleWidth = table->horizontalHeader()->sectionSizeHint(column);
+        if (titleWidth > table->columnWidth(column))
+            return QString("title '%1' needs %2 px, has %3")
+                .arg(model->headerData(column, Qt::Horizontal).toString())
+                .arg(titleWidth)
+                .arg(table->columnWidth(column));
+    }
+    for (int row = 0; row < model->rowCount(); ++row) {
+        int span = 1;
+        for (int column = 0; column < model->columnCount(); column += span) {
+            span = std::max(1, table->columnSpan(row, column));
+            int room = -margin;
+            for (int c = column; c < column + span; ++c)
+                room += table->columnWidth(c);
+            const QModelIndex index = model->index(row, column);
+            const QString text = index.data().toString();
+            const QVariant font = index.data(Qt::FontRole);
+            const QSizeF needed = wrapped(
+                text, font.isValid() ? font.value<QFont>().resolve(table->font()) : table->font(),
+                room);
+            if (needed.width() > room || needed.height() > table->rowHeight(row) - 1)
+                return QString("row %1 column %2 '%3' needs %4x%5 px, has %6x%7")
+                    .arg(row)
+                    .arg(column)
+                    .arg(text)
+                    .arg(needed.width())
+                    .arg(needed.height())
+                    .arg(room)
+                    .arg(table->rowHeight(row));
+        }
+    }
+    return {};
 }
 
 }  // namespace
@@ -120,6 +187,65 @@ class RestartCollisionsTest : public QObject {
         panel.press(Qt::Key_F4);
         QCOMPARE(collisionRows(table->model()).size(), 1);
         QVERIFY(banner->styleSheet().contains("#c00000"));
+    }
+
+    void columnsGetTheirLongestWordsThenTheShortestLinesWhole() {
+        using mtc::hmi::fitColumnWidths;
+        // {longest word, longest line}: a description, a short value, a long value.
+        const std::vector<mtc::hmi::ColumnNeed> needs = {{100, 300}, {50, 50}, {80, 200}};
+        // Room for every line: the rest to the last column.
+        QCOMPARE(fitColumnWidths(needs, 1000), (std::vector<int>{300, 50, 650}));
+        // 270 px beyond the words: the long value needs less than half of
+        // it and gets its line, the description the rest.
+        QCOMPARE(fitColumnWidths(needs, 500), (std::vector<int>{250, 50, 200}));
+        // 170 px: each of the two long columns lacks more than its half.
+        QCOMPARE(fitColumnWidths(needs, 400), (std::vector<int>{185, 50, 165}));
+        // Not even the words fit: the words (the table scrolls sideways).
+        QCOMPARE(fitColumnWidths(needs, 200), (std::vector<int>{100, 50, 80}));
+    }
+
+    void everyTextOfTheReviewIsShownWholeAtLargerFonts_data() {
+        QTest::addColumn<double>("scale");
+        // The application font at 96, 144 and 192 dpi without Qt's scaling
+        // (text 1.5 and 2 times as many pixels in a window of the same
+        // pixels): the case that cut the position column.
+        QTest::newRow("96 dpi") << 1.0;
+        QTest::newRow("144 dpi") << 1.5;
+        QTest::newRow("192 dpi") << 2.0;
+    }
+
+    void everyTextOfTheReviewIsShownWholeAtLargerFonts() {
+        QFETCH(double, scale);
+        const QFont original = QApplication::font();
+        QFont larger = original;
+        larger.setPointSizeF(original.pointSizeF() * scale);
+        QApplication::setFont(larger);
+        {
+            PanelFixture panel;
+            panel.session->addProgram(0, 99, "N1010099.DAT", kStraightBack);
+            panel.session->addProgram(0, 40, "slot.nc", kSlot);
+            restartAtTheTarget(panel);
+            QTRY_COMPARE(run(panel)->phase(), mtc::core::RestartPhase::TargetReached);
+            auto* table =
+                panel.window->screen(0, "restart-result")->findChild<QTableView*>("resultTable");
+            QCOMPARE(collisionRows(table->model()).size(), 1);
+            // The headings run across the table.
+            QCOMPARE(table->model()->index(0, 0).data().toString(),
+                     QString("Way back against the part (ADJUST / REPOS)"));
+            QCOMPARE(table->columnSpan(0, 0), 3);
+            // The window as it opens, then at its smallest.
+            for (const QSize size : {QSize(1024, 720), QSize(1, 1)}) {
+                panel.window->resize(size);
+                QTRY_COMPARE(panel.window->size(), size.expandedTo(panel.window->minimumSize()));
+                QApplication::processEvents();
+                const QString cut = firstCutText(table);
+                QVERIFY2(cut.isEmpty(), qPrintable(QString("%1x%2: %3")
+                                                       .arg(panel.window->width())
+                                                       .arg(panel.window->height())
+                                                       .arg(cut)));
+            }
+        }
+        QApplication::setFont(original);
     }
 };
 
