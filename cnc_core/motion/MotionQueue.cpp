@@ -23,7 +23,7 @@ QueueItem& MotionQueue::pushBack() {
 void MotionQueue::popFront() {
     if (size_ == 0) return;
     storage_[head_].course.reset();  // slots are reused: let the course go now
-    head_ = (head_ + 1) % storage_.size();
+    head_ = slot(1);
     --size_;
 }
 

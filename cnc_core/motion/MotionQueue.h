@@ -60,8 +60,8 @@ class MotionQueue {
     std::size_t size() const { return size_; }
     bool empty() const { return size_ == 0; }
     bool full() const { return size_ >= capacity_; }
-    QueueItem& at(std::size_t i) { return storage_[(head_ + i) % storage_.size()]; }
-    const QueueItem& at(std::size_t i) const { return storage_[(head_ + i) % storage_.size()]; }
+    QueueItem& at(std::size_t i) { return storage_[slot(i)]; }
+    const QueueItem& at(std::size_t i) const { return storage_[slot(i)]; }
     QueueItem& front() { return at(0); }
     const QueueItem& front() const { return at(0); }
     /// A new item at the end (grows the storage when it is full).
@@ -72,6 +72,14 @@ class MotionQueue {
     const QueueItem* moveBeforeEnd() const;
 
   private:
+    /// Storage index of item `i` < storage size: one wrap at most, so a
+    /// subtraction instead of a division (the planner walks the queue on
+    /// every move).
+    std::size_t slot(std::size_t i) const {
+        const std::size_t index = head_ + i;
+        return index < storage_.size() ? index : index - storage_.size();
+    }
+
     std::vector<QueueItem> storage_;
     std::size_t capacity_;
     std::size_t head_ = 0, size_ = 0;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 namespace mtc::core::motion {
 
@@ -265,7 +266,7 @@ double TrajectoryEngine::runTimed(QueueItem& timed, double room, bool& finished)
 
 void TrajectoryEngine::finishFront() {
     QueueItem& item = queue_.front();
-    lastWhere_ = item.where;
+    lastWhere_ = std::move(item.where);  // the slot is reused: its text may go
     lastBlock_ = item.blockIndex;
     if (item.kind == QueueItem::Kind::Action) reached_.push_back(item.action.tag);
     if (item.kind == QueueItem::Kind::Timed && item.fraction < 1.0)
