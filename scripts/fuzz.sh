@@ -3,6 +3,7 @@
 #   scripts/fuzz.sh [SECONDS] [TARGET...]
 #     SECONDS  per target (default 60); 0 = only replay seeds and regressions
 #     TARGET   parser compiler gne machine_config machine_data target_path mdi removal
+#              reentry
 #              (default: all, one after the other)
 #   MTC_FUZZ_RUNS=N  stop a target after N executions instead of SECONDS
 #   MTC_FUZZ_JOBS=N  build jobs (default 2)
@@ -26,7 +27,7 @@ set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 seconds="${1:-60}"
 shift || true
-all_targets=(parser compiler gne machine_config machine_data target_path mdi removal)
+all_targets=(parser compiler gne machine_config machine_data target_path mdi removal reentry)
 targets=("$@")
 [ ${#targets[@]} -gt 0 ] || targets=("${all_targets[@]}")
 build="$here/build/fuzz"
@@ -60,6 +61,7 @@ assemble_seeds() {
                   "$here"/tests/golden/restart/programs/*)
   case "$t" in
     parser|compiler|removal) add_seeds "$dest" "${programs[@]}" ;;
+    reentry) ;;  # hand-written seeds only: the stock and target lines come first
     gne) add_seeds "$dest" $(grep -l -E 'CONT|FORM_|CYCLE_' "${programs[@]}" /dev/null || true) ;;
     machine_config) add_seeds "$dest" "$here"/resources/machines/* ;;
     mdi)  # the first lines of the golden interpreter programs, as typed in MDI

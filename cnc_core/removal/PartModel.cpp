@@ -40,6 +40,17 @@ std::string tooManyCells(double cells, const RemovalSettings& settings, double a
            " mm or coarser)";
 }
 
+/// The stock's volume in mm^3 (0 without a stock): the most a program can
+/// remove. Infinite for a stock whose extents overflow it (1e308 mm).
+double stockVolume(const Stock& stock) {
+    if (stock.shape == Stock::Shape::Block)
+        return (stock.max[0] - stock.min[0]) * (stock.max[1] - stock.min[1]) *
+               (stock.max[2] - stock.min[2]);
+    if (stock.shape == Stock::Shape::Cylinder)
+        return curve::kPi * stock.radius * stock.radius * (stock.to - stock.from);
+    return 0.0;
+}
+
 }  // namespace
 
 std::string resolutionProblem(double resolution) {
@@ -64,6 +75,12 @@ std::optional<PartModel> PartModel::create(const Stock& stock, const RemovalSett
         error =
             "a cylinder stock on a milling process is not simulated: the height field needs "
             "a block (stock = block ...)";
+        return std::nullopt;
+    }
+    if (!std::isfinite(stockVolume(stock))) {
+        // The removed volume is the stock's less what is left: it would be
+        // inf - inf (fuzz finding reentry 5a25b86: a bar of radius 1.8e308).
+        error = "the stock is too large to simulate: its volume exceeds every number";
         return std::nullopt;
     }
     const double res = settings.resolution;

@@ -305,6 +305,15 @@ TEST(PartModel, ResolutionAndCellsAreBounded) {
     EXPECT_FALSE(PartModel::create(bar, fine, false, error));
     EXPECT_NE(error.find("milling process"), std::string::npos) << error;
     EXPECT_TRUE(PartModel::create(bar, fine, true, error)) << error;
+    // Few cells but a volume beyond every double: refused, the removed
+    // volume could not be a number (fuzz finding reentry 5a25b86).
+    bar.radius = std::numeric_limits<double>::max();
+    EXPECT_FALSE(PartModel::create(bar, fine, true, error));
+    EXPECT_NE(error.find("too large"), std::string::npos) << error;
+    block.max = {1, 1, std::numeric_limits<double>::max()};
+    block.min = {0, 0, -std::numeric_limits<double>::max()};
+    EXPECT_FALSE(PartModel::create(block, fine, false, error));
+    EXPECT_NE(error.find("too large"), std::string::npos) << error;
 }
 
 /// Every edge of a closed surface is used twice, once in each direction.

@@ -21,6 +21,9 @@ const std::vector<FuzzTarget>& fuzzTargets() {
          fuzzMdiEntry},
         {"removal", "material removal: a program cuts the mill's or the lathe's stock, STL",
          fuzzRemoval},
+        {"reentry",
+         "restart way back against the part: stock, program, ADJUST / REPOS, collision check",
+         fuzzReentry},
     };
     return targets;
 }

@@ -38,5 +38,6 @@ void fuzzMachineDataFile(std::string_view input);
 void fuzzTargetPath(std::string_view input);
 void fuzzMdiEntry(std::string_view input);
 void fuzzRemoval(std::string_view input);
+void fuzzReentry(std::string_view input);
 
 }  // namespace mtc::fuzz

@@ -55,10 +55,11 @@ TEST_P(FuzzReplay, RegressionInputsAndSeedsPass) {
 
 INSTANTIATE_TEST_SUITE_P(Targets, FuzzReplay,
                          ::testing::Values("parser", "compiler", "gne", "machine_config",
-                                           "machine_data", "target_path", "mdi", "removal"));
+                                           "machine_data", "target_path", "mdi", "removal",
+                                           "reentry"));
 
 TEST(FuzzReplayLayout, EveryTargetIsReplayedAndEveryFolderNamesATarget) {
-    EXPECT_EQ(fuzzTargets().size(), 8u);
+    EXPECT_EQ(fuzzTargets().size(), 9u);
     for (const char* kind : {"regressions", "seeds"}) {
         std::error_code error;
         for (fs::directory_iterator it(fs::path(MTC_FUZZ_DIR) / kind, error), end;
