@@ -9,16 +9,26 @@
 // part; BM_RemovalStl writes the roughed part's binary STL into memory;
 // BM_RemovalLathe10k turns 10,000 blocks of passes on the demo bar.
 // Counters: cells, removed mm^3.
+// The restart's way back against the part (D-021): BM_ReentryCheckMill10k*
+// time checkRestartReentry at 0.2 mm for a restart of the 10,000-block
+// roughing program at its block 9,000 (the part cut up to there, then the
+// ADJUST / REPOS moves swept through it): Clear goes over the top (no
+// collision), Through straight through the last layer (one collision,
+// located by bisection). Counters: blocks, moves, collisions, removed mm^3.
 #include <benchmark/benchmark.h>
 
 #include <cstdio>
+#include <optional>
 #include <string>
 
 #include "BenchPrograms.h"
+#include "cnc_core/cell/Cell.h"
 #include "cnc_core/language/Parser.h"
 #include "cnc_core/machine/MachineConfigReader.h"
 #include "cnc_core/removal/PartStl.h"
+#include "cnc_core/removal/ReentryCollisions.h"
 #include "cnc_core/removal/RemovalRun.h"
+#include "cnc_core/restart/RestartSequence.h"
 #include "resources/EmbeddedResources.h"
 
 namespace {
@@ -128,6 +138,71 @@ void BM_RemovalStl(benchmark::State& state) {
     state.counters["MB"] = static_cast<double>(bytes) / 1e6;
 }
 
+/// A restart of the 10,000-block roughing program at its block 9,000 on the
+/// demo mill's station, the computing process run to the target; program
+/// 99's ADJUST / REPOS take the tool from beside the part (work X50 Y70,
+/// `depth`) back to the re-entry point: over the top (`overTheTop`) or
+/// straight through what is left of the part.
+struct ReentryFixture {
+    ReentryFixture(bool overTheTop, double depth)
+        : restartCell(cell()), station(restartCell.station(restartCell.slotOfProcess(0))) {
+        restartCell.store().put(0, 1, storeWith(0, millProgram(10'000)).find(0, 1));
+        const std::string library = std::string("N0000 M30\nN0001 .ADJUST ") +
+                                    (overTheTop ? "G0 G54 Z20\n" : "@150=0\n") +
+                                    "N0002 .REPOS G77 X0 Y0 F2000\nN0003 G77 Z0 F500 RTS\n";
+        ParseOptions options;
+        options.programNumber = 99;
+        auto adjust = std::make_shared<Program>(parseProgram(library, options));
+        adjust->number = 99;
+        restartCell.store().put(0, 99, adjust);
+        // G54 of the demo mill: machine = work - (150, 80, 120).
+        station.interpreter().takeMachinePositions({50.0 - 150.0, 70.0 - 80.0, depth - 120.0});
+        RestartSelection selection;
+        selection.mainProgram = 1;
+        selection.target = {1, 9'000};
+        DiagnosticList refused;
+        ready = station.restartSequence().accept(selection, refused, 100'000'000);
+        while (ready && station.restartSequence().phase() != RestartPhase::TargetReached)
+            ready = station.restartSequence().advance(1'000'000) == RestartPhase::TargetReached ||
+                    station.restartSequence().active();
+    }
+    Cell restartCell;
+    Station& station;
+    bool ready = false;
+};
+
+/// checkRestartReentry at 0.2 mm once per iteration: the part cut up to
+/// the target, then every ADJUST / REPOS move swept through it.
+void checkEach(benchmark::State& state, bool overTheTop, double depth) {
+    ReentryFixture f(overTheTop, depth);
+    if (!f.ready) {
+        state.SkipWithError("the restart does not reach its target");
+        return;
+    }
+    RemovalSettings settings;
+    settings.resolution = 0.2;
+    std::optional<ReentryCheck> check;
+    for (auto _ : state)
+        check = checkRestartReentry(f.station.restart(), f.station.interpreter(),
+                                    f.restartCell.store(), settings);
+    if (!check || !check->checked) {
+        state.SkipWithError("the way back was not checked");
+        return;
+    }
+    state.counters["blocks"] = static_cast<double>(check->blocks);
+    state.counters["moves"] = static_cast<double>(check->moves);
+    state.counters["collisions"] = static_cast<double>(check->collisions.size());
+    state.counters["removed_mm3"] = check->removedVolume;
+}
+
+void BM_ReentryCheckMill10kClear(benchmark::State& state) {
+    checkEach(state, true, -2.0);
+}
+
+void BM_ReentryCheckMill10kThrough(benchmark::State& state) {
+    checkEach(state, false, -11.8);
+}
+
 void BM_RemovalLathe10k(benchmark::State& state) {
     const ProgramStore store = storeWith(1, latheProgram(10'000));
     simulateEach(state, store, 1);
@@ -139,3 +214,5 @@ BENCHMARK(BM_RemovalMill10k)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_RemovalMillArcs10k)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_RemovalStl)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_RemovalLathe10k)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_ReentryCheckMill10kClear)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_ReentryCheckMill10kThrough)->Unit(benchmark::kMillisecond);
