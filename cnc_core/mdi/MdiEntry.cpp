@@ -165,9 +165,13 @@ MdiEntry prepareMdiEntry(const std::string& input, const std::vector<MacroDefini
 
 std::string mdiRefusal(const ProcessControl& control) {
     if (control.mode() != OperatingMode::Mdi)
-        return "MDI refused: select MDI mode first (now " + std::string(modeName(control.mode())) +
-               " mode)";
-    if (control.programActive()) return "MDI refused: a program is active (Control reset first)";
+        return alarmText("ALARM_MDI_NOT_MDI_MODE",
+                         "MDI refused: select MDI mode first (now %1 mode)", control.language(),
+                         {modeName(control.mode())});
+    if (control.programActive())
+        return alarmText("ALARM_MDI_PROGRAM_ACTIVE",
+                         "MDI refused: a program is active (Control reset first)",
+                         control.language());
     return {};
 }
 

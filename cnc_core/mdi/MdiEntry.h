@@ -47,7 +47,7 @@ struct MdiEntry {
 MdiEntry prepareMdiEntry(const std::string& input, const std::vector<MacroDefinition>& globals);
 
 /// Why the station refuses to run an MDI entry now ("" = it may): not in MDI
-/// mode, or a program is active.
+/// mode, or a program is active; in the station's language (D-026).
 std::string mdiRefusal(const ProcessControl& control);
 
 /// "MDI input line 2: G1 X5": the additional text that names an input line.

@@ -30,7 +30,9 @@ const Diagnostic* firstError(const DiagnosticList& diagnostics) {
 bool MdiSession::recall(std::size_t row) {
     if (row >= history_.size()) return false;
     input_ = history_[row].text;
-    setMessage("Entry " + std::to_string(row + 1) + " recalled: Start runs it", false);
+    setMessage(
+        text("MDI_TEXT_RECALLED", "Entry %1 recalled: Start runs it", {std::to_string(row + 1)}),
+        false);
     return true;
 }
 
@@ -48,7 +50,7 @@ bool MdiSession::check(const std::vector<MacroDefinition>& globals, DiagnosticLi
         if (!expanded.empty()) expanded += " | ";
         if (first != std::string::npos) expanded += line.substr(first, last - first + 1);
     }
-    setMessage("Input correct: " + expanded, false);
+    setMessage(text("MDI_TEXT_INPUT_CORRECT", "Input correct: %1", {expanded}), false);
     return true;
 }
 
@@ -59,18 +61,19 @@ std::string MdiSession::take(const std::vector<MacroDefinition>& globals, Progra
         diagnostics.append(entry.diagnostics);
         reportRefusal(entry.diagnostics);
         const Diagnostic* error = firstError(entry.diagnostics);
-        return error ? formatMdiDiagnostic(*error, language_) : "MDI: the input cannot run";
+        return error ? formatMdiDiagnostic(*error, language_) : cannotRun();
     }
     program = entry.program;
     running_ = input_;
-    history_.push_back({input_, "running"});
+    history_.push_back({input_, runningOutcome()});
     if (history_.size() > kMaxHistory) history_.pop_front();
-    setMessage("Running the MDI entry", false);
+    setMessage(text("MDI_TEXT_RUNNING", "Running the MDI entry"), false);
     return {};
 }
 
 void MdiSession::ended(bool completed, DiagnosticList& diagnostics) {
-    std::string outcome = completed ? "done" : "reset";
+    std::string outcome =
+        completed ? text("MDI_TEXT_OUTCOME_DONE", "done") : text("MDI_TEXT_OUTCOME_RESET", "reset");
     DiagnosticList annotated;
     for (Diagnostic d : diagnostics.items()) {
         attachInputLine(d, running_);
@@ -79,14 +82,15 @@ void MdiSession::ended(bool completed, DiagnosticList& diagnostics) {
     diagnostics = std::move(annotated);
     if (const Diagnostic* error = firstError(diagnostics)) {
         reportRefusal(diagnostics);
-        outcome = "error line " + std::to_string(error->where.line) + ": " + error->message;
+        outcome = text("MDI_TEXT_OUTCOME_ERROR", "error line %1: %2",
+                       {std::to_string(error->where.line), messageLine(*error, language_)});
     } else if (completed) {
-        setMessage("MDI entry done", false);
+        setMessage(text("MDI_TEXT_DONE", "MDI entry done"), false);
         if (input_ == running_) input_.clear();  // MDI-004: ready for the next entry
     } else {
-        setMessage("MDI entry abandoned (Control reset)", true);
+        setMessage(text("MDI_TEXT_ABANDONED", "MDI entry abandoned (Control reset)"), true);
     }
-    if (!history_.empty() && history_.back().outcome == "running")
+    if (!history_.empty() && history_.back().outcome == runningOutcome())
         history_.back().outcome = outcome;
     running_.clear();
 }
@@ -101,6 +105,19 @@ void MdiSession::attachInputLine(Diagnostic& diagnostic, const std::string& inpu
     diagnostic.details.push_back(detail);
 }
 
+std::string MdiSession::text(const char* code, const char* english,
+                             const std::vector<std::string>& values) const {
+    return alarmText(code, english, language_, values);
+}
+
+std::string MdiSession::runningOutcome() const {
+    return text("MDI_TEXT_OUTCOME_RUNNING", "running");
+}
+
+std::string MdiSession::cannotRun() const {
+    return text("MDI_TEXT_CANNOT_RUN", "MDI: the input cannot run");
+}
+
 void MdiSession::setMessage(std::string text, bool error) {
     message_ = std::move(text);
     messageIsError_ = error;
@@ -108,7 +125,7 @@ void MdiSession::setMessage(std::string text, bool error) {
 
 void MdiSession::reportRefusal(const DiagnosticList& diagnostics) {
     const Diagnostic* error = firstError(diagnostics);
-    if (!error) return setMessage("MDI: the input cannot run", true);
+    if (!error) return setMessage(cannotRun(), true);
     const std::string text = formatMdiDiagnostic(*error, language_);
     setMessage(text.substr(0, text.find('\n')), true);
 }

@@ -14,8 +14,9 @@ namespace mtc::core {
 
 /// One MDI entry the station ran (or tried to run), newest last.
 struct MdiHistoryItem {
-    std::string text;     ///< the input as typed
-    std::string outcome;  ///< "running", "done", "error line 2: ...", "reset"
+    std::string text;  ///< the input as typed
+    /// "running", "done", "error line 2: ...", "reset" (German: D-026)
+    std::string outcome;
 };
 
 /// Manual data input of one station (docs/decisions/mdi.md): the input the
@@ -33,11 +34,13 @@ class MdiSession {
     /// Puts history item `row` back into the input (false: no such item).
     bool recall(std::size_t row);
     const std::deque<MdiHistoryItem>& history() const { return history_; }
-    /// The last message for the operator and whether it is an error.
+    /// The last message for the operator (in the language) and whether it
+    /// is an error.
     const std::string& message() const { return message_; }
     bool messageIsError() const { return messageIsError_; }
-    /// The language of the message and the alarm texts built from a
-    /// diagnostic (the panel's; English by default, docs/DECISIONS.md D-024).
+    /// The language of the messages, the history's outcomes and the alarm
+    /// texts built from a diagnostic (the panel's; English by default,
+    /// docs/DECISIONS.md D-024, D-026).
     void setLanguage(Language language) { language_ = language; }
 
     /// Checks the input (macros, keywords, syntax) without running it; the
@@ -57,6 +60,11 @@ class MdiSession {
 
   private:
     void setMessage(std::string text, bool error);
+    /// The text of `code` in the language, values filled in (alarmText()).
+    std::string text(const char* code, const char* english,
+                     const std::vector<std::string>& values = {}) const;
+    std::string runningOutcome() const;
+    std::string cannotRun() const;
     /// The first error's one-line text for the message line.
     void reportRefusal(const DiagnosticList& diagnostics);
 

@@ -51,6 +51,20 @@ constexpr MessageEntry kAlarmMessages[] = {
     // Prompts of a held program (D-026)
     {"PROMPT_PROGRAMMED_STOP", "Programmierter Halt: Start drücken zum Fortsetzen"},
     {"PROMPT_SINGLE_BLOCK", "Einzelsatz: Start drücken für den nächsten Satz"},
+    // MDI: refusals, the MDI screen's messages and the history's outcomes (D-026)
+    {"ALARM_MDI_NOT_MDI_MODE", "MDI abgelehnt: zuerst Betriebsart MDI anwählen"},
+    {"ALARM_MDI_PROGRAM_ACTIVE",
+     "MDI abgelehnt: ein Programm ist aktiv (erst Steuerung rücksetzen)"},
+    {"MDI_TEXT_ABANDONED", "MDI-Eingabe abgebrochen (Steuerung rücksetzen)"},
+    {"MDI_TEXT_CANNOT_RUN", "MDI: die Eingabe ist nicht ausführbar"},
+    {"MDI_TEXT_DONE", "MDI-Eingabe ausgeführt"},
+    {"MDI_TEXT_INPUT_CORRECT", "Eingabe korrekt: %1"},
+    {"MDI_TEXT_OUTCOME_DONE", "ausgeführt"},
+    {"MDI_TEXT_OUTCOME_ERROR", "Fehler Zeile %1: %2"},
+    {"MDI_TEXT_OUTCOME_RESET", "abgebrochen"},
+    {"MDI_TEXT_OUTCOME_RUNNING", "läuft"},
+    {"MDI_TEXT_RECALLED", "Eingabe %1 zurückgeholt: Start führt sie aus"},
+    {"MDI_TEXT_RUNNING", "MDI-Eingabe läuft"},
 };
 }  // namespace
 

@@ -232,6 +232,22 @@ TEST(MdiRefusalTest, OnlyInMdiModeAndWithoutAnActiveProgram) {
     EXPECT_FALSE(control.press(ControlKey::Automatic)) << "no mode change while the entry runs";
 }
 
+// The refusals in the station's language (docs/DECISIONS.md D-026): the
+// German text drops the English mode name (the panel translates modes).
+TEST(MdiRefusalTest, InTheStationsLanguage) {
+    ProcessControl control(0);
+    control.setLanguage(Language::German);
+    EXPECT_EQ(mdiRefusal(control), "MDI abgelehnt: zuerst Betriebsart MDI anwählen");
+    control.setLanguage(Language::English);
+    EXPECT_EQ(mdiRefusal(control), "MDI refused: select MDI mode first (now " +
+                                       std::string(modeName(control.mode())) + " mode)");
+    ASSERT_TRUE(control.press(ControlKey::Mdi));
+    control.setProgramActive(true);
+    control.setLanguage(Language::German);
+    EXPECT_EQ(mdiRefusal(control),
+              "MDI abgelehnt: ein Programm ist aktiv (erst Steuerung rücksetzen)");
+}
+
 TEST(MdiRefusalTest, TheMdiKeyIsRefusedDuringAnNcProgramRestart) {
     RestartStation mill(0);
     mill.addDemoPrograms();

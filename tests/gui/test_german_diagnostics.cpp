@@ -5,7 +5,7 @@
 // the values it names; in English the window shows the core's message.
 // The one-line places (D-024): the alarm line and the message lines of the
 // MDI, restart and tool screens show the German brief message, then the
-// core's English message.
+// core's English message; so does the MDI history's outcome (D-026).
 #include <QLabel>
 #include <QListWidget>
 #include <QPlainTextEdit>
@@ -119,6 +119,10 @@ class GermanDiagnosticsTest : public QObject {
         QVERIFY2(alarmLine(panel).contains("MDI Zeile 2: Fehler [AXIS_UNKNOWN]"),
                  qPrintable(alarmLine(panel)));
         QVERIFY2(!alarmLine(panel).contains("error ["), qPrintable(alarmLine(panel)));
+        // The entry's outcome in the history (D-026).
+        const QString entry = child<QListWidget>(panel, "mdi", "mdiHistory")->item(0)->text();
+        QVERIFY2(entry.endsWith(QString("[Fehler Zeile 2: %1]").arg(kAxisUnknownLine)),
+                 qPrintable(entry));
     }
 
     void refusalOfAMachineKeyInThePanelsLanguage_data() {

@@ -19,12 +19,13 @@ class MdiScreenTest : public QObject {
   private:
     QTemporaryDir dir_;
 
-    mtc::hmi::PanelOptions options() {
+    mtc::hmi::PanelOptions options(const QString& language = "en") {
         const QDir dir = emptiedDirectory(dir_.path());
         writeProgram(dir, 3, programHeader(3, "Move to X44") + "N0000 G0 G90 X44\nN0001 M30\n");
         writeGlobalMacros(dir, "DEFINE FAST AS G1 F3000\nDEFINE ROUND AS RD2\n");
         mtc::hmi::PanelOptions o;
         o.programsDir = dir_.path();
+        o.language = language;
         return o;
     }
 
@@ -66,13 +67,37 @@ class MdiScreenTest : public QObject {
   private slots:
     void initTestCase() { useTestSettings(); }
 
+    // The screen's texts in the panel's language; the message and the
+    // history's outcome come from the core (docs/DECISIONS.md D-026).
+    void typedBlocksMoveTheAxisAndTheStateContinues_data() {
+        QTest::addColumn<QString>("language");
+        QTest::addColumn<QString>("ready");
+        QTest::addColumn<QString>("done");      // message
+        QTest::addColumn<QString>("outcome");   // history
+        QTest::addColumn<QString>("recalled");  // message after F2
+        QTest::newRow("en") << "en"
+                            << "Start runs the input"
+                            << "MDI entry done"
+                            << "[done]"
+                            << "Entry 2 recalled: Start runs it";
+        QTest::newRow("de") << "de"
+                            << "Start führt die Eingabe aus"
+                            << "MDI-Eingabe ausgeführt"
+                            << "[ausgeführt]"
+                            << "Eingabe 2 zurückgeholt: Start führt sie aus";
+    }
+
     void typedBlocksMoveTheAxisAndTheStateContinues() {
-        PanelFixture panel(options());
+        QFETCH(QString, language);
+        QFETCH(QString, ready);
+        QFETCH(QString, done);
+        QFETCH(QString, outcome);
+        QFETCH(QString, recalled);
+        PanelFixture panel(options(language));
         panel.session->setSpeed(1000);
         QPlainTextEdit* input = openMdi(panel);
         mdiMode(panel);
-        QVERIFY2(label(panel, "mdiMode").contains("Start runs the input"),
-                 qPrintable(label(panel, "mdiMode")));
+        QVERIFY2(label(panel, "mdiMode").contains(ready), qPrintable(label(panel, "mdiMode")));
         type(panel, "G1 G91 X10 F1000\nY5");
         QCOMPARE(input->toPlainText(), QString("G1 G91 X10 F1000\nY5"));
         startAndWait(panel);
@@ -86,7 +111,8 @@ class MdiScreenTest : public QObject {
         QCOMPARE(input->toPlainText(), QString());  // done: ready for the next entry (MDI-004)
         auto* history = child<QListWidget>(panel, "mdi", "mdiHistory");
         QCOMPARE(history->count(), 1);
-        QVERIFY2(history->item(0)->text().contains("[done]"), qPrintable(history->item(0)->text()));
+        QVERIFY2(history->item(0)->text().endsWith(outcome), qPrintable(history->item(0)->text()));
+        QCOMPARE(label(panel, "mdiMessage"), done);
 
         // The next entry continues incrementally with the modal G1 and F.
         type(panel, "X-4");
@@ -97,6 +123,7 @@ class MdiScreenTest : public QObject {
 
         panel.press(Qt::Key_F2);  // Recall the selected (last) entry
         QCOMPARE(input->toPlainText(), QString("X-4"));
+        QCOMPARE(label(panel, "mdiMessage"), recalled);
         startAndWait(panel);
         QCOMPARE(machine.position(0), 2.0);
     }
