@@ -98,22 +98,19 @@ void SimulatedMachine::adaptiveMove(const Motion& m, double planned, double leng
 }
 
 void SimulatedMachine::observeMove(const Motion& m, double planned, double length) {
-    if (!recorder_) {
-        // Nobody keeps the trend (the CLI): the observed torque would only
-        // go into trend samples, so only the clock and the feed are kept,
-        // with the same arithmetic as simulateAfcMove's plain move.
-        const double seconds = planned / overrideShare(m);
-        const double startTime = std::max(afcClock_, this->seconds());
-        lastFeed_ = length / seconds * 60.0;
-        afcClock_ = startTime + seconds;
-        afc_->setClock(afcClock_);
-        return;
+    // A plain move takes its planned time at the override in force whether
+    // or not its torque is observed; only the trend recorder (none in the
+    // CLI, MOT-019) reads the observation.
+    const double moveSeconds = planned / overrideShare(m);
+    const double startTime = std::max(afcClock_, seconds());
+    if (recorder_) {
+        AfcMoveInput move = afcInput(m, planned, length);
+        move.startTime = startTime;
+        simulateAfcMove(*afc_, move, recorder_);
     }
-    AfcMoveInput move = afcInput(m, planned, length);
-    move.startTime = std::max(afcClock_, seconds());
-    const AfcMoveResult result = simulateAfcMove(*afc_, move, recorder_);
-    lastFeed_ = result.meanFeed;
-    afcClock_ = move.startTime + result.seconds;
+    lastFeed_ = length / moveSeconds * 60.0;
+    afcClock_ = startTime + moveSeconds;
+    afc_->setClock(afcClock_);
 }
 
 }  // namespace mtc::core
