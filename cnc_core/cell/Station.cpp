@@ -317,6 +317,9 @@ double Station::advance(double seconds, std::uint64_t maxBlocks) {
         if (left <= 0.0) break;
         const double used = machine_.advance(left);
         left -= used;
+        // Let go of the states of the blocks done meanwhile: a long call (the
+        // CLI's) would otherwise keep thousands and write each to a cold slot.
+        queued_.follow(machine_.currentLocation(), machine_.idle());
         if (used <= 0.0 && blocks == before) break;  // nothing can go on
     }
     jog_.settle();

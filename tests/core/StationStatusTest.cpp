@@ -90,6 +90,33 @@ TEST(StationStatus, ActualPositionsInWorkpieceAndMachineCoordinates) {
     EXPECT_GT(later.axes[0].work, status.axes[0].work);
 }
 
+// A loop queues the same lines once per pass. One long advance() (the
+// CLI's) must show the state of the pass the axes are in, not of the first
+// pass still waiting in the records: the station lets go of what the machine
+// has done while it advances, not only when the call returns.
+TEST(StationStatus, ALongAdvanceShowsThePassOfALoopTheAxesAreIn) {
+    StatusFixture f;
+    // Every pass moves X, then Y, one millimetre further (0.1 s each at F600).
+    core::Station& mill = f.select(1,
+                                   "N0001 G54 G90 G0 X0 Y0 @1=0\n"
+                                   "N0002 .PASS @1=@1+1\n"
+                                   "N0003 G1 X@1 F600\n"
+                                   "N0004 Y@1\n"
+                                   "N0005 BRA .PASS\n");
+    ASSERT_TRUE(mill.press(ControlKey::Start));
+    for (int tick = 0; tick < 100'000 && mill.control().currentBlock() != "N0003"; ++tick)
+        mill.advance(0.01);  // the rapid move to the start
+    mill.advance(3.05);  // some fifteen passes in one call
+    const core::QueuedBlockState* executing = mill.executingBlockState();
+    ASSERT_NE(executing, nullptr);
+    const double workX = mill.machine().position(0) + 150.0;  // G54: X-150
+    ASSERT_GT(workX, 10.0);
+    EXPECT_EQ("N000" + std::to_string(executing->line), mill.control().currentBlock());
+    // The running pass's @1 is where X is going or stands, within one millimetre.
+    EXPECT_GE(executing->modal.work[0], workX - 1e-9);
+    EXPECT_LT(executing->modal.work[0], workX + 1.0);
+}
+
 TEST(StationStatus, ASubroutineOfProgram99IsShownAsSuch) {
     StatusFixture f;
     f.cell.addProgram(0, 99, "library.nc",
