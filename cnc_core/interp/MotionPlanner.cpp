@@ -277,11 +277,17 @@ bool MotionPlanner::arc(const BlockContext& context, const BlockInput& input,
     // along them (motion::arcTangentExtreme).
     const double signedSweep = plan.motionType == MotionType::ArcCW ? -angle : angle;
     const double a0 = std::atan2(s2 - centre[1], s1 - centre[0]);
-    axisSeconds = std::max({helixSeconds,
-                            r1 * angle * motion::arcTangentExtreme(a0, signedSweep, false) *
-                                secondsPerPlaneUnit(next, p1),
-                            r1 * angle * motion::arcTangentExtreme(a0, signedSweep, true) *
-                                secondsPerPlaneUnit(next, p2)});
+    // |sin| and |cos| at the ends from the radius vectors (no trigonometry).
+    const double endSin = r2 > 0.0 ? (e2 - centre[1]) / r2 : std::sin(a0 + signedSweep);
+    const double endCos = r2 > 0.0 ? (e1 - centre[0]) / r2 : std::cos(a0 + signedSweep);
+    axisSeconds = std::max(
+        {helixSeconds,
+         r1 * angle *
+             motion::arcTangentExtreme(a0, signedSweep, false, (s2 - centre[1]) / r1, endSin) *
+             secondsPerPlaneUnit(next, p1),
+         r1 * angle *
+             motion::arcTangentExtreme(a0, signedSweep, true, (s1 - centre[0]) / r1, endCos) *
+             secondsPerPlaneUnit(next, p2)});
     plan.planeAxis1 = p1;
     plan.planeAxis2 = p2;
     const Transformation& t = next.transformation;

@@ -24,17 +24,20 @@ void normalise(Position& v, int count) {
 
 }  // namespace
 
-double arcTangentExtreme(double angle0, double sweep, bool secondAxis) {
+double arcTangentExtreme(double angle0, double sweep, bool secondAxis, double startShare,
+                         double endShare) {
     // The tangent of a circle at polar angle a is (-sin a, cos a): the first
     // plane axis's share is |sin|, the second's |cos|. Extremes of |cos| lie
     // at k*pi, of |sin| at pi/2 + k*pi.
     const double lo = std::min(angle0, angle0 + sweep), hi = std::max(angle0, angle0 + sweep);
     const double phase = secondAxis ? 0.0 : kPi / 2.0;
     if (std::ceil((lo - phase) / kPi) * kPi + phase <= hi) return 1.0;
-    auto share = [secondAxis](double a) {
-        return std::fabs(secondAxis ? std::cos(a) : std::sin(a));
-    };
-    return std::max(share(lo), share(hi));
+    return std::max(std::fabs(startShare), std::fabs(endShare));
+}
+
+double arcTangentExtreme(double angle0, double sweep, bool secondAxis) {
+    auto share = [secondAxis](double a) { return secondAxis ? std::cos(a) : std::sin(a); };
+    return arcTangentExtreme(angle0, sweep, secondAxis, share(angle0), share(angle0 + sweep));
 }
 
 SegmentGeometry SegmentGeometry::of(const Motion& m, const MotionLimits& limits) {
@@ -99,20 +102,29 @@ void SegmentGeometry::describeArc(double c1, double c2, bool clockwise, bool ful
     }
     const double arcLength = 0.5 * (radius0_ + radius1_) * sweep;
     length_ = std::sqrt(arcLength * arcLength + helix);
-    arcTangent(0.0, startTangent_);
-    arcTangent(1.0, endTangent_);
+    planeShare_ = length_ > 0.0 ? std::sqrt(std::max(0.0, 1.0 - helix / (length_ * length_))) : 0.0;
+    // cos and sin of the polar angle at both ends from the radius vectors:
+    // the same values as from angle0_ and angle0_ + sweep_ (to rounding)
+    // without four trigonometric calls per arc.
+    startPolar_ = polar(start_[k1] - c1, start_[k2] - c2, radius0_, angle0_);
+    endPolar_ = polar(end_[k1] - c1, end_[k2] - c2, radius1_, angle0_ + sweep_);
+    arcTangent(startPolar_, radius0_, startTangent_);
+    arcTangent(endPolar_, radius1_, endTangent_);
 }
 
-void SegmentGeometry::arcTangent(double u, Position& tangent) const {
-    const double angle = angle0_ + sweep_ * u;
-    const double r = radius0_ + (radius1_ - radius0_) * u;
+SegmentGeometry::Polar SegmentGeometry::polar(double d1, double d2, double radius, double angle) {
+    if (radius > 0.0) return {d1 / radius, d2 / radius};
+    return {std::cos(angle), std::sin(angle)};  // a point on the centre: the angle decides
+}
+
+void SegmentGeometry::arcTangent(Polar at, double radius, Position& tangent) const {
     const double dr = radius1_ - radius0_;
     for (int i = 0; i < axisCount_; ++i) {
         const auto k = static_cast<std::size_t>(i);
         tangent[k] = end_[k] - start_[k];
     }
-    tangent[static_cast<std::size_t>(p1_)] = dr * std::cos(angle) - r * sweep_ * std::sin(angle);
-    tangent[static_cast<std::size_t>(p2_)] = dr * std::sin(angle) + r * sweep_ * std::cos(angle);
+    tangent[static_cast<std::size_t>(p1_)] = dr * at.cos - radius * sweep_ * at.sin;
+    tangent[static_cast<std::size_t>(p2_)] = dr * at.sin + radius * sweep_ * at.cos;
     normalise(tangent, axisCount_);
 }
 
@@ -151,15 +163,10 @@ double SegmentGeometry::maxTangentComponent(int axis) const {
     if (!arc_ || (axis != p1_ && axis != p2_))
         return std::max(std::fabs(startTangent_[k]), std::fabs(endTangent_[k]));
     // In-plane share of the tangent times the largest |sin| (axis 1) or |cos| (axis 2).
-    double helix = 0.0;
-    for (int i = 0; i < axisCount_; ++i) {
-        if (i == p1_ || i == p2_) continue;
-        const double d = end_[static_cast<std::size_t>(i)] - start_[static_cast<std::size_t>(i)];
-        helix += d * d;
-    }
-    const double planeShare =
-        length_ > 0.0 ? std::sqrt(std::max(0.0, 1.0 - helix / (length_ * length_))) : 0.0;
-    return planeShare * arcTangentExtreme(angle0_, sweep_, axis == p2_);
+    const bool second = axis == p2_;
+    return planeShare_ * arcTangentExtreme(angle0_, sweep_, second,
+                                           second ? startPolar_.cos : startPolar_.sin,
+                                           second ? endPolar_.cos : endPolar_.sin);
 }
 
 }  // namespace mtc::core::motion

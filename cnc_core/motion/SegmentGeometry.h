@@ -45,7 +45,12 @@ class SegmentGeometry {
   private:
     void describeLine();
     void describeArc(double c1, double c2, bool clockwise, bool fullCircle);
-    void arcTangent(double u, Position& tangent) const;
+    /// cos and sin of a polar angle around the arc's centre.
+    struct Polar {
+        double cos = 1.0, sin = 0.0;
+    };
+    static Polar polar(double d1, double d2, double radius, double angle);
+    void arcTangent(Polar at, double radius, Position& tangent) const;
 
     PlaneMapping mapping_;
     int axisCount_ = 0;
@@ -57,11 +62,18 @@ class SegmentGeometry {
     double center1_ = 0.0, center2_ = 0.0;
     double radius0_ = 0.0, radius1_ = 0.0;
     double angle0_ = 0.0, sweep_ = 0.0;
+    Polar startPolar_, endPolar_;
+    double planeShare_ = 0.0;  ///< the plane's share of the unit tangent (< 1 on a helix)
 };
 
 /// Largest share of the first (`secondAxis` false) or second plane axis in
 /// the unit tangent of a circle swept from polar angle `angle0` by `sweep`
 /// radians (signed): max |sin| or max |cos| over the swept angles.
 double arcTangentExtreme(double angle0, double sweep, bool secondAxis);
+/// The same with the axis's share at the start and the end of the sweep
+/// given (|sin| or |cos| of angle0 and angle0 + sweep, e.g. from the radius
+/// vectors): no trigonometry.
+double arcTangentExtreme(double angle0, double sweep, bool secondAxis, double startShare,
+                         double endShare);
 
 }  // namespace mtc::core::motion
