@@ -10,20 +10,21 @@ QueuedBlockState& QueuedBlockStates::record() {
     return states_.emplace_back();
 }
 
-void QueuedBlockStates::follow(const SourceLocation& at, bool idle) {
+void QueuedBlockStates::follow(std::uint64_t itemsDone, bool atBlockStop, bool idle) {
     matched_ = false;
     if (idle) {
         states_.clear();
         return;
     }
-    for (std::size_t i = 0; i < states_.size(); ++i) {
-        if (states_[i].program != at.program || states_[i].line != at.line) continue;
-        // A loop queues the same line more than once: the oldest entry is
-        // the one executed, the machine works the queue in order.
-        states_.dropFront(i);
-        matched_ = true;
-        return;
-    }
+    // The item the axes work on; at a single-block stop the one they finished.
+    const std::uint64_t current = atBlockStop && itemsDone > 0 ? itemsDone - 1 : itemsDone;
+    std::size_t done = 0;
+    while (done < states_.size() && states_[done].endItem <= current)
+        ++done;
+    states_.dropFront(done);
+    // Not one of the recorded blocks when the item lies before the front
+    // entry's (a restart's move, a jog).
+    matched_ = !states_.empty() && states_.front().firstItem <= current;
 }
 
 const QueuedBlockState* QueuedBlockStates::executing() const {

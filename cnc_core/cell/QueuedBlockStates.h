@@ -20,6 +20,10 @@ struct QueuedBlockState {
     ProgramPtr source;        ///< the program of the block
     std::uint32_t index = 0;  ///< its block index
     int callLevel = 0;        ///< 0 = main program
+    /// The machine's queue items of the block: firstItem <= n < endItem in
+    /// SimulatedMachine::itemsQueued() counting (none when equal). A loop
+    /// queues the same line again; the items tell its passes apart.
+    std::uint64_t firstItem = 0, endItem = 0;
     ModalState modal;
     std::array<int, 17> mGroups{};
 };
@@ -36,9 +40,10 @@ class QueuedBlockStates {
     /// Appends an entry for the next block with outputs and returns it to be
     /// filled (the oldest goes when the capacity is reached).
     QueuedBlockState& record();
-    /// The machine executes `at` (`idle`: nothing): drops what lies before
-    /// the first entry of that location, or everything when idle.
-    void follow(const SourceLocation& at, bool idle);
+    /// The machine has done `itemsDone` queue items (atBlockStop: it stands
+    /// at the end of the last of them, which is shown; idle: it has nothing
+    /// queued): drops the entries of blocks whose items are all done.
+    void follow(std::uint64_t itemsDone, bool atBlockStop, bool idle);
     /// The state of the block the machine executes; nullptr when it is not
     /// one of the recorded blocks (idle, jogging, a restart's move).
     const QueuedBlockState* executing() const;

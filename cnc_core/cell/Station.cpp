@@ -319,7 +319,7 @@ double Station::advance(double seconds, std::uint64_t maxBlocks) {
         left -= used;
         // Let go of the states of the blocks done meanwhile: a long call (the
         // CLI's) would otherwise keep thousands and write each to a cold slot.
-        queued_.follow(machine_.currentLocation(), machine_.idle());
+        queued_.follow(machine_.itemsDone(), machine_.atBlockStop(), machine_.idle());
         if (used <= 0.0 && blocks == before) break;  // nothing can go on
     }
     jog_.settle();
@@ -449,13 +449,14 @@ void Station::feed(std::uint64_t& blocks, std::uint64_t maxBlocks) {
         lastBlock_ = state.block;
         const int callLevel = static_cast<int>(state.callStack.size());
         const std::uint64_t outputsBefore = output_.outputs;
+        const std::uint64_t itemsBefore = machine_.itemsQueued();
         const RunResult result = budget_ > 0 && runBlocks_ >= budget_ ? budgetExceeded()
                                  : run_ == Run::Mdi                   ? mdi_.step()
                                                                       : interpreter_.step();
         blocks += result.blocksInterpreted;
         runBlocks_ += result.blocksInterpreted;
         if (output_.outputs != outputsBefore)
-            recordQueuedBlock(lastProgram_, lastBlock_, callLevel);
+            recordQueuedBlock(lastProgram_, lastBlock_, callLevel, itemsBefore);
         if (!result.diagnostics.empty()) {
             runDiagnostics_.append(result.diagnostics);
             logRunDiagnostics(result.diagnostics);
@@ -575,8 +576,11 @@ void Station::finish(const RunResult& result) {
     if (mdi) endMdi(alarm.empty());
 }
 
-void Station::recordQueuedBlock(const ProgramPtr& program, std::uint32_t index, int callLevel) {
+void Station::recordQueuedBlock(const ProgramPtr& program, std::uint32_t index, int callLevel,
+                                std::uint64_t firstItem) {
     QueuedBlockState& entry = queued_.record();
+    entry.firstItem = firstItem;
+    entry.endItem = machine_.itemsQueued();
     entry.program = output_.last.program;
     entry.line = output_.last.line;
     entry.source = program;
@@ -588,7 +592,7 @@ void Station::recordQueuedBlock(const ProgramPtr& program, std::uint32_t index, 
 }
 
 void Station::showCurrentBlock() {
-    queued_.follow(machine_.currentLocation(), machine_.idle());
+    queued_.follow(machine_.itemsDone(), machine_.atBlockStop(), machine_.idle());
     // The block the machine executes; while it stands, the one interpreted last.
     if (!machine_.idle() && !machine_.currentLocation().block.empty()) {
         if (control_.currentBlock() != machine_.currentLocation().block)

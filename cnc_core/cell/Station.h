@@ -276,7 +276,10 @@ class Station : private ProgramRunner {
     /// The MDI entry ended (`completed` false: error or reset).
     void endMdi(bool completed);
     /// Keeps the interpreter's state after a block that queued work.
-    void recordQueuedBlock(const ProgramPtr& program, std::uint32_t index, int callLevel);
+    /// Records the interpreter's state after a block whose machine items
+    /// begin at `firstItem` (QueuedBlockState).
+    void recordQueuedBlock(const ProgramPtr& program, std::uint32_t index, int callLevel,
+                           std::uint64_t firstItem);
     /// A run of program `number` starts (Start, a restart accepted): a new
     /// backplot.
     void beginTrace(int number);

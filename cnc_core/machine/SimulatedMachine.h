@@ -77,6 +77,8 @@ class SimulatedMachine : public MachineSink {
     /// Single block: rest at the end of each block, wait for Start there.
     void setStopAtBlockEnds(bool on) { engine_.setStopAtBlockEnds(on); }
     bool atBlockStop() const { return engine_.atBlockStop(); }
+    std::uint64_t itemsQueued() const { return engine_.itemsQueued(); }
+    std::uint64_t itemsDone() const { return engine_.itemsDone(); }
     void continueAfterBlockStop() { engine_.continueAfterBlockStop(); }
     /// Control reset: the axes stop at once, the queue is emptied (queued
     /// auxiliary functions never reach the SPS); positions stay.

@@ -17,6 +17,7 @@ QueueItem& MotionQueue::pushBack() {
         head_ = 0;
     }
     ++size_;
+    ++pushed_;
     return at(size_ - 1);
 }
 
@@ -25,6 +26,7 @@ void MotionQueue::popFront() {
     storage_[head_].course.reset();  // slots are reused: let the course go now
     head_ = slot(1);
     --size_;
+    ++popped_;
 }
 
 const QueueItem* MotionQueue::moveBeforeEnd() const {

@@ -67,7 +67,14 @@ class MotionQueue {
     /// A new item at the end (grows the storage when it is full).
     QueueItem& pushBack();
     void popFront();
-    void clear() { head_ = size_ = 0; }
+    void clear() {
+        head_ = size_ = 0;
+        popped_ = pushed_;
+    }
+    /// Items ever pushed / done (popped or cleared): item n (0-based, in
+    /// push order) is in the queue while popped() <= n < pushed().
+    std::uint64_t pushed() const { return pushed_; }
+    std::uint64_t popped() const { return popped_; }
     /// The last move in the queue with only transparent actions after it, or nullptr.
     const QueueItem* moveBeforeEnd() const;
 
@@ -83,6 +90,7 @@ class MotionQueue {
     std::vector<QueueItem> storage_;
     std::size_t capacity_;
     std::size_t head_ = 0, size_ = 0;
+    std::uint64_t pushed_ = 0, popped_ = 0;
 };
 
 }  // namespace mtc::core::motion

@@ -75,6 +75,10 @@ class TrajectoryEngine {
     bool stopsAtBlockEnds() const { return blockStops_; }
     /// The axes stand at the end of a block and the next one waits.
     bool atBlockStop() const { return atBlockStop_; }
+    /// Queue items ever queued / done: a caller that notes itemsQueued()
+    /// before and after queueing a block knows which items are the block's.
+    std::uint64_t itemsQueued() const { return queue_.pushed(); }
+    std::uint64_t itemsDone() const { return queue_.popped(); }
     void continueAfterBlockStop() { atBlockStop_ = false; }
     /// Control reset: the axes stop where they are at once, the queue is
     /// emptied, the spindles ramp down, a hold is cleared.

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <string>
+#include <utility>
 
 #include "InterpTestSupport.h"
 #include "cnc_core/cell/Cell.h"
@@ -90,31 +91,56 @@ TEST(StationStatus, ActualPositionsInWorkpieceAndMachineCoordinates) {
     EXPECT_GT(later.axes[0].work, status.axes[0].work);
 }
 
-// A loop queues the same lines once per pass. One long advance() (the
-// CLI's) must show the state of the pass the axes are in, not of the first
-// pass still waiting in the records: the station lets go of what the machine
-// has done while it advances, not only when the call returns.
-TEST(StationStatus, ALongAdvanceShowsThePassOfALoopTheAxesAreIn) {
+/// After the rapid move to the start, `ticks` calls of advance(`tick`):
+/// the state shown for the block the axes work on, and the work X.
+struct LoopView {
+    std::string executingBlock, currentBlock;
+    double shownX = 0.0, workX = 0.0;
+};
+
+LoopView runLoop(const std::string& source, int ticks, double tick) {
     StatusFixture f;
-    // Every pass moves X, then Y, one millimetre further (0.1 s each at F600).
-    core::Station& mill = f.select(1,
-                                   "N0001 G54 G90 G0 X0 Y0 @1=0\n"
-                                   "N0002 .PASS @1=@1+1\n"
-                                   "N0003 G1 X@1 F600\n"
-                                   "N0004 Y@1\n"
-                                   "N0005 BRA .PASS\n");
-    ASSERT_TRUE(mill.press(ControlKey::Start));
-    for (int tick = 0; tick < 100'000 && mill.control().currentBlock() != "N0003"; ++tick)
+    core::Station& mill = f.select(1, source);
+    EXPECT_TRUE(mill.press(ControlKey::Start));
+    for (int i = 0; i < 100'000 && mill.control().currentBlock() != "N0003"; ++i)
         mill.advance(0.01);  // the rapid move to the start
-    mill.advance(3.05);  // some fifteen passes in one call
-    const core::QueuedBlockState* executing = mill.executingBlockState();
-    ASSERT_NE(executing, nullptr);
-    const double workX = mill.machine().position(0) + 150.0;  // G54: X-150
-    ASSERT_GT(workX, 10.0);
-    EXPECT_EQ("N000" + std::to_string(executing->line), mill.control().currentBlock());
-    // The running pass's @1 is where X is going or stands, within one millimetre.
-    EXPECT_GE(executing->modal.work[0], workX - 1e-9);
-    EXPECT_LT(executing->modal.work[0], workX + 1.0);
+    for (int i = 0; i < ticks; ++i)
+        mill.advance(tick);
+    LoopView view;
+    view.currentBlock = mill.control().currentBlock();
+    view.workX = mill.machine().position(0) + 150.0;  // G54: X-150
+    if (const core::QueuedBlockState* executing = mill.executingBlockState()) {
+        view.executingBlock = "N000" + std::to_string(executing->line);
+        view.shownX = executing->modal.work[0];
+    }
+    return view;
+}
+
+// A loop queues the same lines once per pass. What is shown is the state of
+// the pass the axes are in, not of an earlier pass still in the records:
+// with the panel's ticks, and in one long advance() (the CLI's), also when
+// the loop moves on one line only (the line alone cannot tell the passes
+// apart; the machine's queue items do).
+TEST(StationStatus, TheStateShownIsThatOfThePassOfALoopTheAxesAreIn) {
+    // Every pass moves X (and Y) one millimetre further, 0.1 s each at F600.
+    const std::string twoLines =
+        "N0001 G54 G90 G0 X0 Y0 @1=0\nN0002 .PASS @1=@1+1\nN0003 G1 X@1 F600\n"
+        "N0004 Y@1\nN0005 BRA .PASS\n";
+    const std::string oneLine =
+        "N0001 G54 G90 G0 X0 Y0 @1=0\nN0002 .PASS @1=@1+1\nN0003 G1 X@1 F600\n"
+        "N0004 BRA .PASS\n";
+    for (const std::string& source : {twoLines, oneLine}) {
+        for (const auto& [ticks, tick] : {std::pair{1, 3.05}, std::pair{153, 0.02}}) {
+            const LoopView view = runLoop(source, ticks, tick);
+            SCOPED_TRACE((source == oneLine ? "one line, " : "two lines, ") +
+                         std::to_string(ticks) + " ticks");
+            ASSERT_GT(view.workX, 10.0);
+            EXPECT_EQ(view.executingBlock, view.currentBlock);
+            // The running pass's @1 is where X is going or stands.
+            EXPECT_GE(view.shownX, view.workX - 1e-9);
+            EXPECT_LT(view.shownX, view.workX + 1.0);
+        }
+    }
 }
 
 TEST(StationStatus, ASubroutineOfProgram99IsShownAsSuch) {
