@@ -70,22 +70,24 @@ void appendCentreWords(std::string& out, const CompilerPlane& plane, bool diamet
 
 /// True when `p` and `q` are written as the same point: a block between
 /// them would not move (an arc would even run as a full circle).
-bool samePoint(const ScannedBlock& s, const Point2& p, const Point2& q) {
+bool samePoint(const ScannedBlock& s, const CompilerPlane& plane, const Point2& p,
+               const Point2& q) {
     for (int k = 0; k < 2; ++k)
-        if (planeTicks(s.plane, s.diameter, p, k) != planeTicks(s.plane, s.diameter, q, k))
+        if (planeTicks(plane, s.diameter, p, k) != planeTicks(plane, s.diameter, q, k))
             return false;
     return true;
 }
 
 /// The words of the inserted block.
-std::string insertedText(const ScannedBlock& a, CornerKind kind, const CornerFit& fit) {
+std::string insertedText(const ScannedBlock& a, const CompilerPlane& plane, CornerKind kind,
+                         const CornerFit& fit) {
     std::string text;
     text.reserve(48);
     text = kind == CornerKind::Chamfer ? "G1 " : (fit.ccw ? "G3 " : "G2 ");
-    appendPlaneWords(text, a.plane, a.diameter, a.absolute, fit.pointA, fit.pointB);
+    appendPlaneWords(text, plane, a.diameter, a.absolute, fit.pointA, fit.pointB);
     if (kind == CornerKind::Rounding) {
         text += ' ';
-        appendCentreWords(text, a.plane, a.diameter, a.absolute, fit.pointA, fit.center);
+        appendCentreWords(text, plane, a.diameter, a.absolute, fit.pointA, fit.center);
     }
     return text;
 }
@@ -125,22 +127,23 @@ void editedText(const std::string& text, const ScannedBlock& s, const ScanResult
     remove.clear();
     insert.clear();
     out.clear();
+    const CompilerPlane& plane = scan.planeOf(s);
     const bool geometry = edit.consumed || edit.newEnd || (edit.newStart && !s.absolute);
     if (geometry) {
         for (std::uint32_t a = s.axes.begin; a < s.axes.end; ++a) {
             const ScannedWord& w = scan.axisWords[a];
-            if (w.name == s.plane.axis[0] || w.name == s.plane.axis[1])
+            if (sameAxisName(w.name, plane.axis[0]) || sameAxisName(w.name, plane.axis[1]))
                 remove.push_back({w.begin, w.end});
         }
         const Point2 start = edit.newStart.value_or(s.element.start);
         const Point2 end = edit.newEnd.value_or(s.element.end);
-        if (!edit.consumed) appendPlaneWords(insert, s.plane, s.diameter, s.absolute, start, end);
+        if (!edit.consumed) appendPlaneWords(insert, plane, s.diameter, s.absolute, start, end);
         if (s.element.arc && (edit.consumed || !s.absolute)) {
             for (std::uint32_t c = s.centres.begin; c < s.centres.end; ++c)
                 remove.push_back({scan.centreWords[c].begin, scan.centreWords[c].end});
             if (!edit.consumed) {
                 insert += ' ';
-                appendCentreWords(insert, s.plane, s.diameter, false, start, s.element.center);
+                appendCentreWords(insert, plane, s.diameter, false, start, s.element.center);
             }
         }
     }
@@ -225,8 +228,8 @@ bool CornerJob::reportMotion(std::size_t i, std::size_t m, const char* which) {
     if (s.outOfPlane)
         return fail(i, "COMPILER_CFRD_OUT_OF_PLANE", "CF/RD: motion outside the plane.",
                     {std::string("The ") + which + " motion block " + id +
-                     " moves an axis outside the active plane G" + std::to_string(s.plane.code) +
-                     "."}) &&
+                     " moves an axis outside the active plane G" +
+                     std::to_string(scan_.planeOf(s).code) + "."}) &&
                false;
     if (s.planeVariable)
         return fail(i, "COMPILER_CFRD_VARIABLE", "CF/RD: end point given by a variable.",
@@ -285,7 +288,8 @@ bool CornerJob::corner(std::size_t i) {
     const ScannedBlock& sa = scanned_[a];
     const ScannedBlock& sb = scanned_[b];
     CornerFit fit = fitCorner(c.kind, sa.element, minimum_[a], sb.element, c.size);
-    if (fit.applied > 0.0 && samePoint(sa, fit.pointA, fit.pointB)) {
+    const CompilerPlane& planeA = scan_.planeOf(sa);
+    if (fit.applied > 0.0 && samePoint(sa, planeA, fit.pointA, fit.pointB)) {
         // smaller than what is written (0.0001): the inserted block would not
         // move, an inserted arc would run as a full circle
         fit = CornerFit{};
@@ -307,13 +311,13 @@ bool CornerJob::corner(std::size_t i) {
     edits_[b].newStart = fit.pointB;
     // An element used up by its corners disappears: a block from a point to
     // itself would not move, and an arc would run as a full circle.
-    if (samePoint(sa, edits_[a].newStart.value_or(sa.element.start), fit.pointA))
+    if (samePoint(sa, planeA, edits_[a].newStart.value_or(sa.element.start), fit.pointA))
         edits_[a].consumed = true;
-    if (samePoint(sb, fit.pointB, sb.element.end)) edits_[b].consumed = true;
+    if (samePoint(sb, scan_.planeOf(sb), fit.pointB, sb.element.end)) edits_[b].consumed = true;
     minimum_[b] = sb.element.parameterOf(fit.pointB);
     const int insertedG = c.kind == CornerKind::Chamfer ? 1 : (fit.ccw ? 3 : 2);
     if (!sb.explicitMotionG && sb.motionG != insertedG) edits_[b].prependG = sb.motionG;
-    insertions_.push_back({i, insertedText(sa, c.kind, fit)});
+    insertions_.push_back({i, insertedText(sa, planeA, c.kind, fit)});
     return true;
 }
 

@@ -101,11 +101,12 @@ struct ScanState {
     bool absolute = true;
     bool diameter = false;
     CompilerPlane plane;
+    bool planeChanged = true;  ///< plane differs from the last entry of ScanResult::planes
     std::vector<AxisPosition> positions;
 
     AxisPosition& position(const std::string& name) {
         for (AxisPosition& p : positions)
-            if (p.name == name) return p;
+            if (sameAxisName(p.name, name)) return p;
         positions.push_back({name, 0.0, false});
         return positions.back();
     }
@@ -148,7 +149,10 @@ void readWords(const Program& program, const Block& block, std::size_t prefixSiz
                 }
                 if (g == 90 || g == 91) state.absolute = g == 90;
                 if (g == 15 || g == 16) state.diameter = g == 16;
-                if (g >= 17 && g <= 19) state.plane = standardPlane(g, options.process);
+                if (g >= 17 && g <= 19) {
+                    state.plane = standardPlane(g, options.process);
+                    state.planeChanged = true;
+                }
                 if (g == 20) g20 = true;
                 if (const char* why = g < 0 ? "a computed G function" : illegalG(g))
                     setIllegal(out, why, true, g);
@@ -199,6 +203,7 @@ void readWords(const Program& program, const Block& block, std::size_t prefixSiz
             state.plane.axis[1] = result.axisWords[out.axes.begin + 1].name;
             state.plane.centre[0] = 'I';
             state.plane.centre[1] = 'J';
+            state.planeChanged = true;
         }
         result.axisWords.resize(out.axes.begin);
         out.axes.end = out.axes.begin;
@@ -219,7 +224,9 @@ void buildMotion(ScanState& state, ScannedBlock& out, const ScanResult& result) 
     centre = start;
     for (std::uint32_t a = out.axes.begin; a < out.axes.end; ++a) {
         const ScannedWord& w = result.axisWords[a];
-        const int k = w.name == plane.axis[0] ? 0 : w.name == plane.axis[1] ? 1 : -1;
+        const int k = sameAxisName(w.name, plane.axis[0])   ? 0
+                      : sameAxisName(w.name, plane.axis[1]) ? 1
+                                                            : -1;
         if (k < 0) out.outOfPlane = true;
         if (k >= 0 && w.variable) out.planeVariable = true;
         const double v = w.value * axisScale(w.name, state.diameter);
@@ -292,7 +299,11 @@ ScanResult scanBlocks(const BlockSequence& blocks, const ParsedSequence& parsed,
         s.motionG = state.motionG;
         s.absolute = state.absolute;
         s.diameter = state.diameter;
-        s.plane = state.plane;
+        if (state.planeChanged) {  // blocks share their plane until it changes
+            result.planes.push_back(state.plane);
+            state.planeChanged = false;
+        }
+        s.plane = static_cast<std::uint32_t>(result.planes.size() - 1);
         s.motion = !s.axes.empty();
         if (s.motion) buildMotion(state, s, result);
     }

@@ -49,7 +49,7 @@ struct ScannedBlock {
     bool explicitMotionG = false;   ///< the block writes its G0..G3
     bool absolute = true;           ///< G90
     bool diameter = false;          ///< G16 (X values are diameters)
-    CompilerPlane plane;            ///< plane active for this block
+    std::uint32_t plane = 0;        ///< plane active for this block (ScanResult::planes)
     const char* illegal = nullptr;  ///< first function that forbids CF/RD across it
     bool illegalIsG = false;        ///< `illegal` is a G function (illegalG says which)
     int illegalG = -1;              ///< its number (-1: a computed G function)
@@ -69,12 +69,24 @@ struct ScannedBlock {
     std::size_t cornerBegin = 0, cornerEnd = 0;  ///< span of the CF/RD word
 };
 
-/// The scanned blocks (one per sequence block) and the pools of their words.
+/// The scanned blocks (one per sequence block), the pools of their words
+/// and the planes they use (a new entry only where a block changes the plane).
 struct ScanResult {
     std::vector<ScannedBlock> blocks;
     std::vector<ScannedWord> axisWords;
     std::vector<ScannedWord> centreWords;
+    std::vector<CompilerPlane> planes;
+
+    const CompilerPlane& planeOf(const ScannedBlock& block) const { return planes[block.plane]; }
 };
+
+/// `a == b` for the short axis names ("X", "Z2"), compared inline.
+inline bool sameAxisName(const std::string& a, const std::string& b) {
+    if (a.size() != b.size()) return false;
+    for (std::size_t i = 0; i < a.size(); ++i)
+        if (a[i] != b[i]) return false;
+    return true;
+}
 
 /// "a change of plane (G18)": the illegal function of `block` ("" = none).
 std::string describeIllegal(const ScannedBlock& block);

@@ -85,47 +85,100 @@ void appendCoordinate(std::string& out, double value) {
 
 long long coordinateTicks(double value) {
     if (!std::isfinite(value) || std::fabs(value) > 1e14) return 0;
-    return std::llround(value * 10000.0);
+    return roundHalfAway(value * 10000.0);
+}
+
+long long roundHalfAway(double value) {
+    // std::llround without the library call: the fraction is exact (|value|
+    // <= 1e18 < 2^63, and a double with a fraction is below 2^52)
+    const auto whole = static_cast<long long>(value);  // towards zero
+    const double fraction = value - static_cast<double>(whole);
+    if (fraction >= 0.5) return whole + 1;
+    if (fraction <= -0.5) return whole - 1;
+    return whole;
 }
 
 void appendTicks(std::string& out, long long scaled) {
-    // a count of zero has no sign, so "-0" cannot occur
-    if (scaled < 0) {
-        out += '-';
-        scaled = -scaled;
+    // written back to front into one buffer, appended at once
+    char buffer[32];
+    char* const end = buffer + sizeof buffer;
+    char* first = end;
+    const bool negative = scaled < 0;  // a count of zero has no sign: no "-0"
+    unsigned long long magnitude = negative ? 0ull - static_cast<unsigned long long>(scaled)
+                                            : static_cast<unsigned long long>(scaled);
+    int fraction = static_cast<int>(magnitude % 10000);
+    magnitude /= 10000;
+    if (fraction != 0) {
+        int length = 4;  // no trailing zeros
+        while (fraction % 10 == 0) {
+            fraction /= 10;
+            --length;
+        }
+        for (int k = 0; k < length; ++k, fraction /= 10)
+            *--first = static_cast<char>('0' + fraction % 10);
+        *--first = '.';
     }
-    char digits[24];
-    char* first = digits + sizeof digits;
-    long long whole = scaled / 10000;
     do {
-        *--first = static_cast<char>('0' + whole % 10);
-        whole /= 10;
-    } while (whole > 0);
-    out.append(first, static_cast<std::size_t>(digits + sizeof digits - first));
-    const int fraction = static_cast<int>(scaled % 10000);
-    if (fraction == 0) return;
-    char decimals[4] = {
-        static_cast<char>('0' + fraction / 1000), static_cast<char>('0' + fraction / 100 % 10),
-        static_cast<char>('0' + fraction / 10 % 10), static_cast<char>('0' + fraction % 10)};
-    int length = 4;
-    while (length > 0 && decimals[length - 1] == '0')
-        --length;
-    out += '.';
-    out.append(decimals, static_cast<std::size_t>(length));
+        *--first = static_cast<char>('0' + magnitude % 10);
+        magnitude /= 10;
+    } while (magnitude > 0);
+    if (negative) *--first = '-';
+    out.append(first, static_cast<std::size_t>(end - first));
+}
+
+namespace {
+
+char upperLetter(char c) {
+    return c >= 'a' && c <= 'z' ? static_cast<char>(c - 32) : c;
+}
+
+}  // namespace
+
+CaselessNeedles::CaselessNeedles(std::initializer_list<std::string_view> upperNeedles) {
+    for (std::string_view needle : upperNeedles) {
+        if (needle.empty() || needles_.size() == 32) continue;
+        const std::uint32_t bit = 1u << needles_.size();
+        needles_.emplace_back(needle);
+        const char first = needle.front();
+        startingHere_[static_cast<unsigned char>(first)] |= bit;
+        if (first >= 'A' && first <= 'Z')
+            startingHere_[static_cast<unsigned char>(first + 32)] |= bit;
+    }
+}
+
+bool CaselessNeedles::matchesAt(std::string_view text, std::size_t at,
+                                const std::string& needle) const {
+    if (needle.size() > text.size() - at) return false;
+    for (std::size_t k = 1; k < needle.size(); ++k)
+        if (upperLetter(text[at + k]) != needle[k]) return false;
+    return true;
+}
+
+std::size_t CaselessNeedles::nextStart(std::string_view text, std::size_t from) const {
+    const auto starts = [&](std::size_t i) {
+        return startingHere_[static_cast<unsigned char>(text[i])];
+    };
+    // four characters per step while none of them can start a needle
+    while (from + 4 <= text.size() &&
+           (starts(from) | starts(from + 1) | starts(from + 2) | starts(from + 3)) == 0)
+        from += 4;
+    while (from < text.size() && starts(from) == 0)
+        ++from;
+    return from;
+}
+
+bool CaselessNeedles::foundIn(std::string_view text) const {
+    for (std::size_t i = nextStart(text, 0); i < text.size(); i = nextStart(text, i + 1)) {
+        std::uint32_t candidates = startingHere_[static_cast<unsigned char>(text[i])];
+        for (std::size_t n = 0; candidates != 0; ++n, candidates >>= 1)
+            if ((candidates & 1u) && matchesAt(text, i, needles_[n])) return true;
+    }
+    return false;
 }
 
 bool containsAnyCaseless(std::string_view text,
                          std::initializer_list<std::string_view> upperNeedles) {
-    std::string upper;  // only built when the text has small letters
-    if (std::any_of(text.begin(), text.end(), [](char c) { return c >= 'a' && c <= 'z'; })) {
-        upper.assign(text);
-        for (char& c : upper)
-            if (c >= 'a' && c <= 'z') c = static_cast<char>(c - 32);
-        text = upper;
-    }
-    for (std::string_view needle : upperNeedles)
-        if (text.find(needle) != std::string_view::npos) return true;
-    return false;
+    return CaselessNeedles(upperNeedles).foundIn(text);
 }
 
 }  // namespace mtc::core

@@ -1,5 +1,7 @@
 #pragma once
 
+#include <array>
+#include <cstdint>
 #include <initializer_list>
 #include <string>
 #include <string_view>
@@ -45,13 +47,35 @@ void appendCoordinate(std::string& out, double value);
 /// `value` in whole steps of 0.0001 (the resolution written), rounded; 0
 /// for values that are not finite or beyond 1e14.
 long long coordinateTicks(double value);
+/// std::llround for finite values of magnitude at most 1e18 (halves away
+/// from zero), computed inline.
+long long roundHalfAway(double value);
 /// Appends a number of 0.0001 steps as formatCoordinate does. Incremental
 /// words written as differences of ticks add up exactly along a chain.
 void appendTicks(std::string& out, long long ticks);
 
-/// True when `text` contains one of `upperNeedles` (written in capitals),
-/// letters of `text` compared without case. A cheap pre-check of passes that
-/// act only on blocks naming one of their keywords.
+/// Keywords (written in capitals) looked for in block texts, letters of the
+/// text compared without case. A cheap pre-check of passes that act only on
+/// blocks naming one of their keywords: built once per pass, it reads each
+/// text once and compares a keyword only where a character can start one.
+class CaselessNeedles {
+  public:
+    /// At most 32 non-empty needles in capitals ('_' and digits as they are).
+    explicit CaselessNeedles(std::initializer_list<std::string_view> upperNeedles);
+    /// True when `text` contains one of the needles.
+    bool foundIn(std::string_view text) const;
+
+  private:
+    /// First position from `from` on where a needle may start (text.size(): none).
+    std::size_t nextStart(std::string_view text, std::size_t from) const;
+    bool matchesAt(std::string_view text, std::size_t at, const std::string& needle) const;
+
+    std::vector<std::string> needles_;
+    /// Bit n set: needle n starts with this character (either case).
+    std::array<std::uint32_t, 256> startingHere_{};
+};
+
+/// True when `text` contains one of `upperNeedles` (CaselessNeedles for one text).
 bool containsAnyCaseless(std::string_view text,
                          std::initializer_list<std::string_view> upperNeedles);
 

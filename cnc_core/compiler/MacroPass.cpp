@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "cnc_core/compiler/CompilerText.h"
@@ -118,38 +119,56 @@ std::string findMacroUse(std::string_view text, const MacroTable& table) {
     return found;
 }
 
-bool expandMacros(const std::string& text, const MacroTable& table, std::string& out) {
-    if (&out == &text) {  // written in place: expand into a copy first
-        std::string expanded;
-        if (!expandMacros(text, table, expanded)) return false;
-        out = std::move(expanded);
-        return true;
-    }
-    // a cheap filter before the hash lookup: first letters and lengths of the names
-    std::uint32_t firstLetters = 0;
-    std::size_t shortest = std::string::npos, longest = 0;
+MacroMatcher::MacroMatcher(const MacroTable& table) : table_(table) {
     for (const auto& entry : table) {
         const std::string& name = entry.first;
         if (name.empty() || !isLetter(name[0])) continue;  // can never match a visited name
-        firstLetters |= 1u << (name[0] - 'A');
-        shortest = std::min(shortest, name.size());
-        longest = std::max(longest, name.size());
+        firstLetters_ |= 1u << (name[0] - 'A');
+        shortest_ = std::min(shortest_, name.size());
+        longest_ = std::max(longest_, name.size());
+        entries_.emplace_back(name, &entry.second);
     }
-    if (firstLetters == 0) return false;
+    if (entries_.size() > kCompared) entries_.clear();  // the hash table is quicker then
+}
+
+const std::string* MacroMatcher::find(std::string_view name) const {
+    // a visited name starts with a letter
+    if (name.size() < shortest_ || name.size() > longest_ ||
+        !((firstLetters_ >> (name[0] - 'A')) & 1u))
+        return nullptr;
+    if (entries_.empty()) {
+        const auto it = table_.find(std::string(name));
+        return it == table_.end() ? nullptr : &it->second;
+    }
+    for (const auto& [entryName, body] : entries_)
+        if (entryName == name) return body;
+    return nullptr;
+}
+
+bool expandMacros(const std::string& text, const MacroTable& table, std::string& out) {
+    return expandMacros(text, MacroMatcher(table), out);
+}
+
+bool expandMacros(const std::string& text, const MacroMatcher& macros, std::string& out) {
+    if (&out == &text) {  // written in place: expand into a copy first
+        std::string expanded;
+        if (!expandMacros(text, macros, expanded)) return false;
+        out = std::move(expanded);
+        return true;
+    }
+    if (!macros.canMatch()) return false;
     bool replaced = false;
     std::size_t copied = 0;
-    forEachName(text, [&](std::size_t begin, std::size_t end) {
-        const std::size_t length = end - begin;  // text[begin] is a letter
-        if (length < shortest || length > longest || !((firstLetters >> (text[begin] - 'A')) & 1u))
-            return;
-        auto it = table.find(text.substr(begin, length));
-        if (it == table.end()) return;
+    const std::string_view view(text);
+    forEachName(view, [&](std::size_t begin, std::size_t end) {
+        const std::string* body = macros.find(view.substr(begin, end - begin));
+        if (!body) return;
         if (!replaced) {  // from here on the result is built in `out` (its capacity reused)
             out.clear();
-            out.reserve(text.size() + it->second.size());
+            out.reserve(text.size() + body->size());
         }
         out.append(text, copied, begin - copied);
-        out += it->second;
+        out += *body;
         copied = end;
         replaced = true;
     });
@@ -176,7 +195,8 @@ void MacroPass::run(BlockSequence& blocks, CompileContext& context) const {
         }
         table[global.name] = global.body;
     }
-    std::string expanded;  // reused for every block
+    std::string expanded;                                      // reused for every block
+    std::optional<MacroMatcher> macros{std::in_place, table};  // made anew when the table changes
     for (std::size_t i = 0; i < blocks.size() && !context.stopped(); ++i) {
         CompileBlock& block = blocks[i];
         if (block.programEnd) continue;
@@ -184,7 +204,7 @@ void MacroPass::run(BlockSequence& blocks, CompileContext& context) const {
         std::size_t labelEnd = 0;
         Definition d = readDefinition(block.text, isDefine, labelEnd);
         if (!isDefine) {
-            if (!table.empty() && expandMacros(block.text, table, expanded)) {
+            if (!table.empty() && expandMacros(block.text, *macros, expanded)) {
                 block.text.assign(expanded);  // keeps the block's buffer when it is large enough
                 block.changed = true;
             }
@@ -213,6 +233,7 @@ void MacroPass::run(BlockSequence& blocks, CompileContext& context) const {
                             {"From this block on, " + d.name + " stands for: " + d.body}))
             return;
         table[d.name] = d.body;
+        macros.emplace(table);
         block.text = labelAndComment(block.text, labelEnd);
         block.changed = true;
     }

@@ -3,6 +3,8 @@
 #include <string>
 #include <string_view>
 #include <unordered_map>
+#include <utility>
+#include <vector>
 
 #include "cnc_core/compiler/CompilerPass.h"
 
@@ -23,11 +25,34 @@ class MacroPass : public CompilerPass {
 
 using MacroTable = std::unordered_map<std::string, std::string>;
 
+/// The names of a macro table prepared for many block texts: a filter on
+/// first letters and lengths, then (for a few macros) a plain comparison
+/// instead of hashing a copy of the name. Refers to `table`: build it anew
+/// after every change of the table.
+class MacroMatcher {
+  public:
+    explicit MacroMatcher(const MacroTable& table);
+    /// The instructions of the macro called `name`, or nullptr.
+    const std::string* find(std::string_view name) const;
+    /// False when no name can ever match (no table entry starts with A-Z).
+    bool canMatch() const { return firstLetters_ != 0; }
+
+  private:
+    static constexpr std::size_t kCompared = 8;  ///< up to this many: compared one by one
+
+    const MacroTable& table_;
+    std::uint32_t firstLetters_ = 0;  ///< bit c - 'A': some name starts with c
+    std::size_t shortest_ = std::string::npos, longest_ = 0;
+    std::vector<std::pair<std::string_view, const std::string*>> entries_;  ///< when few
+};
+
 /// Replaces every macro name of `table` in `text` (whole words outside the
 /// comment, labels, variables and free texts) and puts the result in `out`.
 /// Returns false (and leaves `out` alone) when no macro is used. Also the
 /// function for global macros in an MDI line.
 bool expandMacros(const std::string& text, const MacroTable& table, std::string& out);
+/// The same with a prepared table (the compiler's loop over the blocks).
+bool expandMacros(const std::string& text, const MacroMatcher& macros, std::string& out);
 /// First macro name of `table` used in `text`, or "" (for the nesting check).
 std::string findMacroUse(std::string_view text, const MacroTable& table);
 /// Problem with a macro name ("" when the name is fine): length (<= 20),

@@ -18,15 +18,36 @@ inline bool isExpressionOperator(char c) {
     return c == '=' || c == '+' || c == '-' || c == '*' || c == '/';
 }
 
-/// Calls `visit(begin, end)` for every name in `text` that may be a macro:
-/// a run of A-Z 0-9 _ starting with a letter, not after '.', '*' or '@',
-/// outside the comment and outside free texts (a bracket not directly
-/// after a name, e.g. "(TOOL CHANGE)"); inside keyword arguments
-/// ("MODF_ON(QUICK)", "MTD(...)") and inside the brackets of an expression
-/// (after = + - * /: "L3_KORR = (D_SOLL - D_IST) /2", seed 001 ch. 4)
-/// names count.
+/// True when `text` has '(' or '[' before `end`.
+inline bool hasBracketBefore(std::string_view text, std::size_t end) {
+    const std::string_view words = text.substr(0, end);
+    return words.find('(') != std::string_view::npos || words.find('[') != std::string_view::npos;
+}
+
+/// forEachName for a text without brackets (and without its comment):
+/// every name counts that starts with a letter and does not follow '.',
+/// '*' or '@'.
 template <typename Visit>
-void forEachName(std::string_view text, Visit visit) {
+void forEachNameWithoutBrackets(std::string_view text, Visit visit) {
+    std::size_t i = 0;
+    while (i < text.size()) {
+        if (!isNameChar(text[i])) {
+            ++i;
+            continue;
+        }
+        const std::size_t start = i;
+        while (i < text.size() && isNameChar(text[i]))
+            ++i;
+        const char before = start > 0 ? text[start - 1] : ' ';
+        if (isLetter(text[start]) && before != '.' && before != '*' && before != '@')
+            visit(start, i);
+    }
+}
+
+/// forEachName's general reading (any text, brackets tracked); forEachName
+/// takes it for texts with brackets.
+template <typename Visit>
+void forEachNameAnyText(std::string_view text, Visit visit) {
     const std::size_t end = commentOffset(text);
     std::vector<bool> freeText;  // open brackets: true = a free text
     std::string_view lastName;   // the name before a bracket
@@ -70,6 +91,22 @@ void forEachName(std::string_view text, Visit visit) {
         blankAfterName = false;
         lastSignificant = text[i - 1];
     }
+}
+
+/// Calls `visit(begin, end)` for every name in `text` that may be a macro:
+/// a run of A-Z 0-9 _ starting with a letter, not after '.', '*' or '@',
+/// outside the comment and outside free texts (a bracket not directly
+/// after a name, e.g. "(TOOL CHANGE)"); inside keyword arguments
+/// ("MODF_ON(QUICK)", "MTD(...)") and inside the brackets of an expression
+/// (after = + - * /: "L3_KORR = (D_SOLL - D_IST) /2", seed 001 ch. 4)
+/// names count.
+template <typename Visit>
+void forEachName(std::string_view text, Visit visit) {
+    const std::size_t end = commentOffset(text);
+    if (hasBracketBefore(text, end))
+        forEachNameAnyText(text, visit);
+    else  // the common block: no free text, no arguments
+        forEachNameWithoutBrackets(text.substr(0, end), visit);
 }
 
 }  // namespace mtc::core

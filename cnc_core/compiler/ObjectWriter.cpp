@@ -109,10 +109,19 @@ void appendFourDigits(std::string& out, int number) {
 void setBlockLead(std::string& lead, const CompileBlock& block, int number, int sub) {
     lead = block.prefix;
     if (number < 0) return;
-    lead += 'N';
-    appendFourDigits(lead, number);
-    lead += ':';
-    appendFourDigits(lead, sub);
+    if (number > 9999 || sub < 0 || sub > 9999) {  // more digits than four
+        lead += 'N';
+        appendFourDigits(lead, number);
+        lead += ':';
+        appendFourDigits(lead, sub);
+        return;
+    }
+    char text[10] = {'N', 0, 0, 0, 0, ':', 0, 0, 0, 0};  // one append for the common case
+    for (int k = 4; k >= 1; --k, number /= 10, sub /= 10) {
+        text[k] = static_cast<char>('0' + number % 10);
+        text[k + 5] = static_cast<char>('0' + sub % 10);
+    }
+    lead.append(text, sizeof text);
 }
 
 /// The common case of a block that is one line of at most 71 characters:

@@ -22,10 +22,10 @@ std::string sequenceText(const BlockSequence& blocks) {
 /// line whose first name is CONT, END_CONT, START, LINE, CW, CCW, RELIEF or
 /// begins with WINDOW_, FORM_ or CYCLE_ (RD and CF only inside a contour).
 bool mayHoldGne(const BlockSequence& blocks) {
+    const CaselessNeedles gneWords{"CONT",   "START",   "LINE",  "CW",
+                                   "RELIEF", "WINDOW_", "FORM_", "CYCLE_"};
     for (const CompileBlock& b : blocks)
-        if (!b.programEnd && containsAnyCaseless(b.text, {"CONT", "START", "LINE", "CW", "RELIEF",
-                                                          "WINDOW_", "FORM_", "CYCLE_"}))
-            return true;
+        if (!b.programEnd && gneWords.foundIn(b.text)) return true;
     return false;
 }
 

@@ -82,7 +82,7 @@ void BlockParser::finish() {
 bool BlockParser::parsePrefix() {
     // [/] [:] [Nxxxx[:yyyy]] [/] [:] [.LABEL] [:]  with at most one '/' and one
     // ':'; the skip slash stands before the colon (seed 000, 5.1: "N0003 /: ...").
-    if (plainFastPath_ && takePlainBlockNumber()) return true;
+    if (plainFastPath_ && (takePlainBlockNumber() || startsWithoutPrefix())) return true;
     takeSkip();
     takePrimary();
     if (lexer_.peek() == 'N' && Lexer::isDigit(lexer_.peek(1)) && !parseBlockNumber()) return false;

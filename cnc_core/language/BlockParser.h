@@ -60,6 +60,9 @@ class BlockParser {
 
     // Fast path for the common block shape (BlockParserPlain.cpp).
     bool takePlainBlockNumber();
+    /// True when the block starts with a character the prefix cannot take
+    /// (no skip, primary colon, number or label: the general prefix reads nothing).
+    bool startsWithoutPrefix() const;
     void parsePlainWords();
 
     // Keywords (BlockParserKeywords.cpp).

@@ -1,5 +1,7 @@
 // Keyword words of a block: jumps, NC commands, compiler keywords, DEFINE
 // macros and PROGRAMMENDE. Part of BlockParser (see BlockParser.h).
+#include <algorithm>
+#include <cstring>
 #include <limits>
 
 #include "cnc_core/language/BlockParser.h"
@@ -244,9 +246,10 @@ bool BlockParser::scanCommandArguments() {
 }
 
 std::uint32_t BlockParser::commentStart() const {
-    for (std::uint32_t i = lexer_.position(); i < source_.end; ++i)
-        if (text_[i] == ';') return i;
-    return source_.end;
+    const std::uint32_t from = std::min(lexer_.position(), source_.end);
+    const void* found = std::memchr(text_.data() + from, ';', source_.end - from);
+    return found ? static_cast<std::uint32_t>(static_cast<const char*>(found) - text_.data())
+                 : source_.end;
 }
 
 bool BlockParser::parseRestOfBlock(std::string_view name, std::uint32_t start) {

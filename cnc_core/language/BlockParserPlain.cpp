@@ -37,7 +37,14 @@ bool BlockParser::takePlainBlockNumber() {
     if (begin >= end || text[begin] != 'N') return false;
     const BlockNumberDigits digits = blockNumberDigitsAt(text, begin + 1, end);
     if (digits.count != kBlockNumberDigits) return false;
-    const std::uint32_t digitsEnd = digits.end;
+    std::uint32_t digitsEnd = digits.end;
+    std::int32_t subNumber = -1;
+    if (digitsEnd < end && text[digitsEnd] == ':') {  // "N0053:0001" of a compiled program
+        const BlockNumberDigits sub = blockNumberDigitsAt(text, digitsEnd + 1, end);
+        if (sub.count != kBlockNumberDigits) return false;  // a primary colon or an error
+        subNumber = static_cast<std::int32_t>(sub.value);
+        digitsEnd = sub.end;
+    }
     // After the number only a blank or the block end; and no skip slash,
     // primary colon or label, which the general prefix takes.
     if (digitsEnd < end && !isPlainBlank(text[digitsEnd])) return false;
@@ -46,8 +53,17 @@ bool BlockParser::takePlainBlockNumber() {
         ++next;
     if (next < end && (text[next] == '/' || text[next] == ':' || text[next] == '.')) return false;
     block_.number = static_cast<std::int32_t>(digits.value);
+    if (subNumber >= 0) block_.subNumber = static_cast<std::int16_t>(subNumber);
     lexer_.seek(digitsEnd);
     return true;
+}
+
+bool BlockParser::startsWithoutPrefix() const {
+    // the general prefix only acts on blanks, '/', ':', 'N' and '.'
+    if (source_.begin >= source_.end) return false;
+    const char first = text_[source_.begin];
+    return !Lexer::isBlank(static_cast<unsigned char>(first)) && first != '/' && first != ':' &&
+           first != 'N' && first != '.';
 }
 
 void BlockParser::parsePlainWords() {

@@ -71,6 +71,28 @@ const std::vector<std::string> kEdgeBlocks = {
     "N0031 X1\r",
     "N0032 G1 X1\n      Y2 Z3",
     "N0033 G1 X1 Y2 PROGRAMMENDE",
+    // enhanced numbers of compiled programs and blocks without a number
+    "N0034:0000 G1 X1",
+    "N0034:0001",
+    "N0034:00012 X1",
+    "N0034:001 X1",
+    "N0034:0001/X1",
+    "N0034:0001 /X1",
+    "N0034:0001 :X1",
+    "N0034:0001 .L1 X1",
+    "N0034:0001:0002 X1",
+    "N0034:0001.5 X1",
+    "N0034::0001 X1",
+    "/N0034:0001 X1",
+    "X1 Y2 RD1.5",
+    "x1 y2",
+    "/X1",
+    ":X1",
+    ".L2 X1",
+    "\tX1",
+    "(text) X1",
+    ";comment",
+    "@1=5",
 };
 
 TEST(ParserFastPath, EdgeBlocksParseAsOnTheGeneralPath) {
@@ -112,6 +134,7 @@ TEST(ParserFastPath, RandomPlainLikeBlocksParseAsOnTheGeneralPath) {
             char number[8];
             std::snprintf(number, sizeof number, "N%04d", static_cast<int>(rng() % 10000));
             if (rng() % 8 != 0) text += number;
+            if (rng() % 4 == 0) text += rng() % 2 ? ":0001" : ":12";  // enhanced numbers
             for (int c = static_cast<int>(rng() % 30); c > 0; --c)
                 text += alphabet[pick(rng)];
             text += '\n';

@@ -10,10 +10,13 @@ namespace {
 /// character (an F<axis> word such as FX=...), letters without case.
 bool mayHoldAxisFeed(std::string_view text) {
     const auto upper = [](char c) { return c >= 'a' && c <= 'z' ? static_cast<char>(c - 32) : c; };
-    for (std::size_t i = 0; i + 1 < text.size(); ++i)
-        if (upper(text[i]) == 'F' && isAxisLetter(upper(text[i + 1])) &&
-            (i + 2 == text.size() || !isNameChar(upper(text[i + 2]))))
-            return true;
+    for (const char f : {'F', 'f'}) {  // memchr jumps to the candidates
+        for (std::size_t i = text.find(f); i != std::string_view::npos && i + 1 < text.size();
+             i = text.find(f, i + 1))
+            if (isAxisLetter(upper(text[i + 1])) &&
+                (i + 2 == text.size() || !isNameChar(upper(text[i + 2]))))
+                return true;
+    }
     return false;
 }
 
@@ -21,11 +24,11 @@ bool mayHoldAxisFeed(std::string_view text) {
 /// only on LA_ON/LA_OFF, the variables and F<axis> words, so without them it
 /// neither reports nor rewrites anything.
 bool mayHoldLookAhead(const BlockSequence& blocks) {
+    const CaselessNeedles lookAheadWords{"LA_", "METB",    "VFBT",     "TRC",
+                                         "ACD", "ACC_EFF", "TL_RADIUS"};
     for (const CompileBlock& b : blocks) {
         if (b.programEnd) continue;
-        if (containsAnyCaseless(b.text,
-                                {"LA_", "METB", "VFBT", "TRC", "ACD", "ACC_EFF", "TL_RADIUS"}))
-            return true;
+        if (lookAheadWords.foundIn(b.text)) return true;
         if (mayHoldAxisFeed(b.text)) return true;
     }
     return false;
