@@ -1,8 +1,11 @@
 #include "cnc_core/restart/ProgramScan.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cstdint>
 #include <string>
+#include <system_error>
+#include <thread>
 
 #if defined(__SSE2__)
 #include <emmintrin.h>
@@ -170,6 +173,51 @@ std::size_t ProgramScan::findFolded(std::string_view haystack, std::string_view 
     return std::string_view::npos;
 }
 
+namespace {
+
+/// First hit starting in [from, to) of `haystack`, searched in 1 MB pieces;
+/// gives up (npos) between pieces once `stop` is set.
+std::size_t findFoldedIn(std::string_view haystack, std::string_view needle, std::size_t from,
+                         std::size_t to, const std::atomic<bool>& stop) {
+    constexpr std::size_t kPiece = std::size_t{1} << 20;
+    for (std::size_t piece = from; piece < to; piece += kPiece) {
+        if (stop.load(std::memory_order_relaxed)) return std::string_view::npos;
+        const std::size_t pieceEnd = std::min(to, piece + kPiece);
+        // Starting points below pieceEnd: the text may run needle.size() - 1 further.
+        const std::size_t textEnd = std::min(haystack.size(), pieceEnd + needle.size() - 1);
+        const std::size_t hit = ProgramScan::findFolded(haystack.substr(0, textEnd), needle, piece);
+        if (hit != std::string_view::npos) return hit;
+    }
+    return std::string_view::npos;
+}
+
+}  // namespace
+
+std::size_t ProgramScan::findFoldedSplit(std::string_view haystack, std::string_view needle,
+                                         std::size_t from, std::size_t splitBytes) {
+    if (needle.empty() || needle.size() > haystack.size() || from >= haystack.size())
+        return std::string_view::npos;
+    const std::size_t starts = haystack.size() - needle.size() + 1;  // possible starting points
+    if (from >= starts) return std::string_view::npos;
+    if (starts - from < std::max<std::size_t>(splitBytes, 2))
+        return findFolded(haystack, needle, from);
+    const std::size_t middle = from + (starts - from) / 2;
+    std::atomic<bool> firstHalfFound{false};
+    std::size_t secondHit = std::string_view::npos;
+    std::thread second;
+    try {
+        second = std::thread(
+            [&] { secondHit = findFoldedIn(haystack, needle, middle, starts, firstHalfFound); });
+    } catch (const std::system_error&) {
+        return findFolded(haystack, needle, from);  // no thread to be had: one core then
+    }
+    const std::atomic<bool> never{false};
+    const std::size_t firstHit = findFoldedIn(haystack, needle, from, middle, never);
+    if (firstHit != std::string_view::npos) firstHalfFound = true;  // the second half may stop
+    second.join();
+    return firstHit != std::string_view::npos ? firstHit : secondHit;
+}
+
 std::uint32_t ProgramScan::lastSelectableBlock() const {
     const std::uint32_t count = blockCount();
     if (count == 0) return 0;
@@ -214,7 +262,7 @@ std::optional<std::uint32_t> ProgramScan::findTextAfter(std::uint32_t block,
     const std::size_t end = std::min<std::size_t>(source.size(), last.offset + last.length);
     const std::size_t start = from.offset + from.length;
     if (start >= end) return std::nullopt;
-    const std::size_t hit = findFolded(source.substr(0, end), needle, start);
+    const std::size_t hit = findFoldedSplit(source.substr(0, end), needle, start);
     if (hit == std::string_view::npos) return std::nullopt;
     const std::uint32_t found = blockAtOffset(static_cast<std::uint32_t>(hit));
     if (found >= count || found <= block) return std::nullopt;

@@ -85,6 +85,36 @@ TEST_F(SearchSelectionTest, SearchWorksInTheDisplayedLevel) {
     EXPECT_EQ(cursorText(pointer), "P99 N0003");
 }
 
+// A large text is searched in two halves at once: the first hit is the same
+// as the one-piece search's wherever it lies (first half, second half, across
+// the middle, none), from every start.
+TEST_F(SearchSelectionTest, TheSplitSearchFindsWhatTheOnePieceSearchFinds) {
+    std::string text;
+    for (int i = 0; i < 5000; ++i)
+        text += "N" + std::to_string(1000 + i % 9000) + " G1 X" + std::to_string(i % 97) + "\n";
+    const std::size_t middle = text.size() / 2;
+    text.replace(middle - 2, 5, "EDGE!");  // across the middle of a search from 0
+    text.replace(100, 4, "edge");
+    text.replace(text.size() - 10, 4, "Edge");
+    const std::size_t split = 64;  // split every search longer than 64 bytes
+    int compared = 0;
+    for (const char* needle : {"edge", "EDGE!", "X96\n", "g1 x5", "zzz", "N1000 G1 X0"}) {
+        for (std::size_t from = 0; from < text.size(); from += 997) {
+            const std::size_t expected = ProgramScan::findFolded(text, needle, from);
+            EXPECT_EQ(ProgramScan::findFoldedSplit(text, needle, from, split), expected)
+                << needle << " from " << from;
+            ++compared;
+        }
+        EXPECT_EQ(ProgramScan::findFoldedSplit(text, needle, 0, split),
+                  ProgramScan::findFolded(text, needle, 0));
+    }
+    EXPECT_EQ(ProgramScan::findFoldedSplit(text, "edge!", 0, split), middle - 2);
+    EXPECT_EQ(ProgramScan::findFoldedSplit(text, "edge", 101, split), middle - 2);
+    EXPECT_EQ(ProgramScan::findFoldedSplit(text, "edge", middle, split), text.size() - 10);
+    EXPECT_EQ(ProgramScan::findFoldedSplit(text, "zzz", 0, split), std::string::npos);
+    EXPECT_GT(compared, 100);
+}
+
 TEST_F(SearchSelectionTest, FindFoldedMatchesEveryPositionOfTheText) {
     // Lengths around the 16-byte SSE2 step, hits at the start, inside and at the end.
     std::string text(100, 'x');
