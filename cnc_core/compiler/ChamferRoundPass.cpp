@@ -96,10 +96,13 @@ std::string insertedText(const ScannedBlock& a, const CompilerPlane& plane, Corn
 /// its own spacing. Works in place.
 void squeezeBlanks(std::string& text) {
     const std::size_t comment = commentOffset(text);
+    char* const data = text.data();  // a plain pointer: no reload of the string per character
+    const std::size_t size = text.size();
     std::size_t kept = 0;
-    for (std::size_t i = 0; i < text.size(); ++i) {
-        if (i < comment && text[i] == ' ' && (kept == 0 || text[kept - 1] == ' ')) continue;
-        text[kept++] = text[i];
+    for (std::size_t i = 0; i < size; ++i) {
+        const char c = data[i];
+        if (i < comment && c == ' ' && (kept == 0 || data[kept - 1] == ' ')) continue;
+        data[kept++] = c;
     }
     text.resize(kept);
     while (!text.empty() && text.back() == ' ')

@@ -92,7 +92,7 @@ BlockSequence splitSourceBlocks(const Program& program, SourceFrame& frame) {
     blocks.reserve(program.blocks.size());
     for (std::size_t b = 0; b < program.blocks.size(); ++b) {
         const Block block = program.blocks[b];
-        CompileBlock out;
+        CompileBlock& out = blocks.emplace_back();  // filled in place (room reserved)
         out.sourceIndex = static_cast<std::uint32_t>(b);
         out.sourceLine = block.line;
         out.programEnd = (block.flags & kBlockProgramEnd) != 0;
@@ -104,7 +104,6 @@ BlockSequence splitSourceBlocks(const Program& program, SourceFrame& frame) {
         if (out.number < 0 && block.number >= 0) out.number = block.number;
         frame.lastNumber = std::max(frame.lastNumber, out.number);
         if (out.programEnd) frame.hasProgramEnd = true;
-        blocks.push_back(std::move(out));
     }
     return blocks;
 }

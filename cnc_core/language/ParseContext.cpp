@@ -19,8 +19,8 @@ void ParseContext::report(Severity severity, const char* code, std::uint32_t lin
 }
 
 bool ParseContext::isMacro(std::string_view name) const {
-    for (const auto& macro : macros_)
-        if (macro == name) return true;
+    for (const auto& macro : macros_)  // the length first: most names differ in it
+        if (macro.size() == name.size() && std::string_view(macro) == name) return true;
     return false;
 }
 
