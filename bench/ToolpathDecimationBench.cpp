@@ -24,7 +24,7 @@ ToolpathGeometry passes() {
         const std::array<double, 3> to{pass % 2 ? 100.0 - step * 0.1 : step * 0.1, pass * 0.06,
                                        -(pass / 100) * 0.5};
         g.moves.push_back({0, static_cast<std::uint32_t>(i), 0,
-                           i % 100 == 0 ? ToolpathKind::Rapid : ToolpathKind::Feed, 30,
+                           i % 100 == 0 ? ToolpathKind::Rapid : ToolpathKind::Feed, 30, 0,
                            static_cast<std::uint32_t>(i), 0});
         g.scene.addSegment(from, to);
         from = to;
@@ -34,7 +34,7 @@ ToolpathGeometry passes() {
 
 ToolpathGeometry helix() {
     ToolpathGeometry g;
-    g.moves.push_back({0, 0, 0, ToolpathKind::Arc, 30, 0, 0});
+    g.moves.push_back({0, 0, 0, ToolpathKind::Arc, 30, 0, 0, 0});
     std::array<double, 3> from{20, 0, 0};
     for (int i = 1; i <= 1'000'000; ++i) {
         const double a = i * 0.01;  // 0.2 mm chords on R20, 0.0005 mm pitch per chord

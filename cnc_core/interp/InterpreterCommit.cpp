@@ -183,6 +183,10 @@ void Interpreter::emitMotion(const Program& program, std::uint32_t index) {
         state_.modal.transformation.active() ? state_.modal.transformation.planeAxis(0) : -1;
     m.transformAxis2 =
         state_.modal.transformation.active() ? state_.modal.transformation.planeAxis(1) : -1;
+    m.zeroOffset = state_.modal.g[kGroupZeroOffset];
+    const MotionPlanner planner(&axes_, zeroOffsets_.get());
+    for (int a = 0; a < m.axisCount && a < kMaxAxes; ++a)
+        m.zeroOffsetValues[static_cast<std::size_t>(a)] = planner.offsetOf(state_.modal, a);
     m.compensated = false;  // tool compensation marks the moves it changes
     m.inserted = false;
     compensation_.motion(m, options_.output.motion);

@@ -52,6 +52,11 @@ struct Motion {
     /// MOT-005): G9 exact stop, G7 corners not at rest (with G9 only).
     bool exactStop = false;
     bool blendCorners = false;
+    /// Zero offset in force (seed 003, 3.5): G53..G59, and per machine axis
+    /// the offset of its definition now (mm, degrees): workpiece coordinate =
+    /// machine position - offset (docs/decisions/toolpath.md TP-019).
+    int zeroOffset = 53;
+    std::array<double, kMaxAxes> zeroOffsetValues{};
 };
 
 /// Programmed end position of `axis` (the contour point, without any tool compensation).

@@ -227,6 +227,23 @@ void ToolpathBuilder::addContour(const Motion& m, const Transform& t) {
     contourPass_ = false;
 }
 
+std::uint16_t ToolpathBuilder::frameIndex(const Motion& m) {
+    ToolpathFrame frame;
+    frame.code = m.zeroOffset;
+    for (std::size_t d = 0; d < 3; ++d)
+        if (machineAxisOfScene_[d] >= 0)
+            frame.offset[d] = m.zeroOffsetValues[static_cast<std::size_t>(machineAxisOfScene_[d])];
+    auto& frames = geometry_.frames;
+    // Newest first: a program stays in one frame for many moves.
+    for (std::size_t i = frames.size(); i-- > 0;)
+        if (frames[i] == frame) return static_cast<std::uint16_t>(i);
+    if (frames.size() < kMaxToolpathFrames) {
+        frames.push_back(frame);
+        return static_cast<std::uint16_t>(frames.size() - 1);
+    }
+    return geometry_.moves.empty() ? 0 : geometry_.moves.back().frame;
+}
+
 void ToolpathBuilder::motion(const Motion& m) {
     ToolpathMove move;
     move.program = m.where.program;
@@ -236,6 +253,7 @@ void ToolpathBuilder::motion(const Motion& m) {
     move.transformation = static_cast<std::uint8_t>(m.transformation);
     move.firstScene = static_cast<std::uint32_t>(geometry_.scene.segmentCount());
     move.firstDeveloped = static_cast<std::uint32_t>(geometry_.developed.segmentCount());
+    move.frame = frameIndex(m);
     geometry_.moves.push_back(move);
     const Position offset = m.compensated ? m.toolOffset : Position{};
     const Position previousOffset = lastOffset_;

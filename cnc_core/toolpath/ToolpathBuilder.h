@@ -53,6 +53,10 @@ class ToolpathBuilder : public MachineSink {
     std::array<double, 3> scenePoint(const std::array<double, kMaxAxes>& machine) const;
     /// Scene axis (0 X, 1 Y, 2 Z) machine axis `axis` draws on, or -1.
     int sceneAxis(int axis) const;
+    /// Machine axis drawn on scene axis `scene` (0..2), or -1 (no such axis).
+    int machineAxisOfScene(int scene) const {
+        return scene >= 0 && scene < 3 ? machineAxisOfScene_[static_cast<std::size_t>(scene)] : -1;
+    }
 
   private:
     using Position = std::array<double, kMaxAxes>;
@@ -71,6 +75,8 @@ class ToolpathBuilder : public MachineSink {
     /// The programmed contour of a compensated move into the contour layers.
     void addContour(const Motion& m, const Transform& t);
     int wrapChords(const Transform& t, double circumferentialTravel, double tolerance) const;
+    /// The frames entry of the motion's zero offset (added when new, TP-019).
+    std::uint16_t frameIndex(const Motion& m);
 
     ProcessAxes axes_;
     ToolpathSettings settings_;

@@ -115,13 +115,20 @@ std::vector<std::uint32_t> ToolpathGeometry::movesOfBlock(int program, std::uint
     return found;
 }
 
+ToolpathFrame ToolpathGeometry::frameOf(std::size_t move) const {
+    if (move >= moves.size() || moves[move].frame >= frames.size()) return {};
+    return frames[moves[move].frame];
+}
+
 std::size_t ToolpathGeometry::memoryBytes() const {
-    return moves.capacity() * sizeof(ToolpathMove) + scene.memoryBytes() + developed.memoryBytes() +
-           contour.memoryBytes() + developedContour.memoryBytes();
+    return moves.capacity() * sizeof(ToolpathMove) + frames.capacity() * sizeof(ToolpathFrame) +
+           scene.memoryBytes() + developed.memoryBytes() + contour.memoryBytes() +
+           developedContour.memoryBytes();
 }
 
 void ToolpathGeometry::clear() {
     moves.clear();
+    frames.clear();
     scene.clear();
     developed.clear();
     contour.clear();

@@ -14,6 +14,9 @@ enum class ToolpathKind : std::uint8_t {
     Arc = 2,    ///< G2 / G3 (tessellated)
 };
 inline constexpr int kToolpathKinds = 3;
+/// A path keeps at most this many distinct workpiece frames; a move in a
+/// further one keeps the frame of the move before it (TP-019).
+inline constexpr std::size_t kMaxToolpathFrames = 1024;
 
 /// One programmed move as the view keeps it: where it came from and which
 /// segments of the two layers draw it. The segments of move i are
@@ -24,8 +27,22 @@ struct ToolpathMove {
     std::uint32_t line = 0;   ///< 1-based source line
     ToolpathKind kind = ToolpathKind::Feed;
     std::uint8_t transformation = 30;  ///< 30, 31 or 32 (seed 003, ch. 4)
+    std::uint16_t frame = 0;           ///< ToolpathGeometry::frames entry of its zero offset
     std::uint32_t firstScene = 0;
     std::uint32_t firstDeveloped = 0;
+};
+
+/// The workpiece frame of a move (TP-019): the zero offset in force (G53..G59)
+/// and what it shifts each scene axis by (mm): workpiece coordinate = scene
+/// coordinate - offset (0 for a scene axis no machine axis draws).
+struct ToolpathFrame {
+    int code = 53;
+    std::array<double, 3> offset{0, 0, 0};
+
+    bool operator==(const ToolpathFrame& other) const {
+        return code == other.code && offset == other.offset;
+    }
+    bool operator!=(const ToolpathFrame& other) const { return !(*this == other); }
 };
 
 /// Axis-aligned box of a layer (empty until a vertex is added).
@@ -74,6 +91,9 @@ struct ToolpathLayer {
 /// those moves (same coordinates), so the view can show both.
 struct ToolpathGeometry {
     std::vector<ToolpathMove> moves;
+    /// The distinct workpiece frames of the moves (ToolpathMove::frame), at
+    /// most kMaxToolpathFrames; empty until the first move.
+    std::vector<ToolpathFrame> frames;
     ToolpathLayer scene;
     ToolpathLayer developed;
     ToolpathLayer contour;
@@ -96,6 +116,8 @@ struct ToolpathGeometry {
     ToolpathBounds cuttingBounds(bool developed) const;
     /// Indices of the moves of block `block` of program `program` (in order).
     std::vector<std::uint32_t> movesOfBlock(int program, std::uint32_t block) const;
+    /// The workpiece frame of move `move` (G53 without offset when out of range).
+    ToolpathFrame frameOf(std::size_t move) const;
     /// Bytes held by the vectors (capacity).
     std::size_t memoryBytes() const;
     /// Empties everything (keeps the tolerance).

@@ -3448,6 +3448,16 @@ Datei: %4</translation>
         <source>P%1 %2 (line %3)</source>
         <translation>P%1 %2 (Zeile %3)</translation>
     </message>
+    <message>
+        <source>Machine coordinates (G53, no zero offset)</source>
+        <translation>Maschinenkoordinaten (G53, keine Nullpunktverschiebung)</translation>
+    </message>
+    <message>
+        <source>Workpiece coordinates G%1,
+zero point at machine %2</source>
+        <translation>Werkstückkoordinaten G%1,
+Nullpunkt bei Maschine %2</translation>
+    </message>
 </context>
 <context>
     <name>mtc::screens::ToolpathScreen</name>

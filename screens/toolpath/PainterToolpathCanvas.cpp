@@ -170,19 +170,24 @@ void PainterToolpathCanvas::drawView(QPainter& painter, const View& view) {
     drawBackplot(painter, view);  // over the highlight: the running block's travelled part shows
     if (!view.developed) drawMarks(painter, view);
     drawTriad(painter, view);
-    const auto* layer = layerOf(view);
     painter.setPen(Qt::white);
-    QString caption =
-        view.developed ? tr("Developed plane (G32)") : tr("Toolpath (2D view, no OpenGL)");
+    painter.drawText(view.rect.adjusted(6, 4, -6, -4), Qt::AlignTop | Qt::AlignLeft,
+                     caption(view.developed));
+    painter.restore();
+}
+
+QString PainterToolpathCanvas::caption(bool developed) const {
+    const auto* layer = layerOf(developed ? developed_ : scene_);
+    QString text = developed ? tr("Developed plane (G32)") : tr("Toolpath (2D view, no OpenGL)");
     if (layer && !layer->bounds.empty) {
         const auto& b = layer->bounds;
-        caption += "\n" + tr("extents %1 x %2 x %3 mm")
-                              .arg(b.max[0] - b.min[0], 0, 'f', 1)
-                              .arg(b.max[1] - b.min[1], 0, 'f', 1)
-                              .arg(b.max[2] - b.min[2], 0, 'f', 1);
+        text += "\n" + tr("extents %1 x %2 x %3 mm")
+                           .arg(b.max[0] - b.min[0], 0, 'f', 1)
+                           .arg(b.max[1] - b.min[1], 0, 'f', 1)
+                           .arg(b.max[2] - b.min[2], 0, 'f', 1);
     }
-    painter.drawText(view.rect.adjusted(6, 4, -6, -4), Qt::AlignTop | Qt::AlignLeft, caption);
-    painter.restore();
+    if (!developed && model_->geometry()) text += "\n" + model_->frameCaption();  // TP-019
+    return text;
 }
 
 void PainterToolpathCanvas::drawLayer(QPainter& painter, const View& view) {

@@ -29,6 +29,9 @@ class PainterToolpathCanvas : public ToolpathCanvas {
     QImage picture() override;
     bool threeD() const override { return false; }
     std::optional<QPoint> positionOfMove(long move) override;
+    /// The text drawn in the top left corner of the scene (developed) area:
+    /// what it is, its extents and, in the scene, the zero offset (TP-019).
+    QString caption(bool developed) const;
 
   protected:
     void paintEvent(QPaintEvent* event) override;

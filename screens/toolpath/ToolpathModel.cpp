@@ -1,5 +1,6 @@
 #include "screens/toolpath/ToolpathModel.h"
 
+#include <QStringList>
 #include <algorithm>
 
 #include "cnc_core/cell/StationStatus.h"
@@ -60,6 +61,8 @@ void ToolpathModel::build(int number) {
     highlighted_.clear();
     highlightProgram_ = -1;
     currentMove_ = -1;
+    frameMove_ = -1;
+    frameProgram_ = -1;
     if (!built_) {
         geometry_.reset();
         problem_ = number ? tr("Program %1 does not exist.").arg(number)
@@ -133,6 +136,47 @@ std::array<double, 3> ToolpathModel::firstPointOf(int program, std::uint32_t blo
         return g.scene.vertex(g.scene.segmentStart[first]);
     }
     return {};
+}
+
+long ToolpathModel::moveAtOrAfter(int program, std::uint32_t block) const {
+    if (!geometry_) return -1;
+    const auto& moves = geometry_->moves;
+    for (std::size_t m = 0; m < moves.size(); ++m)
+        if (moves[m].program == program && moves[m].block >= block) return static_cast<long>(m);
+    return -1;
+}
+
+mtc::core::ToolpathFrame ToolpathModel::workFrame() const {
+    if (highlightRunning_)
+        if (const mtc::core::RunTrace* run = trace()) {
+            const long move = run->currentMove();
+            if (move >= 0) return run->geometry().frameOf(static_cast<std::size_t>(move));
+        }
+    if (!geometry_ || geometry_->moves.empty()) return {};
+    const std::size_t move =
+        frameMove_ >= 0 ? static_cast<std::size_t>(frameMove_) : geometry_->moves.size() - 1;
+    return geometry_->frameOf(move);
+}
+
+QString ToolpathModel::axisTitle(int axis) const {
+    static const char* const letters[] = {"X", "Y", "Z"};
+    return QString("%1 (mm, G%2)").arg(letters[std::clamp(axis, 0, 2)]).arg(workFrame().code);
+}
+
+QString ToolpathModel::frameCaption() const {
+    if (!geometry_) return {};
+    const mtc::core::ToolpathFrame frame = workFrame();
+    if (frame.code < 54) return tr("Machine coordinates (G53, no zero offset)");
+    static const char* const letters[] = {"X", "Y", "Z"};
+    QStringList zero;
+    for (int i = 0; i < 3; ++i)
+        if (mapping_->machineAxisOfScene(i) >= 0)
+            zero << QString("%1%2")
+                        .arg(letters[i])
+                        .arg(frame.offset[static_cast<std::size_t>(i)], 0, 'f', 3);
+    return tr("Workpiece coordinates G%1,\nzero point at machine %2")
+        .arg(frame.code)
+        .arg(zero.join(' '));
 }
 
 ToolpathMarks ToolpathModel::marks() const {
@@ -291,6 +335,12 @@ void ToolpathModel::setHighlight(int program, std::uint32_t block) {
     highlighted_ =
         geometry_ ? geometry_->movesOfBlock(program, block) : std::vector<std::uint32_t>{};
     if (!highlighted_.empty()) currentMove_ = static_cast<long>(highlighted_.front());
+    if (program != frameProgram_ || block != frameBlock_) {  // one search per block
+        frameProgram_ = program;
+        frameBlock_ = block;
+        frameMove_ = highlighted_.empty() ? moveAtOrAfter(program, block)
+                                          : static_cast<long>(highlighted_.front());
+    }
     highlightText_.clear();
     if (const auto p = session_->program(slot_, program); p && block < p->blocks.size()) {
         const std::string id = p->blockId(block);
@@ -315,6 +365,7 @@ void ToolpathModel::pick(long move) {
     setHighlight(m.program, m.block);
     highlightRunning_ = false;  // until the running program's next step (TP-017)
     currentMove_ = move;
+    frameMove_ = move;  // this execution of the block: its zero offset (TP-019)
     if (link_->partner() == ToolpathLink::Partner::Editor) {
         const auto program = session_->program(slot_, m.program);
         if (program && m.block < program->blocks.size())

@@ -106,6 +106,16 @@ class ToolpathModel : public QObject {
     /// program run has travelled since its Start, when the run is one of the
     /// program shown (TP-016); empty otherwise.
     ToolpathBackplot backplot(bool developed) const;
+    /// The workpiece frame the view labels its axes in (TP-019): the zero
+    /// offset in force at the running move while the program runs, else at
+    /// the picked move or the highlighted block's first move (for a block
+    /// without motion the next move of its program), else at the path's end.
+    mtc::core::ToolpathFrame workFrame() const;
+    /// "X (mm, G54)": the title of scene axis `axis` (0..2) in workFrame().
+    QString axisTitle(int axis) const;
+    /// "Workpiece coordinates G54: zero point at machine ..." or
+    /// "Machine coordinates (G53, no zero offset)"; "" without a path.
+    QString frameCaption() const;
     /// The tolerance the next build tessellates with (mm).
     void setTolerance(double millimetres);
     double tolerance() const { return settings_.tolerance; }
@@ -147,6 +157,8 @@ class ToolpathModel : public QObject {
     /// The tool marker of `marks` from the station's machine now.
     void markTool(ToolpathMarks& marks) const;
     std::array<double, 3> firstPointOf(int program, std::uint32_t block, bool& found) const;
+    /// The first move of the block or after it in the same program, or -1.
+    long moveAtOrAfter(int program, std::uint32_t block) const;
 
     mtc::hmi::CellSession* session_;
     int slot_;
@@ -170,6 +182,11 @@ class ToolpathModel : public QObject {
     int highlightProgram_ = -1;
     std::uint32_t highlightBlock_ = 0;
     long currentMove_ = -1;
+    /// The move whose zero offset the view names when no program runs
+    /// (TP-019), and the block it was found for (-1: none).
+    long frameMove_ = -1;
+    int frameProgram_ = -1;
+    std::uint32_t frameBlock_ = 0;
 };
 
 }  // namespace mtc::screens

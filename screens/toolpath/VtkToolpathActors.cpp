@@ -10,6 +10,7 @@
 #include <algorithm>
 
 #include "screens/toolpath/ToolpathModel.h"
+#include "screens/toolpath/VtkToolpathCanvas.h"
 
 namespace mtc::screens {
 
@@ -27,6 +28,26 @@ void labelLongAxesOnly(vtkCubeAxesActor* axes, const mtc::core::ToolpathBounds& 
     axes->SetXAxisLabelVisibility(labelled(0));
     axes->SetYAxisLabelVisibility(labelled(1));
     axes->SetZAxisLabelVisibility(labelled(2));
+}
+
+QString extentsText(const mtc::core::ToolpathBounds& b, bool flat) {
+    if (b.empty) return {};
+    QString text = VtkToolpathCanvas::tr("extents %1 x %2")
+                       .arg(b.max[0] - b.min[0], 0, 'f', 1)
+                       .arg(b.max[1] - b.min[1], 0, 'f', 1);
+    if (!flat) text += QString(" x %1").arg(b.max[2] - b.min[2], 0, 'f', 1);
+    return text + " mm";
+}
+
+void labelInFrame(vtkCubeAxesActor* axes, const mtc::core::ToolpathFrame& frame,
+                  const std::array<std::string, 3>& titles) {
+    const double* b = axes->GetBounds();
+    axes->SetXAxisRange(b[0] - frame.offset[0], b[1] - frame.offset[0]);
+    axes->SetYAxisRange(b[2] - frame.offset[1], b[3] - frame.offset[1]);
+    axes->SetZAxisRange(b[4] - frame.offset[2], b[5] - frame.offset[2]);
+    axes->SetXTitle(titles[0].c_str());
+    axes->SetYTitle(titles[1].c_str());
+    axes->SetZTitle(titles[2].c_str());
 }
 
 void placeCylinder(vtkActor* actor, int axis, double radius, double from, double to) {

@@ -5,6 +5,11 @@
 #include <vtkActor.h>
 #include <vtkCubeAxesActor.h>
 
+#include <QString>
+
+#include <array>
+#include <string>
+
 #include "cnc_core/toolpath/ToolpathGeometry.h"
 
 namespace mtc::screens {
@@ -17,6 +22,13 @@ void setBounds(vtkCubeAxesActor* axes, const mtc::core::ToolpathBounds& b);
 /// thickness) crowd into one blot: such an axis keeps its title and grid,
 /// its length is in the caption's extents (TP-014).
 void labelLongAxesOnly(vtkCubeAxesActor* axes, const mtc::core::ToolpathBounds& b);
+/// Tick labels in the workpiece frame (TP-019): the box stays where the
+/// scene (machine) coordinates put it, its ticks read scene - offset; the
+/// titles name the zero offset ("X (mm, G54)").
+void labelInFrame(vtkCubeAxesActor* axes, const mtc::core::ToolpathFrame& frame,
+                  const std::array<std::string, 3>& titles);
+/// "extents 100.0 x 60.0 x 12.0 mm" of a picture (without the third with `flat`).
+QString extentsText(const mtc::core::ToolpathBounds& b, bool flat);
 /// A cylinder along scene axis `axis` from `from` to `to`.
 void placeCylinder(vtkActor* actor, int axis, double radius, double from, double to);
 /// The tool at the actual position (TP-015): on the mill a cylinder of the

@@ -69,6 +69,8 @@ struct VtkToolpathCanvas::Scene {
     std::array<double, 4> toolShape{};          ///< has tool, turning, radius, length shown
     double toolPictureSize = 0.0;               ///< picture size the tool was made for
     std::array<double, 3> toolAt{};             ///< where the tool is drawn
+    mtc::core::ToolpathFrame shownFrame;        ///< the frame the scene's labels are in
+    QString sceneCaption;                       ///< the scene caption without the frame line
     /// Per area (scene, developed): backplot shown (0/1), its run and revision.
     std::array<std::array<std::uint64_t, 3>, 2> shownBackplot{};
 };
@@ -136,6 +138,7 @@ VtkToolpathCanvas::VtkToolpathCanvas(ToolpathModel* model, QWidget* parent)
         bool changed = updateHighlight(false);
         changed = updateMarks(false) || changed;
         changed = updateBackplot() || changed;
+        changed = updateFrame(false) || changed;
         if (changed) requestRender();
     });
     rebuild();
@@ -202,18 +205,6 @@ void VtkToolpathCanvas::moving() {
     scene_->still.start();
 }
 
-namespace {
-QString extents(const mtc::core::ToolpathBounds& b, bool flat) {
-    if (b.empty) return {};
-    QString text = VtkToolpathCanvas::tr("extents %1 x %2")
-                       .arg(b.max[0] - b.min[0], 0, 'f', 1)
-                       .arg(b.max[1] - b.min[1], 0, 'f', 1);
-    if (!flat) text += QString(" x %1").arg(b.max[2] - b.min[2], 0, 'f', 1);
-    return text + " mm";
-}
-
-}  // namespace
-
 void VtkToolpathCanvas::rebuild() {
     const auto g = model_->geometry();
     const ToolpathPalette& palette = model_->palette();
@@ -268,20 +259,25 @@ void VtkToolpathCanvas::rebuild() {
         const mtc::core::ToolpathBounds framed = model_->frame(part->developed, false);
         setBounds(part->axes, framed);
         labelLongAxesOnly(part->axes, framed);
-        part->axes->SetXTitle(part->developed ? tr("axial (mm)").toUtf8().constData() : "X (mm)");
-        part->axes->SetYTitle(part->developed ? tr("circumference (mm)").toUtf8().constData()
-                                              : "Y (mm)");
-        part->axes->SetZTitle(part->developed ? "" : "Z (mm)");
+        if (part->developed) {  // the scene's titles name the zero offset (updateFrame)
+            part->axes->SetXTitle(tr("axial (mm)").toUtf8().constData());
+            part->axes->SetYTitle(tr("circumference (mm)").toUtf8().constData());
+            part->axes->SetZTitle("");
+        }
         part->axes->SetUse2DMode(part->developed);
         part->axes->SetZAxisVisibility(!part->developed);
         QString caption =
             part->developed ? tr("Developed plane, G32 RI %1").arg(g->cylinderRadius)
                             : (s.split ? tr("Wrapped on the cylinder RI %1").arg(g->cylinderRadius)
                                        : tr("Toolpath P%1").arg(model_->programNumber()));
-        caption += "\n" + extents(layer.bounds, part->developed);
-        part->caption->SetInput(caption.toUtf8().constData());
+        caption += "\n" + extentsText(layer.bounds, part->developed);
+        if (part->developed)
+            part->caption->SetInput(caption.toUtf8().constData());
+        else
+            s.sceneCaption = caption;  // the frame's line follows (updateFrame)
     }
     if (!g) s.scene.caption->SetInput(model_->summary().toUtf8().constData());
+    if (g) updateFrame(true);
     const auto& stock = model_->stock();
     s.stock->VisibilityOff();
     if (stock.shape == mtc::core::Stock::Shape::Block) {
@@ -326,6 +322,31 @@ bool VtkToolpathCanvas::updateBackplot() {
             scene_->stillCache->invalidate();  // a piece joined the steady picture
     }
     return changed;
+}
+
+QString VtkToolpathCanvas::sceneCaption() const {
+    return QString::fromUtf8(scene_->scene.caption->GetInput());
+}
+
+std::array<double, 2> VtkToolpathCanvas::tickRange(int axis) const {
+    vtkCubeAxesActor* axes = scene_->scene.axes;
+    const double* range = axis == 0   ? axes->GetXAxisRange()
+                          : axis == 1 ? axes->GetYAxisRange()
+                                      : axes->GetZAxisRange();
+    return {range[0], range[1]};
+}
+
+bool VtkToolpathCanvas::updateFrame(bool always) {
+    const mtc::core::ToolpathFrame frame = model_->workFrame();
+    if (!model_->geometry() || (!always && frame == scene_->shownFrame)) return false;
+    scene_->shownFrame = frame;
+    labelInFrame(scene_->scene.axes, frame,
+                 {model_->axisTitle(0).toStdString(), model_->axisTitle(1).toStdString(),
+                  model_->axisTitle(2).toStdString()});
+    const QString caption = scene_->sceneCaption + "\n" + model_->frameCaption();
+    scene_->scene.caption->SetInput(caption.toUtf8().constData());
+    scene_->stillCache->invalidate();  // labels and caption are steady picture
+    return true;
 }
 
 bool VtkToolpathCanvas::updateHighlight(bool always) {

@@ -45,6 +45,10 @@ class VtkToolpathCanvas : public ToolpathCanvas {
     std::size_t levelOfDetailCells() const;
     /// Picks resolved through the coarse copy's cells to a full segment.
     int picksOnLevelOfDetail() const;
+    /// The scene's caption and the range the tick labels of scene axis
+    /// `axis` (0 X, 1 Y, 2 Z) read, in the workpiece frame (TP-019).
+    QString sceneCaption() const;
+    std::array<double, 2> tickRange(int axis) const;
     /// Cells the coarse copy shown while moving may have at most.
     static constexpr std::size_t kLevelOfDetailCells = 40000;
     /// Its starting tolerance: this fraction of the layer's largest extent
@@ -67,6 +71,10 @@ class VtkToolpathCanvas : public ToolpathCanvas {
     /// What the running program has travelled since Start (TP-016). True
     /// when the picture changed.
     bool updateBackplot();
+    /// The scene's tick labels, titles and caption in the model's workpiece
+    /// frame (TP-019): relabelled with `always` or when the frame changed.
+    /// True when the picture changed.
+    bool updateFrame(bool always);
     void requestRender();
     void moving();
     void showLevelOfDetail(bool coarse);

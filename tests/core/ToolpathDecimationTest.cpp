@@ -142,7 +142,7 @@ TEST(ToolpathDecimation, APathThatRetracesItselfIsThinnedOutNotBlurred) {
         return Point{10.0 * std::cos(a), 10.0 * std::sin(a), z};
     };
     for (int pass = 0; pass < 3000; ++pass) {
-        g.moves.push_back({0, static_cast<std::uint32_t>(pass), 0, ToolpathKind::Feed, 30,
+        g.moves.push_back({0, static_cast<std::uint32_t>(pass), 0, ToolpathKind::Feed, 30, 0,
                            static_cast<std::uint32_t>(g.scene.segmentCount()), 0});
         for (int i = 0; i < 64; ++i)
             g.scene.addSegment(onCircle(i, 0.001 * pass), onCircle(i + 1, 0.001 * pass));
@@ -158,7 +158,7 @@ TEST(ToolpathDecimation, APathThatRetracesItselfIsThinnedOutNotBlurred) {
 TEST(ToolpathDecimation, TooManyChainsKeepEveryNthRun) {
     ToolpathGeometry g;
     for (int i = 0; i < 1000; ++i) {  // 1000 separate dashes: 1000 chains
-        g.moves.push_back({0, static_cast<std::uint32_t>(i), 0, ToolpathKind::Feed, 30,
+        g.moves.push_back({0, static_cast<std::uint32_t>(i), 0, ToolpathKind::Feed, 30, 0,
                            static_cast<std::uint32_t>(i), 0});
         g.scene.addSegment({1.0 * i, 0, 0}, {1.0 * i + 0.5, 0, 0});
     }

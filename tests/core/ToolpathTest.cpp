@@ -273,3 +273,67 @@ TEST(ToolpathRun, DemoProgramsDraw) {
 }
 
 }  // namespace
+
+namespace {
+
+/// The workpiece coordinates of the end of move `m`: scene point minus the
+/// offset of the move's frame (TP-019).
+std::array<double, 3> workpieceEnd(const ToolpathGeometry& g, std::size_t m) {
+    const auto [first, last] = g.sceneRange(m);
+    const auto end = g.scene.vertex(g.scene.segmentStart[last - 1] + 1);
+    const ToolpathFrame frame = g.frameOf(m);
+    return {end[0] - frame.offset[0], end[1] - frame.offset[1], end[2] - frame.offset[2]};
+}
+
+}  // namespace
+
+TEST(ToolpathFrames, EveryMoveKnowsTheZeroOffsetInForce) {
+    // Demo mill: G54 = X-150 Y-80 Z-120, G55 = X50 Y-80 Z-120 (demo-cell.cfg).
+    const auto r =
+        run("N0001 G53 G0 X10 Y10 Z10\nN0002 G54 G0 X5 Y6 Z7\nN0003 G1 X15 F500\n"
+            "N0004 G55 G0 X5 Y6 Z7\nN0005 G1 Y16\nN0006 G54 G1 X25\nN0007 M30\n",
+            0);
+    ASSERT_TRUE(r.complete) << diagnosticsText(r.diagnostics);
+    const auto& g = r.geometry;
+    ASSERT_EQ(g.moves.size(), 6u);
+    ASSERT_EQ(g.frames.size(), 3u) << "G53, G54, G55: one entry each";
+    const int codes[] = {53, 54, 54, 55, 55, 54};
+    for (std::size_t m = 0; m < 6; ++m)
+        EXPECT_EQ(g.frameOf(m).code, codes[m]) << "move " << m;
+    EXPECT_EQ(g.moves[2].frame, g.moves[5].frame) << "G54 again is the same entry";
+    EXPECT_EQ(g.frameOf(0).offset, (std::array<double, 3>{0, 0, 0}));
+    EXPECT_EQ(g.frameOf(1).offset, (std::array<double, 3>{-150, -80, -120}));
+    EXPECT_EQ(g.frameOf(3).offset, (std::array<double, 3>{50, -80, -120}));
+    // Scene minus offset is what the program wrote, in every frame.
+    const std::array<std::array<double, 3>, 6> programmed{
+        {{10, 10, 10}, {5, 6, 7}, {15, 6, 7}, {5, 6, 7}, {5, 16, 7}, {25, 16 + 0.0, 7}}};
+    for (std::size_t m = 0; m < 6; ++m) {
+        const auto work = workpieceEnd(g, m);
+        if (m == 5) {  // back in G54 at the machine's Y of the G55 move
+            EXPECT_NEAR(work[0], 25.0, kFloat);
+            continue;
+        }
+        for (std::size_t i = 0; i < 3; ++i)
+            EXPECT_NEAR(work[i], programmed[m][i], kFloat) << "move " << m << " axis " << i;
+    }
+    EXPECT_EQ(g.frameOf(99).code, 53) << "out of range: no offset";
+}
+
+TEST(ToolpathFrames, TheLatheFrameHasNoYAndFollowsG20) {
+    // Demo lathe: G54 = X0 Z255.5; G55 = X255.5 Z0, after G20 Z0 C0 X0 the
+    // Z axis has definition X and uses that column (seed 003, 3.5).
+    const auto r = run("N0001 G54 G0 X40 Z5\nN0002 G1 Z-20 F200\nN0003 M30\n", 1);
+    ASSERT_TRUE(r.complete) << diagnosticsText(r.diagnostics);
+    ASSERT_EQ(r.geometry.moves.size(), 2u);
+    EXPECT_EQ(r.geometry.frameOf(1).code, 54);
+    EXPECT_EQ(r.geometry.frameOf(1).offset, (std::array<double, 3>{0, 0, 255.5}));
+    EXPECT_NEAR(workpieceEnd(r.geometry, 1)[2], -20.0, kFloat);
+    const auto g20 =
+        run("N0001 G54 G0 X40 Z5\nN0002 G20 Z0 C0 X0\nN0003 G55 G1 Z-10 F200\nN0004 M30\n", 1);
+    ASSERT_TRUE(g20.complete) << diagnosticsText(g20.diagnostics);
+    ASSERT_EQ(g20.geometry.moves.size(), 2u);
+    // Z has definition X now: column X of G55 (255.5); X has definition Z (0).
+    EXPECT_EQ(g20.geometry.frameOf(1).code, 55);
+    EXPECT_EQ(g20.geometry.frameOf(1).offset, (std::array<double, 3>{0, 0, 255.5}));
+    EXPECT_NEAR(workpieceEnd(g20.geometry, 1)[2], -10.0, kFloat);
+}

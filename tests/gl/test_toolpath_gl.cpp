@@ -7,11 +7,13 @@
 // the tool-centre path, with a legend entry. A 200,000-segment program moves with a coarse copy
 // within the cell budget, and picking on that copy still selects the right block.
 // While a program runs the backplot is drawn and the steady picture is kept
-// as an image; a frame from it is the full frame.
+// as an image; a frame from it is the full frame. The labels name the zero
+// offset of the block shown and read workpiece coordinates.
 #include <QDir>
 #include <QLabel>
 #include <QSet>
 #include <QTemporaryDir>
+#include <cmath>
 #include <cstdio>
 
 #include "PanelFixture.h"
@@ -308,6 +310,49 @@ class ToolpathGlTest : public QObject {
             full.save("/tmp/full.png");
         }
         QVERIFY2(differing == 0, qPrintable(QString("%1 pixels differ").arg(differing)));
+    }
+
+    /// TP-019: the tick labels read workpiece coordinates of the zero offset
+    /// of the block shown and the caption names it; going from a G54 block
+    /// to a G55 block relabels, and the kept steady picture (TP-018) shows
+    /// the new labels, not the old ones.
+    void ticksAndCaptionFollowTheZeroOffsetOfTheBlockShown() {
+        PanelFixture panel;
+        // Demo mill: G54 = X-150 Y-80 Z-120, G55 = X50 Y-80 Z-120.
+        panel.session->addProgram(0, 50, "two-vices.nc",
+                                  "N0001 G54 G0 X5 Y5 Z5\nN0002 G1 Z-2 F2000\nN0003 X40\n"
+                                  "N0004 G0 Z5\nN0005 G55 G0 X5 Y5\nN0006 G1 Z-2\n"
+                                  "N0007 X40\nN0008 G0 Z5\nN0009 M30\n");
+        panel.session->selectProgram(0, 50);
+        QVERIFY(panel.window->showScreen("toolpath"));
+        ToolpathScreen* screen = toolpath(panel);
+        VtkToolpathCanvas* canvas = vtkCanvas(screen);
+        QVERIFY(canvas);
+        panel.press(Qt::Key_PageDown);  // N0001 G54 G0 ...
+        canvas->picture();
+        QVERIFY2(canvas->sceneCaption().contains("Workpiece coordinates G54,\nzero point at "
+                                                 "machine X-150.000 Y-80.000 Z-120.000"),
+                 qPrintable(canvas->sceneCaption()));
+        const auto xInG54 = canvas->tickRange(0), zInG54 = canvas->tickRange(2);
+        for (int i = 0; i < 4; ++i)
+            panel.press(Qt::Key_PageDown);  // N0005 G55 G0 X5 Y5
+        QVERIFY(screen->model()->highlightText().contains("N0005"));
+        QVERIFY2(canvas->sceneCaption().contains("Workpiece coordinates G55,\nzero point at "
+                                                 "machine X50.000 Y-80.000 Z-120.000"),
+                 qPrintable(canvas->sceneCaption()));
+        // The box stays, its X ticks read 200 mm less (G54 X-150 -> G55 X50), Z the same.
+        QVERIFY(std::abs(canvas->tickRange(0)[0] - (xInG54[0] - 200.0)) < 1e-9);
+        QVERIFY(std::abs(canvas->tickRange(0)[1] - (xInG54[1] - 200.0)) < 1e-9);
+        QVERIFY(canvas->tickRange(2) == zInG54);
+        const int keptBefore = canvas->keptRenders();
+        canvas->picture();
+        canvas->picture();
+        const QImage kept = canvas->picture();
+        QVERIFY(canvas->keptRenders() > keptBefore);
+        canvas->keepSteadyPicture(false);
+        const QImage full = canvas->picture();
+        QCOMPARE(kept.convertToFormat(QImage::Format_RGB32),
+                 full.convertToFormat(QImage::Format_RGB32));
     }
 
     /// TP-018: a station change that shows nothing new (here a dwell: the

@@ -9,6 +9,7 @@
 
 #include "PanelFixture.h"
 #include "screens/restart/RestartController.h"
+#include "screens/toolpath/PainterToolpathCanvas.h"
 #include "screens/toolpath/ToolpathCanvas.h"
 #include "screens/toolpath/ToolpathModel.h"
 #include "screens/toolpath/ToolpathScreen.h"
@@ -293,6 +294,58 @@ class ToolpathScreenTest : public QObject {
         QVERIFY(!toolpath(panel)->exportPng(dir.filePath("missing/dir/view.png")));
         QVERIFY(
             toolpath(panel)->findChild<QLabel*>("toolpathMessage")->text().contains("not written"));
+    }
+
+    /// TP-019: the view names the zero offset of the block it shows, in
+    /// the 2D view's caption, and follows the program from G54 to G55:
+    /// picked with PgDn and while the program runs.
+    void theCaptionNamesTheZeroOffsetInUseAndFollowsTheProgram() {
+        PanelFixture panel;
+        // Demo mill: G54 = X-150 Y-80 Z-120, G55 = X50 Y-80 Z-120.
+        panel.session->addProgram(0, 50, "two-vices.nc",
+                                  "N0001 G54 G0 X5 Y5 Z5\nN0002 G1 Z-2 F2000\nN0003 X40\n"
+                                  "N0004 G0 Z5\nN0005 G55 G0 X5 Y5\nN0006 G1 Z-2\n"
+                                  "N0007 X40\nN0008 G0 Z5\nN0009 M30\n");
+        panel.session->selectProgram(0, 50);
+        panel.window->showScreen("toolpath");
+        panel.session->setTimerEnabled(false);  // the test gives the station its time
+        ToolpathScreen* screen = toolpath(panel);
+        const auto* model = screen->model();
+        auto* canvas = qobject_cast<mtc::screens::PainterToolpathCanvas*>(screen->canvas());
+        QVERIFY(canvas);
+        QTRY_VERIFY(model->geometry() != nullptr);
+        const QString g54 =
+            "Workpiece coordinates G54,\nzero point at machine X-150.000 "
+            "Y-80.000 Z-120.000";
+        const QString g55 =
+            "Workpiece coordinates G55,\nzero point at machine X50.000 "
+            "Y-80.000 Z-120.000";
+        // Nothing highlighted: the offset in force at the end of the path.
+        QVERIFY2(canvas->caption(false).endsWith(g55), qPrintable(canvas->caption(false)));
+        QVERIFY(!canvas->caption(true).contains("G55"));
+        panel.press(Qt::Key_PageDown);  // N0001 G54 G0 ...
+        QVERIFY2(canvas->caption(false).endsWith(g54), qPrintable(canvas->caption(false)));
+        QCOMPARE(model->axisTitle(0), QString("X (mm, G54)"));
+        const QImage inG54 = canvas->picture();
+        for (int i = 0; i < 4; ++i)
+            panel.press(Qt::Key_PageDown);  // N0005 G55 G0 X5 Y5
+        QVERIFY(model->highlightText().contains("N0005"));
+        QVERIFY2(canvas->caption(false).endsWith(g55), qPrintable(canvas->caption(false)));
+        QCOMPARE(model->axisTitle(2), QString("Z (mm, G55)"));
+        QVERIFY(canvas->picture() != inG54);
+        // While the program runs: the offset of the move the machine executes.
+        panel.press(Qt::Key_F5, Qt::ShiftModifier);  // Start
+        QVERIFY(panel.session->control(0).programActive());
+        QStringList seen;
+        for (int tick = 0; tick < 3000 && panel.session->control(0).programActive(); ++tick) {
+            panel.session->advance(0.02);
+            if (!model->highlightsRunningBlock()) continue;
+            const QString code = canvas->caption(false).contains(g54)   ? "G54"
+                                 : canvas->caption(false).contains(g55) ? "G55"
+                                                                        : "?";
+            if (seen.isEmpty() || seen.back() != code) seen << code;
+        }
+        QCOMPARE(seen, QStringList({"G54", "G55"}));
     }
 
     void latheGrooveShowsDevelopedPlaneAndCylinder() {
