@@ -13,7 +13,7 @@ QueuedBlockState& QueuedBlockStates::record() {
 void QueuedBlockStates::follow(std::uint64_t itemsDone, bool atBlockStop, bool idle) {
     matched_ = false;
     if (idle) {
-        states_.clear();
+        clear();
         return;
     }
     // The item the axes work on; at a single-block stop the one they finished.
@@ -32,7 +32,7 @@ const QueuedBlockState* QueuedBlockStates::executing() const {
 }
 
 void QueuedBlockStates::clear() {
-    states_.clear();
+    if (states_.capacity() > 0) states_ = {};  // lets go of the programs of every slot
     matched_ = false;
 }
 

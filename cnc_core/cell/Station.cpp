@@ -583,7 +583,7 @@ void Station::recordQueuedBlock(const ProgramPtr& program, std::uint32_t index, 
     entry.endItem = machine_.itemsQueued();
     entry.program = output_.last.program;
     entry.line = output_.last.line;
-    entry.source = program;
+    if (entry.source != program) entry.source = program;  // a reused slot may hold it already
     entry.index = index;
     entry.callLevel = callLevel;
     const InterpreterState& state = interpreter_.state();

@@ -38,6 +38,8 @@ class RingQueue {
 
     std::size_t size() const { return size_; }
     bool empty() const { return size_ == 0; }
+    /// Slots held (elements and dropped ones kept for reuse).
+    std::size_t capacity() const { return slots_.size(); }
 
     /// Element `i`, 0 = the oldest (front).
     T& operator[](std::size_t i) { return slots_[slot(i)]; }
