@@ -47,6 +47,18 @@ void writeJson(const SimulateReport& r) {
     json.field("process", r.request.process);
     json.field("resolution", r.resolution);
     const core::removal::PartModel& part = *r.run.part;
+    json.key("stock");
+    json.beginObject();
+    const core::removal::StockOrigin& stock = r.run.stock;
+    json.field("source", stock.fromWindow ? "window" : "configuration");
+    if (stock.fromWindow) {
+        json.field("keyword", stock.keyword);
+        json.field("program", stock.where.program);
+        json.field("block", stock.where.block);
+        json.field("line", stock.where.line);
+        json.field("zero_offset", "G" + std::to_string(stock.zeroOffset));
+    }
+    json.endObject();
     json.field("model", modelName(part));
     json.field("cells", static_cast<long long>(part.cells()));
     json.field("stock_volume", stockVolume(part));
@@ -74,6 +86,12 @@ void writeText(const SimulateReport& r) {
                 static_cast<unsigned long long>(part.cells()),
                 static_cast<unsigned long long>(r.run.blocks),
                 r.run.complete ? "" : " (program end not reached)");
+    if (r.run.stock.fromWindow)
+        std::printf("stock: %s of P%d %s (line %d) in G%d\n", r.run.stock.keyword.c_str(),
+                    r.run.stock.where.program, r.run.stock.where.block.c_str(),
+                    r.run.stock.where.line, r.run.stock.zeroOffset);
+    else
+        std::printf("stock: machine configuration\n");
     std::printf("removed volume: %.3f mm3 of %.3f mm3 stock; %llu of %llu moves cut, %llu rapid\n",
                 part.removedVolume(), stockVolume(part),
                 static_cast<unsigned long long>(r.run.counts.cuttingMoves),

@@ -46,11 +46,19 @@ RemovalRunResult simulateRemoval(const ProcessConfig& config, const ProgramStore
                                  std::shared_ptr<const ToolList> tools, std::uint64_t blockBudget,
                                  const RemovalStop* stop) {
     RemovalRunResult result;
+    const ProgramStock stock = programStock(
+        config, programs, number, stop != nullptr ? stop->zeroOffsets : nullptr, blockBudget);
+    result.stock = stock.origin;
+    result.diagnostics.append(stock.diagnostics);
+    if (stock.diagnostics.hasErrors()) return result;  // a window that cannot be the blank
     std::string problem;
-    result.part =
-        PartModel::create(stockOf(config), settings, config.defaultPlane() == 18, problem);
+    result.part = PartModel::create(stock.stock, settings, config.defaultPlane() == 18, problem);
     if (!result.part) {
-        result.diagnostics.error("REMOVAL_STOCK", {}, problem);  // the configuration's
+        if (stock.origin.fromWindow)
+            result.diagnostics.error("REMOVAL_STOCK", stock.origin.where,
+                                     stock.origin.keyword + ": " + problem);
+        else
+            result.diagnostics.error("REMOVAL_STOCK", {}, problem);  // the configuration's
         return result;
     }
     DiagnosticList axisProblems;

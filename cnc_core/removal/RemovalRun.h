@@ -7,6 +7,7 @@
 
 #include "cnc_core/interp/Interpreter.h"
 #include "cnc_core/removal/PartModel.h"
+#include "cnc_core/removal/ProgramStock.h"
 #include "cnc_core/removal/RemovalSink.h"
 
 namespace mtc::core::removal {
@@ -29,14 +30,16 @@ struct RemovalStop {
 /// What a material-removal simulation produced.
 struct RemovalRunResult {
     std::optional<PartModel> part;  ///< the finished part (none: see diagnostics)
+    StockOrigin stock;              ///< the program's window or the configuration (TP-008)
     DiagnosticList diagnostics;     ///< interpreter errors, budget, rapid cuts, the stock
     RemovalCounts counts;
     std::uint64_t blocks = 0;  ///< blocks interpreted
     bool complete = false;     ///< the program reached its end (or the stop)
 };
 
-/// Cuts the stock of `config` (its `stock`; GNE raw parts are not read) with
-/// program `number` run from its first block to its end on a fresh
+/// Cuts the stock of program `number` (programStock(): its WINDOW_01/02 in
+/// machine coordinates, else `config`'s `stock`; a bad window is an error
+/// REMOVAL_WINDOW and no part) with the program run from its first block to its end on a fresh
 /// interpreter in check mode (a rejected block is reported and skipped),
 /// as buildToolpath() runs it. The tools come from `tools` (nullptr: the
 /// configuration's list). A stock the model cannot be made of (none, or more

@@ -131,6 +131,8 @@ constexpr MessageEntry kSetupMessages[] = {
     {"REMOVAL_RAPID_CUT", "Eilgangbewegung schneidet ins Werkstück"},
     {"REMOVAL_STOCK", "Rohteil für den Materialabtrag ungültig"},
     {"REMOVAL_STOP_NOT_REACHED", "Abtragslauf erreicht den Zielsatz nicht"},
+    {"REMOVAL_WINDOW", "Zeichenfenster als Rohteil ungültig"},
+    {"REMOVAL_WINDOW_SIMPLIFIED", "Zeichenfenster vereinfacht als Rohteil"},
 };
 }  // namespace
 

@@ -5,6 +5,7 @@
 
 #include "cnc_core/cell/StationStatus.h"
 #include "cnc_core/interp/Interpreter.h"
+#include "cnc_core/removal/ProgramStock.h"
 #include "cnc_core/restart/ReposPreview.h"
 #include "hmi/CellSession.h"
 #include "screens/restart/ProgramListingModel.h"
@@ -78,6 +79,12 @@ void ToolpathModel::build(int number) {
             problem_ = RestartController::describe(d);
             break;
         }
+    // The program's drawing window is the stock when it has one (TP-008).
+    auto stock =
+        mtc::core::removal::programStock(session_->processConfig(slot_), session_->store(), number);
+    stock_ = stock.stock;
+    if (problem_.isEmpty() && stock.diagnostics.hasErrors())
+        problem_ = RestartController::describe(stock.diagnostics.items().front());
     geometry_ = std::make_shared<const mtc::core::ToolpathGeometry>(std::move(result.geometry));
     cutting_ = {geometry_->cuttingBounds(false), geometry_->cuttingBounds(true)};
     emit geometryChanged();
@@ -222,7 +229,7 @@ void ToolpathModel::markTool(ToolpathMarks& marks) const {
     marks.tool = mapping_->scenePoint(machine);
     marks.toolRadius = status.edgeKnown ? status.edgeRadius : 0.0;
     marks.toolLength = status.edgeKnown ? status.edgeLength[0] : 0.0;
-    marks.turning = stock_.shape == mtc::core::Stock::Shape::Cylinder;
+    marks.turning = session_->processConfig(slot_).defaultPlane() == 18;  // as PartModel
 }
 
 void ToolpathModel::updateReposPath() {

@@ -2,8 +2,9 @@
 # mtc200-cli simulate (issue 19 §5, CLI-CONTRACT.md "Extensions", D-020):
 # removed volume of a pocket in JSON and text, the STL written atomically
 # (binary, its triangle count), the lathe's turned part, a rapid into the
-# part named with its block, and refusals: bad resolutions, a grid over
-# the cell cap, a FIFO as output, program errors (no STL), misplaced options.
+# part named with its block, the program's WINDOW_02 as the stock, and
+# refusals: bad resolutions, a grid over the cell cap, a bad window, a FIFO as
+# output, program errors (no STL), misplaced options.
 source "$(dirname "$0")/common.bash"
 cd "$TEST_TMP" || exit 1
 
@@ -77,6 +78,24 @@ sed 's/^stock = block .*/stock = cylinder Z 40 -130 -120/' "$cfg" >bar.cfg
 expect_rc 2 "a cylinder stock on the mill" --json --machine bar.cfg simulate pocket.nc
 json_check "REMOVAL_STOCK says why" \
   'd["diagnostics"][0]["code"] == "REMOVAL_STOCK" and "milling process" in d["diagnostics"][0]["message"]'
+
+# The program's drawing window is the stock (TP-008): under G55 (X50 Y-80
+# Z-120) the configuration's block (X-150..-50) is far away, the window's
+# blank X60..120 Y-70..-30 holds the pocket.
+{ echo 'N0000 G55'; echo 'N0001 ;WINDOW_02 (10, 10, 70, 50, 0, -8)'; sed 's/G54/G55/' pocket.nc; } >window.nc
+expect_rc 0 "simulate a program with WINDOW_02" --json simulate window.nc
+json_check "the stock is the window, in G55" \
+  'd["stock"] == {"source": "window", "keyword": "WINDOW_02", "program": d["program"], "block": "N0001", "line": 2, "zero_offset": "G55"}'
+json_check "the pocket is cut out of it" \
+  'abs(d["stock_volume"] - 60 * 40 * 8) < 1e-6 and abs(d["removed_volume"] - 3157.94) < 120 * 1.4143 * 0.2 * 4'
+expect_rc 0 "text names the window" simulate window.nc
+text_check "stock line" "stock: WINDOW_02 of P[0-9]* N0001 (line 2) in G55"
+expect_rc 0 "without a window" --json simulate pocket.nc
+json_check "the configuration's stock" 'd["stock"] == {"source": "configuration"}'
+sed 's/WINDOW_02 (10, 10, 70, 50, 0, -8)/WINDOW_02 (10, 10, 10, 50)/' window.nc >flat.nc
+expect_rc 2 "a window without width" --json simulate flat.nc
+json_check "REMOVAL_WINDOW at its block and line" \
+  '[(x["code"], x["block"], x["line"]) for x in d["diagnostics"]][:1] == [("REMOVAL_WINDOW", "N0001", 2)] and "XMIN and XMAX are equal" in d["diagnostics"][0]["message"]'
 
 mkfifo pipe.stl
 expect_rc 2 "--stl FIFO refused" simulate pocket.nc --stl pipe.stl

@@ -1,0 +1,208 @@
+#include "cnc_core/removal/ProgramStock.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <optional>
+
+#include "cnc_core/contour/GneSchema.h"
+#include "cnc_core/contour/GneText.h"
+#include "cnc_core/interp/MotionPlanner.h"
+#include "cnc_core/toolpath/ToolpathBuilder.h"
+
+namespace mtc::core::removal {
+
+namespace {
+
+std::string_view trimmed(std::string_view s) {
+    const std::size_t a = s.find_first_not_of(" \t\r");
+    if (a == std::string_view::npos) return {};
+    return s.substr(a, s.find_last_not_of(" \t\r") - a + 1);
+}
+
+/// The instruction of a line: without '/', the N number (with its enhanced
+/// number), ':' and the ';' the compiler puts before a GNE instruction
+/// (`N0003 ;WINDOW_02 (...)`).
+std::string_view instruction(std::string_view line) {
+    line = trimmed(line);
+    const auto dropComment = [&] {
+        if (!line.empty() && line.front() == ';') line = trimmed(line.substr(1));
+    };
+    dropComment();
+    if (!line.empty() && line.front() == '/') line = trimmed(line.substr(1));
+    if (line.size() > 1 && (line[0] == 'N' || line[0] == 'n') &&
+        std::isdigit(static_cast<unsigned char>(line[1]))) {
+        std::size_t i = 1;
+        while (i < line.size() &&
+               (std::isdigit(static_cast<unsigned char>(line[i])) || line[i] == ':'))
+            ++i;
+        line = trimmed(line.substr(i));
+    }
+    if (!line.empty() && line.front() == ':') line = trimmed(line.substr(1));
+    dropComment();
+    return line;
+}
+
+bool isWindowInstruction(std::string_view text) {
+    static constexpr std::string_view word = "WINDOW_";
+    if (text.size() < word.size()) return false;
+    for (std::size_t i = 0; i < word.size(); ++i)
+        if (std::toupper(static_cast<unsigned char>(text[i])) != word[i]) return false;
+    return true;
+}
+
+/// The first line of `source` whose instruction is a WINDOW_ keyword: that
+/// instruction (what the GNE reader gets) and its 1-based line.
+std::optional<std::pair<std::string, std::uint32_t>> findWindow(std::string_view source) {
+    std::uint32_t number = 1;
+    for (std::size_t start = 0; start < source.size(); ++number) {
+        std::size_t end = source.find('\n', start);
+        if (end == std::string_view::npos) end = source.size();
+        const std::string_view line = source.substr(start, end - start);
+        start = end + 1;
+        if (line.find('_') == std::string_view::npos) continue;  // the common line, fast
+        const std::string_view text = instruction(line);
+        if (isWindowInstruction(text)) return std::pair{std::string(text), number};
+    }
+    return std::nullopt;
+}
+
+/// Index of the first block starting on or after `line` (blocks.size() if none).
+std::uint32_t blockAtOrAfter(const Program& program, std::uint32_t line) {
+    std::uint32_t low = 0, high = static_cast<std::uint32_t>(program.blocks.size());
+    while (low < high) {
+        const std::uint32_t middle = low + (high - low) / 2;
+        if (program.blocks[middle].line < line)
+            low = middle + 1;
+        else
+            high = middle;
+    }
+    return low;
+}
+
+/// The modal state when the program reaches block `block` (a check run
+/// from its first block); false when it does not get there.
+bool stateAtBlock(Interpreter& interpreter, int number, std::uint32_t block,
+                  std::uint64_t blockBudget) {
+    if (!interpreter.select(number, 0)) return false;
+    if (block == 0) return true;
+    interpreter.setStopTarget(StopTarget{interpreter.state().program->number, block, 1});
+    std::uint64_t blocks = 0;
+    while (blocks < blockBudget) {
+        const RunResult run = interpreter.run(std::min<std::uint64_t>(blockBudget - blocks, 65536));
+        blocks += std::max<std::uint64_t>(run.blocksInterpreted, 1);
+        if (run.status == RunStatus::TargetReached) return true;
+        if (run.status != RunStatus::Running && run.status != RunStatus::BudgetExceeded &&
+            run.status != RunStatus::Stopped)
+            return false;
+    }
+    return false;
+}
+
+}  // namespace
+
+namespace {
+
+/// The window's blank in workpiece coordinates: lo / hi per scene axis;
+/// false with `problem` when it has no extent.
+struct Blank {
+    bool turning = false;
+    std::array<double, 3> lo{}, hi{};  ///< milling: the box; turning: Z from lo[2] to hi[2]
+    double radius = 0.0, bore = 0.0;   ///< turning
+};
+
+bool blankOf(const gne::GneCall& call, Blank& blank, std::string& problem) {
+    const gne::CallSpec& spec = *gne::findCallSpec(call.keyword);
+    const auto v = [&](std::size_t i) { return gne::paramValue(spec, call, i); };
+    for (std::size_t i = 0; i < spec.params.size(); ++i)
+        if (!std::isfinite(v(i))) return problem = "a value is not a finite number", false;
+    blank.turning = spec.plane == gne::GnePlane::Turning;
+    if (blank.turning) {  // ZMIN, ZMAX, XMAX [, XMIN]
+        blank.lo[2] = std::min(v(0), v(1));
+        blank.hi[2] = std::max(v(0), v(1));
+        blank.radius = v(2);
+        blank.bore = v(3);
+        if (blank.lo[2] == blank.hi[2]) return problem = "ZMIN and ZMAX are equal", false;
+        if (blank.bore >= blank.radius) return problem = "XMIN must be smaller than XMAX", false;
+        return true;
+    }
+    // XMIN, YMIN, XMAX, YMAX [, ZTOP [, ZBOT]]: corners in either order, as the GNE draws them
+    blank.lo = {std::min(v(0), v(2)), std::min(v(1), v(3)), v(5)};
+    blank.hi = {std::max(v(0), v(2)), std::max(v(1), v(3)), v(4)};
+    if (blank.lo[0] == blank.hi[0]) return problem = "XMIN and XMAX are equal", false;
+    if (blank.lo[1] == blank.hi[1]) return problem = "YMIN and YMAX are equal", false;
+    if (blank.hi[2] <= blank.lo[2]) return problem = "ZTOP must lie above ZBOT", false;
+    return true;
+}
+
+}  // namespace
+
+ProgramStock programStock(const ProcessConfig& config, const ProgramStore& programs, int number,
+                          std::shared_ptr<const ZeroOffsetTable> zeroOffsets,
+                          std::uint64_t blockBudget) {
+    ProgramStock result;
+    result.stock = stockOf(config);
+    const ProgramPtr program = programs.find(config.index, number);
+    if (!program) return result;
+    const auto window = findWindow(program->source);
+    if (!window) return result;
+    StockOrigin& origin = result.origin;
+    origin.fromWindow = true;
+    origin.where = {program->number, "", static_cast<int>(window->second), 0};
+    const std::uint32_t block = blockAtOrAfter(*program, window->second);
+    if (block < program->blocks.size()) origin.where.block = program->blockId(block);
+    result.stock = Stock{};  // the window's, or none
+    const auto refuse = [&](const std::string& why) {
+        result.diagnostics.error("REMOVAL_WINDOW", origin.where,
+                                 "the drawing window cannot be the stock: " + why);
+        return result;
+    };
+    const gne::GneDocument read = gne::readGne(window->first, window->second);
+    if (!read.diagnostics.empty()) return refuse(read.diagnostics.front().message);
+    if (read.items.empty() || read.items.front().isContour) return refuse("not a WINDOW_01/02");
+    const gne::GneCall& call = read.items.front().call;
+    origin.keyword = call.keyword;
+    Blank blank;
+    std::string problem;
+    if (!blankOf(call, blank, problem)) return refuse(call.keyword + ": " + problem);
+
+    NullSink sink;
+    InterpreterServices services;
+    services.zeroOffsets = std::move(zeroOffsets);
+    Interpreter interpreter(config, programs, sink, services);
+    interpreter.options().continueAfterError = true;
+    if (!stateAtBlock(interpreter, number, block, blockBudget))
+        return refuse("the program does not reach it (its zero offset is unknown)");
+    const ModalState& modal = interpreter.state().modal;
+    origin.zeroOffset = modal.g[kGroupZeroOffset];
+    const MotionPlanner planner(&interpreter.axes(), &interpreter.zeroOffsets());
+    const ToolpathBuilder scene(interpreter.axes());
+    std::array<double, 3> offset{0, 0, 0};
+    for (int d = 0; d < 3; ++d)
+        if (const int axis = scene.machineAxisOfScene(d); axis >= 0)
+            offset[static_cast<std::size_t>(d)] = planner.offsetOf(modal, axis);
+    if (blank.turning) {
+        result.stock.shape = Stock::Shape::Cylinder;
+        result.stock.axis = 2;  // the turning plane's 1st axis, Z (G18)
+        result.stock.radius = blank.radius;
+        result.stock.from = blank.lo[2] + offset[2];
+        result.stock.to = blank.hi[2] + offset[2];
+        if (blank.bore > 0.0)
+            result.diagnostics.warning("REMOVAL_WINDOW_SIMPLIFIED", origin.where,
+                                       "the bore XMIN of the drawing window is not simulated: "
+                                       "the stock is a solid bar");
+        if (offset[0] != 0.0)
+            result.diagnostics.warning("REMOVAL_WINDOW_SIMPLIFIED", origin.where,
+                                       "the zero offset shifts X: the bar stays on the spindle "
+                                       "axis (X0 of the machine)");
+        return result;
+    }
+    result.stock.shape = Stock::Shape::Block;
+    for (std::size_t d = 0; d < 3; ++d) {
+        result.stock.min[d] = blank.lo[d] + offset[d];
+        result.stock.max[d] = blank.hi[d] + offset[d];
+    }
+    return result;
+}
+
+}  // namespace mtc::core::removal
