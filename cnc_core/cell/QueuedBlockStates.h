@@ -15,8 +15,6 @@ namespace mtc::core {
 /// tool, spindle direction, call level) must come from here, not from the
 /// interpreter's state now.
 struct QueuedBlockState {
-    int program = 0;  ///< where the block's outputs come from (SourceLocation)
-    int line = 0;
     ProgramPtr source;        ///< the program of the block
     std::uint32_t index = 0;  ///< its block index
     int callLevel = 0;        ///< 0 = main program

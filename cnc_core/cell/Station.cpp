@@ -581,8 +581,6 @@ void Station::recordQueuedBlock(const ProgramPtr& program, std::uint32_t index, 
     QueuedBlockState& entry = queued_.record();
     entry.firstItem = firstItem;
     entry.endItem = machine_.itemsQueued();
-    entry.program = output_.last.program;
-    entry.line = output_.last.line;
     if (entry.source != program) entry.source = program;  // a reused slot may hold it already
     entry.index = index;
     entry.callLevel = callLevel;

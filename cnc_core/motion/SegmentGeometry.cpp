@@ -35,11 +35,6 @@ double arcTangentExtreme(double angle0, double sweep, bool secondAxis, double st
     return std::max(std::fabs(startShare), std::fabs(endShare));
 }
 
-double arcTangentExtreme(double angle0, double sweep, bool secondAxis) {
-    auto share = [secondAxis](double a) { return secondAxis ? std::cos(a) : std::sin(a); };
-    return arcTangentExtreme(angle0, sweep, secondAxis, share(angle0), share(angle0 + sweep));
-}
-
 SegmentGeometry SegmentGeometry::of(const Motion& m, const MotionLimits& limits) {
     SegmentGeometry g;
     g.mapping_ = PlaneMapping::of(m, limits);

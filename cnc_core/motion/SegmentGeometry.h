@@ -68,11 +68,9 @@ class SegmentGeometry {
 
 /// Largest share of the first (`secondAxis` false) or second plane axis in
 /// the unit tangent of a circle swept from polar angle `angle0` by `sweep`
-/// radians (signed): max |sin| or max |cos| over the swept angles.
-double arcTangentExtreme(double angle0, double sweep, bool secondAxis);
-/// The same with the axis's share at the start and the end of the sweep
-/// given (|sin| or |cos| of angle0 and angle0 + sweep, e.g. from the radius
-/// vectors): no trigonometry.
+/// radians (signed): max |sin| or max |cos| over the swept angles, given
+/// that share at the start and the end of the sweep (|sin| or |cos| of
+/// angle0 and angle0 + sweep, e.g. from the radius vectors: no trigonometry).
 double arcTangentExtreme(double angle0, double sweep, bool secondAxis, double startShare,
                          double endShare);
 

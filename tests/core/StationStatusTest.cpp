@@ -110,7 +110,7 @@ LoopView runLoop(const std::string& source, int ticks, double tick) {
     view.currentBlock = mill.control().currentBlock();
     view.workX = mill.machine().position(0) + 150.0;  // G54: X-150
     if (const core::QueuedBlockState* executing = mill.executingBlockState()) {
-        view.executingBlock = "N000" + std::to_string(executing->line);
+        view.executingBlock = executing->source->blockId(executing->index);
         view.shownX = executing->modal.work[0];
     }
     return view;
