@@ -36,8 +36,7 @@ double stockVolume(const core::removal::PartModel& part) {
         const core::removal::Box& b = f->stock();
         return (b.max[0] - b.min[0]) * (b.max[1] - b.min[1]) * (b.max[2] - b.min[2]);
     }
-    const core::removal::TurnedProfile& p = *part.profile();
-    return 3.14159265358979323846 * p.stockRadius() * p.stockRadius() * (p.to() - p.from());
+    return part.profile()->blankVolume();  // the bar, or the RAW contour's blank
 }
 
 void writeJson(const SimulateReport& r) {
@@ -57,6 +56,10 @@ void writeJson(const SimulateReport& r) {
         json.field("block", stock.where.block);
         json.field("line", stock.where.line);
         json.field("zero_offset", "G" + std::to_string(stock.zeroOffset));
+        if (stock.rawContour != 0) {  // the blank inside the window (TP-021)
+            json.field("raw_contour", stock.rawContour);
+            json.field("raw_line", static_cast<long long>(stock.rawLine));
+        }
     }
     json.endObject();
     json.field("model", modelName(part));
@@ -90,8 +93,10 @@ void writeText(const SimulateReport& r) {
         std::printf("stock: %s of P%d %s (line %d) in G%d\n", r.run.stock.keyword.c_str(),
                     r.run.stock.where.program, r.run.stock.where.block.c_str(),
                     r.run.stock.where.line, r.run.stock.zeroOffset);
-    else
-        std::printf("stock: machine configuration\n");
+    if (r.run.stock.rawContour != 0)
+        std::printf("blank: RAW contour %d (line %u)\n", r.run.stock.rawContour,
+                    r.run.stock.rawLine);
+    if (!r.run.stock.fromWindow) std::printf("stock: machine configuration\n");
     std::printf("removed volume: %.3f mm3 of %.3f mm3 stock; %llu of %llu moves cut, %llu rapid\n",
                 part.removedVolume(), stockVolume(part),
                 static_cast<unsigned long long>(r.run.counts.cuttingMoves),

@@ -109,6 +109,10 @@ std::optional<PartModel> PartModel::create(const Stock& stock, const RemovalSett
             return std::nullopt;
         }
         model.profile_.emplace(stock.radius, stock.from, stock.to, static_cast<int>(slices));
+        if (!stock.outline.empty() && !model.profile_->shapeBlank(stock.outline)) {
+            error = "the blank's outline winds over the bar too often to be simulated";
+            return std::nullopt;
+        }
         model.axial_ = std::clamp(stock.axis, 0, 2);
         model.radial_ = (model.axial_ + 1) % 3;
         model.segments_ = segments;

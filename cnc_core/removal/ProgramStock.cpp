@@ -5,6 +5,7 @@
 #include <cmath>
 #include <optional>
 
+#include "cnc_core/contour/ContourSolver.h"
 #include "cnc_core/contour/GneSchema.h"
 #include "cnc_core/contour/GneText.h"
 #include "cnc_core/interp/MotionPlanner.h"
@@ -67,6 +68,62 @@ std::optional<std::pair<std::string, std::uint32_t>> findWindow(std::string_view
     return std::nullopt;
 }
 
+/// `text` begins with the GNE word `word` (not a longer name).
+bool startsWithWord(std::string_view text, std::string_view word) {
+    if (text.size() < word.size()) return false;
+    for (std::size_t i = 0; i < word.size(); ++i)
+        if (std::toupper(static_cast<unsigned char>(text[i])) != word[i]) return false;
+    if (text.size() == word.size()) return true;
+    const auto next = static_cast<unsigned char>(text[word.size()]);
+    return !std::isalnum(next) && next != '_';
+}
+
+/// `line` holds `word` in upper or lower case letters (a cheap test before
+/// a line is taken apart: most lines of a long program are plain moves).
+bool mentions(std::string_view line, std::string_view word) {
+    for (std::size_t at = 0; at + word.size() <= line.size(); ++at) {
+        std::size_t i = 0;
+        while (i < word.size() && std::toupper(static_cast<unsigned char>(line[at + i])) == word[i])
+            ++i;
+        if (i == word.size()) return true;
+    }
+    return false;
+}
+
+/// The window on line `windowLine` of `source` and the first RAW contour
+/// after it before the next window, as GNE text for readGne(text,
+/// windowLine): the window (it sets the contour's plane) and the lines
+/// CONT (n, RAW) ... END_CONT as the GNE writes them or as the compiler
+/// leaves them (behind ';'), every other line empty so that the lines keep
+/// their numbers. The scan ends at that contour's END_CONT.
+std::string rawContourText(std::string_view source, std::uint32_t windowLine) {
+    std::string text;
+    bool inContour = false;
+    std::uint32_t number = 1;
+    for (std::size_t start = 0; start < source.size(); ++number) {
+        std::size_t end = source.find('\n', start);
+        if (end == std::string_view::npos) end = source.size();
+        const std::string_view line = source.substr(start, end - start);
+        start = end + 1;
+        if (number < windowLine) continue;
+        if (number == windowLine) {
+            text += instruction(line);
+            text += '\n';
+            continue;
+        }
+        const bool candidate = inContour || mentions(line, "CONT") || mentions(line, "WINDOW_");
+        const std::string_view gne = candidate ? instruction(line) : std::string_view{};
+        if (isWindowInstruction(gne)) break;
+        if (!inContour && startsWithWord(gne, "CONT") &&
+            mentions(gne.substr(0, gne.find(';')), "RAW"))
+            inContour = true;
+        if (inContour) text += gne;
+        text += '\n';
+        if (inContour && startsWithWord(gne, "END_CONT")) break;
+    }
+    return text;
+}
+
 /// Index of the first block starting on or after `line` (blocks.size() if none).
 std::uint32_t blockAtOrAfter(const Program& program, std::uint32_t line) {
     std::uint32_t low = 0, high = static_cast<std::uint32_t>(program.blocks.size());
@@ -99,10 +156,6 @@ bool stateAtBlock(Interpreter& interpreter, int number, std::uint32_t block,
     return false;
 }
 
-}  // namespace
-
-namespace {
-
 /// The window's blank in workpiece coordinates: lo / hi per scene axis;
 /// false with `problem` when it has no extent.
 struct Blank {
@@ -133,6 +186,59 @@ bool blankOf(const gne::GneCall& call, Blank& blank, std::string& problem) {
     if (blank.lo[1] == blank.hi[1]) return problem = "YMIN and YMAX are equal", false;
     if (blank.hi[2] <= blank.lo[2]) return problem = "ZTOP must lie above ZBOT", false;
     return true;
+}
+
+/// The closed outline (axial, radius) of a solved turning contour, shifted
+/// by `axialOffset`: an open contour is closed along the spindle axis.
+std::vector<std::array<double, 2>> blankOutline(const std::vector<gne::Segment>& path,
+                                                double axialOffset) {
+    std::vector<gne::Point> points = gne::tessellate(path, 0.01);
+    if ((points.back() - points.front()).norm() > 1e-6) {
+        const gne::Point first = points.front(), last = points.back();
+        points.emplace_back(last.x(), 0.0);
+        points.emplace_back(first.x(), 0.0);
+    } else {
+        points.pop_back();
+    }
+    std::vector<std::array<double, 2>> outline;
+    outline.reserve(points.size());
+    for (const gne::Point& p : points)  // plane order: 1st axis Z, 2nd axis X
+        outline.push_back({p.x() + axialOffset, p.y()});
+    return outline;
+}
+
+/// A turning window's blank from the first RAW contour of the turning plane
+/// after it, up to the next window (TP-021): the stock's outline; an error
+/// REMOVAL_RAW_CONTOUR and no stock when that contour does not solve.
+void shapeFromRawContour(const Program& program, std::uint32_t windowLine, double axialOffset,
+                         ProgramStock& result) {
+    const gne::GneDocument read =
+        gne::readGne(rawContourText(program.source, windowLine), windowLine);
+    for (const gne::GneItem& item : read.items) {
+        if (!item.isContour || !item.contour.raw || item.contour.plane != gne::GnePlane::Turning)
+            continue;
+        const gne::Contour& contour = item.contour;
+        StockOrigin& origin = result.origin;
+        origin.rawContour = contour.number;
+        origin.rawLine = contour.line;
+        const gne::ContourSolution solution = gne::solveContour(contour);
+        if (!solution.complete()) {
+            const std::uint32_t block = blockAtOrAfter(program, contour.line);
+            const SourceLocation where{program.number,
+                                       block < program.blocks.size() ? program.blockId(block) : "",
+                                       static_cast<int>(contour.line), 0};
+            const std::string why = solution.diagnostics.empty()
+                                        ? std::string("it has no elements")
+                                        : solution.diagnostics.front().message;
+            result.diagnostics.error("REMOVAL_RAW_CONTOUR", where,
+                                     "the RAW contour " + std::to_string(contour.number) +
+                                         " cannot be the blank: " + why);
+            result.stock = Stock{};  // nothing is cut rather than the wrong blank
+            return;
+        }
+        result.stock.outline = blankOutline(solution.path, axialOffset);
+        return;
+    }
 }
 
 }  // namespace
@@ -195,6 +301,7 @@ ProgramStock programStock(const ProcessConfig& config, const ProgramStore& progr
             result.diagnostics.warning("REMOVAL_WINDOW_SIMPLIFIED", origin.where,
                                        "the zero offset shifts X: the bar stays on the spindle "
                                        "axis (X0 of the machine)");
+        shapeFromRawContour(*program, window->second, offset[2], result);
         return result;
     }
     result.stock.shape = Stock::Shape::Block;

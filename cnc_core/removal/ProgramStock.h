@@ -21,6 +21,10 @@ struct StockOrigin {
     std::string keyword;      ///< "WINDOW_01" / "WINDOW_02"
     SourceLocation where;     ///< the window's program, block and line
     int zeroOffset = 53;      ///< G53..G59 in force at the window
+    /// A turning window's blank from the first RAW contour of the turning
+    /// plane after it (TP-021): its number and CONT line; 0 = the whole bar.
+    int rawContour = 0;
+    std::uint32_t rawLine = 0;
 };
 
 /// A program's stock and what was wrong with its window.

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 
 #include "cnc_core/removal/HeightField.h"
@@ -154,10 +155,59 @@ bool TurnedProfile::touches(double axialA, double radialA, double axialB, double
     });
 }
 
+bool TurnedProfile::shapeBlank(const std::vector<std::array<double, 2>>& outline) {
+    const std::size_t n = outline.size();
+    const auto edge = [&](std::size_t i) {
+        const std::array<double, 2>& a = outline[i];
+        const std::array<double, 2>& b = outline[(i + 1) % n];
+        const bool finite = std::isfinite(a[0]) && std::isfinite(a[1]) && std::isfinite(b[0]) &&
+                            std::isfinite(b[1]);
+        return finite ? cellsWithin(std::min(a[0], b[0]), std::max(a[0], b[0]), from_, length_,
+                                    slices())
+                      : std::array<int, 2>{1, 0};
+    };
+    // An outline that winds to and fro over the bar many times would visit
+    // every slice per edge: refused before any work beyond the count.
+    std::uint64_t visits = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+        const auto [first, last] = edge(i);
+        if (first <= last) visits += static_cast<std::uint64_t>(last - first + 1);
+    }
+    if (visits > kMaxBlankVisits) return false;
+    std::vector<double> reach(radii_.size(), 0.0);
+    for (std::size_t i = 0; i < n; ++i) {
+        const std::array<double, 2>& a = outline[i];
+        const std::array<double, 2>& b = outline[(i + 1) % n];
+        const double lo = std::min(a[0], b[0]), hi = std::max(a[0], b[0]);
+        const auto [first, last] = edge(i);
+        for (int k = first; k <= last; ++k) {
+            const double centre = sliceCentre(k);
+            if (centre < lo || centre > hi) continue;  // cellsWithin rounds outwards
+            const double t = hi > lo ? (centre - a[0]) / (b[0] - a[0]) : 0.0;
+            const double r = hi > lo ? a[1] + t * (b[1] - a[1]) : std::max(a[1], b[1]);
+            double& kept = reach[static_cast<std::size_t>(k)];
+            kept = std::max(kept, std::min(r, radius_));
+        }
+    }
+    radii_ = reach;
+    blank_ = std::move(reach);
+    return true;
+}
+
 double TurnedProfile::removedVolume() const {
     double sum = 0.0;
-    for (double r : radii_)
-        sum += radius_ * radius_ - r * r;
+    for (std::size_t k = 0; k < radii_.size(); ++k) {
+        const double before = blank_.empty() ? radius_ : blank_[k];
+        sum += before * before - radii_[k] * radii_[k];
+    }
+    return kPi * sum * length_;
+}
+
+double TurnedProfile::blankVolume() const {
+    if (blank_.empty()) return kPi * radius_ * radius_ * (to_ - from_);
+    double sum = 0.0;
+    for (double r : blank_)
+        sum += r * r;
     return kPi * sum * length_;
 }
 

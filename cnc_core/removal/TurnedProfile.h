@@ -1,8 +1,13 @@
 #pragma once
 
+#include <array>
+#include <cstdint>
 #include <vector>
 
 namespace mtc::core::removal {
+
+/// Most slice visits TurnedProfile::shapeBlank() makes (tens of ms).
+inline constexpr std::uint64_t kMaxBlankVisits = 20'000'000;
 
 /// The tool as the part models cut with it. The mill uses `radius` (a flat
 /// end mill along Z). On the lathe, in the plane through the axis: a
@@ -48,8 +53,17 @@ class TurnedProfile {
     bool touches(double axialA, double radialA, double axialB, double radialB, const Cutter& tool,
                  double margin) const;
 
+    /// Makes the blank the material inside `outline` (Stock::outline: a
+    /// closed polygon of (axial, radius) points): each slice keeps the
+    /// outline's largest radius at its centre, at most the bar's radius, 0
+    /// where the outline does not reach. Work: the slices each edge spans;
+    /// false (nothing changed) when they add up to more than kMaxBlankVisits.
+    bool shapeBlank(const std::vector<std::array<double, 2>>& outline);
+
     /// Material turned away so far (mm^3).
     double removedVolume() const;
+    /// The blank's volume (mm^3): the bar's, or less after shapeBlank().
+    double blankVolume() const;
 
     double stockRadius() const { return radius_; }
     double from() const { return from_; }
@@ -74,6 +88,7 @@ class TurnedProfile {
     double to_;
     double length_;
     std::vector<double> radii_;
+    std::vector<double> blank_;  ///< the radii before any cut (empty: all radius_)
 };
 
 }  // namespace mtc::core::removal

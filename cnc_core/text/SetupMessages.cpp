@@ -129,6 +129,7 @@ constexpr MessageEntry kSetupMessages[] = {
     {"REENTRY_NOT_CHECKED", "Kein Zielsatz zum Prüfen des Rückwegs"},
     {"REMOVAL_NOT_SIMULATED", "Bewegungen unter G31/G32 nicht zerspant"},
     {"REMOVAL_RAPID_CUT", "Eilgangbewegung schneidet ins Werkstück"},
+    {"REMOVAL_RAW_CONTOUR", "Rohteilkontur (RAW) als Rohteil ungültig"},
     {"REMOVAL_STOCK", "Rohteil für den Materialabtrag ungültig"},
     {"REMOVAL_STOP_NOT_REACHED", "Abtragslauf erreicht den Zielsatz nicht"},
     {"REMOVAL_WINDOW", "Zeichenfenster als Rohteil ungültig"},

@@ -2,6 +2,7 @@
 
 #include <array>
 #include <string>
+#include <vector>
 
 namespace mtc::core {
 
@@ -17,6 +18,12 @@ struct Stock {
     double radius = 0.0;  ///< cylinder radius
     double from = 0.0;    ///< cylinder: extent along its axis
     double to = 0.0;
+    /// Cylinder: the blank inside the bar when it is not the whole bar (a
+    /// GNE RAW contour, TP-021): a closed polygon in the plane through the
+    /// axis, points (axial position, radius); the material at an axial
+    /// position reaches out to the polygon's largest radius there. Empty:
+    /// the whole bar.
+    std::vector<std::array<double, 2>> outline;
 
     /// The axis-aligned box around the stock in scene coordinates (a
     /// cylinder's: its length along the axis, +-radius across); false and

@@ -2,7 +2,8 @@
 # mtc200-cli simulate (issue 19 §5, CLI-CONTRACT.md "Extensions", D-020):
 # removed volume of a pocket in JSON and text, the STL written atomically
 # (binary, its triangle count), the lathe's turned part, a rapid into the
-# part named with its block, the program's WINDOW_02 as the stock, and
+# part named with its block, the program's WINDOW_02 as the stock, a RAW
+# contour as the lathe's blank, and
 # refusals: bad resolutions, a grid over the cell cap, a bad window, a FIFO as
 # output, program errors (no STL), misplaced options.
 source "$(dirname "$0")/common.bash"
@@ -96,6 +97,31 @@ sed 's/WINDOW_02 (10, 10, 70, 50, 0, -8)/WINDOW_02 (10, 10, 10, 50)/' window.nc 
 expect_rc 2 "a window without width" --json simulate flat.nc
 json_check "REMOVAL_WINDOW at its block and line" \
   '[(x["code"], x["block"], x["line"]) for x in d["diagnostics"]][:1] == [("REMOVAL_WINDOW", "N0001", 2)] and "XMIN and XMAX are equal" in d["diagnostics"][0]["message"]'
+
+# A RAW contour after the lathe's window is the blank (TP-021): a preform
+# of radius 20 up to Z-30 on a bar of radius 30 from Z-60 to Z2; the pass
+# at radius 18 over Z-20..2 takes pi * (20^2 - 18^2) * 22 from it.
+cat >preform.nc <<'NC'
+N0001 G18 G54 G90 G0 X50 Z5
+N0002 ;WINDOW_01 (-60, 2, 30)
+N0003 ;CONT (4, RAW)
+;START Z2 X20
+;LINE Z-30 X20
+;LINE Z-30 X30
+;LINE Z-60 X30
+;END_CONT
+N0010 G0 X18 Z5
+N0011 G1 Z-20 F0.2
+N0012 G0 X50
+N0013 M30
+NC
+expect_rc 0 "simulate a preform" --json --process 1 simulate preform.nc
+json_check "the RAW contour is named in the stock" \
+  'd["stock"]["raw_contour"] == 4 and d["stock"]["raw_line"] == 3 and d["stock"]["keyword"] == "WINDOW_01"'
+json_check "stock and removed volume are the preform's" \
+  'abs(d["stock_volume"] - 3.14159265358979 * (900 * 30 + 400 * 32)) < 1e-6 and abs(d["removed_volume"] - 3.14159265358979 * 76 * 22) < 1e-6'
+expect_rc 0 "simulate a preform, text" --process 1 simulate preform.nc
+text_check "blank line" "blank: RAW contour 4 (line 3)"
 
 mkfifo pipe.stl
 expect_rc 2 "--stl FIFO refused" simulate pocket.nc --stl pipe.stl
