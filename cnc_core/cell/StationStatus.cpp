@@ -28,14 +28,6 @@ std::string oneLine(std::string_view text, std::size_t limit = 160) {
     return line;
 }
 
-/// The interpreter's modal state as of the block the machine executes (the
-/// interpreter may be the look-ahead ahead), its state now when the machine
-/// stands or the block is not known.
-const ModalState& shownModal(const Station& station) {
-    const QueuedBlockState* executing = station.executingBlockState();
-    return executing ? executing->modal : station.interpreter().state().modal;
-}
-
 /// The last M of each group, as of the same block.
 const std::array<int, 17>& shownMGroups(const Station& station) {
     const QueuedBlockState* executing = station.executingBlockState();
@@ -152,7 +144,7 @@ SpindleTurn spindleTurn(const Station& station, const AuxFunctionGroups& groups,
 }
 
 void describeSpindles(const Station& station, StationStatus& status) {
-    const ModalState& modal = shownModal(station);
+    const ModalState& modal = shownModalState(station);
     const motion::SpindleSet& machineSpindles = station.machine().spindles();
     const ProcessAxes& axes = station.interpreter().axes();
     const AuxFunctionGroups groups(station.config());
@@ -193,7 +185,7 @@ void describeAxes(const Station& station, StationStatus& status) {
     std::array<double, kMaxAxes> actual{};
     for (int a = 0; a < axes.count() && a < kMaxAxes; ++a)
         actual[static_cast<std::size_t>(a)] = machine.position(a);
-    const ModalState& modal = shownModal(station);
+    const ModalState& modal = shownModalState(station);
     const std::array<double, kMaxAxes> work = interpreter.programView(actual, modal);
     const MotionPlanner planner(&axes, &interpreter.zeroOffsets());
     for (int a = 0; a < axes.count() && a < kMaxAxes; ++a) {
@@ -212,7 +204,7 @@ void describeAxes(const Station& station, StationStatus& status) {
 }
 
 void describeTool(const Station& station, StationStatus& status) {
-    const ModalState& modal = shownModal(station);
+    const ModalState& modal = shownModalState(station);
     status.tool = modal.tool;
     status.edge = modal.edge;
     const ToolEdge* edge = station.interpreter().tools().edge(modal.tool, modal.edge);
@@ -269,6 +261,11 @@ bool keyLamp(const Station& station, ControlKey key) {
             return false;
     }
     return false;
+}
+
+const ModalState& shownModalState(const Station& station) {
+    const QueuedBlockState* executing = station.executingBlockState();
+    return executing ? executing->modal : station.interpreter().state().modal;
 }
 
 const char* spindleTurnName(SpindleTurn turn) {
@@ -352,7 +349,7 @@ std::uint32_t blockIndexAtLine(const Program& program, int line) {
 
 StationStatus describeStation(const Station& station, int around) {
     StationStatus status;
-    const ModalState& modal = shownModal(station);
+    const ModalState& modal = shownModalState(station);
     describeAxes(station, status);
     describeSpindles(station, status);
     status.programmedFeed = modal.feed;

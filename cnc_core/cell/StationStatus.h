@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "cnc_core/interp/InterpreterState.h"
 #include "cnc_core/language/Program.h"
 #include "cnc_core/machine/ProcessControl.h"
 
@@ -73,6 +74,11 @@ const char* programStateWord(ProgramState state);
 
 /// What the program of `station` is doing now.
 ProgramState programStateOf(const Station& station);
+
+/// The interpreter's modal state as of the block the machine executes (the
+/// interpreter may be the look-ahead ahead of the axes), its state now when
+/// the machine stands or the block is not known.
+const ModalState& shownModalState(const Station& station);
 
 /// The lamp of machine control key `key` on the panel: lit while what the
 /// key selects is in force (its mode, single block, feed hold, a running

@@ -1,5 +1,6 @@
 #include "screens/mdi/MdiModel.h"
 
+#include "cnc_core/cell/StationStatus.h"
 #include "cnc_core/interp/Interpreter.h"
 #include "cnc_core/mdi/MdiEntry.h"
 #include "hmi/CellSession.h"
@@ -79,8 +80,16 @@ QString MdiModel::modeSummary() const {
 }
 
 QString MdiModel::positionSummary() const {
-    auto& interpreter = session_->interpreter(slot_);
+    const mtc::core::Station& station = session_->station(slot_);
     QStringList parts;
+    if (station.executingBlockState() != nullptr) {
+        // The interpreter is the look-ahead ahead: show where the axes are,
+        // as the base screen does, not where the interpreter has got to.
+        for (const mtc::core::AxisStatus& axis : mtc::core::describeStation(station, 0).axes)
+            parts << QString("%1 %2").arg(QString::fromStdString(axis.name)).arg(format(axis.work));
+        return parts.join("   ");
+    }
+    auto& interpreter = session_->interpreter(slot_);
     for (int axis = 0; axis < interpreter.axes().count(); ++axis) {
         const auto& model = interpreter.axes().axis(axis);
         if (model.spindle && !model.rotary) continue;  // a plain spindle has no position
@@ -92,15 +101,15 @@ QString MdiModel::positionSummary() const {
 }
 
 QString MdiModel::modalSummary() const {
-    const auto& state = session_->interpreter(slot_).state();
-    const auto& g = state.modal.g;
+    const mtc::core::ModalState& modal = mtc::core::shownModalState(session_->station(slot_));
+    const auto& g = modal.g;
     QStringList parts;
     for (int group :
          {mtc::core::kGroupInterpolation, mtc::core::kGroupPlane, mtc::core::kGroupDimension,
           mtc::core::kGroupFeedType, mtc::core::kGroupZeroOffset, mtc::core::kGroupToolPath})
         parts << QString("G%1").arg(g[static_cast<std::size_t>(group)]);
-    parts << QString("F%1").arg(state.modal.feed) << QString("S%1").arg(state.modal.spindleSpeed[1])
-          << QString("T%1").arg(state.modal.tool);
+    parts << QString("F%1").arg(modal.feed) << QString("S%1").arg(modal.spindleSpeed[1])
+          << QString("T%1").arg(modal.tool);
     return parts.join("  ");
 }
 

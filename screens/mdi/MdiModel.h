@@ -37,9 +37,12 @@ class MdiModel : public QObject {
     bool messageIsError() const;
     /// "MDI mode, ready" / "automatic mode: Start runs the selected program" ...
     QString modeSummary() const;
-    /// "X 10.000  Y 0.000  Z -5.000" (programmed positions of the station).
+    /// "X 10.000  Y 0.000  Z -5.000": the programmed positions MDI continues
+    /// from; while the axes work off blocks the interpreter has left behind
+    /// (a program runs with look-ahead), their actual workpiece positions.
     QString positionSummary() const;
-    /// "G1 G17 G90 G94  F1000  S0  T0": the modal state MDI continues from.
+    /// "G1 G17 G90 G94  F1000  S0  T0": the modal state MDI continues from,
+    /// or that of the block the axes execute while they lag behind.
     QString modalSummary() const;
 
   signals:

@@ -2,7 +2,8 @@
 // blocks run on Start from the station's state, global macros of the program
 // directory are expanded, DEFINE and compiler keywords are refused with the
 // input kept, runtime errors reach the error window with origin MDI, Start in
-// automatic mode runs the selected program and not the MDI entry, and each
+// automatic mode runs the selected program and not the MDI entry, while a
+// program runs the screen shows the block the axes execute, and each
 // station keeps its own input.
 #include <QLabel>
 #include <QListWidget>
@@ -22,6 +23,10 @@ class MdiScreenTest : public QObject {
     mtc::hmi::PanelOptions options(const QString& language = "en") {
         const QDir dir = emptiedDirectory(dir_.path());
         writeProgram(dir, 3, programHeader(3, "Move to X44") + "N0000 G0 G90 X44\nN0001 M30\n");
+        writeProgram(dir, 4,
+                     programHeader(4, "Long move, then incremental") +
+                         "N0000 G0 G90 X0\nN0001 G1 X100 F600\nN0002 G0 G91 X10\n"
+                         "N0003 G1 F900 X5\nN0004 M30\n");
         writeGlobalMacros(dir, "DEFINE FAST AS G1 F3000\nDEFINE ROUND AS RD2\n");
         mtc::hmi::PanelOptions o;
         o.programsDir = dir_.path();
@@ -233,6 +238,32 @@ class MdiScreenTest : public QObject {
         startAndWait(panel);
         QCOMPARE(panel.session->machine(0).position(0), 34.0);
         QCOMPARE(panel.session->control(0).selectedProgram(), 3);
+    }
+
+    // While a program runs, the interpreter is the look-ahead ahead of the
+    // axes: the screen shows the block the axes execute (as the base screen
+    // does), not the state the interpreter has reached further on.
+    void whileAProgramRunsTheScreenShowsTheBlockTheAxesExecute() {
+        PanelFixture panel(options());
+        panel.session->setTimerEnabled(false);
+        openMdi(panel);
+        QVERIFY(panel.session->selectProgram(0, 4));
+        panel.press(Qt::Key_F5, Qt::ShiftModifier);  // Start in automatic mode
+        panel.session->advance(3.0);                 // the axes are on N0001 (10 s at F600)
+        QVERIFY(panel.session->control(0).programActive());
+        const double x = panel.session->machine(0).position(0);
+        QVERIFY2(x > 10.0 && x < 40.0, qPrintable(QString::number(x)));
+        const QString modal = label(panel, "mdiModal");
+        QVERIFY2(modal.startsWith("G1 ") && modal.contains("G90") && modal.contains("F600"),
+                 qPrintable(modal));
+        const QString position = label(panel, "mdiPosition");
+        QVERIFY2(position.startsWith(QString("X %1").arg(x, 0, 'f', 3)), qPrintable(position));
+
+        panel.session->advance(30.0);  // the program ends: the interpreter's state again
+        QVERIFY(!panel.session->control(0).programActive());
+        QVERIFY2(label(panel, "mdiModal").contains("F900"), qPrintable(label(panel, "mdiModal")));
+        QVERIFY2(label(panel, "mdiPosition").startsWith("X 115.000"),
+                 qPrintable(label(panel, "mdiPosition")));
     }
 
     void controlResetAbandonsAHeldEntryAndKeepsTheInput() {
