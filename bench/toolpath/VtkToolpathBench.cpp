@@ -243,16 +243,25 @@ int main(int argc, char** argv) {
         static_cast<long long>(full->GetNumberOfPoints()), fullMs,
         static_cast<long long>(coarse->GetNumberOfCells()), decimated.tolerance, msSince(t2),
         peakRssMb() - rss1, peakRssMb());
+    const auto t3 = Clock::now();
+    auto everySegment = mtc::screens::toolpathPolyData(g, false, palette, false);
+    std::printf("poly-data with every repeat (before TP-022): %lld cells in %.1f ms\n",
+                static_cast<long long>(everySegment->GetNumberOfCells()), msSince(t3));
     std::fflush(stdout);
     if (!withFrames) return 0;
     if (canvasOnly) {  // what the view draws: still frame, then while moving
-        frames({{"full, point colours, width 1, grid", full, false, 1.0f, true},
-                {"coarse, point colours, width 1, grid", coarse, false, 1.0f, true}},
-               samples, width, height);
+        // and the full path with every repeat drawn (before TP-022), side by side
+        frames(
+            {{"full, point colours, width 1, grid", full, false, 1.0f, true},
+             {"coarse, point colours, width 1, grid", coarse, false, 1.0f, true},
+             {"full with repeats, point colours, width 1, grid", everySegment, false, 1.0f, true}},
+            samples, width, height);
         std::printf("total peak RSS %.1f MB\n", peakRssMb());
         return 0;
     }
-    auto cells = withCellColours(full, g, palette);
+    // The old drawings had a cell per segment (cell i = segment i).
+    auto cells =
+        withCellColours(mtc::screens::toolpathPolyData(g, false, palette, false), g, palette);
     frames({{"full, cell colours, width 1", cells, true, 1.0f, false},
             {"full, cell colours, width 1.5", cells, true, 1.5f, false},
             {"full, point colours, width 1", full, false, 1.0f, false},

@@ -184,6 +184,11 @@ std::size_t VtkToolpathCanvas::levelOfDetailCells() const {
                                 : 0;
 }
 
+std::size_t VtkToolpathCanvas::fullCells() const {
+    return scene_->scene.full ? static_cast<std::size_t>(scene_->scene.full->GetNumberOfCells())
+                              : 0;
+}
+
 int VtkToolpathCanvas::picksOnLevelOfDetail() const {
     return scene_->coarsePicks;
 }
@@ -249,7 +254,9 @@ void VtkToolpathCanvas::rebuild() {
         const auto& layer = part->developed ? g->developed : g->scene;
         part->full = toolpathPolyData(*g, part->developed, palette);
         part->mapper->SetInputData(part->full);
-        if (layer.segmentCount() > kLevelOfDetailCells) {
+        // Cells, not segments: a path that retraces itself may draw few
+        // cells (TP-022), and then the full picture moves faster than any copy.
+        if (static_cast<std::size_t>(part->full->GetNumberOfCells()) > kLevelOfDetailCells) {
             part->decimated = mtc::core::decimateLayer(
                 *g, part->developed, layer.bounds.size() * kLevelOfDetailTolerance,
                 kLevelOfDetailCells);

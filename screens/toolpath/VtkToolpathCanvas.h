@@ -43,6 +43,8 @@ class VtkToolpathCanvas : public ToolpathCanvas {
     bool showingLevelOfDetail() const;
     /// Cells of the scene's coarse copy (0 when the full path is small enough).
     std::size_t levelOfDetailCells() const;
+    /// Line cells of the scene's full picture (repeats dropped, TP-022).
+    std::size_t fullCells() const;
     /// Picks resolved through the coarse copy's cells to a full segment.
     int picksOnLevelOfDetail() const;
     /// The scene's caption and the range the tick labels of scene axis

@@ -8,7 +8,11 @@
 #include <vtkTypeInt32Array.h>
 #include <vtkUnsignedCharArray.h>
 
+#include <algorithm>
 #include <array>
+#include <cstring>
+#include <optional>
+#include <vector>
 
 #include "screens/toolpath/ToolpathPalette.h"
 
@@ -72,6 +76,8 @@ struct Builder {
     }
     vtkSmartPointer<vtkPolyData> finish(bool withColours) {
         offsets->SetValue(cells, 2 * cells);
+        offsets->SetNumberOfValues(cells + 1);  // fewer cells when repeats were dropped
+        connectivity->SetNumberOfValues(2 * static_cast<vtkIdType>(cells));
         xyz->SetNumberOfTuples(points);  // keeps the memory; shrinks the count
         colours->SetNumberOfTuples(points);
         auto pts = vtkSmartPointer<vtkPoints>::New();
@@ -84,6 +90,51 @@ struct Builder {
         if (withColours) poly->GetPointData()->SetScalars(colours);
         return poly;
     }
+};
+
+/// Remembers the segments drawn so far to drop exact repeats (TP-022): a
+/// contour programmed over and over draws the same few hundred lines a
+/// million times, and llvmpipe rasterises every one of them (seconds per
+/// frame) for no pixel of difference. A two-way set-associative table of
+/// recent segments: fixed memory (about 460 KB), two probes per segment; a
+/// repeat whose set two other segments took meanwhile is drawn again.
+class RepeatFilter {
+  public:
+    /// True when the segment a-b (either direction) of `kind` was seen before.
+    bool repeated(const float* a, const float* b, ToolpathKind kind) {
+        Key key{};
+        std::memcpy(key.bits.data(), a, 3 * sizeof(float));
+        std::memcpy(key.bits.data() + 3, b, 3 * sizeof(float));
+        // The same line travelled back draws the same pixels.
+        if (std::lexicographical_compare(key.bits.begin() + 3, key.bits.begin() + 6,
+                                         key.bits.begin(), key.bits.begin() + 3))
+            std::swap_ranges(key.bits.begin(), key.bits.begin() + 3, key.bits.begin() + 3);
+        key.bits[6] = static_cast<std::uint32_t>(kind) + 1;  // 0 = empty entry
+        Set& set = sets_[hash(key) & (kSets - 1)];
+        if (set.ways[0].bits == key.bits || set.ways[1].bits == key.bits) return true;
+        set.ways[set.older] = key;
+        set.older ^= 1;
+        return false;
+    }
+
+  private:
+    static constexpr std::size_t kSets = std::size_t{1} << 13;
+    struct Key {
+        std::array<std::uint32_t, 7> bits;  ///< two points' float bits, kind + 1
+    };
+    struct Set {
+        std::array<Key, 2> ways;
+        std::uint32_t older = 0;  ///< the way replaced next
+    };
+    static std::uint64_t hash(const Key& key) {
+        std::uint64_t h = 0x9E3779B97F4A7C15ull;
+        for (std::uint32_t word : key.bits)
+            h = (h ^ word) * 0xFF51AFD7ED558CCDull;
+        h ^= h >> 33;  // the final mix of MurmurHash3: every bit reaches the low ones
+        h *= 0xC4CEB9FE1A85EC53ull;
+        return h ^ (h >> 33);
+    }
+    std::vector<Set> sets_ = std::vector<Set>(kSets, Set{});
 };
 
 /// Number of places where a chain goes on with another kind (extra points).
@@ -100,27 +151,37 @@ std::size_t colourBreaks(const ToolpathGeometry& g, bool developed) {
 }  // namespace
 
 vtkSmartPointer<vtkPolyData> toolpathPolyData(const ToolpathGeometry& geometry, bool developed,
-                                              const ToolpathPalette& palette) {
+                                              const ToolpathPalette& palette, bool dropRepeats) {
     const ToolpathLayer& layer = layerOf(geometry, developed);
     const std::size_t count = layer.segmentCount();
     Builder b(layer.vertexCount() + colourBreaks(geometry, developed), count);
     std::array<Rgb, mtc::core::kToolpathKinds> rgb{};
     for (int k = 0; k < mtc::core::kToolpathKinds; ++k)
         rgb[static_cast<std::size_t>(k)] = rgbOf(palette.colour(static_cast<ToolpathKind>(k)));
+    std::optional<RepeatFilter> repeats;
+    if (dropRepeats) repeats.emplace();
     std::size_t move = 0;
     std::int32_t last = -1;  // point id of the previous segment's end
+    bool lastDrawn = false;  // the previous segment has a cell (its end point is `last`)
     ToolpathKind previous = ToolpathKind::Feed;
     for (std::size_t s = 0; s < count; ++s) {
         while (move + 1 < geometry.moves.size() &&
                firstOf(geometry.moves[move + 1], developed) <= s)
             ++move;
         const auto kind = geometry.moves.empty() ? ToolpathKind::Feed : geometry.moves[move].kind;
-        const Rgb& c = rgb[static_cast<std::size_t>(kind)];
         const std::uint32_t v = layer.segmentStart[s];
-        const bool chained = s > 0 && v == layer.segmentStart[s - 1] + 1 && kind == previous;
+        const float* ends = layer.xyz.data() + 3 * static_cast<std::size_t>(v);
+        if (repeats && repeats->repeated(ends, ends + 3, kind)) {
+            lastDrawn = false;
+            continue;
+        }
+        const Rgb& c = rgb[static_cast<std::size_t>(kind)];
+        const bool chained =
+            lastDrawn && s > 0 && v == layer.segmentStart[s - 1] + 1 && kind == previous;
         const std::int32_t from = chained ? last : b.point(layer, v, c);
         last = b.point(layer, v + 1, c);
         b.line(from, last);
+        lastDrawn = true;
         previous = kind;
     }
     return b.finish(true);

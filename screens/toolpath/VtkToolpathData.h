@@ -22,14 +22,17 @@ struct ToolpathPalette;
 
 /// ONE vtkPolyData for a layer of the geometry (`developed` picks the
 /// developed plane, else the scene): one line cell per segment (32-bit
-/// connectivity, cell i = segment i, so a picked cell id is a segment
-/// index) and RGB *point* colours by motion type ("colours"). A vertex is
-/// stored twice where the colour changes along a chain, so no cell blends
-/// two colours; cell colours would make VTK 9.1 look each fragment's colour
-/// up in a texture buffer by gl_PrimitiveID, which is slow on Mesa llvmpipe
-/// (docs/decisions/toolpath.md, TP-010).
+/// connectivity) and RGB *point* colours by motion type ("colours"). A
+/// vertex is stored twice where the colour changes along a chain, so no
+/// cell blends two colours; cell colours would make VTK 9.1 look each
+/// fragment's colour up in a texture buffer by gl_PrimitiveID, which is
+/// slow on Mesa llvmpipe (docs/decisions/toolpath.md, TP-010). With
+/// `dropRepeats`, a segment equal to one drawn before (same end points in
+/// either direction, same kind) gets no cell (TP-022): then cells are not
+/// segments by index (picking measures the geometry, not cells).
 vtkSmartPointer<vtkPolyData> toolpathPolyData(const mtc::core::ToolpathGeometry& geometry,
-                                              bool developed, const ToolpathPalette& palette);
+                                              bool developed, const ToolpathPalette& palette,
+                                              bool dropRepeats = true);
 
 /// The coarse copy drawn while the view moves: one line cell per cell of
 /// `coarse` (cell i = coarse cell i, see DecimatedLayer::segmentsOf), point

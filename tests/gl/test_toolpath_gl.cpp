@@ -8,7 +8,8 @@
 // within the cell budget, and picking on that copy still selects the right block.
 // While a program runs the backplot is drawn and the steady picture is kept
 // as an image; a frame from it is the full frame. The labels name the zero
-// offset of the block shown and read workpiece coordinates.
+// offset of the block shown and read workpiece coordinates. A path that
+// retraces itself draws each line once.
 #include <QDir>
 #include <QLabel>
 #include <QSet>
@@ -79,6 +80,25 @@ QString largeProgram(int number, int segments) {
         blocks.append(line, static_cast<std::size_t>(n));
     }
     return text + QString::fromStdString(blocks) + "N9999 M30\n";
+}
+
+/// Program `number`: a 60 x 40 rectangle with rounded corners (R10 arcs)
+/// at Z-121, `laps` times over, every other lap the other way round.
+QString lapsProgram(int number, int laps) {
+    QString text = QString(
+                       "iMTc/01%1/01.00/0000000000/27.11.2026/07:00:00/N1010%1.DAT/1\n"
+                       "%NPG:1:01:0:%1\n!01.00\n#01Laps\n$\n$\n$\n$\n*Laps\n%NPG\n")
+                       .arg(number, 3, 10, QChar('0'));
+    text += "N0001 G0 G17 G90 X-130 Y-70 Z-110\nN0002 G1 Z-121 F800\n";
+    const char* forward =
+        "G1 X-80\nG3 X-70 Y-60 I-80 J-60\nG1 Y-40\nG3 X-80 Y-30 I-80 J-40\nG1 X-120\n"
+        "G3 X-130 Y-40 I-120 J-40\nG1 Y-60\nG3 X-120 Y-70 I-120 J-60\nG1 X-130\n";
+    const char* backward =
+        "G1 X-120\nG2 X-130 Y-60 I-120 J-60\nG1 Y-40\nG2 X-120 Y-30 I-120 J-40\nG1 X-80\n"
+        "G2 X-70 Y-40 I-80 J-40\nG1 Y-60\nG2 X-80 Y-70 I-80 J-60\nG1 X-130\n";
+    for (int lap = 0; lap < laps; ++lap)
+        text += lap % 2 == 0 ? forward : backward;
+    return text + "G0 Z-110\nM30\n";
 }
 
 /// Program `number`: an 80 x 50 rectangle milled outside with T4 (radius 8)
@@ -358,6 +378,41 @@ class ToolpathGlTest : public QObject {
     /// TP-018: a station change that shows nothing new (here a dwell: the
     /// machine's time goes on, the axes stand) renders nothing; the axes
     /// moving again do.
+    // A path that retraces itself draws each line once (TP-022): 40 laps
+    // have the cells of one lap each way and look like two laps.
+    void aRetracedPathDrawsEachLineOnceAndLooksTheSame() {
+        QTemporaryDir dir;
+        writeProgram(QDir(dir.path()), 11, lapsProgram(11, 2));
+        writeProgram(QDir(dir.path()), 12, lapsProgram(12, 40));
+        mtc::hmi::PanelOptions options;
+        options.programsDir = dir.path();
+        PanelFixture panel(options);
+        QImage pictures[2];
+        std::size_t cells[2] = {0, 0}, segments[2] = {0, 0};
+        for (int i = 0; i < 2; ++i) {
+            panel.session->selectProgram(0, 11 + i);
+            QVERIFY(panel.window->showScreen("toolpath"));
+            ToolpathScreen* screen = toolpath(panel);
+            VtkToolpathCanvas* canvas = vtkCanvas(screen);
+            QVERIFY(canvas);
+            QTRY_VERIFY(screen->model()->geometry() && screen->model()->programNumber() == 11 + i);
+            canvas->renderNow();
+            pictures[i] = canvas->picture();
+            cells[i] = canvas->fullCells();
+            segments[i] = screen->model()->geometry()->scene.segmentCount();
+            QVERIFY(panel.window->showScreen("position"));
+        }
+        QVERIFY2(segments[1] > 15 * segments[0], qPrintable(QString::number(segments[1])));
+        QVERIFY2(cells[0] > 8 && cells[0] < segments[0], qPrintable(QString::number(cells[0])));
+        QCOMPARE(cells[1], cells[0]);  // 38 more laps: no cell more
+        // The same lines on the screen (the caption's lines may shift the
+        // frame by a pixel or two, so the feed pixels are counted).
+        const QColor feed = toolpath(panel)->model()->palette().feed;
+        const int two = count(pictures[0], feed), forty = count(pictures[1], feed);
+        QVERIFY2(two > 200 && std::abs(forty - two) < two / 20,
+                 qPrintable(QString("%1 / %2").arg(two).arg(forty)));
+    }
+
     void aStationChangeWithNothingNewToShowRendersNothing() {
         QTemporaryDir dir;
         writeProgram(QDir(dir.path()), 6,
