@@ -74,7 +74,28 @@ class StlBuffer {
     std::string data_;
 };
 
-void heightFieldSurface(const HeightField& f, StlBuffer& out) {
+/// Keeps the triangles' corners as floats (the view's mesh).
+class TriangleBuffer {
+  public:
+    explicit TriangleBuffer(std::uint64_t triangles) { data_.reserve(9 * triangles); }
+    void triangle(const Point& a, const Point& b, const Point& c) {
+        for (const Point* p : {&a, &b, &c})
+            for (double x : *p)
+                data_.push_back(static_cast<float>(x));
+    }
+    /// Two triangles; p0..p3 counter-clockwise seen from outside.
+    void quad(const Point& p0, const Point& p1, const Point& p2, const Point& p3) {
+        triangle(p0, p1, p2);
+        triangle(p0, p2, p3);
+    }
+    std::vector<float> take() { return std::move(data_); }
+
+  private:
+    std::vector<float> data_;
+};
+
+template <typename Out>
+void heightFieldSurface(const HeightField& f, Out& out) {
     const Box& box = f.stock();
     const VertexLine xs = vertexLine(f.columns(), box.min[0], box.max[0], f.cellWidth());
     const VertexLine ys = vertexLine(f.rows(), box.min[1], box.max[1], f.cellDepth());
@@ -107,7 +128,8 @@ void heightFieldSurface(const HeightField& f, StlBuffer& out) {
     }
 }
 
-void turnedSurface(const PartModel& part, StlBuffer& out) {
+template <typename Out>
+void turnedSurface(const PartModel& part, Out& out) {
     const TurnedProfile& p = *part.profile();
     const VertexLine zs = vertexLine(p.slices(), p.from(), p.to(), p.sliceLength());
     const int rings = static_cast<int>(zs.position.size()), segments = part.angularSegments();
@@ -151,6 +173,15 @@ std::uint64_t stlTriangleCount(const PartModel& part) {
 
 std::string partStl(const PartModel& part) {
     StlBuffer out(stlTriangleCount(part));
+    if (const HeightField* f = part.heightField())
+        heightFieldSurface(*f, out);
+    else
+        turnedSurface(part, out);
+    return out.take();
+}
+
+std::vector<float> partTriangles(const PartModel& part) {
+    TriangleBuffer out(stlTriangleCount(part));
     if (const HeightField* f = part.heightField())
         heightFieldSurface(*f, out);
     else

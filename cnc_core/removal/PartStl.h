@@ -2,6 +2,7 @@
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "cnc_core/removal/PartModel.h"
 
@@ -16,6 +17,11 @@ std::uint64_t stlTriangleCount(const PartModel& part);
 /// Turned part: the profile revolved with angularSegments() facets, closed
 /// by the two end faces. Through-cuts leave top and bottom touching.
 std::string partStl(const PartModel& part);
+
+/// The same closed surface as partStl(), for a view: 9 floats per triangle
+/// (its three corners x, y, z in scene mm, counter-clockwise seen from
+/// outside), in the STL's order.
+std::vector<float> partTriangles(const PartModel& part);
 
 /// Writes partStl() to `path` atomically (writeFileAtomically: only over a
 /// regular file, the old file stays when anything fails). False with `error`.

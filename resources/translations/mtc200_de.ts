@@ -1180,6 +1180,14 @@
         <source>the simulator&apos;s own layout</source>
         <translation>eigene Gestaltung des Simulators</translation>
     </message>
+    <message>
+        <source>M</source>
+        <translation>M</translation>
+    </message>
+    <message>
+        <source>hide or show the finished part: the stock cut by the whole program</source>
+        <translation>Fertigteil aus- oder einblenden: das vom ganzen Programm bearbeitete Rohteil</translation>
+    </message>
 </context>
 <context>
     <name>ScreenTitle</name>
@@ -3458,6 +3466,26 @@ zero point at machine %2</source>
         <translation>Werkstückkoordinaten G%1,
 Nullpunkt bei Maschine %2</translation>
     </message>
+    <message>
+        <source>Finished part not simulated (over %1 blocks): key M</source>
+        <translation>Fertigteil nicht simuliert (über %1 Sätze): Taste M</translation>
+    </message>
+    <message>
+        <source>no stock</source>
+        <translation>kein Rohteil</translation>
+    </message>
+    <message>
+        <source>No finished part: %1</source>
+        <translation>Kein Fertigteil: %1</translation>
+    </message>
+    <message>
+        <source>Finished part: the program removes nothing from the stock</source>
+        <translation>Fertigteil: Das Programm trägt vom Rohteil nichts ab</translation>
+    </message>
+    <message>
+        <source>Finished part: %1 mm³ removed at %2 mm</source>
+        <translation>Fertigteil: %1 mm³ abgetragen bei %2 mm</translation>
+    </message>
 </context>
 <context>
     <name>mtc::screens::ToolpathScreen</name>
@@ -3586,6 +3614,10 @@ einpassen</translation>
     <message>
         <source>travelled since Start</source>
         <translation>seit Start verfahren</translation>
+    </message>
+    <message>
+        <source>(M hides)</source>
+        <translation>(M blendet aus)</translation>
     </message>
 </context>
 <context>

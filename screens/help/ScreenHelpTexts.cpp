@@ -186,7 +186,11 @@ std::vector<ScreenHelpText> buildTexts() {
           {QT_TRANSLATE_NOOP("ScreenHelp", "0, Home"),
            QT_TRANSLATE_NOOP("ScreenHelp",
                              "frame the part: the cutting moves and the stock (F5 then frames "
-                             "every move, the rapids of an approach or tool change too)")}}},
+                             "every move, the rapids of an approach or tool change too)")},
+          {QT_TRANSLATE_NOOP("ScreenHelp", "M"),
+           QT_TRANSLATE_NOOP("ScreenHelp",
+                             "hide or show the finished part: the stock cut by the whole "
+                             "program")}}},
     };
 }
 

@@ -1,11 +1,14 @@
 #include "screens/toolpath/ToolpathModel.h"
 
+#include <QLocale>
 #include <QStringList>
 #include <algorithm>
 
 #include "cnc_core/cell/StationStatus.h"
 #include "cnc_core/interp/Interpreter.h"
+#include "cnc_core/removal/PartStl.h"
 #include "cnc_core/removal/ProgramStock.h"
+#include "cnc_core/removal/RemovalRun.h"
 #include "cnc_core/restart/ReposPreview.h"
 #include "hmi/CellSession.h"
 #include "screens/restart/ProgramListingModel.h"
@@ -87,7 +90,50 @@ void ToolpathModel::build(int number) {
         problem_ = RestartController::describe(stock.diagnostics.items().front());
     geometry_ = std::make_shared<const mtc::core::ToolpathGeometry>(std::move(result.geometry));
     cutting_ = {geometry_->cuttingBounds(false), geometry_->cuttingBounds(true)};
+    part_ = {};
+    partSimulated_ = false;
+    if (built_->blocks.size() <= kPartBlocks)
+        simulatePart();
+    else
+        part_.note = tr("Finished part not simulated (over %1 blocks): key M").arg(kPartBlocks);
     emit geometryChanged();
+}
+
+void ToolpathModel::simulatePart() {
+    partSimulated_ = true;
+    mtc::core::removal::RemovalSettings settings;  // 0.2 mm, as mtc200-cli simulate
+    const auto run = mtc::core::removal::simulateRemoval(session_->processConfig(slot_),
+                                                         session_->store(), number_, settings);
+    if (!run.part) {
+        QString why = tr("no stock");
+        for (const auto& d : run.diagnostics.items())
+            if (d.severity == mtc::core::Severity::Error) {
+                why = RestartController::describe(d);
+                break;
+            }
+        part_.note = tr("No finished part: %1").arg(why);
+        return;
+    }
+    if (!(run.part->removedVolume() > 0.0)) {  // an uncut block would only hide the path
+        part_.note = tr("Finished part: the program removes nothing from the stock");
+        return;
+    }
+    part_.triangles = mtc::core::removal::partTriangles(*run.part);
+    part_.heightField = run.part->heightField() != nullptr;
+    part_.note = tr("Finished part: %1 mm³ removed at %2 mm")
+                     .arg(QLocale().toString(run.part->removedVolume(), 'f', 0))
+                     .arg(QLocale().toString(settings.resolution));
+}
+
+void ToolpathModel::togglePart() {
+    if (!geometry_) return;
+    if (!partSimulated_) {  // a large program: the key asks for it
+        partShown_ = true;
+        simulatePart();
+    } else {
+        partShown_ = !partShown_;
+    }
+    emit partChanged();
 }
 
 mtc::core::ToolpathBounds ToolpathModel::frame(bool developed, bool all) const {

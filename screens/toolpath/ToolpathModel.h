@@ -56,6 +56,15 @@ struct ToolpathBackplot {
     bool empty() const { return !layer || (segments == 0 && !partial); }
 };
 
+/// The finished part the view shows (TP-023): the program's stock cut by
+/// its whole run, as `mtc200-cli simulate` cuts it, as triangles.
+struct ToolpathPart {
+    std::vector<float> triangles;  ///< 9 floats (three corners, scene mm) per triangle
+    bool heightField = false;      ///< a milled z-map (else a turned profile)
+    /// "Finished part: 69,471 mm³ removed at 0.2 mm" or why there is none.
+    QString note;
+};
+
 /// The model behind the toolpath view of one station (no display code):
 /// the geometry of the station's selected program (built by running it on
 /// a private interpreter into a ToolpathBuilder), the stock of the machine
@@ -116,6 +125,14 @@ class ToolpathModel : public QObject {
     /// "Workpiece coordinates G54: zero point at machine ..." or
     /// "Machine coordinates (G53, no zero offset)"; "" without a path.
     QString frameCaption() const;
+    /// The finished part (TP-023): simulated with the geometry for programs
+    /// of up to kPartBlocks blocks, else when togglePart() asks for it.
+    const ToolpathPart& part() const { return part_; }
+    bool partShown() const { return partShown_ && !part_.triangles.empty(); }
+    /// The key M: shows or hides the finished part; the first time on a
+    /// large program it simulates it (which takes a while).
+    void togglePart();
+    static constexpr std::size_t kPartBlocks = 200'000;
     /// The tolerance the next build tessellates with (mm).
     void setTolerance(double millimetres);
     double tolerance() const { return settings_.tolerance; }
@@ -136,10 +153,14 @@ class ToolpathModel : public QObject {
     void geometryChanged();
     /// The highlighted block or a mark changed.
     void marksChanged();
+    /// The finished part was simulated or shown / hidden.
+    void partChanged();
     /// The operator picked a segment of block `block` of program `program`.
     void blockPicked(int program, std::uint32_t block);
 
   private:
+    /// Cuts the stock with the program shown (removal::simulateRemoval).
+    void simulatePart();
     void followPartner();
     /// While the station's program is active: highlights the block of the
     /// move the machine executes (TP-017); false when there is none.
@@ -173,6 +194,9 @@ class ToolpathModel : public QObject {
     QString problem_;
     bool complete_ = false;
     mtc::core::Stock stock_;
+    ToolpathPart part_;
+    bool partShown_ = true;
+    bool partSimulated_ = false;  ///< part_ belongs to the program built
     /// cuttingBounds of the geometry, scene and developed (set by build()).
     std::array<mtc::core::ToolpathBounds, 2> cutting_;
     ToolpathPalette palette_;

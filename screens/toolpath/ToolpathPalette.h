@@ -29,6 +29,8 @@ struct ToolpathPalette {
     /// The backplot: what the running program has travelled since Start
     /// (TP-016), over the path: near white.
     QColor backplot{245, 245, 235};
+    /// The finished part (TP-023): light brass, lit.
+    QColor part{205, 185, 130};
 
     /// Colour of a move kind.
     QColor colour(mtc::core::ToolpathKind kind) const {

@@ -76,6 +76,7 @@ ToolpathScreen::ToolpathScreen(const mtc::hmi::ScreenContext& context,
     setFocusPolicy(Qt::StrongFocus);
     connect(model_, &ToolpathModel::marksChanged, this, &ToolpathScreen::renderText);
     connect(model_, &ToolpathModel::geometryChanged, this, &ToolpathScreen::renderText);
+    connect(model_, &ToolpathModel::partChanged, this, &ToolpathScreen::renderText);
     connect(model_, &ToolpathModel::geometryChanged, this, [this] {
         if (!showingAll_) return;
         showingAll_ = false;  // a new picture is framed to its part
@@ -107,6 +108,11 @@ QString ToolpathScreen::legendText() const {
         text += " &nbsp;&nbsp; " + swatch(p.contour, tr("programmed contour (G41/G42, edge, G48)"));
     if (!model_->backplot(false).empty() || !model_->backplot(true).empty())
         text += " &nbsp;&nbsp; " + swatch(p.backplot, tr("travelled since Start"));
+    const QString part = model_->part().note;
+    if (model_->partShown() && glReason_.isEmpty())  // the 2D view draws no part
+        text += " &nbsp;&nbsp; " + swatch(p.part, part + " " + tr("(M hides)"));
+    else if (g && !part.isEmpty())
+        text += " &nbsp;&nbsp; " + part;
     return text;
 }
 
@@ -209,6 +215,9 @@ void ToolpathScreen::keyPressEvent(QKeyEvent* event) {
             return model_->step(-1);
         case Qt::Key_P:
             exportPng(defaultExportPath());
+            return;
+        case Qt::Key_M:  // the finished part (TP-023)
+            model_->togglePart();
             return;
         default:
             Screen::keyPressEvent(event);

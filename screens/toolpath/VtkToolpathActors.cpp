@@ -1,11 +1,18 @@
 #include "screens/toolpath/VtkToolpathActors.h"
 
 #include <vtkActor.h>
+#include <vtkCellArray.h>
 #include <vtkCubeAxesActor.h>
 #include <vtkCylinderSource.h>
+#include <vtkFloatArray.h>
 #include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
+#include <vtkProperty.h>
 #include <vtkSphereSource.h>
+#include <vtkUnsignedCharArray.h>
 
 #include <algorithm>
 
@@ -48,6 +55,65 @@ void labelInFrame(vtkCubeAxesActor* axes, const mtc::core::ToolpathFrame& frame,
     axes->SetXTitle(titles[0].c_str());
     axes->SetYTitle(titles[1].c_str());
     axes->SetZTitle(titles[2].c_str());
+}
+
+void placeFinishedPart(vtkActor* actor, const std::vector<float>& triangles, const QColor& colour,
+                       bool shadeByHeight) {
+    const auto corners = static_cast<vtkIdType>(triangles.size() / 3);
+    vtkNew<vtkFloatArray> xyz;
+    xyz->SetNumberOfComponents(3);
+    xyz->SetNumberOfTuples(corners);
+    std::copy(triangles.begin(), triangles.begin() + 3 * corners, xyz->GetPointer(0));
+    vtkNew<vtkPoints> points;
+    points->SetData(xyz);
+    vtkNew<vtkCellArray> cells;
+    cells->AllocateExact(corners / 3, corners);
+    for (vtkIdType t = 0; t + 2 < corners; t += 3) {
+        const vtkIdType ids[3] = {t, t + 1, t + 2};
+        cells->InsertNextCell(3, ids);
+    }
+    vtkNew<vtkPolyData> surface;
+    surface->SetPoints(points);
+    surface->SetPolys(cells);
+    vtkNew<vtkPolyDataMapper> mapper;
+    mapper->SetInputData(surface);
+    mapper->ScalarVisibilityOff();
+    // The tool centre runs on the cut surface (a flat end mill's tip on the
+    // floor): the surface steps back in depth so the path stays on top.
+    vtkMapper::SetResolveCoincidentTopologyToPolygonOffset();  // VTK's default is off
+    mapper->SetRelativeCoincidentTopologyPolygonOffsetParameters(4.0, 16.0);
+    if (shadeByHeight && corners > 0) {
+        // Every floor of a z-map faces up and takes the same light: darker
+        // with depth, so a pocket reads as a pocket from any side.
+        float zMin = triangles[2], zMax = triangles[2];
+        for (vtkIdType i = 0; i < corners; ++i) {
+            zMin = std::min(zMin, triangles[static_cast<std::size_t>(3 * i + 2)]);
+            zMax = std::max(zMax, triangles[static_cast<std::size_t>(3 * i + 2)]);
+        }
+        vtkNew<vtkUnsignedCharArray> rgb;
+        rgb->SetNumberOfComponents(3);
+        rgb->SetNumberOfTuples(corners);
+        const float span = zMax > zMin ? zMax - zMin : 1.0f;
+        for (vtkIdType i = 0; i < corners; ++i) {
+            const float share = (triangles[static_cast<std::size_t>(3 * i + 2)] - zMin) / span;
+            const float shade = 0.45f + 0.55f * share;
+            unsigned char* c = rgb->GetPointer(3 * i);
+            c[0] = static_cast<unsigned char>(colour.red() * shade);
+            c[1] = static_cast<unsigned char>(colour.green() * shade);
+            c[2] = static_cast<unsigned char>(colour.blue() * shade);
+        }
+        surface->GetPointData()->SetScalars(rgb);
+        mapper->ScalarVisibilityOn();
+        mapper->SetColorModeToDirectScalars();
+    }
+    actor->SetMapper(mapper);
+    vtkProperty* p = actor->GetProperty();
+    p->SetColor(colour.redF(), colour.greenF(), colour.blueF());
+    p->SetInterpolationToFlat();
+    p->SetAmbient(0.35);
+    p->SetDiffuse(0.65);
+    p->SetOpacity(1.0);
+    p->LightingOn();
 }
 
 void placeCylinder(vtkActor* actor, int axis, double radius, double from, double to) {

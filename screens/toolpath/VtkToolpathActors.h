@@ -5,10 +5,12 @@
 #include <vtkActor.h>
 #include <vtkCubeAxesActor.h>
 
+#include <QColor>
 #include <QString>
 
 #include <array>
 #include <string>
+#include <vector>
 
 #include "cnc_core/toolpath/ToolpathGeometry.h"
 
@@ -31,6 +33,11 @@ void labelInFrame(vtkCubeAxesActor* axes, const mtc::core::ToolpathFrame& frame,
 QString extentsText(const mtc::core::ToolpathBounds& b, bool flat);
 /// A cylinder along scene axis `axis` from `from` to `to`.
 void placeCylinder(vtkActor* actor, int axis, double radius, double from, double to);
+/// The finished part (TP-023) from its triangles (9 floats each, scene mm):
+/// an opaque, lit surface in `colour`, flat-shaded so its cells show; with
+/// `shadeByHeight` (a milled z-map) darker the lower a corner lies.
+void placeFinishedPart(vtkActor* actor, const std::vector<float>& triangles, const QColor& colour,
+                       bool shadeByHeight);
 /// The tool at the actual position (TP-015): on the mill a cylinder of the
 /// edge's radius up the Z axis from the tip, as long as L1 (at least four
 /// radii); on the lathe a ball of the nose radius. Never smaller than a

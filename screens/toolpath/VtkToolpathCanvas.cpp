@@ -55,6 +55,7 @@ struct VtkToolpathCanvas::Scene {
     Part scene, developed;
     vtkNew<vtkActor> stock, cylinder, start, target, reentry, repos, tool;
     vtkNew<vtkActor> collision;  ///< where the way back first meets the part (D-021)
+    vtkNew<vtkActor> part;       ///< the finished part (TP-023)
     vtkNew<vtkAxesActor> triadAxes;
     vtkNew<vtkOrientationMarkerWidget> triad;
     vtkNew<vtkCallbackCommand> interaction;
@@ -98,7 +99,7 @@ VtkToolpathCanvas::VtkToolpathCanvas(ToolpathModel* model, QWidget* parent)
     scene_->stillCache->addArea(scene_->developed.renderer, scene_->developed.live);
     for (vtkActor* a : {scene_->stock.Get(), scene_->cylinder.Get(), scene_->start.Get(),
                         scene_->target.Get(), scene_->reentry.Get(), scene_->repos.Get(),
-                        scene_->tool.Get(), scene_->collision.Get()}) {
+                        scene_->tool.Get(), scene_->collision.Get(), scene_->part.Get()}) {
         a->PickableOff();
         a->VisibilityOff();
         (a == scene_->tool.Get() ? scene_->scene.live : scene_->scene.renderer)->AddActor(a);
@@ -132,6 +133,11 @@ VtkToolpathCanvas::VtkToolpathCanvas(ToolpathModel* model, QWidget* parent)
     });
     widget_->installEventFilter(this);
     connect(model_, &ToolpathModel::geometryChanged, this, &VtkToolpathCanvas::rebuild);
+    connect(model_, &ToolpathModel::partChanged, this, [this] {
+        updatePart();
+        scene_->stillCache->invalidate();
+        requestRender();
+    });
     connect(model_, &ToolpathModel::marksChanged, this, [this] {
         // A station change that shows nothing new (a dwell, a spindle
         // running up) renders nothing.
@@ -162,6 +168,14 @@ void VtkToolpathCanvas::keepSteadyPicture(bool on) {
 
 bool VtkToolpathCanvas::showingLevelOfDetail() const {
     return scene_->coarse;
+}
+
+void VtkToolpathCanvas::updatePart() {
+    const bool shown = model_->geometry() && model_->partShown();
+    const ToolpathPart& part = model_->part();
+    if (shown)
+        placeFinishedPart(scene_->part, part.triangles, model_->palette().part, part.heightField);
+    scene_->part->SetVisibility(shown);
 }
 
 void VtkToolpathCanvas::requestRender() {
@@ -302,6 +316,7 @@ void VtkToolpathCanvas::rebuild() {
     }
     setColour(s.stock->GetProperty(), palette.stock);
     s.stock->GetProperty()->SetOpacity(stock.shape == mtc::core::Stock::Shape::Block ? 0.8 : 0.15);
+    updatePart();
     s.cylinder->VisibilityOff();
     if (g && g->cylinderAxis >= 0) {
         placeCylinder(s.cylinder, g->cylinderAxis, g->cylinderRadius, g->cylinderFrom,

@@ -73,6 +73,8 @@ class VtkToolpathCanvas : public ToolpathCanvas {
     /// What the running program has travelled since Start (TP-016). True
     /// when the picture changed.
     bool updateBackplot();
+    /// The finished part (TP-023), shown or hidden as the model says.
+    void updatePart();
     /// The scene's tick labels, titles and caption in the model's workpiece
     /// frame (TP-019): relabelled with `always` or when the frame changed.
     /// True when the picture changed.

@@ -379,4 +379,21 @@ TEST(PartStl, FinishedPartsAreClosedSurfaces) {
     expectClosed(partStl(*lathe.part), stlTriangleCount(*lathe.part));
 }
 
+TEST(PartStl, TheViewsTrianglesAreTheStlsCorners) {
+    for (const auto& [program, process] :
+         {std::pair{kPocketByCentre, 0}, std::pair{kTurnedShaft, 1}}) {
+        const RemovalRunResult run = simulate(program, process, 1.0);
+        ASSERT_TRUE(run.part);
+        const std::string stl = partStl(*run.part);
+        const std::vector<float> corners = partTriangles(*run.part);
+        ASSERT_EQ(corners.size(), 9 * stlTriangleCount(*run.part));
+        for (std::size_t t = 0; t < corners.size() / 9; ++t) {
+            float v[9];
+            std::memcpy(v, stl.data() + 84 + 50 * t + 12, 36);
+            for (std::size_t i = 0; i < 9; ++i)
+                ASSERT_EQ(corners[9 * t + i], v[i]) << "triangle " << t << " value " << i;
+        }
+    }
+}
+
 }  // namespace

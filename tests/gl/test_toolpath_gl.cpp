@@ -9,7 +9,8 @@
 // While a program runs the backplot is drawn and the steady picture is kept
 // as an image; a frame from it is the full frame. The labels name the zero
 // offset of the block shown and read workpiece coordinates. A path that
-// retraces itself draws each line once.
+// retraces itself draws each line once. The finished part is drawn; M
+// hides it.
 #include <QDir>
 #include <QLabel>
 #include <QSet>
@@ -157,6 +158,10 @@ class ToolpathGlTest : public QObject {
         auto* model = screen->model();
         QVERIFY2(model->geometry(), qPrintable(model->summary()));
         QVERIFY(model->geometry()->contour.segmentCount() >= 4);
+        // The finished part's walls (a z-map: slanted over one cell) lie
+        // over the contour at their foot; the lines are what is tested here.
+        QTest::keyClick(screen, Qt::Key_M);
+        QVERIFY(!model->partShown());
         QTest::keyClick(screen, Qt::Key_1);  // from above
         canvas->renderNow();
         const QImage picture = canvas->picture();
@@ -411,6 +416,38 @@ class ToolpathGlTest : public QObject {
         const int two = count(pictures[0], feed), forty = count(pictures[1], feed);
         QVERIFY2(two > 200 && std::abs(forty - two) < two / 20,
                  qPrintable(QString("%1 / %2").arg(two).arg(forty)));
+    }
+
+    // The finished part (TP-023): the demo mill's cover plate cut by its
+    // program is drawn in the 3D view; M hides it and shows it again.
+    void theFinishedPartIsDrawnAndTheKeyMHidesIt() {
+        PanelFixture panel;
+        panel.session->selectProgram(0, 1);
+        QVERIFY(panel.window->showScreen("toolpath"));
+        ToolpathScreen* screen = toolpath(panel);
+        VtkToolpathCanvas* canvas = vtkCanvas(screen);
+        QVERIFY(canvas);
+        auto* model = screen->model();
+        QVERIFY2(model->partShown(), qPrintable(model->part().note));
+        QVERIFY2(model->part().note.contains("removed"), qPrintable(model->part().note));
+        auto* legend = screen->findChild<QLabel*>("toolpathLegend");
+        QVERIFY(legend && legend->text().contains("Finished part"));
+        canvas->renderNow();
+        const QImage withPart = canvas->picture();
+        QTest::keyClick(screen, Qt::Key_M);
+        QVERIFY(!model->partShown());
+        canvas->renderNow();
+        const QImage without = canvas->picture();
+        QCOMPARE(without.size(), withPart.size());
+        int changed = 0;
+        for (int y = 0; y < without.height(); y += 2)
+            for (int x = 0; x < without.width(); x += 2)
+                if (without.pixel(x, y) != withPart.pixel(x, y)) ++changed;
+        QVERIFY2(changed > 2000, qPrintable(QString::number(changed)));  // the plate's area
+        QTest::keyClick(screen, Qt::Key_M);
+        QVERIFY(model->partShown());
+        canvas->renderNow();
+        QVERIFY(canvas->picture() == withPart);
     }
 
     void aStationChangeWithNothingNewToShowRendersNothing() {
