@@ -1,6 +1,5 @@
 #include "screens/toolpath/ToolpathModel.h"
 
-#include <QLocale>
 #include <QStringList>
 #include <algorithm>
 
@@ -120,9 +119,11 @@ void ToolpathModel::simulatePart() {
     }
     part_.triangles = mtc::core::removal::partTriangles(*run.part);
     part_.heightField = run.part->heightField() != nullptr;
+    // Plain digits as everywhere on the panel: "69,471" would read as a
+    // decimal fraction in the German panel.
     part_.note = tr("Finished part: %1 mm³ removed at %2 mm")
-                     .arg(QLocale().toString(run.part->removedVolume(), 'f', 0))
-                     .arg(QLocale().toString(settings.resolution));
+                     .arg(QString::number(run.part->removedVolume(), 'f', 0))
+                     .arg(QString::number(settings.resolution));
 }
 
 void ToolpathModel::togglePart() {
