@@ -98,9 +98,29 @@ void ToolpathModel::build(int number) {
     emit geometryChanged();
 }
 
+namespace {
+
+/// The resolution the view simulates the part at: 0.2 mm as mtc200-cli
+/// simulate, coarser where the stock would need more than 250,000 cells
+/// (the mesh, two triangles a cell, stays about 10 MB and quick to draw on
+/// llvmpipe). PartModel::create() counts the cells, as for the real run.
+mtc::core::removal::RemovalSettings viewSettings(const mtc::core::Stock& stock, bool turning) {
+    mtc::core::removal::RemovalSettings settings;
+    settings.maxCells = 250'000;
+    for (double resolution : {0.2, 0.3, 0.5, 1.0, 2.0, 5.0, 10.0}) {
+        settings.resolution = resolution;
+        std::string error;
+        if (mtc::core::removal::PartModel::create(stock, settings, turning, error)) break;
+    }
+    return settings;
+}
+
+}  // namespace
+
 void ToolpathModel::simulatePart() {
     partSimulated_ = true;
-    mtc::core::removal::RemovalSettings settings;  // 0.2 mm, as mtc200-cli simulate
+    const bool turning = session_->processConfig(slot_).defaultPlane() == 18;  // as PartModel
+    const mtc::core::removal::RemovalSettings settings = viewSettings(stock_, turning);
     const auto run = mtc::core::removal::simulateRemoval(session_->processConfig(slot_),
                                                          session_->store(), number_, settings);
     if (!run.part) {

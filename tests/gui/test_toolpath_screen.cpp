@@ -3,11 +3,13 @@
 // keys, highlight, picking and the link with the restart screen work there
 // too, and the view exports a PNG. The 3D view is tested in tests/gl.
 #include <QDir>
+#include <QFile>
 #include <QLabel>
 #include <QTemporaryDir>
 #include <cmath>
 
 #include "PanelFixture.h"
+#include "resources/EmbeddedResources.h"
 #include "screens/restart/RestartController.h"
 #include "screens/toolpath/PainterToolpathCanvas.h"
 #include "screens/toolpath/ToolpathCanvas.h"
@@ -111,6 +113,44 @@ class ToolpathScreenTest : public QObject {
         QVERIFY(picked >= 0);
         const auto& chosen = g.moves[static_cast<std::size_t>(model->highlighted().front())];
         QCOMPARE(chosen.block, g.moves[static_cast<std::size_t>(picked)].block);
+    }
+
+    /// TP-023: the finished part is simulated with the path (its volume in
+    /// the legend, also in the 2D view); a stock too large for 0.2 mm in
+    /// the view's cell budget is simulated coarser, and the legend says so.
+    void theFinishedPartIsSimulatedAtAResolutionTheViewCanHold() {
+        {
+            PanelFixture panel;
+            panel.session->selectProgram(0, 1);
+            panel.window->showScreen("toolpath");
+            const auto* model = toolpath(panel)->model();
+            QVERIFY2(model->part().note.contains("removed at 0.2 mm"),
+                     qPrintable(model->part().note));
+            QVERIFY(!model->part().triangles.empty());
+            QVERIFY(child<QLabel>(panel, "toolpath", "toolpathLegend")
+                        ->text()
+                        .contains(model->part().note));
+        }
+        // The mill's stock 600 x 600 mm: 9,000,000 cells at 0.2 mm, 90,000 at 2.
+        QTemporaryDir dir;
+        std::string cell(mtc::resources::find(mtc::resources::kDemoCellName));
+        const std::string demoStock = "stock = block -150 -50 -80 -20 -132 -120";
+        const std::size_t at = cell.find(demoStock);
+        QVERIFY(at != std::string::npos);
+        cell.replace(at, demoStock.size(), "stock = block -450 150 -480 120 -132 -120");
+        QFile file(dir.filePath("big-stock.cfg"));
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        file.write(cell.data(), static_cast<qint64>(cell.size()));
+        file.close();
+        mtc::hmi::PanelOptions options;
+        options.machineFile = file.fileName();
+        PanelFixture panel(options);
+        panel.session->selectProgram(0, 1);
+        panel.window->showScreen("toolpath");
+        const auto* model = toolpath(panel)->model();
+        QVERIFY2(model->part().note.contains("removed at 2 mm"), qPrintable(model->part().note));
+        QVERIFY2(model->part().triangles.size() < 9 * 200'000u * 2,
+                 qPrintable(QString::number(model->part().triangles.size())));
     }
 
     /// TP-014: the view frames the cutting moves and the stock, not the
