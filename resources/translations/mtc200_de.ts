@@ -2107,6 +2107,14 @@ display</source>
         <source>Back</source>
         <translation>Zurück</translation>
     </message>
+    <message>
+        <source>Position (actual, running program)</source>
+        <translation>Position (Istwert, laufendes Programm)</translation>
+    </message>
+    <message>
+        <source>Modal state of the running block</source>
+        <translation>Modaler Zustand des laufenden Satzes</translation>
+    </message>
 </context>
 <context>
     <name>mtc::screens::MenuScreen</name>

@@ -79,10 +79,14 @@ QString MdiModel::modeSummary() const {
     return QString::fromStdString(refusal);
 }
 
+bool MdiModel::showsRunningBlock() const {
+    return session_->station(slot_).executingBlockState() != nullptr;
+}
+
 QString MdiModel::positionSummary() const {
     const mtc::core::Station& station = session_->station(slot_);
     QStringList parts;
-    if (station.executingBlockState() != nullptr) {
+    if (showsRunningBlock()) {
         // The interpreter is the look-ahead ahead: show where the axes are,
         // as the base screen does, not where the interpreter has got to.
         for (const mtc::core::AxisStatus& axis : mtc::core::describeStation(station, 0).axes)

@@ -41,6 +41,9 @@ class MdiModel : public QObject {
     /// from; while the axes work off blocks the interpreter has left behind
     /// (a program runs with look-ahead), their actual workpiece positions.
     QString positionSummary() const;
+    /// The axes work off a block the interpreter has left behind (a program
+    /// runs with look-ahead): the summaries are the running block's.
+    bool showsRunningBlock() const;
     /// "G1 G17 G90 G94  F1000  S0  T0": the modal state MDI continues from,
     /// or that of the block the axes execute while they lag behind.
     QString modalSummary() const;

@@ -53,9 +53,12 @@ MdiScreen::MdiScreen(const mtc::hmi::ScreenContext& context) : Screen(context) {
 
     auto* layout = new QVBoxLayout(this);
     layout->addWidget(mode_);
-    layout->addWidget(caption(this, tr("Position (programmed)")));
+    positionCaption_ = caption(this, {});
+    positionCaption_->setObjectName("mdiPositionCaption");
+    modalCaption_ = caption(this, {});
+    layout->addWidget(positionCaption_);
     layout->addWidget(position_);
-    layout->addWidget(caption(this, tr("Modal state")));
+    layout->addWidget(modalCaption_);
     layout->addWidget(modal_);
     layout->addWidget(caption(this, tr("MDI input")));
     layout->addWidget(input_);
@@ -82,6 +85,12 @@ void MdiScreen::activated() {
 
 void MdiScreen::refresh() {
     mode_->setText(model_->modeSummary());
+    // While the axes work off blocks the interpreter has left behind, the
+    // lines show the running block's state and where the axes are.
+    const bool running = model_->showsRunningBlock();
+    positionCaption_->setText(running ? tr("Position (actual, running program)")
+                                      : tr("Position (programmed)"));
+    modalCaption_->setText(running ? tr("Modal state of the running block") : tr("Modal state"));
     position_->setText(model_->positionSummary());
     modal_->setText(model_->modalSummary());
     if (input_->toPlainText() != model_->input()) {  // cleared or recalled by the model

@@ -35,6 +35,8 @@ class MdiScreen : public mtc::hmi::Screen {
     QLabel* mode_;
     QLabel* position_;
     QLabel* modal_;
+    QLabel* positionCaption_;
+    QLabel* modalCaption_;
     QPlainTextEdit* input_;
     QLabel* message_;
     QListWidget* history_;

@@ -256,12 +256,14 @@ class MdiScreenTest : public QObject {
         const QString modal = label(panel, "mdiModal");
         QVERIFY2(modal.startsWith("G1 ") && modal.contains("G90") && modal.contains("F600"),
                  qPrintable(modal));
+        QCOMPARE(label(panel, "mdiPositionCaption"), QString("Position (actual, running program)"));
         const QString position = label(panel, "mdiPosition");
         QVERIFY2(position.startsWith(QString("X %1").arg(x, 0, 'f', 3)), qPrintable(position));
 
         panel.session->advance(30.0);  // the program ends: the interpreter's state again
         QVERIFY(!panel.session->control(0).programActive());
         QVERIFY2(label(panel, "mdiModal").contains("F900"), qPrintable(label(panel, "mdiModal")));
+        QCOMPARE(label(panel, "mdiPositionCaption"), QString("Position (programmed)"));
         QVERIFY2(label(panel, "mdiPosition").startsWith("X 115.000"),
                  qPrintable(label(panel, "mdiPosition")));
     }
