@@ -6,6 +6,7 @@
 
 #include "cnc_core/language/Block.h"
 #include "cnc_core/language/IndexIterator.h"
+#include "cnc_core/support/LargeAllocator.h"
 
 namespace mtc::core {
 
@@ -77,8 +78,8 @@ class BlockList {
     /// The block at `index` kept whole (labels, comments, long lines) into
     /// `out`; false when it has no whole copy (then the packed form holds it).
     bool readExtended(std::size_t index, Block& out) const;
-    std::vector<Packed> packed_;
-    std::vector<std::uint32_t> extendedIndex_;  ///< sorted block indices
+    std::vector<Packed, LargeAllocator<Packed>> packed_;  // large: huge pages
+    std::vector<std::uint32_t> extendedIndex_;            ///< sorted block indices
     std::vector<Block> extended_;
 };
 

@@ -52,8 +52,10 @@ void BlockParser::parse(const BlockSource& source) {
             emitMacroBlock();
         } else {
             if (source.lineCount == 1 && plainFastPath_) parsePlainWords();
-            while (parseNextWord()) {
-            }
+            // (at the block end parseNextWord would only find it again)
+            if (!lexer_.atEnd())
+                while (parseNextWord()) {
+                }
         }
     }
     finish();

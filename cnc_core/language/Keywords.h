@@ -30,7 +30,7 @@ struct KeywordInfo {
 KeywordInfo lookupKeyword(std::string_view name);
 
 /// True for the axis address letters X Y Z U V W A B C (seed 003, 5.1).
-inline bool isAxisLetter(char c) {
+constexpr bool isAxisLetter(char c) {
     switch (c) {
         case 'X':
         case 'Y':

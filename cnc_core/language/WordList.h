@@ -6,6 +6,7 @@
 
 #include "cnc_core/language/IndexIterator.h"
 #include "cnc_core/language/Word.h"
+#include "cnc_core/support/LargeAllocator.h"
 
 namespace mtc::core {
 
@@ -96,7 +97,7 @@ class WordList {
     };
     static bool packable(const Word& word, std::int32_t& mantissa, unsigned& scale);
     Packed pack(const Word& word);
-    std::vector<Packed> packed_;
+    std::vector<Packed, LargeAllocator<Packed>> packed_;  // large: huge pages
     std::vector<Word> extended_;
 };
 

@@ -15,7 +15,7 @@ namespace mtc::core::word_rules {
 /// The word kind of an address letter that takes a value (G, X, S, I, ...)
 /// and whether it may carry an axis or spindle index; false for 'N' and for
 /// letters that are no address.
-inline bool addressKind(char letter, WordKind& kind, bool& indexed) {
+constexpr bool addressKind(char letter, WordKind& kind, bool& indexed) {
     indexed = false;
     switch (letter) {
         case 'G':
@@ -57,7 +57,7 @@ inline bool addressKind(char letter, WordKind& kind, bool& indexed) {
 }
 
 /// Words whose value is a positive whole number.
-inline bool valueMustBeWhole(WordKind kind) {
+constexpr bool valueMustBeWhole(WordKind kind) {
     switch (kind) {
         case WordKind::G:
         case WordKind::M:

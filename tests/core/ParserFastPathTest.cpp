@@ -93,6 +93,19 @@ const std::vector<std::string> kEdgeBlocks = {
     "(text) X1",
     ";comment",
     "@1=5",
+    // numbers around the 17 digits of the fast path's own number scan
+    "N0035 X99999999999999999 Y999999999999999999 Z9999999999999999999",
+    "N0036 X1234567890.1234567 Y1234567890.12345678 Z.12345678901234567 A.123456789012345678",
+    "N0037 X00000000000000000000001 Y0.00000000000000000000 Z1.",
+    "N0038 X. Y.. Z1..2 A-. B+.5",
+    // the block number and numbers at the block's very end, a word past column 255
+    "N0039",
+    "N004",
+    "N00400",
+    "N0041 X12.5",
+    "N0042:0001",
+    "N0043:000",
+    "N0044" + std::string(260, ' ') + "X1 Y2",
 };
 
 TEST(ParserFastPath, EdgeBlocksParseAsOnTheGeneralPath) {
