@@ -44,35 +44,48 @@ std::string_view instruction(std::string_view line) {
     return line;
 }
 
-bool isWindowInstruction(std::string_view text) {
-    static constexpr std::string_view word = "WINDOW_";
+/// `text` begins with `word` in upper or lower case letters.
+bool startsCaseless(std::string_view text, std::string_view word) {
     if (text.size() < word.size()) return false;
     for (std::size_t i = 0; i < word.size(); ++i)
         if (std::toupper(static_cast<unsigned char>(text[i])) != word[i]) return false;
     return true;
 }
 
-/// The first line of `source` whose instruction is a WINDOW_ keyword: that
-/// instruction (what the GNE reader gets) and its 1-based line.
-std::optional<std::pair<std::string, std::uint32_t>> findWindow(std::string_view source) {
+bool isWindowInstruction(std::string_view text) {
+    return startsCaseless(text, "WINDOW_");
+}
+
+/// Calls visit(line, 1-based number) for each line of `source` until it
+/// returns false.
+template <typename Visit>
+void forEachLine(std::string_view source, Visit visit) {
     std::uint32_t number = 1;
     for (std::size_t start = 0; start < source.size(); ++number) {
         std::size_t end = source.find('\n', start);
         if (end == std::string_view::npos) end = source.size();
         const std::string_view line = source.substr(start, end - start);
         start = end + 1;
-        if (line.find('_') == std::string_view::npos) continue;  // the common line, fast
-        const std::string_view text = instruction(line);
-        if (isWindowInstruction(text)) return std::pair{std::string(text), number};
+        if (!visit(line, number)) return;
     }
-    return std::nullopt;
+}
+
+/// The first line of `source` whose instruction is a WINDOW_ keyword: that
+/// instruction (what the GNE reader gets) and its 1-based line.
+std::optional<std::pair<std::string, std::uint32_t>> findWindow(std::string_view source) {
+    std::optional<std::pair<std::string, std::uint32_t>> found;
+    forEachLine(source, [&](std::string_view line, std::uint32_t number) {
+        if (line.find('_') == std::string_view::npos) return true;  // the common line, fast
+        const std::string_view text = instruction(line);
+        if (isWindowInstruction(text)) found = std::pair{std::string(text), number};
+        return !found;
+    });
+    return found;
 }
 
 /// `text` begins with the GNE word `word` (not a longer name).
 bool startsWithWord(std::string_view text, std::string_view word) {
-    if (text.size() < word.size()) return false;
-    for (std::size_t i = 0; i < word.size(); ++i)
-        if (std::toupper(static_cast<unsigned char>(text[i])) != word[i]) return false;
+    if (!startsCaseless(text, word)) return false;
     if (text.size() == word.size()) return true;
     const auto next = static_cast<unsigned char>(text[word.size()]);
     return !std::isalnum(next) && next != '_';
@@ -99,28 +112,23 @@ bool mentions(std::string_view line, std::string_view word) {
 std::string rawContourText(std::string_view source, std::uint32_t windowLine) {
     std::string text;
     bool inContour = false;
-    std::uint32_t number = 1;
-    for (std::size_t start = 0; start < source.size(); ++number) {
-        std::size_t end = source.find('\n', start);
-        if (end == std::string_view::npos) end = source.size();
-        const std::string_view line = source.substr(start, end - start);
-        start = end + 1;
-        if (number < windowLine) continue;
+    forEachLine(source, [&](std::string_view line, std::uint32_t number) {
+        if (number < windowLine) return true;
         if (number == windowLine) {
             text += instruction(line);
             text += '\n';
-            continue;
+            return true;
         }
         const bool candidate = inContour || mentions(line, "CONT") || mentions(line, "WINDOW_");
         const std::string_view gne = candidate ? instruction(line) : std::string_view{};
-        if (isWindowInstruction(gne)) break;
+        if (isWindowInstruction(gne)) return false;
         if (!inContour && startsWithWord(gne, "CONT") &&
             mentions(gne.substr(0, gne.find(';')), "RAW"))
             inContour = true;
         if (inContour) text += gne;
         text += '\n';
-        if (inContour && startsWithWord(gne, "END_CONT")) break;
-    }
+        return !(inContour && startsWithWord(gne, "END_CONT"));
+    });
     return text;
 }
 
