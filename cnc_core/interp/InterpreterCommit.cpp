@@ -187,6 +187,11 @@ void Interpreter::emitMotion(const Program& program, std::uint32_t index) {
     const MotionPlanner planner(&axes_, zeroOffsets_.get());
     for (int a = 0; a < m.axisCount && a < kMaxAxes; ++a)
         m.zeroOffsetValues[static_cast<std::size_t>(a)] = planner.offsetOf(state_.modal, a);
+    m.radialAxis = -1;
+    for (int a = 0; a < m.axisCount && m.radialAxis < 0; ++a)
+        if (!axes_.axis(a).rotary && state_.modal.plane.definitionOf(a) == AxisDefinition::X)
+            m.radialAxis = a;
+    m.diameter = state_.modal.g[kGroupRadiusDiameter] == 16;
     m.compensated = false;  // tool compensation marks the moves it changes
     m.inserted = false;
     compensation_.motion(m, options_.output.motion);

@@ -57,6 +57,11 @@ struct Motion {
     /// machine position - offset (docs/decisions/toolpath.md TP-019).
     int zeroOffset = 53;
     std::array<double, kMaxAxes> zeroOffsetValues{};
+    /// The linear machine axis whose definition is X now, the one G15/G16
+    /// apply to (-1: none), and whether its values are diameters (G16 in
+    /// force): its workpiece coordinate is then 2 x (machine - offset).
+    int radialAxis = -1;
+    bool diameter = false;
 };
 
 /// Programmed end position of `axis` (the contour point, without any tool compensation).

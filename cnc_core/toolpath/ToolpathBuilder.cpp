@@ -233,6 +233,8 @@ std::uint16_t ToolpathBuilder::frameIndex(const Motion& m) {
     for (std::size_t d = 0; d < 3; ++d)
         if (machineAxisOfScene_[d] >= 0)
             frame.offset[d] = m.zeroOffsetValues[static_cast<std::size_t>(machineAxisOfScene_[d])];
+    frame.radialAxis = m.radialAxis >= 0 ? sceneAxis(m.radialAxis) : -1;
+    frame.diameter = m.diameter && frame.radialAxis >= 0;
     auto& frames = geometry_.frames;
     // Newest first: a program stays in one frame for many moves.
     for (std::size_t i = frames.size(); i-- > 0;)

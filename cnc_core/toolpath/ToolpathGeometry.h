@@ -34,13 +34,29 @@ struct ToolpathMove {
 
 /// The workpiece frame of a move (TP-019): the zero offset in force (G53..G59)
 /// and what it shifts each scene axis by (mm): workpiece coordinate = scene
-/// coordinate - offset (0 for a scene axis no machine axis draws).
+/// coordinate - offset (0 for a scene axis no machine axis draws). The scene
+/// axis of the machine axis with definition X reads diameters under G16
+/// (TP-020): workpiece coordinate = 2 x (scene - offset) there.
 struct ToolpathFrame {
     int code = 53;
     std::array<double, 3> offset{0, 0, 0};
+    int radialAxis = -1;    ///< scene axis G15/G16 apply to (-1: none drawn)
+    bool diameter = false;  ///< G16: radialAxis reads diameters
+
+    /// Workpiece value (mm, diameter where it applies) of `scene` on scene axis `axis`.
+    double workpiece(int axis, double scene) const {
+        return (scene - offset[static_cast<std::size_t>(axis)]) * scale(axis);
+    }
+    /// The scene coordinate of workpiece value `value` on scene axis `axis`.
+    double sceneOf(int axis, double value) const {
+        return value / scale(axis) + offset[static_cast<std::size_t>(axis)];
+    }
+    /// Workpiece mm per scene mm on `axis`: 2 on a diameter axis, else 1.
+    double scale(int axis) const { return diameter && axis == radialAxis ? 2.0 : 1.0; }
 
     bool operator==(const ToolpathFrame& other) const {
-        return code == other.code && offset == other.offset;
+        return code == other.code && offset == other.offset && radialAxis == other.radialAxis &&
+               diameter == other.diameter;
     }
     bool operator!=(const ToolpathFrame& other) const { return !(*this == other); }
 };

@@ -2295,6 +2295,14 @@ Programme, die die globalen Makros benutzen, stehen wieder auf N.</translation>
         <source>circ.</source>
         <translation>Umfang</translation>
     </message>
+    <message>
+        <source>axial (mm)</source>
+        <translation>axial (mm)</translation>
+    </message>
+    <message>
+        <source>circumferential (mm)</source>
+        <translation>Umfang (mm)</translation>
+    </message>
 </context>
 <context>
     <name>mtc::screens::PositionScreen</name>
@@ -3493,6 +3501,10 @@ Nullpunkt bei Maschine %2</translation>
     <message>
         <source>Finished part: %1 mm³ removed at %2 mm</source>
         <translation>Fertigteil: %1 mm³ abgetragen bei %2 mm</translation>
+    </message>
+    <message>
+        <source>%1 (mm, radius, G%2)</source>
+        <translation>%1 (mm, Radius, G%2)</translation>
     </message>
 </context>
 <context>

@@ -78,9 +78,8 @@ const mtc::core::ToolpathLayer* PainterToolpathCanvas::layerOf(const View& view)
 
 QPointF PainterToolpathCanvas::project(const View& view, const Vec& p) const {
     const Vec d{p[0] - view.focal[0], p[1] - view.focal[1], p[2] - view.focal[2]};
-    const QPointF centre = QRectF(view.rect).center();
-    return {centre.x() + view.scale * dot(d, view.pose.right()),
-            centre.y() - view.scale * dot(d, view.pose.up)};
+    return {view.centre.x() + view.scale * dot(d, view.pose.right()),
+            view.centre.y() - view.scale * dot(d, view.pose.up)};
 }
 
 void PainterToolpathCanvas::fitView(View& view, bool all) {
@@ -95,7 +94,11 @@ void PainterToolpathCanvas::fitView(View& view, bool all) {
         w = std::max(w, 2 * std::fabs(dot(d, view.pose.right())));
         h = std::max(h, 2 * std::fabs(dot(d, view.pose.up)));
     }
-    view.scale = 0.85 * std::min(view.rect.width() / w, view.rect.height() / h);
+    // The part in the middle of what the rulers leave free (TP-025).
+    const QRectF free =
+        QRectF(view.rect).marginsRemoved(rulerMargins(QFontMetricsF(font()), 5.0 * lineScale()));
+    view.centre = free.center();
+    view.scale = 0.92 * std::min(std::max(free.width(), 1.0) / w, std::max(free.height(), 1.0) / h);
 }
 
 void PainterToolpathCanvas::showPreset(ToolpathPreset preset) {
@@ -171,9 +174,47 @@ void PainterToolpathCanvas::drawView(QPainter& painter, const View& view) {
     if (!view.developed) drawMarks(painter, view);
     drawTriad(painter, view);
     painter.setPen(Qt::white);
-    painter.drawText(view.rect.adjusted(6, 4, -6, -4), Qt::AlignTop | Qt::AlignLeft,
-                     caption(view.developed));
+    const QRect captionArea = view.rect.adjusted(6, 4, -6, -4);
+    const int flags = Qt::AlignTop | Qt::AlignLeft;
+    const QString text = caption(view.developed);
+    painter.drawText(captionArea, flags, text);
+    drawRulers(painter, view, painter.boundingRect(captionArea, flags, text));
     painter.restore();
+}
+
+void PainterToolpathCanvas::drawRulers(QPainter& painter, const View& view, const QRect& caption) {
+    const QString developedTitles[3] = {tr("axial (mm)"), tr("circumferential (mm)"), {}};
+    std::array<QString, 3> titles;
+    for (int i = 0; i < 3; ++i)
+        titles[static_cast<std::size_t>(i)] =
+            view.developed ? developedTitles[i] : model_->axisTitle(i);
+    ToolpathRulers& rulers = rulers_[view.developed ? 1 : 0];
+    rulers = layoutRulers(
+        [&](const Vec& p) { return project(view, p); }, model_->frame(view.developed, framedAll_),
+        view.developed ? mtc::core::ToolpathFrame{} : model_->workFrame(), titles,
+        QFontMetricsF(painter.font()), 5.0 * lineScale(), QRectF(view.rect).adjusted(2, 2, -2, -2),
+        {QRectF(caption), triadBox(view)});
+    painter.setPen(QPen(model_->palette().grid, penWidth(1)));
+    for (const auto& line : rulers.lines)
+        painter.drawLine(line[0], line[1]);
+    for (const auto& mark : rulers.marks)
+        painter.drawLine(mark[0], mark[1]);
+    painter.setPen(Qt::white);
+    for (const ToolpathTick& tick : rulers.ticks)
+        painter.drawText(tick.box, Qt::AlignCenter, tick.text);
+    for (const ToolpathAxisTitle& title : rulers.titles) {
+        if (!title.upright) {
+            painter.drawText(title.box, Qt::AlignCenter, title.text);
+            continue;
+        }
+        painter.save();  // reads upwards beside a ruler that runs up
+        painter.translate(title.box.center());
+        painter.rotate(-90);
+        painter.drawText(QRectF(-title.box.height() / 2, -title.box.width() / 2, title.box.height(),
+                                title.box.width()),
+                         Qt::AlignCenter, title.text);
+        painter.restore();
+    }
 }
 
 QString PainterToolpathCanvas::caption(bool developed) const {
@@ -208,7 +249,8 @@ void PainterToolpathCanvas::drawLayer(QPainter& painter, const View& view) {
         }
     }
     for (int k = 0; k < mtc::core::kToolpathKinds; ++k) {
-        painter.setPen(QPen(model_->palette().colour(static_cast<mtc::core::ToolpathKind>(k)), 1));
+        painter.setPen(
+            QPen(model_->palette().colour(static_cast<mtc::core::ToolpathKind>(k)), penWidth(1)));
         painter.drawLines(lines[k]);
     }
 }
@@ -227,7 +269,7 @@ void PainterToolpathCanvas::drawContour(QPainter& painter, const View& view) {
         lines.push_back({project(view, layer.vertex(v)), project(view, layer.vertex(v + 1))});
     }
     // Dashed and thin: the tool-centre path in the motion colours stays on top.
-    painter.setPen(QPen(model_->palette().contour, 1, Qt::DashLine));
+    painter.setPen(QPen(model_->palette().contour, penWidth(1), Qt::DashLine));
     painter.drawLines(lines);
 }
 
@@ -248,14 +290,14 @@ void PainterToolpathCanvas::drawBackplot(QPainter& painter, const View& view) {
     }
     if (backplot.partial)
         lines.push_back({project(view, backplot.partialFrom), project(view, backplot.partialTo)});
-    painter.setPen(QPen(model_->palette().backplot, 3, Qt::SolidLine, Qt::RoundCap));
+    painter.setPen(QPen(model_->palette().backplot, penWidth(3), Qt::SolidLine, Qt::RoundCap));
     painter.drawLines(lines);
 }
 
 void PainterToolpathCanvas::drawHighlight(QPainter& painter, const View& view) {
     const auto g = model_->geometry();
     const auto* layer = layerOf(view);
-    painter.setPen(QPen(model_->palette().highlight, 4, Qt::SolidLine, Qt::RoundCap));
+    painter.setPen(QPen(model_->palette().highlight, penWidth(4), Qt::SolidLine, Qt::RoundCap));
     for (std::uint32_t m : model_->highlighted()) {
         const auto [first, last] = view.developed ? g->developedRange(m) : g->sceneRange(m);
         for (std::uint32_t s = first; s < last; ++s) {
@@ -270,12 +312,12 @@ void PainterToolpathCanvas::drawMarks(QPainter& painter, const View& view) {
     const auto& palette = model_->palette();
     auto dot = [&](bool shown, const Vec& p, const QColor& colour) {
         if (!shown) return;
-        painter.setPen(QPen(Qt::black, 1));
+        painter.setPen(QPen(Qt::black, penWidth(1)));
         painter.setBrush(colour);
-        painter.drawEllipse(project(view, p), 6, 6);
+        painter.drawEllipse(project(view, p), 6 * lineScale(), 6 * lineScale());
     };
     if (marks.hasRepos) {
-        painter.setPen(QPen(palette.repos, 2, Qt::DashLine));
+        painter.setPen(QPen(palette.repos, penWidth(2), Qt::DashLine));
         QPolygonF path;  // the corners of ADJUST / REPOS (TP-007)
         for (const auto& p : marks.repos)
             path << project(view, p);
@@ -295,8 +337,8 @@ void PainterToolpathCanvas::drawTool(QPainter& painter, const View& view,
     if (!marks.hasTool) return;
     const QColor& colour = model_->palette().tool;
     const QPointF tip = project(view, marks.tool);
-    const double radius = std::max(5.0, marks.toolRadius * view.scale);
-    painter.setPen(QPen(colour, 2));
+    const double radius = std::max(5.0 * lineScale(), marks.toolRadius * view.scale);
+    painter.setPen(QPen(colour, penWidth(2)));
     if (!marks.turning) {  // the shank up the tool axis (Z), as long as L1
         const double length = std::max(marks.toolLength, 4.0 * std::max(marks.toolRadius, 1.0));
         const Vec top{marks.tool[0], marks.tool[1], marks.tool[2] + length};
@@ -308,7 +350,7 @@ void PainterToolpathCanvas::drawTool(QPainter& painter, const View& view,
 
 void PainterToolpathCanvas::drawStock(QPainter& painter, const View& view) {
     const auto& stock = model_->stock();
-    painter.setPen(QPen(model_->palette().stock, 1, Qt::DotLine));
+    painter.setPen(QPen(model_->palette().stock, penWidth(1), Qt::DotLine));
     if (stock.shape == mtc::core::Stock::Shape::Block) {
         const auto c = corners(stock.min, stock.max);
         for (int i = 0; i < 8; ++i)
@@ -332,16 +374,29 @@ void PainterToolpathCanvas::drawStock(QPainter& painter, const View& view) {
     }
 }
 
+QRectF PainterToolpathCanvas::triadBox(const View& view) const {
+    // Top right: the bottom and the left carry the rulers (TP-025). The
+    // arms reach 28 px (at 96 dpi) from the middle, their names beyond.
+    const QFontMetricsF metrics(font());
+    const double name = view.developed
+                            ? std::max({metrics.horizontalAdvance(tr("axial")),
+                                        metrics.horizontalAdvance(tr("circ.")), metrics.height()})
+                            : std::max(metrics.horizontalAdvance("X"), metrics.height());
+    const double side = 2 * (28 * lineScale() + name + 6);
+    return {view.rect.right() - side, double(view.rect.top()), side, side};
+}
+
 void PainterToolpathCanvas::drawTriad(QPainter& painter, const View& view) {
-    const QPointF origin(view.rect.left() + 40, view.rect.bottom() - 40);
+    const QPointF origin = triadBox(view).center();
+    const double arm = 28 * lineScale();
     const char* names[3] = {"X", "Y", "Z"};
     const QColor colours[3] = {Qt::red, Qt::green, QColor(80, 140, 255)};
     for (int axis = 0; axis < 3; ++axis) {
         Vec unit{0, 0, 0};
         unit[static_cast<std::size_t>(axis)] = 1.0;
         const QPointF tip =
-            origin + QPointF(28 * dot(unit, view.pose.right()), -28 * dot(unit, view.pose.up));
-        painter.setPen(QPen(colours[axis], 2));
+            origin + QPointF(arm * dot(unit, view.pose.right()), -arm * dot(unit, view.pose.up));
+        painter.setPen(QPen(colours[axis], penWidth(2)));
         painter.drawLine(origin, tip);
         painter.drawText(tip + QPointF(3, 3), view.developed && axis < 2
                                                   ? (axis == 0 ? tr("axial") : tr("circ."))

@@ -4,6 +4,7 @@
 
 #include "screens/toolpath/ToolpathCanvas.h"
 #include "screens/toolpath/ToolpathModel.h"
+#include "screens/toolpath/ToolpathTicks.h"
 
 namespace mtc::core {
 struct ToolpathLayer;
@@ -32,6 +33,9 @@ class PainterToolpathCanvas : public ToolpathCanvas {
     /// The text drawn in the top left corner of the scene (developed) area:
     /// what it is, its extents and, in the scene, the zero offset (TP-019).
     QString caption(bool developed) const;
+    /// The ticks, labels and titles drawn at the last paint along the
+    /// scene's (developed plane's) frame, in workpiece coordinates (TP-025).
+    const ToolpathRulers& rulers(bool developed) const { return rulers_[developed ? 1 : 0]; }
 
   protected:
     void paintEvent(QPaintEvent* event) override;
@@ -45,6 +49,7 @@ class PainterToolpathCanvas : public ToolpathCanvas {
         CameraPose pose;
         Vec focal{0, 0, 0};
         double scale = 1.0;  ///< pixels per mm
+        QPointF centre;      ///< where the focal point is drawn
         QRect rect;
         bool developed = false;
     };
@@ -67,12 +72,17 @@ class PainterToolpathCanvas : public ToolpathCanvas {
     void drawTool(QPainter& painter, const View& view, const ToolpathMarks& marks);
     void drawStock(QPainter& painter, const View& view);
     void drawTriad(QPainter& painter, const View& view);
+    /// Where the axis triad and its names are drawn (top right).
+    QRectF triadBox(const View& view) const;
+    /// Ticks and titles along the frame (TP-025), clear of the caption's box.
+    void drawRulers(QPainter& painter, const View& view, const QRect& caption);
     long pickIn(const View& view, QPointF at) const;
 
     View scene_;
     View developed_;
     bool split_ = false;
-    bool framedAll_ = false;  ///< the last fit was fitAll()
+    bool framedAll_ = false;                ///< the last fit was fitAll()
+    std::array<ToolpathRulers, 2> rulers_;  ///< scene, developed plane
 };
 
 }  // namespace mtc::screens

@@ -3,6 +3,8 @@
 #include <QImage>
 #include <QPoint>
 #include <QWidget>
+#include <algorithm>
+#include <cmath>
 #include <optional>
 
 #include "screens/toolpath/ToolpathCamera.h"
@@ -41,6 +43,28 @@ class ToolpathCanvas : public QWidget {
     /// Widget position of the middle of move `move`'s first scene segment
     /// (developed segment when the move has no scene segment), if visible.
     virtual std::optional<QPoint> positionOfMove(long move) = 0;
+    /// How much wider than at 96 dpi the view draws its lines, in device
+    /// pixels (TP-026): the screen's logical dpi / 96 in quarter steps (at
+    /// least 1) times the device pixel ratio, so that at 144 dpi - whether Qt
+    /// reports 144 dpi or scales by 1.5 - a path is not hair-thin beside text
+    /// that grew with the screen.
+    double deviceLineScale() const {
+        // Quarter steps: Xvfb at -dpi 144 gives a ratio of 1.4985, not 1.5.
+        return std::max(1.0, std::round(lineScale() * devicePixelRatioF() * 4.0) / 4.0);
+    }
+    /// As lineScale for sizes in widget (logical) pixels.
+    double lineScale() const { return lineScaleAt(logicalDpiY()); }
+    /// The width, in widget pixels, of a pen `width` pixels wide at 96 dpi:
+    /// whole device pixels, at least 1 (crisp without antialiasing).
+    double penWidth(double width) const {
+        return scaledWidth(width, deviceLineScale()) / devicePixelRatioF();
+    }
+    static double lineScaleAt(int logicalDpi) {
+        return std::max(1.0, std::round(logicalDpi / 96.0 * 4.0) / 4.0);
+    }
+    static double scaledWidth(double width, double scale) {
+        return std::max(1.0, std::round(width * scale));
+    }
 
   protected:
     ToolpathModel* model_;

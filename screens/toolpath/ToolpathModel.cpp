@@ -234,7 +234,17 @@ mtc::core::ToolpathFrame ToolpathModel::workFrame() const {
 
 QString ToolpathModel::axisTitle(int axis) const {
     static const char* const letters[] = {"X", "Y", "Z"};
-    return QString("%1 (mm, G%2)").arg(letters[std::clamp(axis, 0, 2)]).arg(workFrame().code);
+    const QString letter = letters[std::clamp(axis, 0, 2)];
+    const mtc::core::ToolpathFrame frame = workFrame();
+    if (axis == frame.radialAxis && frame.diameter)  // G16 (TP-020)
+        return QString("%1 (mm, \u00d8, G%2)").arg(letter).arg(frame.code);
+    if (axis == frame.radialAxis && turning())  // a turner reads a radius only when told
+        return tr("%1 (mm, radius, G%2)").arg(letter).arg(frame.code);
+    return QString("%1 (mm, G%2)").arg(letter).arg(frame.code);
+}
+
+bool ToolpathModel::turning() const {
+    return session_->processConfig(slot_).defaultPlane() == 18;  // as PartModel
 }
 
 QString ToolpathModel::frameCaption() const {
@@ -296,7 +306,7 @@ void ToolpathModel::markTool(ToolpathMarks& marks) const {
     marks.tool = mapping_->scenePoint(machine);
     marks.toolRadius = status.edgeKnown ? status.edgeRadius : 0.0;
     marks.toolLength = status.edgeKnown ? status.edgeLength[0] : 0.0;
-    marks.turning = session_->processConfig(slot_).defaultPlane() == 18;  // as PartModel
+    marks.turning = turning();
 }
 
 void ToolpathModel::updateReposPath() {

@@ -120,8 +120,12 @@ class ToolpathModel : public QObject {
     /// the picked move or the highlighted block's first move (for a block
     /// without motion the next move of its program), else at the path's end.
     mtc::core::ToolpathFrame workFrame() const;
-    /// "X (mm, G54)": the title of scene axis `axis` (0..2) in workFrame().
+    /// "X (mm, G54)": the title of scene axis `axis` (0..2) in workFrame();
+    /// the axis G15/G16 apply to says "Ø" under G16 and, on a lathe,
+    /// "radius" under G15 (TP-020).
     QString axisTitle(int axis) const;
+    /// The station turns (default plane G18, as the part model decides).
+    bool turning() const;
     /// "Workpiece coordinates G54: zero point at machine ..." or
     /// "Machine coordinates (G53, no zero offset)"; "" without a path.
     QString frameCaption() const;

@@ -49,9 +49,9 @@ QString extentsText(const mtc::core::ToolpathBounds& b, bool flat) {
 void labelInFrame(vtkCubeAxesActor* axes, const mtc::core::ToolpathFrame& frame,
                   const std::array<std::string, 3>& titles) {
     const double* b = axes->GetBounds();
-    axes->SetXAxisRange(b[0] - frame.offset[0], b[1] - frame.offset[0]);
-    axes->SetYAxisRange(b[2] - frame.offset[1], b[3] - frame.offset[1]);
-    axes->SetZAxisRange(b[4] - frame.offset[2], b[5] - frame.offset[2]);
+    axes->SetXAxisRange(frame.workpiece(0, b[0]), frame.workpiece(0, b[1]));
+    axes->SetYAxisRange(frame.workpiece(1, b[2]), frame.workpiece(1, b[3]));
+    axes->SetZAxisRange(frame.workpiece(2, b[4]), frame.workpiece(2, b[5]));
     axes->SetXTitle(titles[0].c_str());
     axes->SetYTitle(titles[1].c_str());
     axes->SetZTitle(titles[2].c_str());
@@ -114,6 +114,19 @@ void placeFinishedPart(vtkActor* actor, const std::vector<float>& triangles, con
     p->SetDiffuse(0.65);
     p->SetOpacity(1.0);
     p->LightingOn();
+}
+
+std::array<double, 2> axisRange(vtkCubeAxesActor* axes, int axis) {
+    const double* range = axis == 0   ? axes->GetXAxisRange()
+                          : axis == 1 ? axes->GetYAxisRange()
+                                      : axes->GetZAxisRange();
+    return {range[0], range[1]};
+}
+
+QString axisTitleOf(vtkCubeAxesActor* axes, int axis) {
+    return QString::fromUtf8(axis == 0   ? axes->GetXTitle()
+                             : axis == 1 ? axes->GetYTitle()
+                                         : axes->GetZTitle());
 }
 
 void placeCylinder(vtkActor* actor, int axis, double radius, double from, double to) {

@@ -25,10 +25,13 @@ void setBounds(vtkCubeAxesActor* axes, const mtc::core::ToolpathBounds& b);
 /// its length is in the caption's extents (TP-014).
 void labelLongAxesOnly(vtkCubeAxesActor* axes, const mtc::core::ToolpathBounds& b);
 /// Tick labels in the workpiece frame (TP-019): the box stays where the
-/// scene (machine) coordinates put it, its ticks read scene - offset; the
-/// titles name the zero offset ("X (mm, G54)").
+/// scene (machine) coordinates put it, its ticks read scene - offset (x 2 on
+/// a diameter axis, TP-020); the titles name the zero offset ("X (mm, G54)").
 void labelInFrame(vtkCubeAxesActor* axes, const mtc::core::ToolpathFrame& frame,
                   const std::array<std::string, 3>& titles);
+/// The range the tick labels of axis `axis` (0 X, 1 Y, 2 Z) read, and its title.
+std::array<double, 2> axisRange(vtkCubeAxesActor* axes, int axis);
+QString axisTitleOf(vtkCubeAxesActor* axes, int axis);
 /// "extents 100.0 x 60.0 x 12.0 mm" of a picture (without the third with `flat`).
 QString extentsText(const mtc::core::ToolpathBounds& b, bool flat);
 /// A cylinder along scene axis `axis` from `from` to `to`.

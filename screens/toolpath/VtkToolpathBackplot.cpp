@@ -14,6 +14,13 @@ VtkBackplot::VtkBackplot(vtkRenderer* steady, vtkRenderer* live, const QColor& c
     live_->AddActor(open_);
 }
 
+void VtkBackplot::setWidth(float width) {
+    width_ = width;
+    open_->GetProperty()->SetLineWidth(width);
+    for (const auto& piece : sealed_)
+        piece->GetProperty()->SetLineWidth(width);
+}
+
 VtkBackplot::~VtkBackplot() {
     clear();
     live_->RemoveActor(open_);
@@ -26,7 +33,7 @@ vtkSmartPointer<vtkActor> VtkBackplot::newActor() const {
     actor->SetMapper(mapper);
     vtkProperty* property = actor->GetProperty();
     property->SetColor(colour_.redF(), colour_.greenF(), colour_.blueF());
-    property->SetLineWidth(kWidth);
+    property->SetLineWidth(width_);
     property->SetLighting(false);
     actor->PickableOff();
     return actor;

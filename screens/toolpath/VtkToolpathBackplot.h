@@ -22,9 +22,9 @@ namespace mtc::screens {
 class VtkBackplot {
   public:
     static constexpr std::uint32_t kPieceSegments = 4096;
-    /// Line width in pixels: wider than the path (1 px), narrower than the
-    /// highlight (6 px), so the running block's travelled part shows on it.
-    static constexpr float kWidth = 3.0f;
+    /// Line width in pixels at 96 dpi: wider than the path (1 px), narrower
+    /// than the highlight (6 px), so the running block's travelled part shows on it.
+    static constexpr double kWidth = 3.0;
 
     /// Sealed pieces go to `steady`, the open piece to `live` (VtkStillCache).
     VtkBackplot(vtkRenderer* steady, vtkRenderer* live, const QColor& colour);
@@ -35,6 +35,8 @@ class VtkBackplot {
     /// Shows `backplot` (empty: nothing). Returns true when a piece was
     /// sealed or the backplot started over (the steady part changed).
     bool show(const ToolpathBackplot& backplot);
+    /// Lines `width` device pixels wide (kWidth scaled to the screen, TP-026).
+    void setWidth(float width);
     /// Removes every piece.
     void clear();
     /// Shows or hides the sealed pieces (the open piece stays as it is).
@@ -50,6 +52,8 @@ class VtkBackplot {
     vtkRenderer* steady_;
     vtkRenderer* live_;
     QColor colour_;
+    float width_ =
+        static_cast<float>(kWidth);  ///< device pixels; before open_, newActor() reads it
     std::vector<vtkSmartPointer<vtkActor>> sealed_;
     vtkSmartPointer<vtkActor> open_;
     std::uint64_t run_ = 0;

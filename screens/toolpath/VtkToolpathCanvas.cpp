@@ -71,6 +71,7 @@ struct VtkToolpathCanvas::Scene {
     double toolPictureSize = 0.0;               ///< picture size the tool was made for
     std::array<double, 3> toolAt{};             ///< where the tool is drawn
     mtc::core::ToolpathFrame shownFrame;        ///< the frame the scene's labels are in
+    double lineScale = 0.0;                     ///< line widths set for (updateLineWidths)
     QString sceneCaption;                       ///< the scene caption without the frame line
     /// Per area (scene, developed): backplot shown (0/1), its run and revision.
     std::array<std::array<std::uint64_t, 3>, 2> shownBackplot{};
@@ -188,6 +189,7 @@ void VtkToolpathCanvas::requestRender() {
 }
 
 void VtkToolpathCanvas::renderNow() {
+    updateLineWidths();
     // While the view moves every frame is a new picture: nothing to keep.
     scene_->stillCache->render(!scene_->coarse);
     ++scene_->renders;
@@ -351,11 +353,21 @@ QString VtkToolpathCanvas::sceneCaption() const {
 }
 
 std::array<double, 2> VtkToolpathCanvas::tickRange(int axis) const {
-    vtkCubeAxesActor* axes = scene_->scene.axes;
-    const double* range = axis == 0   ? axes->GetXAxisRange()
-                          : axis == 1 ? axes->GetYAxisRange()
-                                      : axes->GetZAxisRange();
-    return {range[0], range[1]};
+    return axisRange(scene_->scene.axes, axis);
+}
+
+void VtkToolpathCanvas::updateLineWidths() {
+    const double scale = deviceLineScale();
+    if (scale == scene_->lineScale) return;
+    scene_->lineScale = scale;
+    scene_->scene.setLineWidths(scale);
+    scene_->developed.setLineWidths(scale);
+    scene_->repos->GetProperty()->SetLineWidth(static_cast<float>(scaledWidth(3.0, scale)));
+    scene_->stillCache->invalidate();
+}
+
+QString VtkToolpathCanvas::axisTitle(int axis) const {
+    return axisTitleOf(scene_->scene.axes, axis);
 }
 
 bool VtkToolpathCanvas::updateFrame(bool always) {
@@ -442,7 +454,6 @@ bool VtkToolpathCanvas::updateMarks(bool always) {
         mapper->SetInputData(line->GetOutput());
         scene_->repos->SetMapper(mapper);
         setColour(scene_->repos->GetProperty(), palette.repos);
-        scene_->repos->GetProperty()->SetLineWidth(3.0f);
     }
     return true;
 }

@@ -51,6 +51,8 @@ class VtkToolpathCanvas : public ToolpathCanvas {
     /// `axis` (0 X, 1 Y, 2 Z) read, in the workpiece frame (TP-019).
     QString sceneCaption() const;
     std::array<double, 2> tickRange(int axis) const;
+    /// The title the axes box shows on scene axis `axis` (0 X, 1 Y, 2 Z).
+    QString axisTitle(int axis) const;
     /// Cells the coarse copy shown while moving may have at most.
     static constexpr std::size_t kLevelOfDetailCells = 40000;
     /// Its starting tolerance: this fraction of the layer's largest extent
@@ -62,6 +64,9 @@ class VtkToolpathCanvas : public ToolpathCanvas {
 
   private:
     struct Scene;
+    /// Sets the line widths for the screen the view is on now (TP-026; VTK
+    /// draws in device pixels, known once the view is in its window).
+    void updateLineWidths();
     void rebuild();
     /// The highlighted moves (uploaded again with `always` or when they
     /// changed). True when the picture changed.

@@ -12,20 +12,17 @@ void Part::setUp(const ToolpathPalette& palette) {
         m->SetScalarModeToUsePointData();
         m->SetColorModeToDirectScalars();
         actor->SetMapper(m);
-        actor->GetProperty()->SetLineWidth(kPathWidth);
         actor->GetProperty()->SetLighting(false);
     }
     coarsePath->VisibilityOff();
     contourMapper->ScalarVisibilityOff();
     contour->SetMapper(contourMapper);
-    contour->GetProperty()->SetLineWidth(kContourWidth);
     contour->GetProperty()->SetLighting(false);
     setColour(contour->GetProperty(), palette.contour);
     contour->PickableOff();
     contour->VisibilityOff();
     highlightMapper->ScalarVisibilityOff();
     highlight->SetMapper(highlightMapper);
-    highlight->GetProperty()->SetLineWidth(6.0f);
     highlight->GetProperty()->SetLighting(false);
     setColour(highlight->GetProperty(), palette.highlight);
     highlight->PickableOff();
@@ -56,6 +53,18 @@ void Part::setUp(const ToolpathPalette& palette) {
     renderer->AddActor(axes);
     renderer->AddActor2D(caption);
     backplot = std::make_unique<VtkBackplot>(renderer, live, palette.backplot);
+    setLineWidths(1.0);
+}
+
+void Part::setLineWidths(double scale) {
+    const auto width = [scale](double w) {
+        return static_cast<float>(ToolpathCanvas::scaledWidth(w, scale));
+    };
+    path->GetProperty()->SetLineWidth(width(kPathWidth));
+    coarsePath->GetProperty()->SetLineWidth(width(kPathWidth));
+    contour->GetProperty()->SetLineWidth(width(kContourWidth));
+    highlight->GetProperty()->SetLineWidth(width(kHighlightWidth));
+    backplot->setWidth(width(VtkBackplot::kWidth));
 }
 
 void Part::fitClippingRange() {

@@ -17,15 +17,18 @@
 #include <memory>
 
 #include "cnc_core/toolpath/ToolpathDecimation.h"
+#include "screens/toolpath/ToolpathCanvas.h"
 #include "screens/toolpath/ToolpathPalette.h"
 #include "screens/toolpath/VtkToolpathBackplot.h"
 
 namespace mtc::screens {
 
-/// Line width of the path in pixels: 1, because VTK 9.1 draws wider lines
-/// with a geometry shader, which is slow on Mesa llvmpipe (TP-010).
-inline constexpr float kPathWidth = 1.0f;
-inline constexpr float kContourWidth = 1.0f;  // told apart by its colour (legend under the view)
+/// Line widths in pixels at 96 dpi (TP-026 scales them with the screen):
+/// the path 1, because wider lines cost llvmpipe frame time (TP-010); the
+/// contour told apart by its colour (legend under the view).
+inline constexpr double kPathWidth = 1.0;
+inline constexpr double kContourWidth = 1.0;
+inline constexpr double kHighlightWidth = 6.0;
 
 inline void setColour(vtkProperty* property, const QColor& colour) {
     property->SetColor(colour.redF(), colour.greenF(), colour.blueF());
@@ -57,8 +60,11 @@ struct Part {
     /// What the running program has travelled since Start (TP-016).
     std::unique_ptr<VtkBackplot> backplot;
 
-    /// Colours, widths and the actors in drawing order (the backplot last).
+    /// Colours and the actors in drawing order (the backplot last).
     void setUp(const ToolpathPalette& palette);
+    /// Line widths: the 96-dpi widths times `scale` (device pixels per
+    /// 96-dpi pixel, TP-026), whole pixels.
+    void setLineWidths(double scale);
     /// The depth range of the camera: the steady and live props (the tool
     /// lives in the live renderer), with half their size to spare so that
     /// the tool stays inside it as it moves.

@@ -278,9 +278,13 @@ namespace {
 
 /// The workpiece coordinates of the end of move `m`: scene point minus the
 /// offset of the move's frame (TP-019).
+std::array<double, 3> sceneEnd(const ToolpathGeometry& g, std::size_t m) {
+    const auto last = g.sceneRange(m).second;
+    return g.scene.vertex(g.scene.segmentStart[last - 1] + 1);
+}
+
 std::array<double, 3> workpieceEnd(const ToolpathGeometry& g, std::size_t m) {
-    const auto [first, last] = g.sceneRange(m);
-    const auto end = g.scene.vertex(g.scene.segmentStart[last - 1] + 1);
+    const auto end = sceneEnd(g, m);
     const ToolpathFrame frame = g.frameOf(m);
     return {end[0] - frame.offset[0], end[1] - frame.offset[1], end[2] - frame.offset[2]};
 }
@@ -336,4 +340,41 @@ TEST(ToolpathFrames, TheLatheFrameHasNoYAndFollowsG20) {
     EXPECT_EQ(g20.geometry.frameOf(1).code, 55);
     EXPECT_EQ(g20.geometry.frameOf(1).offset, (std::array<double, 3>{0, 0, 255.5}));
     EXPECT_NEAR(workpieceEnd(g20.geometry, 1)[2], -10.0, kFloat);
+}
+
+TEST(ToolpathFrames, TheLatheFrameReadsDiametersUnderG16) {
+    // Demo lathe: B015 = radius (G15 at the start), G54 = X0 Z255.5. The frame
+    // names the scene axis G15/G16 apply to (definition X) and, under G16,
+    // reads diameters there: the programmed X80 is 80, not the radius 40.
+    const auto r =
+        run("N0001 G54 G0 X40 Z5\nN0002 G16 G1 X80 Z-20 F200\nN0003 G15 G1 X30\nN0004 M30\n", 1);
+    ASSERT_TRUE(r.complete) << diagnosticsText(r.diagnostics);
+    const auto& g = r.geometry;
+    ASSERT_EQ(g.moves.size(), 3u);
+    const bool diameter[] = {false, true, false};
+    const double programmedX[] = {40, 80, 30};
+    for (std::size_t m = 0; m < 3; ++m) {
+        const ToolpathFrame frame = g.frameOf(m);
+        EXPECT_EQ(frame.radialAxis, 0) << "move " << m;
+        EXPECT_EQ(frame.diameter, diameter[m]) << "move " << m;
+        const auto end = sceneEnd(g, m);
+        EXPECT_NEAR(frame.workpiece(0, end[0]), programmedX[m], kFloat) << "move " << m;
+        EXPECT_NEAR(frame.sceneOf(0, programmedX[m]), end[0], kFloat) << "move " << m;
+        EXPECT_NEAR(frame.workpiece(2, end[2]), m == 0 ? 5.0 : -20.0, kFloat) << "move " << m;
+    }
+    EXPECT_NEAR(sceneEnd(g, 1)[0], 40.0, kFloat) << "the machine moves the radius";
+    EXPECT_EQ(g.frames.size(), 2u) << "G54 radius and G54 diameter";
+    EXPECT_NE(g.frameOf(0), g.frameOf(1));
+    EXPECT_EQ(g.frameOf(0), g.frameOf(2));
+    // After G20 the Z axis has definition X: G16 applies to it (seed 003, 3.5).
+    const auto g20 =
+        run("N0001 G54 G0 X40 Z5\nN0002 G20 Z0 C0 X0\nN0003 G1 Z-10 F200\nN0004 M30\n", 1);
+    ASSERT_TRUE(g20.complete) << diagnosticsText(g20.diagnostics);
+    EXPECT_EQ(g20.geometry.frameOf(1).radialAxis, 2);
+    // The mill: X has definition X, radius programming (B015 = radius).
+    const auto mill = run("N0001 G54 G0 X5 Y6 Z7\nN0002 M30\n", 0);
+    ASSERT_TRUE(mill.complete) << diagnosticsText(mill.diagnostics);
+    EXPECT_EQ(mill.geometry.frameOf(0).radialAxis, 0);
+    EXPECT_FALSE(mill.geometry.frameOf(0).diameter);
+    EXPECT_DOUBLE_EQ(mill.geometry.frameOf(0).scale(0), 1.0);
 }

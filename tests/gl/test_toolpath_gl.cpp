@@ -380,6 +380,77 @@ class ToolpathGlTest : public QObject {
                  full.convertToFormat(QImage::Format_RGB32));
     }
 
+    /// TP-020: the demo lathe programs radii (B015 = radius) and says so on
+    /// its X axis; a G16 block is read in diameters: ticks twice the radius.
+    void theLatheXReadsTheDiameterUnderG16AndSaysRadiusOtherwise() {
+        PanelFixture panel;
+        panel.window->showStation(1);
+        // Demo lathe: G54 = X0 Z255.5; X is the scene's X, Z its Z.
+        panel.session->addProgram(1, 50, "diameter.nc",
+                                  "N0001 G54 G0 X45 Z5\nN0002 G1 Z-30 F200\nN0003 G16\n"
+                                  "N0004 G1 X70 Z-40\nN0005 G0 X100\nN0006 M30\n");
+        panel.session->selectProgram(1, 50);
+        QVERIFY(panel.window->showScreen("toolpath"));
+        ToolpathScreen* screen = toolpath(panel, 1);
+        VtkToolpathCanvas* canvas = vtkCanvas(screen);
+        QVERIFY(canvas);
+        panel.press(Qt::Key_PageDown);  // N0001: radius programming
+        QVERIFY(screen->model()->highlightText().contains("N0001"));
+        canvas->picture();
+        QCOMPARE(canvas->axisTitle(0), QString("X (mm, radius, G54)"));
+        QCOMPARE(canvas->axisTitle(2), QString("Z (mm, G54)"));
+        const auto xRadius = canvas->tickRange(0), zRadius = canvas->tickRange(2);
+        for (int i = 0; i < 5 && !screen->model()->highlightText().contains("N0004"); ++i)
+            panel.press(Qt::Key_PageDown);  // on to N0004 under G16 (PgDn steps moves)
+        QVERIFY(screen->model()->highlightText().contains("N0004"));
+        canvas->picture();
+        QCOMPARE(canvas->axisTitle(0), QString::fromUtf8("X (mm, \u00d8, G54)"));
+        // The same box: X ticks read twice the radius, Z unchanged.
+        QVERIFY(std::abs(canvas->tickRange(0)[0] - 2 * xRadius[0]) < 1e-9);
+        QVERIFY(std::abs(canvas->tickRange(0)[1] - 2 * xRadius[1]) < 1e-9);
+        QVERIFY(xRadius[1] > xRadius[0]);
+        QVERIFY(canvas->tickRange(2) == zRadius);
+    }
+
+    /// TP-026: the path is one pixel wide at 96 dpi and two at 144 dpi
+    /// (ctest runs this again with QT_FONT_DPI=144 and QT_SCALE_FACTOR=1.5).
+    void theLinesGrowWithTheScreensDpi() {
+        PanelFixture panel;
+        panel.session->addProgram(0, 50, "line.nc",
+                                  "N0001 G54 G0 X0 Y30 Z5\nN0002 G1 Z-2 F500\nN0003 X100\n"
+                                  "N0004 M30\n");
+        panel.session->selectProgram(0, 50);
+        QVERIFY(panel.window->showScreen("toolpath"));
+        ToolpathScreen* screen = toolpath(panel);
+        VtkToolpathCanvas* canvas = vtkCanvas(screen);
+        QVERIFY(canvas);
+        panel.press(Qt::Key_1);  // G17: the X move is a horizontal line
+        // 144 dpi as Qt reports it (QT_FONT_DPI) or as a device pixel ratio of
+        // 1.5 (QT_SCALE_FACTOR; the panel scales by the screen's dpi).
+        const int dpi = canvas->logicalDpiY();
+        const double ratio = canvas->devicePixelRatioF();
+        if (qEnvironmentVariableIsSet("QT_FONT_DPI"))
+            QCOMPARE(dpi, qEnvironmentVariableIntValue("QT_FONT_DPI"));
+        if (qEnvironmentVariableIsSet("QT_SCALE_FACTOR"))
+            QCOMPARE(ratio, qEnvironmentVariable("QT_SCALE_FACTOR").toDouble());
+        const QImage picture = canvas->picture().convertToFormat(QImage::Format_RGB32);
+        const auto middle = canvas->positionOfMove(2);
+        QVERIFY(middle);
+        const int column = static_cast<int>(std::lround(middle->x() * ratio));
+        // 96 dpi (100 offscreen): 1 device pixel; 144: 1.5 -> 2.
+        const int expected = dpi * ratio >= 144 ? 2 : 1;
+        const QColor feed = screen->model()->palette().feed;
+        int rows = 0;
+        for (int y = 0; y < picture.height(); ++y) {
+            const QColor c(picture.pixel(column, y));
+            if (std::abs(c.red() - feed.red()) + std::abs(c.green() - feed.green()) +
+                    std::abs(c.blue() - feed.blue()) <
+                40)
+                ++rows;
+        }
+        QCOMPARE(rows, expected);
+    }
+
     /// TP-018: a station change that shows nothing new (here a dwell: the
     /// machine's time goes on, the axes stand) renders nothing; the axes
     /// moving again do.

@@ -6,6 +6,7 @@
 #include <QFile>
 #include <QLabel>
 #include <QTemporaryDir>
+#include <algorithm>
 #include <cmath>
 
 #include "PanelFixture.h"
@@ -15,6 +16,7 @@
 #include "screens/toolpath/ToolpathCanvas.h"
 #include "screens/toolpath/ToolpathModel.h"
 #include "screens/toolpath/ToolpathScreen.h"
+#include "screens/toolpath/ToolpathTicks.h"
 
 using mtc::screens::ToolpathScreen;
 
@@ -47,6 +49,23 @@ double travelled(const mtc::screens::ToolpathModel& model) {
                            b.layer->vertex(b.layer->segmentStart[s] + 1));
     if (b.partial) length += distance(b.partialFrom, b.partialTo);
     return length;
+}
+
+/// The tick labels of scene axis `axis` the 2D view drew at its last paint.
+QList<const mtc::screens::ToolpathTick*> ticksOf(const mtc::screens::PainterToolpathCanvas& canvas,
+                                                 int axis) {
+    QList<const mtc::screens::ToolpathTick*> out;
+    for (const auto& tick : canvas.rulers(false).ticks)
+        if (tick.axis == axis) out << &tick;
+    return out;
+}
+
+/// Rows of `colour` in column `x` of `image`.
+int thickness(const QImage& image, int x, const QColor& colour) {
+    int rows = 0;
+    for (int y = 0; y < image.height(); ++y)
+        if (QColor(image.pixel(x, y)).rgb() == colour.rgb()) ++rows;
+    return rows;
 }
 
 }  // namespace
@@ -386,6 +405,149 @@ class ToolpathScreenTest : public QObject {
             if (seen.isEmpty() || seen.back() != code) seen << code;
         }
         QCOMPARE(seen, QStringList({"G54", "G55"}));
+    }
+
+    /// TP-025: the 2D view labels the two axes of a plane view in workpiece
+    /// coordinates (G54), each value once, labels apart, and a finer step
+    /// after zooming in; the axis seen end-on gets none.
+    void theTwoDViewTicksReadWorkpieceCoordinatesAndFollowTheZoom() {
+        PanelFixture panel;
+        // Demo mill: G54 = X-150 Y-80 Z-120, stock X0..100 Y0..60 Z-12..0 at G54.
+        panel.session->addProgram(0, 50, "plate.nc",
+                                  "N0001 G54 G0 X0 Y0 Z5\nN0002 G1 Z-2 F500\nN0003 X100\n"
+                                  "N0004 Y60\nN0005 X0\nN0006 Y0\nN0007 G0 Z5\nN0008 M30\n");
+        panel.session->selectProgram(0, 50);
+        panel.window->showScreen("toolpath");
+        ToolpathScreen* screen = toolpath(panel);
+        auto* canvas = qobject_cast<mtc::screens::PainterToolpathCanvas*>(screen->canvas());
+        QVERIFY(canvas);
+        QTRY_VERIFY(screen->model()->geometry() != nullptr);
+        panel.press(Qt::Key_1);  // G17 view
+        canvas->picture();
+        const auto x = ticksOf(*canvas, 0), y = ticksOf(*canvas, 1);
+        QVERIFY(ticksOf(*canvas, 2).isEmpty());  // Z is seen end-on
+        QVERIFY2(x.size() >= 3 && y.size() >= 2,
+                 qPrintable(QString("%1 X, %2 Y ticks").arg(x.size()).arg(y.size())));
+        QStringList xTexts, yTexts;
+        for (const auto* t : x)
+            xTexts << t->text;
+        for (const auto* t : y)
+            yTexts << t->text;
+        QVERIFY2(xTexts.contains("0") && xTexts.contains("100"), qPrintable(xTexts.join(' ')));
+        QVERIFY2(yTexts.contains("0") || yTexts.contains("60"), qPrintable(yTexts.join(' ')));
+        QCOMPARE(xTexts.removeDuplicates(), 0);
+        QCOMPARE(yTexts.removeDuplicates(), 0);
+        // X grows to the right along one row, Y upwards along one column.
+        for (int i = 1; i < x.size(); ++i) {
+            QVERIFY(x[i]->value > x[i - 1]->value && x[i]->box.left() > x[i - 1]->box.right());
+            QCOMPARE(x[i]->box.top(), x[0]->box.top());
+        }
+        for (int i = 1; i < y.size(); ++i)
+            QVERIFY(y[i]->value > y[i - 1]->value && y[i]->box.bottom() < y[i - 1]->box.top());
+        // The tick of X0 is where the path's X0 (machine X-150) is drawn.
+        const auto zero = std::find_if(x.begin(), x.end(), [](auto* t) { return t->value == 0; });
+        const auto start = canvas->positionOfMove(2);  // N0003 X0 -> X100 at Y0
+        QVERIFY(start);
+        const double stepX = x[1]->value - x[0]->value;
+        const double pixelsPerStep = x[1]->at.x() - x[0]->at.x();
+        QVERIFY(std::abs((*zero)->at.x() + 50.0 / stepX * pixelsPerStep - start->x()) <= 1.0);
+        const auto& rulers = canvas->rulers(false);
+        QCOMPARE(rulers.titles.size(), std::size_t(2));
+        QCOMPARE(rulers.titles[0].text, QString("X (mm, G54)"));
+        for (std::size_t i = 0; i < rulers.ticks.size(); ++i)
+            for (std::size_t j = i + 1; j < rulers.ticks.size(); ++j)
+                QVERIFY(!rulers.ticks[i].box.intersects(rulers.ticks[j].box));
+        // Zoomed in four times: a finer step, still every value once.
+        for (int i = 0; i < 4; ++i)
+            panel.press(Qt::Key_Plus);
+        canvas->picture();
+        const auto closer = ticksOf(*canvas, 0);
+        QVERIFY(closer.size() >= 3);
+        QVERIFY2(closer[1]->value - closer[0]->value < stepX,
+                 qPrintable(
+                     QString("step %1 -> %2").arg(stepX).arg(closer[1]->value - closer[0]->value)));
+        QStringList closerTexts;
+        for (const auto* t : closer)
+            closerTexts << t->text;
+        QCOMPARE(closerTexts.removeDuplicates(), 0);
+    }
+
+    /// TP-020 in the 2D view: the demo lathe programs radii and its X title
+    /// says so; a G16 block's X ticks read diameters (the D80 bar: 80).
+    void theTwoDLatheViewReadsRadiusOrDiameterAsProgrammed() {
+        PanelFixture panel;
+        panel.window->showStation(1);
+        panel.session->addProgram(1, 50, "diameter.nc",
+                                  "N0001 G54 G0 X45 Z5\nN0002 G1 Z-30 F200\nN0003 G16\n"
+                                  "N0004 G1 X70 Z-40\nN0005 G0 X100\nN0006 M30\n");
+        panel.session->selectProgram(1, 50);
+        panel.window->showScreen("toolpath");
+        ToolpathScreen* screen = toolpath(panel, 1);
+        auto* canvas = qobject_cast<mtc::screens::PainterToolpathCanvas*>(screen->canvas());
+        QVERIFY(canvas);
+        QTRY_VERIFY(screen->model()->geometry() != nullptr);
+        panel.press(Qt::Key_2);         // G18 view: Z across, X up
+        panel.press(Qt::Key_PageDown);  // N0001, radius programming
+        QVERIFY(screen->model()->highlightText().contains("N0001"));
+        const auto along = canvas->positionOfMove(1);  // N0002 G1 Z-30 at X45 (radius)
+        QVERIFY(along);
+        // Where the X ruler puts `value`, from its first two ticks.
+        const auto rowOf = [&](double value) {
+            const auto x = ticksOf(*canvas, 0);
+            const double slope = (x[1]->at.y() - x[0]->at.y()) / (x[1]->value - x[0]->value);
+            return x[0]->at.y() + (value - x[0]->value) * slope;
+        };
+        const auto titles = [&] {
+            QStringList texts;
+            for (const auto& t : canvas->rulers(false).titles)
+                texts << t.text;
+            return texts;
+        };
+        canvas->picture();
+        QVERIFY(ticksOf(*canvas, 0).size() >= 2);
+        QVERIFY2(std::abs(rowOf(45) - along->y()) <= 1.0, qPrintable(QString::number(rowOf(45))));
+        QVERIFY2(titles().contains("X (mm, radius, G54)"), qPrintable(titles().join('|')));
+        for (int i = 0; i < 5 && !screen->model()->highlightText().contains("N0004"); ++i)
+            panel.press(Qt::Key_PageDown);  // on to N0004 under G16
+        QVERIFY(screen->model()->highlightText().contains("N0004"));
+        canvas->picture();
+        QVERIFY(ticksOf(*canvas, 0).size() >= 2);
+        // The same line now reads its diameter 90.
+        QVERIFY2(std::abs(rowOf(90) - along->y()) <= 1.0, qPrintable(QString::number(rowOf(90))));
+        QVERIFY2(titles().contains(QString::fromUtf8("X (mm, \u00d8, G54)")),
+                 qPrintable(titles().join('|')));
+    }
+
+    /// TP-026: the path is drawn one pixel wide at 96 dpi and wider on a
+    /// denser screen (ctest runs this again with QT_FONT_DPI=144 and with
+    /// QT_SCALE_FACTOR=1.5).
+    void theLinesGrowWithTheScreensDpi() {
+        PanelFixture panel;
+        panel.session->addProgram(0, 50, "line.nc",
+                                  "N0001 G54 G0 X0 Y30 Z5\nN0002 G1 Z-2 F500\nN0003 X100\n"
+                                  "N0004 M30\n");
+        panel.session->selectProgram(0, 50);
+        panel.window->showScreen("toolpath");
+        ToolpathScreen* screen = toolpath(panel);
+        auto* canvas = qobject_cast<mtc::screens::PainterToolpathCanvas*>(screen->canvas());
+        QVERIFY(canvas);
+        QTRY_VERIFY(screen->model()->geometry() != nullptr);
+        panel.press(Qt::Key_1);  // G17: the X move is a horizontal line
+        // 144 dpi as Qt reports it (QT_FONT_DPI) or as a device pixel ratio of
+        // 1.5 (QT_SCALE_FACTOR; the panel scales by the screen's dpi).
+        const int dpi = canvas->logicalDpiY();
+        const double ratio = canvas->devicePixelRatioF();
+        if (qEnvironmentVariableIsSet("QT_FONT_DPI"))
+            QCOMPARE(dpi, qEnvironmentVariableIntValue("QT_FONT_DPI"));
+        if (qEnvironmentVariableIsSet("QT_SCALE_FACTOR"))
+            QCOMPARE(ratio, qEnvironmentVariable("QT_SCALE_FACTOR").toDouble());
+        const QImage picture = canvas->picture().convertToFormat(QImage::Format_RGB32);
+        const auto middle = canvas->positionOfMove(2);
+        QVERIFY(middle);
+        const int column = static_cast<int>(std::lround(middle->x() * ratio));
+        // 96 dpi (100 offscreen): 1 device pixel; 144: 1.5 -> 2.
+        const int expected = dpi * ratio >= 144 ? 2 : 1;
+        QCOMPARE(thickness(picture, column, screen->model()->palette().feed), expected);
     }
 
     void latheGrooveShowsDevelopedPlaneAndCylinder() {
