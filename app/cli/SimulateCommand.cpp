@@ -31,14 +31,6 @@ const char* modelName(const core::removal::PartModel& part) {
     return part.heightField() != nullptr ? "height_field" : "turned_profile";
 }
 
-double stockVolume(const core::removal::PartModel& part) {
-    if (const core::removal::HeightField* f = part.heightField()) {
-        const core::removal::Box& b = f->stock();
-        return (b.max[0] - b.min[0]) * (b.max[1] - b.min[1]) * (b.max[2] - b.min[2]);
-    }
-    return part.profile()->blankVolume();  // the bar, or the RAW contour's blank
-}
-
 void writeJson(const SimulateReport& r) {
     JsonWriter json(stdout);
     beginStatusDocument(json, r.diagnostics.hasErrors() ? "error" : "ok");
@@ -64,7 +56,7 @@ void writeJson(const SimulateReport& r) {
     json.endObject();
     json.field("model", modelName(part));
     json.field("cells", static_cast<long long>(part.cells()));
-    json.field("stock_volume", stockVolume(part));
+    json.field("stock_volume", part.blankVolume());
     json.field("removed_volume", part.removedVolume());
     json.field("blocks_interpreted", static_cast<long long>(r.run.blocks));
     json.field("complete", r.run.complete);
@@ -98,7 +90,7 @@ void writeText(const SimulateReport& r) {
                     r.run.stock.rawLine);
     if (!r.run.stock.fromWindow) std::printf("stock: machine configuration\n");
     std::printf("removed volume: %.3f mm3 of %.3f mm3 stock; %llu of %llu moves cut, %llu rapid\n",
-                part.removedVolume(), stockVolume(part),
+                part.removedVolume(), part.blankVolume(),
                 static_cast<unsigned long long>(r.run.counts.cuttingMoves),
                 static_cast<unsigned long long>(r.run.counts.moves),
                 static_cast<unsigned long long>(r.run.counts.rapidCuts));

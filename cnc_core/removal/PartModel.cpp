@@ -141,6 +141,14 @@ double PartModel::removedVolume() const {
     return field_ ? field_->removedVolume() : profile_->removedVolume();
 }
 
+double PartModel::blankVolume() const {
+    if (field_) {
+        const Box& b = field_->stock();
+        return (b.max[0] - b.min[0]) * (b.max[1] - b.min[1]) * (b.max[2] - b.min[2]);
+    }
+    return profile_->blankVolume();
+}
+
 std::uint64_t PartModel::cells() const {
     if (field_)
         return static_cast<std::uint64_t>(field_->columns()) *

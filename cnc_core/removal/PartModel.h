@@ -58,6 +58,9 @@ class PartModel {
 
     /// Material taken away so far (mm^3).
     double removedVolume() const;
+    /// The blank's volume before any cut (mm^3): the block, or the turned
+    /// profile's (the bar, or a RAW contour's preform, TP-021).
+    double blankVolume() const;
     double resolution() const { return resolution_; }
     /// Cells the model has (height field cells or slices x segments).
     std::uint64_t cells() const;

@@ -45,9 +45,18 @@ RemovalRunResult simulateRemoval(const ProcessConfig& config, const ProgramStore
                                  int number, const RemovalSettings& settings,
                                  std::shared_ptr<const ToolList> tools, std::uint64_t blockBudget,
                                  const RemovalStop* stop) {
-    RemovalRunResult result;
     const ProgramStock stock = programStock(
         config, programs, number, stop != nullptr ? stop->zeroOffsets : nullptr, blockBudget);
+    return simulateRemoval(config, programs, number, stock, settings, std::move(tools), blockBudget,
+                           stop);
+}
+
+RemovalRunResult simulateRemoval(const ProcessConfig& config, const ProgramStore& programs,
+                                 int number, const ProgramStock& stock,
+                                 const RemovalSettings& settings,
+                                 std::shared_ptr<const ToolList> tools, std::uint64_t blockBudget,
+                                 const RemovalStop* stop) {
+    RemovalRunResult result;
     result.stock = stock.origin;
     result.diagnostics.append(stock.diagnostics);
     if (stock.diagnostics.hasErrors()) return result;  // a window that cannot be the blank

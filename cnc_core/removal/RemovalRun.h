@@ -54,4 +54,14 @@ RemovalRunResult simulateRemoval(const ProcessConfig& config, const ProgramStore
                                  std::uint64_t blockBudget = 10'000'000,
                                  const RemovalStop* stop = nullptr);
 
+/// The same with the program's stock already worked out (programStock() of
+/// the same program, offsets and budget): for a caller that needs the stock
+/// itself too (the toolpath view), so the run to the window is made once.
+RemovalRunResult simulateRemoval(const ProcessConfig& config, const ProgramStore& programs,
+                                 int number, const ProgramStock& stock,
+                                 const RemovalSettings& settings,
+                                 std::shared_ptr<const ToolList> tools = nullptr,
+                                 std::uint64_t blockBudget = 10'000'000,
+                                 const RemovalStop* stop = nullptr);
+
 }  // namespace mtc::core::removal

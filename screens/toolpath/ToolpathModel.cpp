@@ -82,11 +82,12 @@ void ToolpathModel::build(int number) {
             break;
         }
     // The program's drawing window is the stock when it has one (TP-008).
-    auto stock =
-        mtc::core::removal::programStock(session_->processConfig(slot_), session_->store(), number);
-    stock_ = stock.stock;
-    if (problem_.isEmpty() && stock.diagnostics.hasErrors())
-        problem_ = RestartController::describe(stock.diagnostics.items().front());
+    programStock_ =
+        std::make_shared<const mtc::core::removal::ProgramStock>(mtc::core::removal::programStock(
+            session_->processConfig(slot_), session_->store(), number));
+    stock_ = programStock_->stock;
+    if (problem_.isEmpty() && programStock_->diagnostics.hasErrors())
+        problem_ = RestartController::describe(programStock_->diagnostics.items().front());
     geometry_ = std::make_shared<const mtc::core::ToolpathGeometry>(std::move(result.geometry));
     cutting_ = {geometry_->cuttingBounds(false), geometry_->cuttingBounds(true)};
     part_ = {};
@@ -121,8 +122,8 @@ void ToolpathModel::simulatePart() {
     partSimulated_ = true;
     const bool turning = session_->processConfig(slot_).defaultPlane() == 18;  // as PartModel
     const mtc::core::removal::RemovalSettings settings = viewSettings(stock_, turning);
-    const auto run = mtc::core::removal::simulateRemoval(session_->processConfig(slot_),
-                                                         session_->store(), number_, settings);
+    const auto run = mtc::core::removal::simulateRemoval(
+        session_->processConfig(slot_), session_->store(), number_, *programStock_, settings);
     if (!run.part) {
         QString why = tr("no stock");
         for (const auto& d : run.diagnostics.items())

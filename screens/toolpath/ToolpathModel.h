@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "cnc_core/language/Program.h"
+#include "cnc_core/removal/ProgramStock.h"
 #include "cnc_core/toolpath/RunTrace.h"
 #include "cnc_core/toolpath/Stock.h"
 #include "cnc_core/toolpath/ToolpathRun.h"
@@ -198,6 +199,9 @@ class ToolpathModel : public QObject {
     QString problem_;
     bool complete_ = false;
     mtc::core::Stock stock_;
+    /// The program's stock as worked out for the path (its window, TP-008),
+    /// reused by the part's simulation.
+    std::shared_ptr<const mtc::core::removal::ProgramStock> programStock_;
     ToolpathPart part_;
     bool partShown_ = true;
     bool partSimulated_ = false;  ///< part_ belongs to the program built

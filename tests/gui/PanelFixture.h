@@ -114,3 +114,18 @@ inline QString directoryRow(PanelFixture& panel, int number) {
     const auto* model = qobject_cast<const mtc::screens::ProgramDirectoryModel*>(list->model());
     return model->index(model->rowOf(number)).data().toString();
 }
+
+/// The scale `widget` is drawn at, checked against how ctest set it (144
+/// dpi as QT_FONT_DPI or as QT_SCALE_FACTOR 1.5: the panel scales by the
+/// screen's dpi), and the device-pixel width of a 1-px line of the toolpath
+/// view then (TP-026): 1 at 96 dpi (100 offscreen), 2 at 144 (1.5 -> 2).
+/// Callers check QTest::currentTestFailed() after it.
+inline void lineWidthAtScale(const QWidget& widget, double& ratio, int& expectedWidth) {
+    const int dpi = widget.logicalDpiY();
+    ratio = widget.devicePixelRatioF();
+    expectedWidth = dpi * ratio >= 144 ? 2 : 1;
+    if (qEnvironmentVariableIsSet("QT_FONT_DPI"))
+        QCOMPARE(dpi, qEnvironmentVariableIntValue("QT_FONT_DPI"));
+    if (qEnvironmentVariableIsSet("QT_SCALE_FACTOR"))
+        QCOMPARE(ratio, qEnvironmentVariable("QT_SCALE_FACTOR").toDouble());
+}
