@@ -58,6 +58,12 @@ void writeJson(const SimulateReport& r) {
     json.field("cells", static_cast<long long>(part.cells()));
     json.field("stock_volume", part.blankVolume());
     json.field("removed_volume", part.removedVolume());
+    // The jacket of the G32 cuts (D-027): its cells and what it took away.
+    const core::removal::DevelopedSurface* jacket = part.jacket();
+    json.field("developed_cells", jacket != nullptr
+                                      ? static_cast<long long>(jacket->columns()) * jacket->rows()
+                                      : 0LL);
+    json.field("developed_volume", part.developedVolume());
     json.field("blocks_interpreted", static_cast<long long>(r.run.blocks));
     json.field("complete", r.run.complete);
     json.field("moves", static_cast<long long>(r.run.counts.moves));
@@ -94,6 +100,9 @@ void writeText(const SimulateReport& r) {
                 static_cast<unsigned long long>(r.run.counts.cuttingMoves),
                 static_cast<unsigned long long>(r.run.counts.moves),
                 static_cast<unsigned long long>(r.run.counts.rapidCuts));
+    if (const core::removal::DevelopedSurface* jacket = part.jacket())
+        std::printf("developed surface: %d x %d cells, %.3f mm3 of it cut under G32\n",
+                    jacket->columns(), jacket->rows(), part.developedVolume());
     if (r.stl.empty())
         std::printf("stl: none written\n");
     else

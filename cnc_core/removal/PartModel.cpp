@@ -86,6 +86,7 @@ std::optional<PartModel> PartModel::create(const Stock& stock, const RemovalSett
     const double res = settings.resolution;
     PartModel model;
     model.resolution_ = res;
+    model.maxCells_ = settings.maxCells;
     if (stock.shape == Stock::Shape::Block) {
         const double columns = cellsAlong(stock.max[0] - stock.min[0], res);
         const double rows = cellsAlong(stock.max[1] - stock.min[1], res);
@@ -137,8 +138,36 @@ bool PartModel::touches(const std::array<double, 3>& a, const std::array<double,
     return profile_->touches(a[axial], a[radial], b[axial], b[radial], tool, margin);
 }
 
+const DevelopedSurface* PartModel::makeJacket(std::string& problem) {
+    if (jacket_) return &*jacket_;
+    if (!profile_) {
+        problem = "the height field has no cylinder jacket";
+        return nullptr;
+    }
+    const double columns = DevelopedSurface::columnsFor(profile_->stockRadius(), resolution_);
+    const double cells = columns * profile_->slices();
+    if (cells > static_cast<double>(maxCells_)) {
+        const double area =
+            2.0 * curve::kPi * profile_->stockRadius() * (profile_->to() - profile_->from());
+        problem = "the developed surface: " +
+                  tooManyCells(cells, RemovalSettings{resolution_, maxCells_}, area);
+        return nullptr;
+    }
+    jacket_.emplace(*profile_, static_cast<int>(columns));
+    return &*jacket_;
+}
+
+bool PartModel::cutJacket(const JacketPoint& a, const JacketPoint& b, double toolRadius) {
+    return jacket_ && profile_ && jacket_->cut(a, b, toolRadius, *profile_);
+}
+
+double PartModel::developedVolume() const {
+    return jacket_ && profile_ ? jacket_->removedVolume(*profile_) : 0.0;
+}
+
 double PartModel::removedVolume() const {
-    return field_ ? field_->removedVolume() : profile_->removedVolume();
+    if (field_) return field_->removedVolume();
+    return profile_->removedVolume() + developedVolume();
 }
 
 double PartModel::blankVolume() const {

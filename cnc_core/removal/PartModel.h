@@ -5,6 +5,7 @@
 #include <optional>
 #include <string>
 
+#include "cnc_core/removal/DevelopedSurface.h"
 #include "cnc_core/removal/HeightField.h"
 #include "cnc_core/removal/TurnedProfile.h"
 #include "cnc_core/toolpath/Stock.h"
@@ -56,7 +57,20 @@ class PartModel {
     bool touches(const std::array<double, 3>& a, const std::array<double, 3>& b, const Cutter& tool,
                  double margin) const;
 
-    /// Material taken away so far (mm^3).
+    /// The turned part's jacket for G32 cuts (D-027), made at the first
+    /// call: nullptr with `problem` on a height field, or when its cells
+    /// (angular columns x the profile's slices) would exceed the settings'
+    /// maxCells (the message gives the coarsest resolution that fits).
+    const DevelopedSurface* makeJacket(std::string& problem);
+    /// Sweeps a radial end mill of `toolRadius` over the jacket (made by
+    /// makeJacket() first; false without it). True when material was removed.
+    bool cutJacket(const JacketPoint& a, const JacketPoint& b, double toolRadius);
+    const DevelopedSurface* jacket() const { return jacket_ ? &*jacket_ : nullptr; }
+    /// Material the G32 cuts took away below the turned profile (mm^3; 0
+    /// without a jacket); part of removedVolume().
+    double developedVolume() const;
+
+    /// Material taken away so far (mm^3), the G32 cuts included.
     double removedVolume() const;
     /// The blank's volume before any cut (mm^3): the block, or the turned
     /// profile's (the bar, or a RAW contour's preform, TP-021).
@@ -77,7 +91,9 @@ class PartModel {
     PartModel() = default;
 
     double resolution_ = 0.2;
+    std::uint64_t maxCells_ = kMaxRemovalCells;
     std::optional<HeightField> field_;
+    std::optional<DevelopedSurface> jacket_;
     std::optional<TurnedProfile> profile_;
     int axial_ = 2;
     int radial_ = 0;

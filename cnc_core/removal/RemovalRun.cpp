@@ -103,7 +103,8 @@ RemovalRunResult simulateRemoval(const ProcessConfig& config, const ProgramStore
         result.diagnostics.warning(
             "REMOVAL_NOT_SIMULATED", program,
             std::to_string(result.counts.transformedMoves) +
-                " moves under G31/G32 were not cut (the part model has no developed surface)");
+                " moves under G31/G32 were not cut (facing is not simulated; G32 only on a "
+                "turned part's jacket, D-027)");
     if (result.counts.insideToolMoves > 0)
         result.diagnostics.warning("REMOVAL_NOT_SIMULATED", program,
                                    std::to_string(result.counts.insideToolMoves) +

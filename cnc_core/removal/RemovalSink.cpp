@@ -1,6 +1,9 @@
 #include "cnc_core/removal/RemovalSink.h"
 
+#include <cmath>
+
 #include "cnc_core/contour/GneExpansion.h"
+#include "cnc_core/toolpath/CurveMath.h"
 
 namespace mtc::core::removal {
 
@@ -17,17 +20,67 @@ ToolpathSettings pathSettings(const PartModel& part) {
 }  // namespace
 
 ToolSweep::ToolSweep(const ProcessAxes& axes, const PartModel& part)
-    : part_(part), path_(axes, pathSettings(part)) {}
+    : part_(part), axes_(axes), path_(axes, pathSettings(part)) {}
+
+ToolSweep::Position ToolSweep::offsetOf(const Motion& m) {
+    return m.compensated ? m.toolOffset : Position{};
+}
 
 void ToolSweep::pass(const Motion& m) {
     path_.motion(m);  // keeps the tool offsets of consecutive moves
     path_.clearGeometry();
+    lastOffset_ = offsetOf(m);
     chords_.clear();
+    jacketChords_.clear();
+}
+
+bool ToolSweep::developedChords(const Motion& m, const Position& previousOffset) {
+    const int count = axes_.count();
+    const int a1 = m.transformAxis1, a2 = m.transformAxis2;
+    if (part_.profile() == nullptr || !(m.effectiveRadius > 0.0) || a1 < 0 || a2 < 0 ||
+        a1 >= count || a2 >= count)
+        return false;
+    const int rotary = axes_.axis(a1).rotary ? a1 : (axes_.axis(a2).rotary ? a2 : -1);
+    const int linear = !axes_.axis(a1).rotary ? a1 : (!axes_.axis(a2).rotary ? a2 : -1);
+    if (rotary < 0 || linear < 0 || path_.sceneAxis(linear) != part_.axialAxis()) return false;
+    // The tool centre across the axis: on the radial scene axis (angle 0 of
+    // the wrap, TP-002) and the one after it, linear along the move.
+    const int radial = path_.machineAxisOfScene(part_.radialAxis());
+    const int side = path_.machineAxisOfScene((part_.radialAxis() + 1) % 3);
+    const Position end = offsetOf(m);
+    const auto centre = [&](const Position& at, const Position& offset, int axis) {
+        const auto k = static_cast<std::size_t>(axis);
+        return axis < 0 ? 0.0 : at[k] - offset[k];
+    };
+    const double x0 = centre(m.start, previousOffset, radial), x1 = centre(m.end, end, radial);
+    const double y0 = centre(m.start, previousOffset, side), y1 = centre(m.end, end, side);
+    const int polar = axes_.axis(rotary).polarDirection;
+    const ToolpathLayer& developed = path_.geometry().developed;
+    const std::size_t n = developed.segmentCount();
+    const auto point = [&](std::size_t vertex, std::size_t step) {
+        const std::array<double, 3> v = developed.vertex(vertex);  // axial, developed mm
+        const double f = static_cast<double>(step) / static_cast<double>(n);
+        const double x = x0 + (x1 - x0) * f, y = y0 + (y1 - y0) * f;
+        const double degrees = curve::degreesFromDeveloped(v[1], m.effectiveRadius, polar);
+        return JacketPoint{degrees * curve::kPi / 180.0 + std::atan2(y, x), v[0], std::hypot(x, y)};
+    };
+    for (std::size_t s = 0; s < n; ++s)
+        jacketChords_.push_back(
+            {point(developed.segmentStart[s], s), point(developed.segmentStart[s] + 1, s + 1)});
+    return n > 0;
 }
 
 ToolSweep::Kind ToolSweep::sweep(const Motion& m, const ToolData& tool) {
     chords_.clear();
+    jacketChords_.clear();
     path_.motion(m);  // keeps the tool offsets of consecutive moves
+    const Position previousOffset = lastOffset_;
+    lastOffset_ = offsetOf(m);
+    if (m.transformation == 32 && developedChords(m, previousOffset)) {
+        path_.clearGeometry();
+        cutter_ = Cutter{tool.radius, 0, true};  // a driven end mill, standing radially
+        return Kind::Developed;
+    }
     if (m.transformation != 30) {
         path_.clearGeometry();
         return Kind::Transformed;
@@ -83,14 +136,38 @@ void RemovalSink::motion(const Motion& m) {
         case ToolSweep::Kind::Swept:
             cutChords(m);
             return;
+        case ToolSweep::Kind::Developed:
+            cutJacket(m);
+            return;
     }
+}
+
+void RemovalSink::cutJacket(const Motion& m) {
+    std::string problem;
+    if (jacketRefused_ || part_.makeJacket(problem) == nullptr) {
+        ++counts_.transformedMoves;
+        if (!jacketRefused_)
+            notes_.warning("REMOVAL_DEVELOPED_REFUSED", m.where,
+                           "G32 moves are not cut: " + problem,
+                           {"a coarser resolution lets the jacket be simulated"});
+        jacketRefused_ = true;
+        return;
+    }
+    ++counts_.developedMoves;
+    bool removed = false;
+    for (const auto& chord : sweep_.jacketChords())
+        removed = part_.cutJacket(chord[0], chord[1], sweep_.cutter().radius) || removed;
+    if (removed) countCut(m);
 }
 
 void RemovalSink::cutChords(const Motion& m) {
     bool removed = false;
     for (const ToolChord& chord : sweep_.chords())
         removed = part_.cut(chord.a, chord.b, sweep_.cutter()) || removed;
-    if (!removed) return;
+    if (removed) countCut(m);
+}
+
+void RemovalSink::countCut(const Motion& m) {
     ++counts_.cuttingMoves;
     if (m.type != MotionType::Rapid) return;
     if (++counts_.rapidCuts <= kMaxRapidNotes)

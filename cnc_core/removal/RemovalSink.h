@@ -17,7 +17,8 @@ struct RemovalCounts {
     std::uint64_t approachMoves = 0;     ///< the first move, from the power-on position: not cut
     std::uint64_t cuttingMoves = 0;      ///< moves that removed material
     std::uint64_t rapidCuts = 0;         ///< rapid (G0) moves that removed material
-    std::uint64_t transformedMoves = 0;  ///< G31 / G32 moves: not simulated
+    std::uint64_t transformedMoves = 0;  ///< G31 / G32 moves not simulated (see RemovalSink)
+    std::uint64_t developedMoves = 0;    ///< G32 moves swept over the jacket (cutting or not)
     std::uint64_t insideToolMoves = 0;   ///< lathe moves of inside (boring) tools: not simulated
 };
 
@@ -37,7 +38,8 @@ class ToolSweep {
     /// What became of a move.
     enum class Kind {
         Swept,        ///< chords() and cutter() hold it
-        Transformed,  ///< G31 / G32: not simulated
+        Developed,    ///< G32 on a turned part: jacketChords() and cutter() hold it
+        Transformed,  ///< G31, G32 elsewhere: not simulated
         InsideTool,   ///< lathe, inside tool: not simulated
     };
     ToolSweep(const ProcessAxes& axes, const PartModel& part);
@@ -47,14 +49,27 @@ class ToolSweep {
     /// Takes a move into the path's memory (offsets) without sweeping it.
     void pass(const Motion& motion);
     const std::vector<ToolChord>& chords() const { return chords_; }
+    /// A G32 move's chords on the turned part's jacket (D-027).
+    const std::vector<std::array<JacketPoint, 2>>& jacketChords() const { return jacketChords_; }
     const Cutter& cutter() const { return cutter_; }
     /// Scene axis (0 X, 1 Y, 2 Z) machine axis `axis` draws on, or -1.
     int sceneAxis(int axis) const { return path_.sceneAxis(axis); }
 
   private:
+    using Position = std::array<double, kMaxAxes>;
+    /// The developed layer's chords of G32 move `m` as jacketChords(); false
+    /// when the move cannot be laid on the part's jacket (no turned part, or
+    /// the plane's linear axis is not the part's axis).
+    bool developedChords(const Motion& m, const Position& previousOffset);
+    /// Tool offsets (Motion::toolOffset) of `m`; zero when not compensated.
+    static Position offsetOf(const Motion& m);
+
     const PartModel& part_;
+    ProcessAxes axes_;
     ToolpathBuilder path_;
+    Position lastOffset_{};
     std::vector<ToolChord> chords_;
+    std::vector<std::array<JacketPoint, 2>> jacketChords_;
     Cutter cutter_;
 };
 
@@ -70,8 +85,11 @@ class ToolSweep {
 /// drill) stands radially: a flat tip of the tool's radius to either side.
 /// The first move starts at the simulator's power-on position (machine
 /// zero, no real place of the tool: on the lathe it lies on the spindle
-/// axis): it is not cut. G31/G32 moves, and an inside tool's moves on the lathe (orientation 1, 2,
-/// 6: the profile has no bores), are counted, not cut.
+/// axis): it is not cut. G32 moves on the lathe sweep the tool (a driven end
+/// mill standing radially) over the turned part's jacket (D-027, made at the
+/// first one). G31 moves, G32 moves elsewhere or beyond the jacket's cell
+/// cap, and an inside tool's moves on the lathe (orientation 1, 2, 6: the
+/// profile has no bores), are counted, not cut.
 class RemovalSink : public MachineSink {
   public:
     /// `part` must outlive the sink.
@@ -93,12 +111,17 @@ class RemovalSink : public MachineSink {
   private:
     /// Cuts the move's chords; counts what it removed.
     void cutChords(const Motion& motion);
+    /// Cuts a G32 move's chords into the jacket (made at the first).
+    void cutJacket(const Motion& motion);
+    /// Counts a move that removed material (a rapid: a warning).
+    void countCut(const Motion& motion);
 
     PartModel& part_;
     ToolSweep sweep_;
     std::function<ToolData()> toolSource_;
     RemovalCounts counts_;
     DiagnosticList notes_;
+    bool jacketRefused_ = false;  ///< the jacket could not be made (noted once)
 };
 
 }  // namespace mtc::core::removal

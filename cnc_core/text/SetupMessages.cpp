@@ -127,7 +127,8 @@ constexpr MessageEntry kSetupMessages[] = {
     {"RESTART_WINDOW_OPEN", "Zuerst Ereignis- oder Variablenfenster schließen"},
     // Material removal and the restart's way back
     {"REENTRY_NOT_CHECKED", "Kein Zielsatz zum Prüfen des Rückwegs"},
-    {"REMOVAL_NOT_SIMULATED", "Bewegungen unter G31/G32 nicht zerspant"},
+    {"REMOVAL_DEVELOPED_REFUSED", "Zylindermantel zu fein aufgelöst: G32 nicht zerspant"},
+    {"REMOVAL_NOT_SIMULATED", "Bewegungen nicht zerspant (G31, G32 ohne Drehteil, Innenwerkzeug)"},
     {"REMOVAL_RAPID_CUT", "Eilgangbewegung schneidet ins Werkstück"},
     {"REMOVAL_RAW_CONTOUR", "Rohteilkontur (RAW) als Rohteil ungültig"},
     {"REMOVAL_STOCK", "Rohteil für den Materialabtrag ungültig"},

@@ -32,6 +32,7 @@ json_check "removed volume within the border bound" 'abs(d["removed_volume"] - 3
 json_check "resolution and stl reported" 'd["resolution"] == 0.2 and d["stl"] == "part.stl"'
 json_check "height field of 500 x 300 cells" 'd["model"] == "height_field" and d["cells"] == 150000'
 json_check "counts" 'd["complete"] and d["blocks_interpreted"] == 12 and d["rapid_cuts"] == 0'
+json_check "no developed surface on the mill" 'd["developed_cells"] == 0 and d["developed_volume"] == 0'
 python3 - "$OUT" <<'PY' && pass "the STL is binary with the reported triangles" || fail "STL size"
 import json, os, struct, sys
 d = json.loads(sys.argv[1])
@@ -46,9 +47,31 @@ text_check "text: no STL asked for" "stl: none written"
 
 expect_rc 0 "simulate the demo lathe program" --json --process 1 simulate 1 --stl shaft.stl
 json_check "turned profile" 'd["model"] == "turned_profile" and d["removed_volume"] > 80000'
-json_check "G32 moves reported as not cut" \
-  'any(x["code"] == "REMOVAL_NOT_SIMULATED" and x["severity"] == "warning" for x in d["diagnostics"])'
+json_check "the G32 groove is cut on the developed surface (D-027)" \
+  'd["developed_volume"] > 500 and d["developed_cells"] > 0 and not any(x["code"] == "REMOVAL_NOT_SIMULATED" for x in d["diagnostics"])'
 [ -s shaft.stl ] && pass "the lathe STL is written" || fail "no shaft.stl"
+
+# A ring groove milled under G32 with T9 (radius 4.85) 2 mm into the R40
+# bar: pi (40^2 - 38^2) 9.7 = 4753.8 mm3, within two slices of the ring.
+cat >ring.nc <<'NC'
+N0001 T9 G18 G90 G54 G0 X45 Z-30
+N0002 G0 C0
+N0003 G20 Z0 C0 X0
+N0004 G32 RI 40
+N0005 G0 G56 Y1 0 Z1 200
+N0006 G1 X38 F100
+N0007 G1 Y1 251.3274123 F300
+N0008 G0 X45
+N0009 G30
+N0010 G18
+N0011 M30
+NC
+expect_rc 0 "simulate a ring groove under G32" --json --process 1 simulate ring.nc
+json_check "the ring groove's volume, all of it on the developed surface" \
+  'abs(d["removed_volume"] - 4753.8) < 2 * 0.2 * 490.1 and d["developed_volume"] == d["removed_volume"] and d["cutting_moves"] == 2'
+json_check "the jacket's cells: 1257 columns x 588 slices" 'd["developed_cells"] == 1257 * 588'
+expect_rc 0 "simulate a ring groove, text" --process 1 simulate ring.nc
+text_check "text names the developed surface" "developed surface: 1257 x 588 cells, 47[0-9][0-9]\.[0-9]* mm3 of it cut under G32"
 
 printf 'N0001 T1 G17 G90 G54 G0 X10 Y10 Z2\nN0002 Z-3\nN0003 G0 Z5\nN0004 M30\n' >rapid.nc
 expect_rc 0 "a rapid into the part is a warning" --json simulate rapid.nc

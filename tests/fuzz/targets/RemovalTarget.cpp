@@ -1,9 +1,10 @@
 // Material removal: the input is an NC program, run on the mill or the lathe
 // of the demo cell (by the input's length) into the part model at a coarse
 // resolution, bounded by a block budget. The part stays inside its stock
-// (heights between bottom and top, radii between 0 and the bar's), the
-// removed volume is finite and at most the stock's, diagnostics have a
-// code, and the STL has the size its triangle count promises.
+// (heights between bottom and top, radii between 0 and the bar's, on the
+// G32 jacket too), the removed volume is finite and at most the stock's,
+// diagnostics have a code, and the STL has the size its triangle count
+// promises.
 #include <cmath>
 #include <string>
 
@@ -33,6 +34,24 @@ void checkProfile(const core::removal::TurnedProfile& p, std::string_view input)
                 "a radius lies between 0 and the bar's", input);
 }
 
+/// The jacket of the G32 cuts (D-027): one row per slice, every radius
+/// between 0 and the bar's, its volume finite and within what was removed.
+void checkJacket(const core::removal::PartModel& part, std::string_view input) {
+    const core::removal::DevelopedSurface* jacket = part.jacket();
+    if (jacket == nullptr) return;
+    const core::removal::TurnedProfile& p = *part.profile();
+    require(jacket->rows() == p.slices(), "the jacket has a row per slice", input);
+    for (int j = 0; j < jacket->rows(); ++j)
+        for (int i = 0; i < jacket->columns(); ++i)
+            require(jacket->radius(i, j) >= 0.0 &&
+                        jacket->radius(i, j) <= static_cast<float>(p.stockRadius()),
+                    "a jacket radius lies between 0 and the bar's", input);
+    const double developed = part.developedVolume();
+    require(std::isfinite(developed) && developed >= 0.0 &&
+                developed <= part.removedVolume() * (1.0 + 1e-9),
+            "the developed volume is finite and part of the removed volume", input);
+}
+
 }  // namespace
 
 void fuzzRemoval(std::string_view input) {
@@ -57,6 +76,7 @@ void fuzzRemoval(std::string_view input) {
         checkHeightField(*f, input);
     } else {
         checkProfile(*part.profile(), input);
+        checkJacket(part, input);
     }
     require(r.counts.cuttingMoves <= r.counts.moves, "only moves cut", input);
     const std::string stl = core::removal::partStl(part);
