@@ -1,5 +1,6 @@
 #include "cnc_core/removal/PartStl.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstring>
@@ -128,17 +129,31 @@ void heightFieldSurface(const HeightField& f, Out& out) {
     }
 }
 
+/// Facets around the axis of a turned part: the jacket's columns when G32
+/// cut it (D-027), else angularSegments().
+int turnedSegments(const PartModel& part) {
+    return part.jacket() != nullptr ? part.jacket()->columns() : part.angularSegments();
+}
+
 template <typename Out>
 void turnedSurface(const PartModel& part, Out& out) {
     const TurnedProfile& p = *part.profile();
+    const DevelopedSurface* jacket = part.jacket();
     const VertexLine zs = vertexLine(p.slices(), p.from(), p.to(), p.sliceLength());
-    const int rings = static_cast<int>(zs.position.size()), segments = part.angularSegments();
+    const int rings = static_cast<int>(zs.position.size()), segments = turnedSegments(part);
     const auto axial = static_cast<std::size_t>(part.axialAxis());
     const auto radial = static_cast<std::size_t>(part.radialAxis());
     const auto third = static_cast<std::size_t>((part.axialAxis() + 2) % 3);
+    // Revolved: a ring of `segments` facets per vertex line; with a jacket
+    // the vertices stand on its cell centres at the material's radius there.
     const auto point = [&](int k, int s) {
-        const double angle = 2.0 * curve::kPi * (s % segments) / segments;
-        const double r = p.radiusAt(zs.cell[static_cast<std::size_t>(k)]);
+        const int cell = zs.cell[static_cast<std::size_t>(k)];
+        double angle = 2.0 * curve::kPi * (s % segments) / segments;
+        double r = p.radiusAt(cell);
+        if (jacket != nullptr) {
+            angle = jacket->columnAngle(s % segments);
+            r = std::min(r, jacket->radius(s % segments, cell));
+        }
         Point q{0, 0, 0};
         q[axial] = zs.position[static_cast<std::size_t>(k)];
         q[radial] = r * std::cos(angle);
@@ -167,7 +182,7 @@ std::uint64_t stlTriangleCount(const PartModel& part) {
         return 2 * (nu - 1) * (nv - 1) + 6 * (nu - 1) + 6 * (nv - 1);
     }
     const std::uint64_t rings = std::max(part.profile()->slices(), 2);
-    const std::uint64_t segments = static_cast<std::uint64_t>(part.angularSegments());
+    const std::uint64_t segments = static_cast<std::uint64_t>(turnedSegments(part));
     return 2 * (rings - 1) * segments + 2 * segments;
 }
 

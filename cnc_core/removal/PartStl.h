@@ -15,7 +15,9 @@ std::uint64_t stlTriangleCount(const PartModel& part);
 /// Height field: the top through the cell centres (its border on the
 /// block's faces), four side walls down to the bottom and the bottom face.
 /// Turned part: the profile revolved with angularSegments() facets, closed
-/// by the two end faces. Through-cuts leave top and bottom touching.
+/// by the two end faces; after G32 cuts one facet per jacket column, each
+/// vertex at the material's radius of its cell (D-027). Through-cuts leave
+/// top and bottom touching.
 std::string partStl(const PartModel& part);
 
 /// The same closed surface as partStl(), for a view: 9 floats per triangle

@@ -352,6 +352,30 @@ double enclosedVolume(const std::string& stl) {
     return sum / 6.0;
 }
 
+// A ring groove milled under G32 with T9 (radius 4.85) 2 mm into the bar
+// (D-027): the jacket's facets carry it into the STL.
+const char* kRingGroove =
+    "N0001 T9 G18 G90 G54 G0 X45 Z-30\nN0002 G0 C0\nN0003 G20 Z0 C0 X0\nN0004 G32 RI 40\n"
+    "N0005 G0 G56 Y1 0 Z1 200\nN0006 G1 X38 F100\nN0007 G1 Y1 251.3274123 F300\n"
+    "N0008 G0 X45\nN0009 G30\nN0010 G18\nN0011 M30\n";
+
+TEST(PartStl, TheJacketsGrooveIsInTheSurface) {
+    const double resolution = 1.0;  // 252 columns x 118 slices: a fast edge check
+    const RemovalRunResult run = simulate(kRingGroove, 1, resolution);
+    ASSERT_TRUE(run.part && run.part->jacket());
+    ASSERT_GT(run.part->removedVolume(), 4000.0);
+    const std::string stl = partStl(*run.part);
+    expectClosed(stl, stlTriangleCount(*run.part));
+    // The facets run through the cell centres: the groove's two walls are
+    // slanted over a slice each (half a slice of the ring on each side),
+    // and the polygon of 252 facets loses (2 pi / 252)^2 / 6 of the bar;
+    // without the groove the surface would enclose 4,000 mm3 more.
+    const double bar = kPi * 40.0 * 40.0 * 117.5;
+    const double ring = kPi * (40.0 * 40.0 - 38.0 * 38.0);
+    EXPECT_NEAR(enclosedVolume(stl), bar - run.part->removedVolume(),
+                2.0 * resolution * ring + 2e-4 * bar);
+}
+
 TEST(PartStl, SurfacesEncloseTheFinishedPart) {
     // Mill: the block less the pocket; the top runs through the cell
     // centres, so the pocket's border may differ by half a cell.
@@ -381,7 +405,7 @@ TEST(PartStl, FinishedPartsAreClosedSurfaces) {
 
 TEST(PartStl, TheViewsTrianglesAreTheStlsCorners) {
     for (const auto& [program, process] :
-         {std::pair{kPocketByCentre, 0}, std::pair{kTurnedShaft, 1}}) {
+         {std::pair{kPocketByCentre, 0}, std::pair{kTurnedShaft, 1}, std::pair{kRingGroove, 1}}) {
         const RemovalRunResult run = simulate(program, process, 1.0);
         ASSERT_TRUE(run.part);
         const std::string stl = partStl(*run.part);
