@@ -138,20 +138,25 @@ bool PartModel::touches(const std::array<double, 3>& a, const std::array<double,
     return profile_->touches(a[axial], a[radial], b[axial], b[radial], tool, margin);
 }
 
-const DevelopedSurface* PartModel::makeJacket(std::string& problem) {
+const DevelopedSurface* PartModel::makeJacket(std::string& note) {
+    note.clear();
     if (jacket_) return &*jacket_;
     if (!profile_) {
-        problem = "the height field has no cylinder jacket";
+        note = "the height field has no cylinder jacket";
         return nullptr;
     }
-    const double columns = DevelopedSurface::columnsFor(profile_->stockRadius(), resolution_);
-    const double cells = columns * profile_->slices();
-    if (cells > static_cast<double>(maxCells_)) {
-        const double area =
-            2.0 * curve::kPi * profile_->stockRadius() * (profile_->to() - profile_->from());
-        problem = "the developed surface: " +
-                  tooManyCells(cells, RemovalSettings{resolution_, maxCells_}, area);
-        return nullptr;
+    // Columns of at most the resolution on the bar; fewer when that would
+    // pass the cell cap, but never fewer than the turned part's facets
+    // (slices x facets fit: create() checked it).
+    const double wanted = DevelopedSurface::columnsFor(profile_->stockRadius(), resolution_);
+    const double fitting = std::floor(static_cast<double>(maxCells_) / profile_->slices());
+    const double columns = std::max(std::min(wanted, fitting), static_cast<double>(segments_));
+    if (columns < wanted) {
+        const double width = 2.0 * curve::kPi * profile_->stockRadius() / columns;
+        note = "the developed surface has " + std::to_string(static_cast<long long>(columns)) +
+               " columns (" + millimetres(std::ceil(width * 1000.0) / 1000.0) +
+               " mm on the bar) instead of " + std::to_string(static_cast<long long>(wanted)) +
+               ": at most " + std::to_string(maxCells_) + " cells are simulated";
     }
     jacket_.emplace(*profile_, static_cast<int>(columns));
     return &*jacket_;

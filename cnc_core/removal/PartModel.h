@@ -58,10 +58,12 @@ class PartModel {
                  double margin) const;
 
     /// The turned part's jacket for G32 cuts (D-027), made at the first
-    /// call: nullptr with `problem` on a height field, or when its cells
-    /// (angular columns x the profile's slices) would exceed the settings'
-    /// maxCells (the message gives the coarsest resolution that fits).
-    const DevelopedSurface* makeJacket(std::string& problem);
+    /// call (nullptr with `note` on a height field): angular columns of at
+    /// most the resolution on the bar x the profile's slices, or fewer
+    /// columns (at least angularSegments()) when that would exceed the
+    /// settings' maxCells — then `note` says how many and how wide. `note`
+    /// is empty otherwise, and on every later call.
+    const DevelopedSurface* makeJacket(std::string& note);
     /// Sweeps a radial end mill of `toolRadius` over the jacket (made by
     /// makeJacket() first; false without it). True when material was removed.
     bool cutJacket(const JacketPoint& a, const JacketPoint& b, double toolRadius);

@@ -143,16 +143,14 @@ void RemovalSink::motion(const Motion& m) {
 }
 
 void RemovalSink::cutJacket(const Motion& m) {
-    std::string problem;
-    if (jacketRefused_ || part_.makeJacket(problem) == nullptr) {
+    std::string note;
+    if (part_.makeJacket(note) == nullptr) {  // cannot happen: developed chords need a profile
         ++counts_.transformedMoves;
-        if (!jacketRefused_)
-            notes_.warning("REMOVAL_DEVELOPED_REFUSED", m.where,
-                           "G32 moves are not cut: " + problem,
-                           {"a coarser resolution lets the jacket be simulated"});
-        jacketRefused_ = true;
         return;
     }
+    if (!note.empty())  // said once: the jacket is made at the first G32 move
+        notes_.warning("REMOVAL_DEVELOPED_COARSER", m.where, note,
+                       {"a coarser resolution keeps the G32 cuts as fine as the part's"});
     ++counts_.developedMoves;
     bool removed = false;
     for (const auto& chord : sweep_.jacketChords())

@@ -87,9 +87,9 @@ class ToolSweep {
 /// zero, no real place of the tool: on the lathe it lies on the spindle
 /// axis): it is not cut. G32 moves on the lathe sweep the tool (a driven end
 /// mill standing radially) over the turned part's jacket (D-027, made at the
-/// first one). G31 moves, G32 moves elsewhere or beyond the jacket's cell
-/// cap, and an inside tool's moves on the lathe (orientation 1, 2, 6: the
-/// profile has no bores), are counted, not cut.
+/// first one). G31 moves, G32 moves elsewhere, and an inside tool's moves
+/// on the lathe (orientation 1, 2, 6: the profile has no bores), are
+/// counted, not cut.
 class RemovalSink : public MachineSink {
   public:
     /// `part` must outlive the sink.
@@ -121,7 +121,6 @@ class RemovalSink : public MachineSink {
     std::function<ToolData()> toolSource_;
     RemovalCounts counts_;
     DiagnosticList notes_;
-    bool jacketRefused_ = false;  ///< the jacket could not be made (noted once)
 };
 
 }  // namespace mtc::core::removal

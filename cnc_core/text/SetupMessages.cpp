@@ -127,7 +127,7 @@ constexpr MessageEntry kSetupMessages[] = {
     {"RESTART_WINDOW_OPEN", "Zuerst Ereignis- oder Variablenfenster schließen"},
     // Material removal and the restart's way back
     {"REENTRY_NOT_CHECKED", "Kein Zielsatz zum Prüfen des Rückwegs"},
-    {"REMOVAL_DEVELOPED_REFUSED", "Zylindermantel zu fein aufgelöst: G32 nicht zerspant"},
+    {"REMOVAL_DEVELOPED_COARSER", "Zylindermantel gröber aufgelöst als das Drehteil"},
     {"REMOVAL_NOT_SIMULATED", "Bewegungen nicht zerspant (G31, G32 ohne Drehteil, Innenwerkzeug)"},
     {"REMOVAL_RAPID_CUT", "Eilgangbewegung schneidet ins Werkstück"},
     {"REMOVAL_RAW_CONTOUR", "Rohteilkontur (RAW) als Rohteil ungültig"},

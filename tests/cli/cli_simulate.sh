@@ -70,6 +70,9 @@ expect_rc 0 "simulate a ring groove under G32" --json --process 1 simulate ring.
 json_check "the ring groove's volume, all of it on the developed surface" \
   'abs(d["removed_volume"] - 4753.8) < 2 * 0.2 * 490.1 and d["developed_volume"] == d["removed_volume"] and d["cutting_moves"] == 2'
 json_check "the jacket's cells: 1257 columns x 588 slices" 'd["developed_cells"] == 1257 * 588'
+expect_rc 0 "a jacket over the cell cap gets fewer columns" --json --process 1 simulate ring.nc --resolution 0.1
+json_check "REMOVAL_DEVELOPED_COARSER says how many, and the groove is cut" \
+  'd["developed_cells"] == 1702 * 1175 and abs(d["removed_volume"] - 4753.8) < 2 * 0.1 * 490.1 and [x["block"] for x in d["diagnostics"] if x["code"] == "REMOVAL_DEVELOPED_COARSER"] == ["N0005"]'
 expect_rc 0 "simulate a ring groove, text" --process 1 simulate ring.nc
 text_check "text names the developed surface" "developed surface: 1257 x 588 cells, 47[0-9][0-9]\.[0-9]* mm3 of it cut under G32"
 

@@ -2,8 +2,8 @@
 // the jacket's depth map against hand-computed groove volumes (a ring
 // groove around the circumference, a straight groove along the axis with
 // the end mill's flat floor), a G32 move above the surface that cuts
-// nothing, turning after milling, the cell cap, and bounded work for moves
-// of many turns.
+// nothing, turning after milling, fewer columns under the cell cap, and
+// bounded work for moves of many turns.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -210,21 +210,34 @@ TEST(LatheDevelopedRemoval, TurningAfterMillingCountsEachMillimetreOnce) {
                 ring * 9.7, 2.0 * 0.2 * ring);
 }
 
-TEST(LatheDevelopedRemoval, AJacketOverTheCellCapIsNotCutButSaysWhy) {
-    // 1257 columns x 588 slices at 0.2 mm: over a cap of 100,000 cells.
-    const RemovalRunResult r =
-        simulate(cylinderProgram(200, "N0010 G1 X38 F100\nN0011 G1 Y1 100\n"), 0.2, 100'000);
-    ASSERT_TRUE(r.part) << diagnosticsText(r.diagnostics);
-    EXPECT_EQ(r.part->removedVolume(), 0.0);
-    EXPECT_EQ(r.counts.transformedMoves, 4u) << "N0005, N0010, N0011 and N0090 under G32";
-    int refused = 0;
+TEST(LatheDevelopedRemoval, AJacketOverTheCellCapGetsFewerColumnsAndSaysSo) {
+    // 1257 columns x 588 slices at 0.2 mm: over a cap of 100,000 cells the
+    // jacket gets 170 columns (1.479 mm on the R40 bar); the ring groove is
+    // still cut, its walls along the circumference as fine as the slices.
+    const std::string ring = "N0010 G1 X38 F100\nN0011 G1 Y1 251.3274123 F300\n";
+    const RemovalRunResult r = simulate(cylinderProgram(200, ring), 0.2, 100'000);
+    ASSERT_TRUE(r.part && r.part->jacket()) << diagnosticsText(r.diagnostics);
+    EXPECT_EQ(r.part->jacket()->columns(), 170);
+    EXPECT_EQ(r.counts.transformedMoves, 0u);
+    const double annulus = kPi * (40.0 * 40.0 - 38.0 * 38.0);
+    EXPECT_NEAR(r.part->removedVolume(), annulus * 9.7, 2.0 * 0.2 * annulus);
+    int coarser = 0;
     for (const Diagnostic& d : r.diagnostics.items())
-        if (d.code == "REMOVAL_DEVELOPED_REFUSED") {
-            ++refused;
+        if (d.code == "REMOVAL_DEVELOPED_COARSER") {
+            ++coarser;
+            EXPECT_EQ(d.severity, Severity::Warning);
             EXPECT_EQ(d.where.block, "N0005") << "the first move under G32";
+            EXPECT_NE(d.message.find("170 columns (1.479 mm on the bar) instead of 1257"),
+                      std::string::npos)
+                << d.message;
             EXPECT_NE(d.message.find("at most 100000"), std::string::npos) << d.message;
         }
-    EXPECT_EQ(refused, 1);
+    EXPECT_EQ(coarser, 1);
+    // Never fewer columns than the turned part's facets (588 x 63 for R40 at
+    // 0.2 mm: the smallest cap the part itself fits in).
+    const RemovalRunResult tight = simulate(cylinderProgram(200, ring), 0.2, 37'044);
+    ASSERT_TRUE(tight.part && tight.part->jacket()) << diagnosticsText(tight.diagnostics);
+    EXPECT_EQ(tight.part->jacket()->columns(), tight.part->angularSegments());
 }
 
 }  // namespace
