@@ -77,69 +77,88 @@ double DevelopedSurface::columnsFor(double radius, double resolution) {
     return std::max(1.0, std::ceil(kTurn * radius / resolution - 1e-9));
 }
 
-bool DevelopedSurface::cut(const JacketPoint& from, const JacketPoint& to, double toolRadius,
-                           const TurnedProfile& profile) {
+template <typename Visit>
+bool DevelopedSurface::forEachCovered(const JacketPoint& from, const JacketPoint& to,
+                                      double toolRadius, const TurnedProfile& profile, double reach,
+                                      Visit visit) const {
     if (!finitePoint(from) || !finitePoint(to) || !std::isfinite(toolRadius) ||
         !(toolRadius >= 0.0) || profile.slices() != rows_)
         return false;
-    if (!(std::min(from.face, to.face) < barRadius_)) return false;  // above the bar
+    const double deepest = std::min(from.face, to.face);
+    if (!(deepest < barRadius_ + reach)) return false;  // above the bar
     const auto [first, last] =
         cellsWithin(std::min(from.axial, to.axial) - toolRadius,
                     std::max(from.axial, to.axial) + toolRadius, from_, sliceLength_, rows_);
-    if (first > last) return false;
     // Whole turns off the start (fmod is exact): the cells' angles are small.
     JacketPoint a = from, b = to;
     a.angle = std::fmod(from.angle, kTurn);
     if (a.angle < 0.0) a.angle += kTurn;
     b.angle = a.angle + (to.angle - from.angle);
     const Sweep sweep(a, b, toolRadius);
-    bool removed = false;
     for (int j = first; j <= last; ++j) {
-        const double profileRadius = profile.radiusAt(j);
-        if (!(std::min(a.face, b.face) < profileRadius)) continue;  // nothing below the face
-        removed = cutRow(j, sweep, profileRadius) || removed;
+        if (!(deepest < profile.radiusAt(j) + reach)) continue;  // nothing below the face
+        if (visitRow(j, sweep, visit)) return true;
     }
-    return removed;
+    return false;
 }
 
-bool DevelopedSurface::cutRow(int j, const Sweep& sweep, double profileRadius) {
-    const Span row = sweep.scanner.row(from_ + (j + 0.5) * sliceLength_);
+template <typename Visit>
+bool DevelopedSurface::visitRow(int j, const Sweep& sweep, Visit& visit) const {
+    const Span row = sweep.scanner.row(rowAxial(j));
     if (row.empty()) return false;
     const double lo = row.lo / sweep.scale, hi = row.hi / sweep.scale;  // angles
-    bool removed = false;
     if (!(hi - lo < kTurn)) {
-        // A full turn and more in this row: every column, at the deepest face.
+        // A full turn and more in this row: every column, at the deepest face
+        // (no angle: the sweep meets each column at many).
         const double face = std::max(std::min(sweep.a.face, sweep.b.face), 0.0);
-        for (int i = 0; i < columns_; ++i) {
-            float& cell = radii_[static_cast<std::size_t>(j) * columns_ + i];
-            const double before = std::min<double>(cell, profileRadius);
-            cell = std::min(cell, static_cast<float>(face));
-            removed = cell < before || removed;
-        }
-        return removed;
+        for (int i = 0; i < columns_; ++i)
+            if (visit(i, j, std::nan(""), face, sweep)) return true;
+        return false;
     }
     // At most two windows of columns: this turn and the next.
     const double turn = kTurn * std::floor(lo / kTurn);
     for (const double shift : {turn, turn + kTurn}) {
         const auto [first, last] = cellsWithin(lo - shift, hi - shift, 0.0, angleStep_, columns_);
-        for (int i = first; i <= last; ++i)
-            removed = cutCell(i, j, shift, sweep, profileRadius) || removed;
+        for (int i = first; i <= last; ++i) {
+            const double angle = columnAngle(i) + shift;  // in the sweep's turn
+            const Span t = coveringPositions(sweep.disc, sweep.scale * angle, rowAxial(j));
+            if (!t.empty() && visit(i, j, angle, sweep.lowestFace(angle, t), sweep)) return true;
+        }
     }
+    return false;
+}
+
+bool DevelopedSurface::cut(const JacketPoint& from, const JacketPoint& to, double toolRadius,
+                           const TurnedProfile& profile) {
+    bool removed = false;
+    forEachCovered(from, to, toolRadius, profile, 0.0,
+                   [&](int i, int j, double, double face, const Sweep&) {
+                       float& cell = radii_[index(i, j)];
+                       if (!(face < cell)) return false;
+                       const double before = std::min<double>(cell, profile.radiusAt(j));
+                       cell = static_cast<float>(face);
+                       removed = cell < before || removed;
+                       return false;
+                   });
     return removed;
 }
 
-bool DevelopedSurface::cutCell(int i, int j, double turn, const Sweep& sweep,
-                               double profileRadius) {
-    const double angle = columnAngle(i) + turn;
-    const Span t =
-        coveringPositions(sweep.disc, sweep.scale * angle, from_ + (j + 0.5) * sliceLength_);
-    if (t.empty()) return false;
-    const double face = sweep.lowestFace(angle, t);
-    float& cell = radii_[static_cast<std::size_t>(j) * columns_ + i];
-    if (!(face < cell)) return false;
-    const double before = std::min<double>(cell, profileRadius);
-    cell = static_cast<float>(face);
-    return cell < before;
+bool DevelopedSurface::touches(const JacketPoint& from, const JacketPoint& to, double toolRadius,
+                               double margin, const TurnedProfile& profile) const {
+    const auto contact = [&](int i, int j, double angle, double face, const Sweep& sweep) {
+        const double material = std::min<double>(radius(i, j), profile.radiusAt(j));
+        if (!(material > 0.0) || !(face < material + margin)) return false;
+        // Met already where the sweep starts: contact only deeper than there
+        // (a row swept over whole turns has no angle: never "at the start").
+        const double offset = angle - sweep.a.angle;
+        const double across = sweep.scale * offset, along = rowAxial(j) - sweep.a.axial;
+        const bool covered = across * across + along * along <= toolRadius * toolRadius;
+        const double startFace =
+            std::max(sweep.a.face, 0.0) / std::cos(std::min(std::fabs(offset), kMaxOffset));
+        const bool atStart = covered && startFace < material + margin;
+        return !atStart || face < startFace - std::fabs(margin);
+    };
+    return forEachCovered(from, to, toolRadius, profile, std::max(margin, 0.0), contact);
 }
 
 double DevelopedSurface::removedVolume(const TurnedProfile& profile) const {

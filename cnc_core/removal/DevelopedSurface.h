@@ -46,6 +46,17 @@ class DevelopedSurface {
     bool cut(const JacketPoint& a, const JacketPoint& b, double toolRadius,
              const TurnedProfile& profile);
 
+    /// Would the same sweep reach material, without changing anything?
+    /// True when at some cell that still has material (the smaller of its
+    /// radius and `profile`'s above 0) the face would come below that radius
+    /// + `margin` (negative: more than -margin would be cut; positive: the
+    /// face comes within `margin` of the surface). A cell the tool meets so
+    /// where the sweep starts counts only where the sweep goes more than
+    /// |margin| deeper (moving away is no new contact). As
+    /// TurnedProfile::touches for the restart's way back (D-021). Work as cut().
+    bool touches(const JacketPoint& a, const JacketPoint& b, double toolRadius, double margin,
+                 const TurnedProfile& profile) const;
+
     /// Material the G32 cuts took away below `profile`'s surface (mm^3).
     double removedVolume(const TurnedProfile& profile) const;
 
@@ -53,19 +64,27 @@ class DevelopedSurface {
     int rows() const { return rows_; }
     /// Angle (radians, 0 .. 2 pi) of the centre of column `i`.
     double columnAngle(int i) const { return (i + 0.5) * angleStep_; }
+    /// Axial position of the centre of row `j` (the profile's slice j).
+    double rowAxial(int j) const { return from_ + (j + 0.5) * sliceLength_; }
     /// Outer radius the G32 cuts left at cell (i, j) (row j: profile slice j).
-    double radius(int i, int j) const {
-        return radii_[static_cast<std::size_t>(j) * static_cast<std::size_t>(columns_) +
-                      static_cast<std::size_t>(i)];
-    }
+    double radius(int i, int j) const { return radii_[index(i, j)]; }
 
   private:
     struct Sweep;
-    /// Cuts the columns of row `j` the sweep covers; true when material went.
-    bool cutRow(int j, const Sweep& sweep, double profileRadius);
-    /// Cuts column `i` of row `j` where the tool's centre passes at
-    /// unwrapped angle offset `turn` (a multiple of 2 pi).
-    bool cutCell(int i, int j, double turn, const Sweep& sweep, double profileRadius);
+    std::size_t index(int i, int j) const {
+        return static_cast<std::size_t>(j) * static_cast<std::size_t>(columns_) +
+               static_cast<std::size_t>(i);
+    }
+    /// Calls visit(i, j, angle, face, sweep) for every cell the sweep from
+    /// `a` to `b` covers, with the lowest face over it and the cell's angle
+    /// in the sweep's turn (NaN in a row swept over a whole turn), until
+    /// visit returns true (then true). Rows whose profile radius + `reach`
+    /// lies above the deepest face are skipped.
+    template <typename Visit>
+    bool forEachCovered(const JacketPoint& a, const JacketPoint& b, double toolRadius,
+                        const TurnedProfile& profile, double reach, Visit visit) const;
+    template <typename Visit>
+    bool visitRow(int j, const Sweep& sweep, Visit& visit) const;
 
     int columns_;
     int rows_;

@@ -166,6 +166,11 @@ bool PartModel::cutJacket(const JacketPoint& a, const JacketPoint& b, double too
     return jacket_ && profile_ && jacket_->cut(a, b, toolRadius, *profile_);
 }
 
+bool PartModel::touchesJacket(const JacketPoint& a, const JacketPoint& b, double toolRadius,
+                              double margin) const {
+    return jacket_ && profile_ && jacket_->touches(a, b, toolRadius, margin, *profile_);
+}
+
 double PartModel::developedVolume() const {
     return jacket_ && profile_ ? jacket_->removedVolume(*profile_) : 0.0;
 }

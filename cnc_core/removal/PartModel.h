@@ -67,6 +67,10 @@ class PartModel {
     /// Sweeps a radial end mill of `toolRadius` over the jacket (made by
     /// makeJacket() first; false without it). True when material was removed.
     bool cutJacket(const JacketPoint& a, const JacketPoint& b, double toolRadius);
+    /// The same sweep as cutJacket() asked without cutting
+    /// (DevelopedSurface::touches); false without a jacket.
+    bool touchesJacket(const JacketPoint& a, const JacketPoint& b, double toolRadius,
+                       double margin) const;
     const DevelopedSurface* jacket() const { return jacket_ ? &*jacket_ : nullptr; }
     /// Material the G32 cuts took away below the turned profile (mm^3; 0
     /// without a jacket); part of removedVolume().

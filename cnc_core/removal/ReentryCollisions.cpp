@@ -87,11 +87,72 @@ std::array<double, kMaxAxes> machinePositionAt(const Motion& m, const ToolSweep&
     return position;
 }
 
+JacketPoint between(const JacketPoint& p, const JacketPoint& q) {
+    return {p.angle + (q.angle - p.angle) / 2.0, p.axial + (q.axial - p.axial) / 2.0,
+            p.face + (q.face - p.face) / 2.0};
+}
+
+/// Distance of two jacket points on the developed plane at the larger face
+/// radius, and radially.
+double jacketDistance(const JacketPoint& p, const JacketPoint& q) {
+    const double scale = std::max(std::fabs(p.face), std::fabs(q.face));
+    return std::hypot(scale * (q.angle - p.angle), q.axial - p.axial, q.face - p.face);
+}
+
+/// firstTouch() of a G32 chord on the jacket.
+JacketPoint firstJacketTouch(const PartModel& part, const std::array<JacketPoint, 2>& chord,
+                             double toolRadius, double margin) {
+    JacketPoint lo = chord[0], hi = chord[1];
+    for (int i = 0; i < kMaxBisections && jacketDistance(lo, hi) > part.resolution() / 4.0; ++i) {
+        const JacketPoint mid = between(lo, hi);
+        if (part.touchesJacket(chord[0], mid, toolRadius, margin))
+            hi = mid;
+        else
+            lo = mid;
+    }
+    return hi;
+}
+
+/// Checks a G32 move against the jacket (D-027): the collision at its first
+/// touch, the machine positions in proportion along the move.
+std::optional<ReentryCollision> checkDevelopedMove(const PartModel& part, const ToolSweep& sweep,
+                                                   const PreviewMove& move, double margin) {
+    const auto& chords = sweep.jacketChords();
+    const double radius = sweep.cutter().radius;
+    for (std::size_t c = 0; c < chords.size(); ++c) {
+        if (!part.touchesJacket(chords[c][0], chords[c][1], radius, margin)) continue;
+        const JacketPoint touch = firstJacketTouch(part, chords[c], radius, margin);
+        const double length = jacketDistance(chords[c][0], chords[c][1]);
+        const double t =
+            length > 0.0 ? std::min(1.0, jacketDistance(chords[c][0], touch) / length) : 0.0;
+        const double fraction = (static_cast<double>(c) + t) / static_cast<double>(chords.size());
+        ReentryCollision collision;
+        collision.repos = move.repos;
+        collision.rapid = move.motion.type == MotionType::Rapid;
+        collision.where = move.motion.where;
+        const Motion& m = move.motion;
+        collision.position = m.end;
+        for (int a = 0; a < m.axisCount && a < kMaxAxes; ++a) {
+            const auto i = static_cast<std::size_t>(a);
+            collision.position[i] = m.start[i] + (m.end[i] - m.start[i]) * fraction;
+        }
+        const auto axial = static_cast<std::size_t>(part.axialAxis());
+        const auto radial = static_cast<std::size_t>(part.radialAxis());
+        collision.scene[axial] = touch.axial;
+        collision.scene[radial] = touch.face * std::cos(touch.angle);
+        collision.scene[(radial + 1) % 3] = touch.face * std::sin(touch.angle);
+        return collision;
+    }
+    return std::nullopt;
+}
+
 /// Checks one move; the collision when it meets the part.
 std::optional<ReentryCollision> checkMove(const PartModel& part, ToolSweep& sweep,
                                           const PreviewMove& move, double tolerance) {
-    if (sweep.sweep(move.motion, move.tool) != ToolSweep::Kind::Swept) return std::nullopt;
+    const ToolSweep::Kind kind = sweep.sweep(move.motion, move.tool);
     const double margin = marginFor(move.motion, tolerance);
+    if (kind == ToolSweep::Kind::Developed) return checkDevelopedMove(part, sweep, move, margin);
+    if (kind != ToolSweep::Kind::Swept) return std::nullopt;
     const std::vector<ToolChord>& chords = sweep.chords();
     for (std::size_t c = 0; c < chords.size(); ++c) {
         if (!part.touches(chords[c].a, chords[c].b, sweep.cutter(), margin)) continue;
@@ -104,6 +165,11 @@ std::optional<ReentryCollision> checkMove(const PartModel& part, ToolSweep& swee
         return collision;
     }
     return std::nullopt;
+}
+
+bool hasDevelopedMove(const ReposPreview& preview) {
+    return std::any_of(preview.moves.begin(), preview.moves.end(),
+                       [](const PreviewMove& m) { return m.motion.transformation == 32; });
 }
 
 /// The stop of the removal run: the target block at the selected arrival
@@ -140,6 +206,11 @@ ReentryCheck checkReentry(const ReentryCheckInput& in) {
     check.diagnostics.append(run.diagnostics);
     check.blocks = run.blocks;
     if (!run.part || !run.complete) return check;
+    if (hasDevelopedMove(*in.preview)) {  // the jacket, also where G32 has cut nothing yet
+        std::string note;
+        run.part->makeJacket(note);
+        if (!note.empty()) check.diagnostics.warning("REMOVAL_DEVELOPED_COARSER", {}, note);
+    }
     const PartModel& part = *run.part;
     check.removedVolume = part.removedVolume();
     check.resolution = part.resolution();

@@ -157,6 +157,68 @@ TEST(ReentryCollisions, LatheReposDownIntoTheUnturnedBarIsFlaggedAlongTheTurnedD
     EXPECT_TRUE(clear.collisions.empty()) << "Z outside the bar, then X down to the re-entry";
 }
 
+// Lathe under G32 (D-027): a groove 2 mm deep milled with T9 (R4.85) round
+// the R40 bar at Z 200 from Y1 0 to Y1 50 (0 to 71.6 degrees on RI 40); the
+// target continues it.
+const char* kCylinderGroove =
+    "N0010 : T9\n"
+    "N0020 G0 G54 X45 Z-30\n"
+    "N0025 G0 C0\n"
+    "N0030 G20 Z0 C0 X0\n"
+    "N0040 G32 RI 40\n"
+    "N0045 G0 G56 Y1 0 Z1 200\n"
+    "N0046 G1 X38 F100\n"
+    "N0047 G1 Y1 50 F300\n"
+    "N0050 G1 Y1 100 ;target\n"
+    "N0060 G0 X45\n"
+    "N0070 G30\n"
+    "N0080 G18\n"
+    "N0090 M30\n";
+
+// ADJUST turns the part to 180 degrees and selects G32 again (page 60
+// element 4, as the demo library does); REPOS plunges the infeed X first,
+// into the bar half a turn from the groove.
+const char* kCylinderInfeedFirst =
+    "N0000 M30\n"
+    "N0001 .ADJUST G0 C180\n"
+    "N0002 G20 Z0 C0 X0\n"
+    "N0003 G=MTD(60,,,4)\n"
+    "N0004 .REPOS G77 X0 F1000\n"
+    "N0005 G77 Y1=0 Z1=0 F5000 RTS\n";
+
+// The demo library's order: the surface position first, the infeed last.
+const char* kCylinderInfeedLast =
+    "N0000 M30\n"
+    "N0001 .ADJUST G0 C180\n"
+    "N0002 G20 Z0 C0 X0\n"
+    "N0003 G=MTD(60,,,4)\n"
+    "N0004 .REPOS G77 Y1=0 Z1=0 F5000\n"
+    "N0005 G77 X0 F1000 RTS\n";
+
+TEST(ReentryCollisions, G32ReposIsCheckedAgainstTheDevelopedJacket) {
+    // The axes stand 5 above the bar at Z 200.
+    RestartStation lathe(1);
+    const ReentryCheck check =
+        checkAt(lathe, kCylinderGroove, kCylinderInfeedFirst, 50, {45.0, 200.0});
+    ASSERT_TRUE(check.checked) << diagnosticsText(check.diagnostics);
+    EXPECT_GT(check.removedVolume, 1000.0) << "the groove was cut before the target";
+    ASSERT_EQ(check.collisions.size(), 2u) << "X into the bar, then round through it at X38";
+    const ReentryCollision& plunge = check.collisions.front();
+    EXPECT_EQ(plunge.where.block, "N0004");
+    EXPECT_TRUE(plunge.repos);
+    EXPECT_FALSE(plunge.rapid);
+    // The face enters the bar at radius 40 (more than the tolerance into it).
+    EXPECT_NEAR(plunge.position[0], 40.0 - check.tolerance, 0.1);
+    EXPECT_NEAR(plunge.scene[0], -plunge.position[0], 0.1) << "half a turn: the scene's -X";
+    EXPECT_EQ(check.collisions.back().where.block, "N0005");
+
+    RestartStation safe(1);
+    const ReentryCheck clear =
+        checkAt(safe, kCylinderGroove, kCylinderInfeedLast, 50, {45.0, 200.0});
+    ASSERT_TRUE(clear.checked) << diagnosticsText(clear.diagnostics);
+    EXPECT_TRUE(clear.collisions.empty()) << "over the bar, then down into the groove's end";
+}
+
 TEST(ReentryCollisions, APartThatCannotBeModelledMeansNotCheckedWithTheReason) {
     RestartStation mill(0);
     checkAt(mill, kSlot, kSafeReturn, 50, millMachine(50, 70, -2));

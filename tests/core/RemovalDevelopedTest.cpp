@@ -9,8 +9,10 @@
 #include <cmath>
 
 #include "InterpTestSupport.h"
+#include "cnc_core/program/ProgramLoader.h"
 #include "cnc_core/removal/DevelopedSurface.h"
 #include "cnc_core/removal/RemovalRun.h"
+#include "resources/EmbeddedResources.h"
 
 namespace {
 
@@ -122,6 +124,32 @@ TEST(DevelopedSurface, AboveTheSurfaceNothingIsCut) {
     EXPECT_FALSE(jacket.cut({0.0, 10.0, 40.5}, {3.0, 90.0, 40.5}, 5.0, profile));
     EXPECT_FALSE(jacket.cut({0.0, 10.0, 41.0}, {0.0, 10.0, 40.0}, 5.0, profile));
     EXPECT_EQ(jacket.removedVolume(profile), 0.0);
+}
+
+TEST(DevelopedSurface, TouchesAsksWithoutCutting) {
+    // A ring groove to R38 at axial 50 (width 10); then the questions a
+    // restart's way back asks (D-021), with a feed move's margin -0.1.
+    const TurnedProfile profile(40.0, 0.0, 100.0, 500);
+    DevelopedSurface jacket(profile, 1257);
+    ASSERT_TRUE(jacket.cut({0.0, 50.0, 38.0}, {2.0 * kPi, 50.0, 38.0}, 5.0, profile));
+    const double removed = jacket.removedVolume(profile);
+    const double feed = -0.1;
+    EXPECT_FALSE(jacket.touches({1.0, 50.0, 45.0}, {1.0, 50.0, 38.05}, 4.0, feed, profile))
+        << "down into the groove, onto its floor";
+    EXPECT_TRUE(jacket.touches({1.0, 50.0, 45.0}, {1.0, 50.0, 37.5}, 4.0, feed, profile))
+        << "through the floor";
+    EXPECT_TRUE(jacket.touches({1.0, 50.0, 45.0}, {1.0, 50.0, 38.0}, 5.5, feed, profile))
+        << "a wider tool meets the walls";
+    EXPECT_TRUE(jacket.touches({1.0, 70.0, 45.0}, {1.0, 70.0, 39.0}, 4.0, feed, profile))
+        << "down beside the groove";
+    EXPECT_FALSE(jacket.touches({0.0, 50.0, 38.0}, {3.0, 50.0, 38.0}, 4.0, feed, profile))
+        << "along the floor";
+    EXPECT_FALSE(jacket.touches({1.0, 70.0, 39.0}, {1.0, 70.0, 45.0}, 4.0, feed, profile))
+        << "out of the material: moving away is no contact";
+    EXPECT_TRUE(jacket.touches({1.0, 70.0, 45.0}, {1.0, 70.0, 40.05}, 4.0, 0.1, profile))
+        << "a rapid within the margin above the surface";
+    EXPECT_FALSE(jacket.touches({1.0, 70.0, 45.0}, {1.0, 70.0, 41.0}, 4.0, 0.1, profile));
+    EXPECT_EQ(jacket.removedVolume(profile), removed) << "touches() changes nothing";
 }
 
 TEST(DevelopedSurface, ManyTurnsAndHugeNumbersAreBounded) {
@@ -238,6 +266,23 @@ TEST(LatheDevelopedRemoval, AJacketOverTheCellCapGetsFewerColumnsAndSaysSo) {
     const RemovalRunResult tight = simulate(cylinderProgram(200, ring), 0.2, 37'044);
     ASSERT_TRUE(tight.part && tight.part->jacket()) << diagnosticsText(tight.diagnostics);
     EXPECT_EQ(tight.part->jacket()->columns(), tight.part->angularSegments());
+}
+
+TEST(LatheDevelopedRemoval, TheViewsCapKeepsTheDemoProgramsGroove) {
+    // The panel's part view simulates with at most 250,000 cells (TP-023):
+    // the demo lathe program's G32 groove is still cut, on 425 columns.
+    ProgramStore store;
+    ProgramLoader(store).loadTexts(mtc::resources::demoPrograms());
+    RemovalSettings fine, view;
+    view.maxCells = 250'000;
+    const RemovalRunResult a = simulateRemoval(demoCell().processes[1], store, 1, fine);
+    const RemovalRunResult b = simulateRemoval(demoCell().processes[1], store, 1, view);
+    ASSERT_TRUE(a.part && a.part->jacket() && b.part && b.part->jacket());
+    EXPECT_EQ(a.part->jacket()->columns(), 1257);
+    EXPECT_EQ(b.part->jacket()->columns(), 425);
+    EXPECT_GT(a.part->developedVolume(), 1000.0);
+    EXPECT_NEAR(b.part->developedVolume(), a.part->developedVolume(),
+                0.05 * a.part->developedVolume());
 }
 
 }  // namespace
