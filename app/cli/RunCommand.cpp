@@ -79,9 +79,12 @@ struct RunCell {
         nc.globalMacros = run.setup.globalMacros;  // before the store: nothing to parse again
         cell.setNcOptions(std::move(nc));
         cell.store() = std::move(run.store);
-        // The CLI prints no adaptive feed trend: its stations keep none (MOT-019).
-        for (int slot = 0; slot < cell.stationCount(); ++slot)
+        // The CLI prints no adaptive feed trend and no base screen: its
+        // stations keep neither the trend (MOT-019) nor the block states (MOT-020).
+        for (int slot = 0; slot < cell.stationCount(); ++slot) {
             cell.station(slot).keepAfcTrend(false);
+            cell.station(slot).keepBlockStates(false);
+        }
     }
     core::Station& station(int process) { return cell.station(cell.slotOfProcess(process)); }
     /// Loads the data file; its warnings go to `diagnostics`.

@@ -455,7 +455,7 @@ void Station::feed(std::uint64_t& blocks, std::uint64_t maxBlocks) {
                                                                       : interpreter_.step();
         blocks += result.blocksInterpreted;
         runBlocks_ += result.blocksInterpreted;
-        if (output_.outputs != outputsBefore)
+        if (keepBlockStates_ && output_.outputs != outputsBefore)
             recordQueuedBlock(lastProgram_, lastBlock_, callLevel, itemsBefore);
         if (!result.diagnostics.empty()) {
             runDiagnostics_.append(result.diagnostics);

@@ -71,6 +71,15 @@ class Station : private ProgramRunner {
     void keepAfcTrend(bool keep) {
         machine_.attachAdaptiveFeed(afc_.get(), keep ? &trend_ : nullptr);
     }
+    /// Whether the station keeps the interpreter's state after each queued
+    /// block for executingBlockState() (default: yes, the base screen shows
+    /// it). Only the screens read those records; a headless run turns them
+    /// off (about 500 bytes written per block, MOT-020). Off, the function
+    /// returns nullptr.
+    void keepBlockStates(bool keep) {
+        keepBlockStates_ = keep;
+        if (!keep) queued_.clear();
+    }
 
     /// A machine control key (M key), as the operator presses it. Returns
     /// false (the alarm says why) when it is not allowed now.
@@ -321,6 +330,7 @@ class Station : private ProgramRunner {
     ProgramPtr lastProgram_;  ///< program and block interpreted last
     std::uint32_t lastBlock_ = 0;
     QueuedBlockStates queued_;
+    bool keepBlockStates_ = true;  ///< keepBlockStates()
     RunTrace trace_;
     bool tracing_ = false;  ///< setRunTracing()
     ManualJog jog_;

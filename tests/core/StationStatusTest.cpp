@@ -6,6 +6,7 @@
 
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "InterpTestSupport.h"
 #include "cnc_core/cell/Cell.h"
@@ -141,6 +142,47 @@ TEST(StationStatus, TheStateShownIsThatOfThePassOfALoopTheAxesAreIn) {
             EXPECT_LT(view.shownX, view.workX + 1.0);
         }
     }
+}
+
+// MOT-020: a station that keeps no block states (the CLI's) has none to
+// show, and runs exactly as one that keeps them: same time, positions and
+// blocks; with them the state shown is that of the block the axes are in.
+TEST(StationStatus, AStationWithoutBlockStatesRunsTheSame) {
+    struct Seen {
+        double seconds = 0.0, x = 0.0;
+        std::string block;
+        bool shown = false;
+    };
+    const auto run = [](bool keep) {
+        StatusFixture f;
+        core::Station& mill = f.select(1, kOffsetMoves);
+        mill.keepBlockStates(keep);
+        EXPECT_TRUE(mill.press(ControlKey::Start));
+        std::vector<Seen> seen;
+        for (int i = 0; i < 10'000 && mill.busy(); ++i) {
+            mill.advance(0.25);
+            const core::QueuedBlockState* executing = mill.executingBlockState();
+            seen.push_back({mill.machine().seconds(), mill.machine().position(0),
+                            mill.control().currentBlock(), executing != nullptr});
+            if (executing) {
+                EXPECT_EQ(executing->source->blockId(executing->index),
+                          mill.control().currentBlock());
+            }
+        }
+        EXPECT_FALSE(mill.busy());
+        return seen;
+    };
+    const std::vector<Seen> kept = run(true), without = run(false);
+    ASSERT_EQ(kept.size(), without.size());
+    bool anyShown = false;
+    for (std::size_t i = 0; i < kept.size(); ++i) {
+        EXPECT_EQ(kept[i].seconds, without[i].seconds) << i;
+        EXPECT_EQ(kept[i].x, without[i].x) << i;
+        EXPECT_EQ(kept[i].block, without[i].block) << i;
+        EXPECT_FALSE(without[i].shown) << i;
+        anyShown = anyShown || kept[i].shown;
+    }
+    EXPECT_TRUE(anyShown);
 }
 
 TEST(StationStatus, ASubroutineOfProgram99IsShownAsSuch) {
