@@ -64,6 +64,28 @@ Motion onDevelopedSurface(const Motion& m, const ProcessConfig& config) {
     return developed;
 }
 
+/// motionPathLength(m), read off the move's geometry where that worked out
+/// the same figures: without transformation the geometry's plane is the
+/// machine's, its line length and its arc's start radius and sweep are the
+/// very expressions motionPathLength() evaluates, so the result is the same
+/// to the bit without a second hypot() and arcSweep() (atan2) per arc.
+double pathLength(const Motion& m, const motion::SegmentGeometry& g) {
+    const bool arc = (m.type == MotionType::ArcCW || m.type == MotionType::ArcCCW) &&
+                     m.planeAxis1 >= 0 && m.planeAxis2 >= 0;
+    if (!g.mapping().identity() || g.axisCount() != std::min(m.axisCount, kMaxAxes) ||
+        arc != g.arc())
+        return motionPathLength(m);
+    if (!arc) return g.length();
+    double other = 0.0;
+    for (int i = 0; i < g.axisCount(); ++i) {
+        if (i == m.planeAxis1 || i == m.planeAxis2) continue;
+        const double d = m.end[i] - m.start[i];
+        other += d * d;
+    }
+    const double length = g.radius() * std::fabs(g.sweep());
+    return std::sqrt(length * length + other);
+}
+
 }  // namespace
 
 double motionSeconds(const Motion& motion, const ProcessConfig& config) {
@@ -98,7 +120,8 @@ SimulatedMachine::~SimulatedMachine() = default;
 void SimulatedMachine::motion(const Motion& m) {
     ++motions_;
     lastReportsAfc_ = afc_ && (afc_->active() || afc_->idleMeasurementRequested());
-    const double length = motionPathLength(m);
+    // The geometry goes where the engine queues the move (pushMove() below).
+    const double length = pathLength(m, engine_.prepareMove(m));
     const double planned = motionSeconds(m, config_, length);
     lastAdapted_ = false;
     lastFraction_ = 1.0;

@@ -8,7 +8,7 @@ MotionQueue::MotionQueue(std::size_t capacity)
     : storage_(std::max<std::size_t>(capacity, 1) + 8),
       capacity_(std::max<std::size_t>(capacity, 1)) {}
 
-QueueItem& MotionQueue::pushBack() {
+QueueItem& MotionQueue::nextSlot() {
     if (size_ == storage_.size()) {
         std::vector<QueueItem> grown(storage_.size() * 2);
         for (std::size_t i = 0; i < size_; ++i)
@@ -16,9 +16,14 @@ QueueItem& MotionQueue::pushBack() {
         storage_ = std::move(grown);
         head_ = 0;
     }
+    return storage_[slot(size_)];
+}
+
+QueueItem& MotionQueue::pushBack() {
+    QueueItem& item = nextSlot();
     ++size_;
     ++pushed_;
-    return at(size_ - 1);
+    return item;
 }
 
 void MotionQueue::popFront() {

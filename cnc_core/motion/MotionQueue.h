@@ -64,8 +64,13 @@ class MotionQueue {
     const QueueItem& at(std::size_t i) const { return storage_[slot(i)]; }
     QueueItem& front() { return at(0); }
     const QueueItem& front() const { return at(0); }
-    /// A new item at the end (grows the storage when it is full).
+    /// A new item at the end (grows the storage when it is full). It is the
+    /// slot nextSlot() returned, unless the queue changed in between.
     QueueItem& pushBack();
+    /// The slot the next pushBack() returns, as its last use left it (grows
+    /// the storage when it is full): an item can be worked out in place
+    /// before it is known whether it is queued at all.
+    QueueItem& nextSlot();
     void popFront();
     void clear() {
         head_ = size_ = 0;

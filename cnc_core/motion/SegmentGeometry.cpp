@@ -22,6 +22,11 @@ void normalise(Position& v, int count) {
         v[static_cast<std::size_t>(i)] /= norm;
 }
 
+/// Zeroes `v` from axis `count` on (what a default geometry holds there).
+void clearFrom(Position& v, int count) {
+    std::fill(v.begin() + std::clamp(count, 0, kMaxAxes), v.end(), 0.0);
+}
+
 }  // namespace
 
 double arcTangentExtreme(double angle0, double sweep, bool secondAxis, double startShare,
@@ -37,36 +42,53 @@ double arcTangentExtreme(double angle0, double sweep, bool secondAxis, double st
 
 SegmentGeometry SegmentGeometry::of(const Motion& m, const MotionLimits& limits) {
     SegmentGeometry g;
-    g.mapping_ = PlaneMapping::of(m, limits);
-    g.axisCount_ = std::min(m.axisCount, limits.axisCount);
-    g.machineEnd_ = m.end;
-    g.mapping_.toPlane(m.start, g.start_);
-    g.mapping_.toPlane(m.end, g.end_);
-    const bool arc = (m.type == MotionType::ArcCW || m.type == MotionType::ArcCCW) &&
-                     m.planeAxis1 >= 0 && m.planeAxis2 >= 0 && m.planeAxis1 < g.axisCount_ &&
-                     m.planeAxis2 < g.axisCount_ && m.planeAxis1 != m.planeAxis2;
-    if (!arc) {
-        g.describeLine();
-        return g;
-    }
-    g.p1_ = m.planeAxis1;
-    g.p2_ = m.planeAxis2;
-    double c1 = m.center1, c2 = m.center2;
-    if (g.mapping_.kind() == 32) {  // the interpreter gives the centre in machine positions
-        Position centre = m.start;
-        centre[static_cast<std::size_t>(g.p1_)] = c1;
-        centre[static_cast<std::size_t>(g.p2_)] = c2;
-        Position plane{};
-        g.mapping_.toPlane(centre, plane);
-        c1 = plane[static_cast<std::size_t>(g.p1_)];
-        c2 = plane[static_cast<std::size_t>(g.p2_)];
-    }
-    g.describeArc(c1, c2, m.type == MotionType::ArcCW, m.fullCircle);
+    g.describe(m, limits);
     return g;
+}
+
+// Every member is written here (also the tangents past axisCount_ and the
+// arc's figures of a line): a reused queue slot ends up exactly as of().
+void SegmentGeometry::describe(const Motion& m, const MotionLimits& limits) {
+    mapping_ = PlaneMapping::of(m, limits);
+    axisCount_ = std::min(m.axisCount, limits.axisCount);
+    machineEnd_ = m.end;
+    mapping_.toPlane(m.start, start_);
+    mapping_.toPlane(m.end, end_);
+    const bool arc = (m.type == MotionType::ArcCW || m.type == MotionType::ArcCCW) &&
+                     m.planeAxis1 >= 0 && m.planeAxis2 >= 0 && m.planeAxis1 < axisCount_ &&
+                     m.planeAxis2 < axisCount_ && m.planeAxis1 != m.planeAxis2;
+    if (!arc) {
+        describeLine();
+        return;
+    }
+    p1_ = m.planeAxis1;
+    p2_ = m.planeAxis2;
+    double c1 = m.center1, c2 = m.center2;
+    if (mapping_.kind() == 32) {  // the interpreter gives the centre in machine positions
+        Position centre = m.start;
+        centre[static_cast<std::size_t>(p1_)] = c1;
+        centre[static_cast<std::size_t>(p2_)] = c2;
+        Position plane{};
+        mapping_.toPlane(centre, plane);
+        c1 = plane[static_cast<std::size_t>(p1_)];
+        c2 = plane[static_cast<std::size_t>(p2_)];
+    }
+    describeArc(c1, c2, m.type == MotionType::ArcCW, m.fullCircle);
+}
+
+void SegmentGeometry::clearArc() {
+    p1_ = p2_ = -1;
+    center1_ = center2_ = 0.0;
+    radius0_ = radius1_ = 0.0;
+    angle0_ = sweep_ = 0.0;
+    startPolar_ = endPolar_ = Polar{};
+    planeShare_ = 0.0;
 }
 
 void SegmentGeometry::describeLine() {
     arc_ = false;
+    clearArc();
+    clearFrom(startTangent_, axisCount_);
     double sum = 0.0;
     for (int i = 0; i < axisCount_; ++i) {
         const auto k = static_cast<std::size_t>(i);
@@ -118,6 +140,7 @@ void SegmentGeometry::arcTangent(Polar at, double radius, Position& tangent) con
         const auto k = static_cast<std::size_t>(i);
         tangent[k] = end_[k] - start_[k];
     }
+    clearFrom(tangent, axisCount_);
     tangent[static_cast<std::size_t>(p1_)] = dr * at.cos - radius * sweep_ * at.sin;
     tangent[static_cast<std::size_t>(p2_)] = dr * at.sin + radius * sweep_ * at.cos;
     normalise(tangent, axisCount_);

@@ -13,6 +13,10 @@ class SegmentGeometry {
     /// Geometry of `motion` (G0/G1 lines, G2/G3 arcs and helices). The arc's
     /// sweep is arcSweep() with Motion::fullCircle (D-016).
     static SegmentGeometry of(const Motion& motion, const MotionLimits& limits);
+    /// The same as `*this = of(motion, limits)`, worked out in place: a
+    /// geometry is some 600 bytes, and the machine's queue slot is then
+    /// written once instead of being zeroed, filled and copied per move.
+    void describe(const Motion& motion, const MotionLimits& limits);
 
     bool arc() const { return arc_; }
     double length() const { return length_; }
@@ -44,6 +48,8 @@ class SegmentGeometry {
 
   private:
     void describeLine();
+    /// The arc's figures of a default geometry (a line has none).
+    void clearArc();
     void describeArc(double c1, double c2, bool clockwise, bool fullCircle);
     /// cos and sin of a polar angle around the arc's centre.
     struct Polar {

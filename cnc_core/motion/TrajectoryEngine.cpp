@@ -22,8 +22,26 @@ TrajectoryEngine::TrajectoryEngine(const MotionLimits& limits, std::size_t lookA
 
 // ----------------------------------------------------------------- input
 
+const SegmentGeometry& TrajectoryEngine::prepareMove(const Motion& motion) {
+    QueueItem& slot = queue_.nextSlot();
+    slot.geometry.describe(motion, limits_);
+    prepared_ = {&motion, &slot, queue_.pushed()};
+    return slot.geometry;
+}
+
+const SegmentGeometry* TrajectoryEngine::preparedGeometry(const Motion& motion) {
+    const QueueItem& slot = queue_.nextSlot();
+    const bool still = prepared_.motion == &motion && prepared_.slot == &slot &&
+                       prepared_.pushed == queue_.pushed();
+    prepared_ = {};
+    return still ? &slot.geometry : nullptr;
+}
+
 void TrajectoryEngine::pushMove(const Motion& motion, BlockTransition mode) {
-    SegmentGeometry geometry = SegmentGeometry::of(motion, limits_);
+    // The geometry is worked out where the entry is queued (no copy of it).
+    const SegmentGeometry* prepared = preparedGeometry(motion);
+    const SegmentGeometry& geometry = prepared ? *prepared : prepareMove(motion);
+    prepared_ = {};
     if (!(geometry.length() > 1e-12)) return;  // nothing moves: no time, no stop
     const QueueItem* before = queue_.moveBeforeEnd();
     double entry = 0.0;
@@ -31,11 +49,10 @@ void TrajectoryEngine::pushMove(const Motion& motion, BlockTransition mode) {
     if (before != nullptr)
         entry = junctionVelocity({&before->geometry, before->rapid, before->mode},
                                  {&geometry, rapid, mode}, limits_);
-    QueueItem& item = queue_.pushBack();
+    QueueItem& item = queue_.pushBack();  // the slot that holds `geometry`
     item.kind = QueueItem::Kind::Move;
     item.where = motion.where;
     item.blockIndex = motion.blockIndex;
-    item.geometry = geometry;
     item.limits = pathLimits(item.geometry, limits_);
     item.rapid = rapid;
     item.mode = mode;
@@ -65,7 +82,7 @@ void TrajectoryEngine::pushTimedMove(const Motion& motion, double seconds, doubl
     item.kind = QueueItem::Kind::Timed;
     item.where = motion.where;
     item.blockIndex = motion.blockIndex;
-    item.geometry = SegmentGeometry::of(motion, limits_);
+    item.geometry.describe(motion, limits_);
     item.rapid = motion.type == MotionType::Rapid;
     item.seconds = std::isfinite(seconds) ? std::max(0.0, seconds) : 0.0;
     item.fraction = std::isfinite(fraction) ? std::clamp(fraction, 0.0, 1.0) : 1.0;

@@ -38,6 +38,10 @@ class TrajectoryEngine {
     /// A G0/G1/G2/G3 move (Motion::start .. Motion::end). A move of length 0
     /// takes no time and is not queued.
     void pushMove(const Motion& motion, BlockTransition mode);
+    /// The geometry of `motion`, worked out in the slot its queue entry will
+    /// take: a pushMove() of the same, unchanged `motion` right after takes
+    /// it as it is (SimulatedMachine reads the path length off it first).
+    const SegmentGeometry& prepareMove(const Motion& motion);
     /// A dwell of `seconds` (the axes are at rest during it).
     void pushDwell(const SourceLocation& where, double seconds);
     /// A machine action; its tag is reported by takeReached() when it is executed.
@@ -192,6 +196,17 @@ class TrajectoryEngine {
     SourceLocation lastWhere_;
     std::uint32_t lastBlock_ = 0;
     std::vector<std::uint32_t> reached_;
+    /// What prepareMove() left: the motion, the slot holding its geometry
+    /// and the pushes so far. Only a push writes a slot, so while no push
+    /// came in between and the slot did not move, the geometry is there.
+    struct Prepared {
+        const Motion* motion = nullptr;
+        const QueueItem* slot = nullptr;
+        std::uint64_t pushed = 0;
+    };
+    /// The prepared geometry of `motion` when it is still in the next slot.
+    const SegmentGeometry* preparedGeometry(const Motion& motion);
+    Prepared prepared_;
 };
 
 }  // namespace mtc::core::motion

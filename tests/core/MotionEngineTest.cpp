@@ -3,6 +3,8 @@
 // G0 and of the path feed (issue 22 §6), corners, dwell.
 #include <gtest/gtest.h>
 
+#include <vector>
+
 #include "MotionTestSupport.h"
 #include "cnc_core/motion/SegmentProfile.h"
 
@@ -19,7 +21,8 @@ TEST(SegmentProfile, TrapezoidAndTriangleMatchTheClosedForm) {
         SegmentProfile p;
         p.plan(0.0, 0.0, length, 100.0, 0.0, 2500.0);
         EXPECT_NEAR(p.duration(), closedFormDuration(length, 100.0, 2500.0), 1e-12) << length;
-        for (double t = 0.0; t <= p.duration() + 0.01; t += 0.0007) {
+        for (int step = 0; step * 0.0007 <= p.duration() + 0.01; ++step) {
+            const double t = step * 0.0007;
             double s = 0, v = 0;
             p.sample(t, s, v);
             EXPECT_NEAR(s, closedFormDistance(length, 100.0, 2500.0, t), 1e-9)
@@ -82,7 +85,8 @@ TEST(TrajectoryEngine, ArcPositionsFollowTheTrapezoidAlongTheCircleTo1e6) {
     const double radius = 50.0, length = radius * M_PI, v = 50.0;
     const double a = 0.5 * 2500.0;  // half of the weaker axis for the tangential part
     const double total = closedFormDuration(length, v, a);
-    for (double t = 0.05; t < total + 0.1; t += 0.05) {
+    for (int step = 1; step * 0.05 < total + 0.1; ++step) {
+        const double t = step * 0.05;
         drive(engine, 0.05);
         const double s = closedFormDistance(length, v, a, std::min(t, total));
         const double angle = M_PI - s / radius;
@@ -232,3 +236,63 @@ TEST(TrajectoryEngine, ZeroLengthMovesTakeNoTime) {
 }
 
 }  // namespace
+
+namespace {
+
+void expectSameGeometry(const SegmentGeometry& a, const SegmentGeometry& b) {
+    EXPECT_EQ(a.arc(), b.arc());
+    EXPECT_EQ(a.length(), b.length());
+    EXPECT_EQ(a.axisCount(), b.axisCount());
+    EXPECT_EQ(a.planeStart(), b.planeStart());
+    EXPECT_EQ(a.planeEnd(), b.planeEnd());
+    EXPECT_EQ(a.machineEnd(), b.machineEnd());
+    EXPECT_EQ(a.startTangent(), b.startTangent());
+    EXPECT_EQ(a.endTangent(), b.endTangent());
+    EXPECT_EQ(a.radius(), b.radius());
+    EXPECT_EQ(a.sweep(), b.sweep());
+    EXPECT_EQ(a.planeAxis1(), b.planeAxis1());
+    EXPECT_EQ(a.planeAxis2(), b.planeAxis2());
+    for (int axis = 0; axis < 3; ++axis)
+        EXPECT_EQ(a.maxTangentComponent(axis), b.maxTangentComponent(axis)) << axis;
+}
+
+}  // namespace
+
+// The engine works a move's geometry out in its reused queue slot: what an
+// earlier move left there (a helix's Z tangent, an arc's radius) must not
+// show through.
+TEST(SegmentGeometry, DescribedOverAnotherItIsTheSameAsAFreshOne) {
+    Motion helix = arc({10, 0, 0}, {0, 10, 5}, 0, 0, false, 3000);
+    Motion flat = line({0, 0, 0}, {30, 40, 0}, 3000);
+    flat.axisCount = 2;
+    SegmentGeometry reused = SegmentGeometry::of(helix, threeAxes());
+    reused.describe(flat, threeAxes());
+    expectSameGeometry(reused, SegmentGeometry::of(flat, threeAxes()));
+    EXPECT_EQ(reused.startTangent()[2], 0.0);
+    reused.describe(helix, threeAxes());
+    expectSameGeometry(reused, SegmentGeometry::of(helix, threeAxes()));
+}
+
+TEST(TrajectoryEngine, APreparedMoveRunsAsOneQueuedAtOnce) {
+    const std::vector<Motion> moves = {line({0, 0, 0}, {50, 0, 0}, 6000),
+                                       arc({50, 0, 0}, {50, 20, 0}, 50, 10, false, 3000),
+                                       line({50, 20, 0}, {0, 20, 0}, 6000)};
+    TrajectoryEngine direct(threeAxes()), prepared(threeAxes());
+    for (const Motion& m : moves) {
+        direct.pushMove(m, {});
+        const SegmentGeometry& geometry = prepared.prepareMove(m);
+        EXPECT_EQ(geometry.length(), SegmentGeometry::of(m, threeAxes()).length());
+        prepared.pushMove(m, {});
+    }
+    // A preparation that a dwell overtook is not taken: the move's geometry
+    // is worked out again in the slot after the dwell.
+    const Motion back = line({0, 20, 0}, {0, 0, 0}, 6000);
+    prepared.prepareMove(back);
+    prepared.pushDwell({}, 0.5);
+    direct.pushDwell({}, 0.5);
+    prepared.pushMove(back, {});
+    direct.pushMove(back, {});
+    EXPECT_EQ(runToIdle(prepared), runToIdle(direct));
+    for (int axis = 0; axis < 3; ++axis)
+        EXPECT_EQ(prepared.position(axis), direct.position(axis));
+}
