@@ -43,16 +43,22 @@ struct DevelopedSurface::Sweep {
     /// between the cell and the tool's centre), at the ends of the covering
     /// and where the centre passes the cell's angle.
     double lowestFace(double angle, const Span& t) const {
-        const auto floorAt = [&](double u) {
-            const double offset = angle - (a.angle + (b.angle - a.angle) * u);
+        const auto offsetAt = [&](double u) { return angle - (a.angle + (b.angle - a.angle) * u); };
+        const auto floorAt = [&](double u, double offset) {
             const double face = std::max(a.face + (b.face - a.face) * u, 0.0);
             return face / std::cos(std::min(std::fabs(offset), kMaxOffset));
         };
-        double lowest = std::min(floorAt(t.lo), floorAt(t.hi));
+        const double first = offsetAt(t.lo), last = offsetAt(t.hi);
+        const bool passes = (first > 0.0) != (last > 0.0);  // the centre passes the cell
+        if (a.face == b.face) {  // level (the common case): one cosine at most
+            if (passes) return std::max(a.face, 0.0);
+            return floorAt(t.lo, std::min(std::fabs(first), std::fabs(last)));
+        }
+        double lowest = std::min(floorAt(t.lo, first), floorAt(t.hi, last));
         const double sweep = b.angle - a.angle;
-        if (sweep != 0.0) {
+        if (passes && sweep != 0.0) {
             const double u = (angle - a.angle) / sweep;
-            if (u > t.lo && u < t.hi) lowest = std::min(lowest, floorAt(u));
+            lowest = std::min(lowest, floorAt(u, 0.0));
         }
         return lowest;
     }

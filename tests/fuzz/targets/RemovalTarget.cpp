@@ -1,10 +1,12 @@
 // Material removal: the input is an NC program, run on the mill or the lathe
 // of the demo cell (by the input's length) into the part model at a coarse
-// resolution, bounded by a block budget. The part stays inside its stock
-// (heights between bottom and top, radii between 0 and the bar's, on the
-// G32 jacket too), the removed volume is finite and at most the stock's,
-// diagnostics have a code, and the STL has the size its triangle count
-// promises.
+// resolution, bounded by a block budget. The stock makes a part (or an
+// error about the program's window says why not). The part stays inside
+// its stock (heights between bottom and top, radii between 0 and the
+// bar's, on the G32 jacket too), the removed volume is finite and at most
+// the stock's, diagnostics have a code, and the STL has the size its
+// triangle count promises.
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -68,7 +70,19 @@ void fuzzRemoval(std::string_view input) {
         *demoCell().process(process), store, 1, settings, nullptr, 5'000);
     for (const core::Diagnostic& d : r.diagnostics.items())
         require(!d.code.empty() && !d.message.empty(), "a diagnostic has code and message", input);
-    require(r.part.has_value(), "the demo cell's stock makes a part", input);
+    if (!r.part) {
+        // The program's window is the stock (TP-008): one the model cannot
+        // hold (a WINDOW_01 bar on the mill, a bad window or RAW contour)
+        // makes no part, and an error at the window says why.
+        require(std::any_of(r.diagnostics.items().begin(), r.diagnostics.items().end(),
+                            [](const core::Diagnostic& d) {
+                                return d.severity == core::Severity::Error &&
+                                       (d.code == "REMOVAL_STOCK" || d.code == "REMOVAL_WINDOW" ||
+                                        d.code == "REMOVAL_RAW_CONTOUR");
+                            }),
+                "the demo cell's stock makes a part, or an error says why not", input);
+        return;
+    }
     const core::removal::PartModel& part = *r.part;
     const double removed = part.removedVolume();
     require(std::isfinite(removed) && removed >= 0.0, "the removed volume is finite", input);
