@@ -7,7 +7,9 @@
 // program (lines and R10 quarter circles, bench/BenchPrograms.h) 1 mm deep
 // with the R8 cutter, so each block sweeps about 16 mm wide through the
 // part; BM_RemovalStl writes the roughed part's binary STL into memory;
-// BM_RemovalLathe10k turns 10,000 blocks of passes on the demo bar.
+// BM_RemovalLathe10k turns 10,000 blocks of passes on the demo bar;
+// BM_RemovalCylinderG32_10k mills a helical groove of 10,000 G32 blocks into
+// the bar's developed jacket (D-027).
 // Counters: cells, removed mm^3.
 // The restart's way back against the part (D-021): BM_ReentryCheckMill10k*
 // time checkRestartReentry at 0.2 mm for a restart of the 10,000-block
@@ -85,6 +87,31 @@ std::string latheProgram(int blocks) {
     return text + "N9999 M30\n";
 }
 
+/// A helical groove on the demo bar under G32 (D-027): T9 (R4.85) 2 mm
+/// deep, 0.5 mm of circumference and 0.03 mm along the axis per block,
+/// every tenth block a 0.2 mm step round only (about 3.5 turns per 2,000
+/// blocks, the axial position kept on the bar).
+std::string cylinderProgram(int blocks) {
+    std::string text =
+        "N0001 T9 G18 G90 G54 G0 X45 Z-30\nN0002 G0 C0\nN0003 G20 Z0 C0 X0\nN0004 G32 RI 40\n"
+        "N0005 G0 G56 Y1 0 Z1 250\nN0006 G1 X38 F300\n";
+    char line[96];
+    double y = 0.0, z = 250.0;
+    for (int n = 7; n < blocks - 4; ++n) {
+        if (n % 10 == 9) {
+            y += 0.2;
+        } else {
+            y += 0.5;
+            z -= 0.03;
+            if (z < 150.0) z = 250.0;
+        }
+        const int size =
+            std::snprintf(line, sizeof line, "N%04d G1 Y1 %.3f Z1 %.3f\n", n % 10000, y, z);
+        text.append(line, static_cast<std::size_t>(size));
+    }
+    return text + "N9996 G0 X45\nN9997 G30\nN9998 G18\nN9999 M30\n";
+}
+
 ProgramStore storeWith(int process, const std::string& source) {
     ParseOptions options;
     options.programNumber = 1;
@@ -125,6 +152,10 @@ void BM_RemovalMillArcs10k(benchmark::State& state) {
         storeWith(0, "N0001 T10 G17 G90 G54 G0 X0 Y0 Z2\nN0002 G1 Z-1 F100\n" +
                          mtc::bench::generateClosedMotionProgram(10'000));
     simulateEach(state, store);
+}
+
+void BM_RemovalCylinderG32_10k(benchmark::State& state) {
+    simulateEach(state, storeWith(1, cylinderProgram(10'000)), 1);
 }
 
 void BM_RemovalStl(benchmark::State& state) {
@@ -212,6 +243,7 @@ void BM_RemovalLathe10k(benchmark::State& state) {
 
 BENCHMARK(BM_RemovalMill10k)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_RemovalMillArcs10k)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_RemovalCylinderG32_10k)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_RemovalStl)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_RemovalLathe10k)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_ReentryCheckMill10kClear)->Unit(benchmark::kMillisecond);
