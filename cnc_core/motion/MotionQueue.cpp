@@ -8,15 +8,12 @@ MotionQueue::MotionQueue(std::size_t capacity)
     : storage_(std::max<std::size_t>(capacity, 1) + 8),
       capacity_(std::max<std::size_t>(capacity, 1)) {}
 
-QueueItem& MotionQueue::nextSlot() {
-    if (size_ == storage_.size()) {
-        std::vector<QueueItem> grown(storage_.size() * 2);
-        for (std::size_t i = 0; i < size_; ++i)
-            grown[i] = std::move(at(i));
-        storage_ = std::move(grown);
-        head_ = 0;
-    }
-    return storage_[slot(size_)];
+void MotionQueue::grow() {
+    std::vector<QueueItem> grown(storage_.size() * 2);
+    for (std::size_t i = 0; i < size_; ++i)
+        grown[i] = std::move(at(i));
+    storage_ = std::move(grown);
+    head_ = 0;
 }
 
 QueueItem& MotionQueue::pushBack() {

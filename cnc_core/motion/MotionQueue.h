@@ -70,7 +70,10 @@ class MotionQueue {
     /// The slot the next pushBack() returns, as its last use left it (grows
     /// the storage when it is full): an item can be worked out in place
     /// before it is known whether it is queued at all.
-    QueueItem& nextSlot();
+    QueueItem& nextSlot() {
+        if (size_ == storage_.size()) grow();
+        return storage_[slot(size_)];
+    }
     void popFront();
     void clear() {
         head_ = size_ = 0;
@@ -84,6 +87,8 @@ class MotionQueue {
     const QueueItem* moveBeforeEnd() const;
 
   private:
+    /// Doubles the storage, the items moved to its start in queue order.
+    void grow();
     /// Storage index of item `i` < storage size: one wrap at most, so a
     /// subtraction instead of a division (the planner walks the queue on
     /// every move).

@@ -17,27 +17,36 @@ double rotationSign(int polarDirection) {
 
 PlaneMapping PlaneMapping::of(const Motion& m, const MotionLimits& limits) {
     PlaneMapping p;
+    p.describe(m, limits);
+    return p;
+}
+
+void PlaneMapping::describe(const Motion& m, const MotionLimits& limits) {
+    kind_ = 30;
+    axis1_ = axis2_ = linear_ = rotary_ = -1;
+    radius_ = 0.0;
+    polar_ = {};
+    rotaryAxis_ = {};
     const int a1 = m.transformAxis1, a2 = m.transformAxis2;
     if (m.transformation == 30 || a1 < 0 || a2 < 0 || a1 >= limits.axisCount ||
         a2 >= limits.axisCount)
-        return p;
+        return;
     const AxisLimit& l1 = limits.axes[static_cast<std::size_t>(a1)];
     const AxisLimit& l2 = limits.axes[static_cast<std::size_t>(a2)];
-    p.axis1_ = a1;
-    p.axis2_ = a2;
-    p.polar_ = {l1.polarDirection, l2.polarDirection};
-    p.rotaryAxis_ = {l1.rotary, l2.rotary};
+    axis1_ = a1;
+    axis2_ = a2;
+    polar_ = {l1.polarDirection, l2.polarDirection};
+    rotaryAxis_ = {l1.rotary, l2.rotary};
     if (m.transformation == 32 && m.effectiveRadius > 0.0) {
-        p.kind_ = 32;
-        p.radius_ = m.effectiveRadius;
+        kind_ = 32;
+        radius_ = m.effectiveRadius;
     } else if (m.transformation == 31 && l1.rotary != l2.rotary) {
-        p.kind_ = 31;
-        p.linear_ = l1.rotary ? a2 : a1;
-        p.rotary_ = l1.rotary ? a1 : a2;
+        kind_ = 31;
+        linear_ = l1.rotary ? a2 : a1;
+        rotary_ = l1.rotary ? a1 : a2;
     } else {
-        p.axis1_ = p.axis2_ = -1;
+        axis1_ = axis2_ = -1;
     }
-    return p;
 }
 
 bool PlaneMapping::developed(int axis) const {

@@ -17,6 +17,10 @@ class PlaneMapping {
   public:
     /// The mapping of `motion` (identity for G30 or an incomplete G31/G32).
     static PlaneMapping of(const Motion& motion, const MotionLimits& limits);
+    /// `*this = of(motion, limits)` without a temporary: copying one back
+    /// read it with wide loads across the narrow stores that had just
+    /// written it, a store-forwarding stall on every move.
+    void describe(const Motion& motion, const MotionLimits& limits);
 
     bool identity() const { return kind_ == 30; }
     int kind() const { return kind_; }

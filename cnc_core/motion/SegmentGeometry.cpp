@@ -49,7 +49,7 @@ SegmentGeometry SegmentGeometry::of(const Motion& m, const MotionLimits& limits)
 // Every member is written here (also the tangents past axisCount_ and the
 // arc's figures of a line): a reused queue slot ends up exactly as of().
 void SegmentGeometry::describe(const Motion& m, const MotionLimits& limits) {
-    mapping_ = PlaneMapping::of(m, limits);
+    mapping_.describe(m, limits);
     axisCount_ = std::min(m.axisCount, limits.axisCount);
     machineEnd_ = m.end;
     mapping_.toPlane(m.start, start_);
