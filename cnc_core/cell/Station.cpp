@@ -319,7 +319,8 @@ double Station::advance(double seconds, std::uint64_t maxBlocks) {
         left -= used;
         // Let go of the states of the blocks done meanwhile: a long call (the
         // CLI's) would otherwise keep thousands and write each to a cold slot.
-        queued_.follow(machine_.itemsDone(), machine_.atBlockStop(), machine_.idle());
+        if (keepBlockStates_)
+            queued_.follow(machine_.itemsDone(), machine_.atBlockStop(), machine_.idle());
         if (used <= 0.0 && blocks == before) break;  // nothing can go on
     }
     jog_.settle();
