@@ -17,6 +17,11 @@
 // ADJUST / REPOS moves swept through it): Clear goes over the top (no
 // collision), Through straight through the last layer (one collision,
 // located by bisection). Counters: blocks, moves, collisions, removed mm^3.
+// The part cut live (TP-027): BM_StationMill10k runs the roughing program on
+// a station in simulated time (ticks of 10 s) without, BM_LiveCutMill10k
+// with the live cut (the difference is its cost); BM_LiveCutStart1M is the
+// blank a Start makes of the 1,000,000-block closed-motion program (no
+// window: the scan of its text and the configuration's block).
 #include <benchmark/benchmark.h>
 
 #include <cstdio>
@@ -27,6 +32,7 @@
 #include "cnc_core/cell/Cell.h"
 #include "cnc_core/language/Parser.h"
 #include "cnc_core/machine/MachineConfigReader.h"
+#include "cnc_core/removal/LiveCut.h"
 #include "cnc_core/removal/PartStl.h"
 #include "cnc_core/removal/ReentryCollisions.h"
 #include "cnc_core/removal/RemovalRun.h"
@@ -241,6 +247,45 @@ void BM_RemovalLathe10k(benchmark::State& state) {
 
 }  // namespace
 
+/// Runs program 1 of the mill to its end on a fresh cell per iteration.
+void runOnStation(benchmark::State& state, const std::string& text, bool live) {
+    double removed = 0.0;
+    bool ended = true;
+    for (auto _ : state) {
+        state.PauseTiming();
+        Cell station(cell());
+        station.addProgram(0, 1, "bench.nc", text);
+        Station& mill = station.station(0);
+        mill.setLiveCutting(live);
+        mill.selectProgram(1);
+        state.ResumeTiming();
+        mill.press(ControlKey::Start);
+        for (int tick = 0; tick < 100'000 && mill.busy(); ++tick)
+            mill.advance(10.0);
+        ended = ended && mill.runStatus() == RunStatus::Ended;
+        removed = mill.liveCut().part() ? mill.liveCut().part()->removedVolume() : 0.0;
+    }
+    state.counters["removed_mm3"] = removed;
+    state.SetLabel(ended ? "ended" : "NOT ended");
+}
+
+void BM_StationMill10k(benchmark::State& state) {
+    runOnStation(state, millProgram(10'000), false);
+}
+
+void BM_LiveCutMill10k(benchmark::State& state) {
+    runOnStation(state, millProgram(10'000), true);
+}
+
+void BM_LiveCutStart1M(benchmark::State& state) {
+    const ProgramStore store = storeWith(0, mtc::bench::generateClosedMotionProgram(1'000'000));
+    DiagnosticList ignored;
+    LiveCut cut(ProcessAxes::build(*cell().process(0), ignored));
+    for (auto _ : state)
+        cut.begin(*cell().process(0), store, 1, nullptr);
+    state.counters["cells"] = cut.part() ? static_cast<double>(cut.part()->cells()) : 0.0;
+}
+
 BENCHMARK(BM_RemovalMill10k)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_RemovalMillArcs10k)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_RemovalCylinderG32_10k)->Unit(benchmark::kMillisecond);
@@ -248,3 +293,6 @@ BENCHMARK(BM_RemovalStl)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_RemovalLathe10k)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_ReentryCheckMill10kClear)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_ReentryCheckMill10kThrough)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_StationMill10k)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_LiveCutMill10k)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_LiveCutStart1M)->Unit(benchmark::kMillisecond);

@@ -24,8 +24,10 @@ constexpr qint64 kTickBudgetNs = 8'000'000;
 CellSession::CellSession(mtc::core::MachineConfig config, QObject* parent)
     : QObject(parent), cell_(std::move(config)) {
     announced_.assign(static_cast<std::size_t>(cell_.stationCount()), 0);
-    for (int slot = 0; slot < cell_.stationCount(); ++slot)
-        cell_.station(slot).setRunTracing(true);  // the toolpath view's backplot (TP-016)
+    for (int slot = 0; slot < cell_.stationCount(); ++slot) {
+        cell_.station(slot).setRunTracing(true);   // the toolpath view's backplot (TP-016)
+        cell_.station(slot).setLiveCutting(true);  // and its part cut live (TP-027)
+    }
     // Alarms and MDI messages built from a diagnostic in the panel's language
     // (installed before the session is made; D-024).
     cell_.setLanguage(installedCoreLanguage());

@@ -6,6 +6,7 @@
 
 #include "cnc_core/afc/AdaptiveFeedControl.h"
 #include "cnc_core/afc/AfcMotion.h"
+#include "cnc_core/compensation/ToolData.h"
 #include "cnc_core/machine/OverrideSwitch.h"
 #include "cnc_core/machine_data/MachineDataStore.h"
 #include "cnc_core/mdi/MdiEntry.h"
@@ -34,6 +35,7 @@ std::string firstProblem(const DiagnosticList& diagnostics, const char* fallback
 Station::Station(const ProcessConfig& config, const ProgramStore& programs,
                  const InterpreterServices& services, MachineDataStore& machineData)
     : config_(config),
+      programs_(programs),
       control_(config.index),
       afc_(std::make_shared<AdaptiveFeedControl>(config, machineData, torqueModelFromConfig(config),
                                                  &control_.signalTable())),
@@ -43,47 +45,19 @@ Station::Station(const ProcessConfig& config, const ProgramStore& programs,
       sps_(control_),
       restart_(control_, sps_, interpreter_, programs, output_, services.otherProcesses),
       trace_(axesOf(config)),
+      liveCut_(axesOf(config)),
       jog_(control_, interpreter_, machine_) {
     restart_.setAxisTransfer(services.axisTransfer);
     control_.setRunner(this);
     machine_.attachAdaptiveFeed(afc_.get(), &trend_);
     interpreter_.setAdaptiveFeed(afc_);
+    // The tool in working position when the move is sent (TC-009).
+    liveCut_.setToolSource(
+        [this] { return activeToolData(interpreter_.tools(), interpreter_.state().modal); });
 }
 
 Station::~Station() {
     control_.setRunner(nullptr);
-}
-
-void Station::Output::sent(const SourceLocation& where) {
-    ++outputs;
-    last.program = where.program;
-    last.line = where.line;
-}
-
-void Station::Output::motion(const Motion& m) {
-    sent(m.where);
-    const std::size_t queued = machine.engine().queuedCount();
-    machine.motion(m);
-    if (trace) trace->sent(m, machine.engine().queuedCount() > queued);
-    if (listener) listener->motion(m);
-}
-
-void Station::Output::auxiliary(const AuxOutput& a) {
-    sent(a.where);
-    machine.auxiliary(a);
-    if (listener) listener->auxiliary(a);
-}
-
-void Station::Output::dwell(const SourceLocation& where, double seconds) {
-    sent(where);
-    machine.dwell(where, seconds);
-    if (listener) listener->dwell(where, seconds);
-}
-
-void Station::Output::command(const MachineCommand& command) {
-    sent(command.where);
-    machine.command(command);
-    if (listener) listener->command(command);
 }
 
 bool Station::press(ControlKey key) {
@@ -167,6 +141,7 @@ std::string Station::start(int number) {
     machine_.reset();
     beginRun(Run::Program);
     beginTrace(number);
+    beginLiveCut(number);
     return {};
 }
 
@@ -175,6 +150,15 @@ void Station::beginTrace(int number) {
     if (!tracing_) return;
     trace_.begin(number);
     output_.trace = &trace_;
+}
+
+void Station::beginLiveCut(int number) {
+    output_.cut = nullptr;
+    if (!liveCutting_) return;
+    // The blank with the zero offsets the run will use.
+    liveCut_.begin(config_, programs_, number,
+                   std::make_shared<const ZeroOffsetTable>(interpreter_.zeroOffsets()));
+    output_.cut = &liveCut_;
 }
 
 std::string Station::startMdi() {
@@ -191,6 +175,7 @@ std::string Station::startMdi() {
     if (!alarm.empty()) return alarm;
     mdiDiagnostics_.clear();
     output_.trace = nullptr;  // the last program's backplot stays as it was
+    output_.cut = nullptr;    // and so does its part
     beginRun(Run::Mdi);
     return {};
 }
@@ -275,6 +260,11 @@ void Station::reset() {
         trace_.cut();
         output_.trace = nullptr;
     }
+    if (output_.cut) {  // the part stays as the tool left it
+        liveCut_.follow(machine_.engine());
+        liveCut_.stop();
+        output_.cut = nullptr;
+    }
     machine_.stop();
     machine_.reset();
     queued_.clear();
@@ -325,6 +315,7 @@ double Station::advance(double seconds, std::uint64_t maxBlocks) {
     }
     jog_.settle();
     if (output_.trace) trace_.follow(machine_.engine());
+    if (output_.cut) liveCut_.follow(machine_.engine());
     if (blocks > 0 || machine_.seconds() != busyBefore) ++revision_;
     showCurrentBlock();
     return seconds > 0.0 ? seconds - left : 0.0;
@@ -339,6 +330,10 @@ bool Station::acceptRestart(const RestartSelection& selection, DiagnosticList& d
     restartBefore_ = snapshot;
     restartStarted_ = true;
     beginTrace(control_.selectedProgram());
+    // The blank a restart's run would cut is the part at the target block:
+    // not simulated live (the view shows the program's finished part).
+    output_.cut = nullptr;
+    if (liveCutting_) liveCut_.clear();
     restartComputingMs_ = 0.0;
     computingSince_ = std::chrono::steady_clock::now();
     followRestartPhase();

@@ -17,6 +17,7 @@
 #include "cnc_core/machine/SimulatedMachine.h"
 #include "cnc_core/mdi/MdiRun.h"
 #include "cnc_core/mdi/MdiSession.h"
+#include "cnc_core/removal/LiveCut.h"
 #include "cnc_core/restart/RestartSequence.h"
 #include "cnc_core/restart/SimulatedSps.h"
 #include "cnc_core/toolpath/RunTrace.h"
@@ -152,6 +153,14 @@ class Station : private ProgramRunner {
     /// by default: the CLI has no use for it, and it holds about 45 bytes per
     /// segment of a run).
     void setRunTracing(bool on) { tracing_ = on; }
+    /// The part the program run cuts as the axes travel (TP-027): from the
+    /// next Start on, the program's blank (its window, RAW contour or the
+    /// configuration's stock, at the finest resolution within
+    /// removal::kViewCells cells) is swept by the tool in working position.
+    /// MDI entries, jogs and a restart's run do not cut it; Control reset
+    /// stops it where the axes stopped. Off by default (the CLI's runs).
+    void setLiveCutting(bool on) { liveCutting_ = on; }
+    const removal::LiveCut& liveCut() const { return liveCut_; }
     /// The language of the alarms and the MDI message built from a
     /// diagnostic (the panel's; English by default: the CLI's texts).
     /// docs/DECISIONS.md D-024.
@@ -246,8 +255,9 @@ class Station : private ProgramRunner {
         void sent(const SourceLocation& where);
         SimulatedMachine& machine;
         MachineSink* listener = nullptr;
-        RunTrace* trace = nullptr;  ///< the program run's backplot while one is traced
-        std::uint64_t outputs = 0;  ///< calls so far; `last` is the latest one's location
+        RunTrace* trace = nullptr;        ///< the program run's backplot while one is traced
+        removal::LiveCut* cut = nullptr;  ///< the part the program run cuts, while one is cut
+        std::uint64_t outputs = 0;        ///< calls so far; `last` is the latest one's location
         SourceLocation last;
     };
     enum class Run { None, Program, Mdi };
@@ -292,8 +302,12 @@ class Station : private ProgramRunner {
     /// A run of program `number` starts (Start, a restart accepted): a new
     /// backplot.
     void beginTrace(int number);
+    /// A run of program `number` starts from its first block: a new blank
+    /// for the live cut (setLiveCutting).
+    void beginLiveCut(int number);
 
     const ProcessConfig& config_;
+    const ProgramStore& programs_;
     ProcessControl control_;
     std::shared_ptr<AdaptiveFeedControl> afc_;
     AfcTrendRecorder trend_;
@@ -333,6 +347,8 @@ class Station : private ProgramRunner {
     bool keepBlockStates_ = true;  ///< keepBlockStates()
     RunTrace trace_;
     bool tracing_ = false;  ///< setRunTracing()
+    removal::LiveCut liveCut_;
+    bool liveCutting_ = false;  ///< setLiveCutting()
     ManualJog jog_;
     DiagnosticLog log_;
     std::size_t restartLogged_ = 0;  ///< restart diagnostics already in log_

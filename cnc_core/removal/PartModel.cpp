@@ -195,4 +195,15 @@ std::uint64_t PartModel::cells() const {
     return static_cast<std::uint64_t>(profile_->slices()) * static_cast<std::uint64_t>(segments_);
 }
 
+RemovalSettings fittingSettings(const Stock& stock, bool turning, std::uint64_t maxCells) {
+    RemovalSettings settings;
+    settings.maxCells = maxCells;
+    for (double resolution : {0.2, 0.3, 0.5, 1.0, 2.0, 5.0, 10.0}) {
+        settings.resolution = resolution;
+        std::string error;
+        if (PartModel::create(stock, settings, turning, error)) break;
+    }
+    return settings;
+}
+
 }  // namespace mtc::core::removal

@@ -26,6 +26,16 @@ struct RemovalSettings {
     std::uint64_t maxCells = kMaxRemovalCells;
 };
 
+/// Most cells of the part the panel shows (the finished part, the part cut
+/// live): its mesh, about two triangles a cell, stays near 10 MB and quick
+/// to draw on llvmpipe (TP-023).
+inline constexpr std::uint64_t kViewCells = 250'000;
+
+/// The finest of 0.2, 0.3, 0.5, 1, 2, 5 and 10 mm at which `stock` needs at
+/// most `maxCells` cells (PartModel::create() counts them, as for the real
+/// run); 10 mm when none fits (create() then refuses the stock).
+RemovalSettings fittingSettings(const Stock& stock, bool turning, std::uint64_t maxCells);
+
 /// Why `resolution` cannot be used ("" when it can): NaN, infinite, outside
 /// kMinResolution .. kMaxResolution.
 std::string resolutionProblem(double resolution);

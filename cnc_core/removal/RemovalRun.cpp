@@ -41,6 +41,22 @@ bool runToStop(Interpreter& interpreter, const RemovalStop& stop, std::uint64_t 
 
 }  // namespace
 
+std::optional<PartModel> blankPart(const ProcessConfig& config, const ProgramStock& stock,
+                                   const RemovalSettings& settings, DiagnosticList& diagnostics) {
+    diagnostics.append(stock.diagnostics);
+    if (stock.diagnostics.hasErrors()) return std::nullopt;  // a window that cannot be the blank
+    std::string problem;
+    std::optional<PartModel> part =
+        PartModel::create(stock.stock, settings, config.defaultPlane() == 18, problem);
+    if (part) return part;
+    if (stock.origin.fromWindow)
+        diagnostics.error("REMOVAL_STOCK", stock.origin.where,
+                          stock.origin.keyword + ": " + problem);
+    else
+        diagnostics.error("REMOVAL_STOCK", {}, problem);  // the configuration's
+    return std::nullopt;
+}
+
 RemovalRunResult simulateRemoval(const ProcessConfig& config, const ProgramStore& programs,
                                  int number, const RemovalSettings& settings,
                                  std::shared_ptr<const ToolList> tools, std::uint64_t blockBudget,
@@ -58,18 +74,8 @@ RemovalRunResult simulateRemoval(const ProcessConfig& config, const ProgramStore
                                  const RemovalStop* stop) {
     RemovalRunResult result;
     result.stock = stock.origin;
-    result.diagnostics.append(stock.diagnostics);
-    if (stock.diagnostics.hasErrors()) return result;  // a window that cannot be the blank
-    std::string problem;
-    result.part = PartModel::create(stock.stock, settings, config.defaultPlane() == 18, problem);
-    if (!result.part) {
-        if (stock.origin.fromWindow)
-            result.diagnostics.error("REMOVAL_STOCK", stock.origin.where,
-                                     stock.origin.keyword + ": " + problem);
-        else
-            result.diagnostics.error("REMOVAL_STOCK", {}, problem);  // the configuration's
-        return result;
-    }
+    result.part = blankPart(config, stock, settings, result.diagnostics);
+    if (!result.part) return result;
     DiagnosticList axisProblems;
     RemovalSink sink(ProcessAxes::build(config, axisProblems), *result.part);
     InterpreterServices services;

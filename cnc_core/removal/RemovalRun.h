@@ -37,6 +37,15 @@ struct RemovalRunResult {
     bool complete = false;     ///< the program reached its end (or the stop)
 };
 
+/// The blank a run of a program cuts: `stock` (programStock()) as a part
+/// model at `settings`. Nullopt when the window cannot be the blank (its
+/// REMOVAL_WINDOW errors) or the model cannot be made of it (none, more
+/// cells than settings.maxCells: an error REMOVAL_STOCK at the window, or
+/// without a place for the configuration's stock); both go to
+/// `diagnostics` with the stock's warnings.
+std::optional<PartModel> blankPart(const ProcessConfig& config, const ProgramStock& stock,
+                                   const RemovalSettings& settings, DiagnosticList& diagnostics);
+
 /// Cuts the stock of program `number` (programStock(): its WINDOW_01/02 in
 /// machine coordinates, else `config`'s `stock`; a bad window is an error
 /// REMOVAL_WINDOW and no part) with the program run from its first block to its end on a fresh

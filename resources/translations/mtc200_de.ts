@@ -1185,8 +1185,8 @@
         <translation>M</translation>
     </message>
     <message>
-        <source>hide or show the finished part: the stock cut by the whole program</source>
-        <translation>Fertigteil aus- oder einblenden: das vom ganzen Programm bearbeitete Rohteil</translation>
+        <source>hide or show the part: the stock cut by the whole program, or after Start the part as the tool has cut it so far</source>
+        <translation>Werkstück aus- oder einblenden: das vom ganzen Programm bearbeitete Rohteil oder nach Start das Werkstück, so weit das Werkzeug es bearbeitet hat</translation>
     </message>
 </context>
 <context>
@@ -3505,6 +3505,14 @@ Nullpunkt bei Maschine %2</translation>
     <message>
         <source>%1 (mm, radius, G%2)</source>
         <translation>%1 (mm, Radius, G%2)</translation>
+    </message>
+    <message>
+        <source>Part being cut: %1 mm³ removed at %2 mm</source>
+        <translation>Werkstück in Bearbeitung: %1 mm³ abgetragen bei %2 mm</translation>
+    </message>
+    <message>
+        <source>Part as the run left it: %1 mm³ removed at %2 mm</source>
+        <translation>Werkstück nach dem Lauf: %1 mm³ abgetragen bei %2 mm</translation>
     </message>
 </context>
 <context>

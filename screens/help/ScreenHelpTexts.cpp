@@ -189,8 +189,8 @@ std::vector<ScreenHelpText> buildTexts() {
                              "every move, the rapids of an approach or tool change too)")},
           {QT_TRANSLATE_NOOP("ScreenHelp", "M"),
            QT_TRANSLATE_NOOP("ScreenHelp",
-                             "hide or show the finished part: the stock cut by the whole "
-                             "program")}}},
+                             "hide or show the part: the stock cut by the whole program, "
+                             "or after Start the part as the tool has cut it so far")}}},
     };
 }
 

@@ -1,6 +1,7 @@
 #include "screens/toolpath/ToolpathModel.h"
 
 #include <QStringList>
+#include <QTimer>
 #include <algorithm>
 
 #include "cnc_core/cell/StationStatus.h"
@@ -51,6 +52,7 @@ void ToolpathModel::refresh() {
     const int number = session_->control(slot_).selectedProgram();
     const mtc::core::ProgramPtr program = number ? session_->program(slot_, number) : nullptr;
     if (program != built_ || number != number_) build(number);
+    followLiveCut();
     updateReposPath();
     followPartner();
     emit marksChanged();
@@ -99,29 +101,13 @@ void ToolpathModel::build(int number) {
     emit geometryChanged();
 }
 
-namespace {
-
-/// The resolution the view simulates the part at: 0.2 mm as mtc200-cli
-/// simulate, coarser where the stock would need more than 250,000 cells
-/// (the mesh, two triangles a cell, stays about 10 MB and quick to draw on
-/// llvmpipe). PartModel::create() counts the cells, as for the real run.
-mtc::core::removal::RemovalSettings viewSettings(const mtc::core::Stock& stock, bool turning) {
-    mtc::core::removal::RemovalSettings settings;
-    settings.maxCells = 250'000;
-    for (double resolution : {0.2, 0.3, 0.5, 1.0, 2.0, 5.0, 10.0}) {
-        settings.resolution = resolution;
-        std::string error;
-        if (mtc::core::removal::PartModel::create(stock, settings, turning, error)) break;
-    }
-    return settings;
-}
-
-}  // namespace
-
 void ToolpathModel::simulatePart() {
     partSimulated_ = true;
     const bool turning = session_->processConfig(slot_).defaultPlane() == 18;  // as PartModel
-    const mtc::core::removal::RemovalSettings settings = viewSettings(stock_, turning);
+    // 0.2 mm as mtc200-cli simulate, coarser where the stock would need
+    // more cells than the view draws quickly.
+    const mtc::core::removal::RemovalSettings settings =
+        mtc::core::removal::fittingSettings(stock_, turning, mtc::core::removal::kViewCells);
     const auto run = mtc::core::removal::simulateRemoval(
         session_->processConfig(slot_), session_->store(), number_, *programStock_, settings);
     if (!run.part) {
@@ -147,9 +133,51 @@ void ToolpathModel::simulatePart() {
                      .arg(QString::number(settings.resolution));
 }
 
+void ToolpathModel::followLiveCut() {
+    const mtc::core::Station& station = session_->station(slot_);
+    const mtc::core::removal::LiveCut& cut = station.liveCut();
+    const bool live = geometry_ && cut.run() != 0 && cut.program() == number_ && cut.part();
+    if (!live) {
+        if (showingLive_) {  // a restart, another program: the finished part again
+            showingLive_ = false;
+            emit partChanged();
+        }
+        return;
+    }
+    const bool newRun = cut.run() != liveRun_;
+    const bool moving = station.busy();
+    if (!newRun && cut.revision() == liveRevision_ && showingLive_ && moving == liveMoving_) return;
+    // The whole part is meshed again: while the axes move not more often
+    // than every kLiveMeshMs, and once more when they have stopped.
+    if (!newRun && moving && liveMeshed_.isValid() && liveMeshed_.elapsed() < kLiveMeshMs) {
+        if (!liveFollowPending_) {
+            liveFollowPending_ = true;
+            QTimer::singleShot(kLiveMeshMs - static_cast<int>(liveMeshed_.elapsed()), this, [this] {
+                liveFollowPending_ = false;
+                followLiveCut();
+            });
+        }
+        return;
+    }
+    liveRun_ = cut.run();
+    liveRevision_ = cut.revision();
+    liveMeshed_.start();
+    liveMoving_ = moving;
+    showingLive_ = true;
+    const mtc::core::removal::PartModel& part = *cut.part();
+    livePart_.triangles = mtc::core::removal::partTriangles(part);
+    livePart_.heightField = part.heightField() != nullptr;
+    const QString removed = QString::number(part.removedVolume(), 'f', 0);
+    const QString resolution = QString::number(part.resolution());
+    livePart_.note =
+        moving ? tr("Part being cut: %1 mm³ removed at %2 mm").arg(removed, resolution)
+               : tr("Part as the run left it: %1 mm³ removed at %2 mm").arg(removed, resolution);
+    emit partChanged();
+}
+
 void ToolpathModel::togglePart() {
     if (!geometry_) return;
-    if (!partSimulated_) {  // a large program: the key asks for it
+    if (!partSimulated_ && !showingLive_) {  // a large program: the key asks for it
         partShown_ = true;
         simulatePart();
     } else {

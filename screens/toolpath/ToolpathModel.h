@@ -1,5 +1,6 @@
 #pragma once
 
+#include <QElapsedTimer>
 #include <QObject>
 #include <QString>
 #include <array>
@@ -130,13 +131,20 @@ class ToolpathModel : public QObject {
     /// "Workpiece coordinates G54: zero point at machine ..." or
     /// "Machine coordinates (G53, no zero offset)"; "" without a path.
     QString frameCaption() const;
-    /// The finished part (TP-023): simulated with the geometry for programs
-    /// of up to kPartBlocks blocks, else when togglePart() asks for it.
-    const ToolpathPart& part() const { return part_; }
-    bool partShown() const { return partShown_ && !part_.triangles.empty(); }
-    /// The key M: shows or hides the finished part; the first time on a
-    /// large program it simulates it (which takes a while).
+    /// The part the view draws: while the station's run of the program shown
+    /// has a live part (TP-027), that part as the tool has cut it so far;
+    /// else the finished part (TP-023), simulated with the geometry for
+    /// programs of up to kPartBlocks blocks, else when togglePart() asks.
+    const ToolpathPart& part() const { return showingLive_ ? livePart_ : part_; }
+    bool partShown() const { return partShown_ && !part().triangles.empty(); }
+    /// The part drawn is the station's, cut as its axes travel.
+    bool partIsLive() const { return showingLive_; }
+    /// The key M: shows or hides the part; the first time on a large
+    /// program it simulates the finished part (which takes a while).
     void togglePart();
+    /// Least time between two meshes of the live part while the axes move
+    /// (a mesh of 250,000 cells and its first frame take tens of ms).
+    static constexpr int kLiveMeshMs = 400;
     static constexpr std::size_t kPartBlocks = 200'000;
     /// The tolerance the next build tessellates with (mm).
     void setTolerance(double millimetres);
@@ -166,6 +174,9 @@ class ToolpathModel : public QObject {
   private:
     /// Cuts the stock with the program shown (removal::simulateRemoval).
     void simulatePart();
+    /// Takes the station's live part when it belongs to a run of the
+    /// program shown and changed (at most every kLiveMeshMs while moving).
+    void followLiveCut();
     void followPartner();
     /// While the station's program is active: highlights the block of the
     /// move the machine executes (TP-017); false when there is none.
@@ -205,6 +216,12 @@ class ToolpathModel : public QObject {
     ToolpathPart part_;
     bool partShown_ = true;
     bool partSimulated_ = false;  ///< part_ belongs to the program built
+    ToolpathPart livePart_;
+    bool showingLive_ = false;
+    std::uint64_t liveRun_ = 0, liveRevision_ = 0;  ///< of the live part meshed last
+    QElapsedTimer liveMeshed_;
+    bool liveFollowPending_ = false;  ///< a later look is scheduled
+    bool liveMoving_ = false;         ///< the station was busy at the last mesh (its note)
     /// cuttingBounds of the geometry, scene and developed (set by build()).
     std::array<mtc::core::ToolpathBounds, 2> cutting_;
     ToolpathPalette palette_;

@@ -515,6 +515,44 @@ class ToolpathGlTest : public QObject {
         QVERIFY(canvas->picture() == withPart);
     }
 
+    /// TP-027: after Start the view draws the station's part, the blank
+    /// first (the pocket and the step of the finished part are gone), cut
+    /// as the axes travel; at the end the part the run left.
+    void thePartBeingCutIsDrawnWhileTheProgramRuns() {
+        PanelFixture panel;
+        panel.session->selectProgram(0, 1);
+        QVERIFY(panel.window->showScreen("toolpath"));
+        panel.session->setTimerEnabled(false);
+        ToolpathScreen* screen = toolpath(panel);
+        VtkToolpathCanvas* canvas = vtkCanvas(screen);
+        QVERIFY(canvas);
+        const auto* model = screen->model();
+        const auto differing = [](const QImage& a, const QImage& b) {
+            int n = 0;
+            for (int y = 0; y < a.height(); y += 2)
+                for (int x = 0; x < a.width(); x += 2)
+                    if (a.pixel(x, y) != b.pixel(x, y)) ++n;
+            return n;
+        };
+        canvas->renderNow();
+        const QImage finished = canvas->picture();
+        panel.press(Qt::Key_F5, Qt::ShiftModifier);  // Start
+        panel.session->advance(0.02);
+        QVERIFY(model->partIsLive());
+        canvas->renderNow();
+        const QImage blank = canvas->picture();
+        QVERIFY2(differing(finished, blank) > 2000,
+                 qPrintable(QString::number(differing(finished, blank))));
+        for (int tick = 0; tick < 20000 && panel.session->station(0).busy(); ++tick)
+            panel.session->advance(0.25);
+        panel.session->advance(0.02);
+        QTRY_VERIFY_WITH_TIMEOUT(model->part().note.startsWith("Part as the run left it"),
+                                 4 * mtc::screens::ToolpathModel::kLiveMeshMs);
+        canvas->renderNow();
+        const QImage cut = canvas->picture();
+        QVERIFY2(differing(blank, cut) > 2000, qPrintable(QString::number(differing(blank, cut))));
+    }
+
     void aStationChangeWithNothingNewToShowRendersNothing() {
         QTemporaryDir dir;
         writeProgram(QDir(dir.path()), 6,

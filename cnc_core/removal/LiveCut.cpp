@@ -1,0 +1,109 @@
+#include "cnc_core/removal/LiveCut.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "cnc_core/motion/TrajectoryEngine.h"
+#include "cnc_core/removal/RemovalRun.h"
+
+namespace mtc::core::removal {
+
+namespace {
+
+double distance(const std::array<double, 3>& a, const std::array<double, 3>& b) {
+    return std::sqrt((b[0] - a[0]) * (b[0] - a[0]) + (b[1] - a[1]) * (b[1] - a[1]) +
+                     (b[2] - a[2]) * (b[2] - a[2]));
+}
+
+std::array<double, 3> between(const std::array<double, 3>& a, const std::array<double, 3>& b,
+                              double t) {
+    return {a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]), a[2] + t * (b[2] - a[2])};
+}
+
+}  // namespace
+
+LiveCut::LiveCut(const ProcessAxes& axes) : axes_(axes) {}
+
+void LiveCut::begin(const ProcessConfig& config, const ProgramStore& programs, int program,
+                    std::shared_ptr<const ZeroOffsetTable> zeroOffsets) {
+    const ProgramStock stock = programStock(config, programs, program, std::move(zeroOffsets));
+    const bool turning = config.defaultPlane() == 18;  // as PartModel decides
+    DiagnosticList problems;
+    std::optional<PartModel> blank =
+        blankPart(config, stock, fittingSettings(stock.stock, turning, kViewCells), problems);
+    begin(program, std::move(blank), std::move(problems));
+}
+
+void LiveCut::begin(int program, std::optional<PartModel> blank, DiagnosticList problems) {
+    pending_.clear();
+    sweep_.reset();  // it refers to the part
+    part_ = std::move(blank);
+    if (part_) sweep_.emplace(axes_, *part_);
+    problems_ = std::move(problems);
+    program_ = program;
+    moves_ = 0;
+    stopped_ = !part_;
+    ++run_;
+    ++revision_;
+}
+
+void LiveCut::sent(const Motion& motion, bool queued) {
+    if (stopped_) return;
+    PendingMove move;
+    if (++moves_ == 1) {
+        sweep_->pass(motion);  // the approach from where the axes stood
+    } else if (sweep_->sweep(motion, toolSource_ ? toolSource_() : ToolData{}) ==
+               ToolSweep::Kind::Swept) {
+        move.chords = sweep_->chords();
+        move.cutter = sweep_->cutter();
+    }
+    if (!queued) return;  // no length: nothing to cut
+    double length = 0.0;
+    for (const ToolChord& chord : move.chords)
+        move.ends.push_back(length += distance(chord.a, chord.b));
+    if (!move.chords.empty()) move.at = move.chords.front().a;
+    pending_.push_back(std::move(move));
+}
+
+void LiveCut::follow(const motion::TrajectoryEngine& engine) {
+    if (stopped_) return;
+    // The machine works its queue off in order: the moves it no longer
+    // holds are finished (RunTrace::follow reads the queue the same way).
+    const std::size_t inQueue = engine.queuedMoves();
+    while (pending_.size() > inQueue) {
+        cutTo(pending_.front(), 1.0);
+        pending_.pop_front();
+    }
+    if (!pending_.empty() && engine.currentMove() != nullptr)
+        cutTo(pending_.front(), engine.travelledShare());
+}
+
+void LiveCut::stop() {
+    pending_.clear();
+    stopped_ = true;
+}
+
+void LiveCut::cutTo(PendingMove& move, double share) {
+    if (move.chords.empty() || !(share > 0.0)) return;
+    const double target = std::min(share, 1.0) * move.ends.back();
+    bool removed = false;
+    // Chords end to end: the disc swept along a-p and then p-b is the one
+    // swept along a-b, so cutting in pieces leaves the part a whole cut does.
+    while (move.chord < move.chords.size()) {
+        const ToolChord& chord = move.chords[move.chord];
+        const double end = move.ends[move.chord];
+        if (target < end) {
+            const double chordLength = end - (move.chord ? move.ends[move.chord - 1] : 0.0);
+            const double t = 1.0 - (end - target) / chordLength;
+            const std::array<double, 3> to = between(chord.a, chord.b, t);
+            if (to != move.at) removed = part_->cut(move.at, to, move.cutter) || removed;
+            move.at = to;
+            break;
+        }
+        removed = part_->cut(move.at, chord.b, move.cutter) || removed;
+        if (++move.chord < move.chords.size()) move.at = move.chords[move.chord].a;
+    }
+    if (removed) ++revision_;
+}
+
+}  // namespace mtc::core::removal

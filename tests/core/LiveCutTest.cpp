@@ -1,0 +1,194 @@
+// The part cut while the program runs (issue 19 §3, TP-027): the station
+// cuts its run's blank only as far as the axes have travelled, holds with
+// the feed, stops at Control reset, starts a new blank at the next Start,
+// and a run to its end leaves the part mtc200-cli simulate makes.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "InterpTestSupport.h"
+#include "cnc_core/cell/Cell.h"
+#include "cnc_core/removal/RemovalRun.h"
+
+namespace mtc::test {
+namespace {
+
+using core::ControlKey;
+using core::removal::HeightField;
+
+constexpr double kPi = 3.14159265358979323846;
+// The demo mill: G54 puts the program's zero at machine X-150 Y-80 Z-120,
+// the top of the configuration's block.
+constexpr double kZeroX = -150.0, kZeroY = -80.0, kTop = -120.0;
+
+// A slot 2 deep along Y30 from X10 to X90 with T1 (radius 3.5): 8 s at F600.
+constexpr const char* kSlot =
+    "N0001 T1 G17 G90 G54 G0 X10 Y30 Z2\n"
+    "N0002 S1500 M3\n"
+    "N0003 G1 Z-2 F300\n"
+    "N0004 X90 F600\n"
+    "N0005 G0 Z2\n"
+    "N0006 M30\n";
+
+// A ring of four arcs and a pocket corner under G41: arcs, compensation
+// and several moves queued at once.
+constexpr const char* kRing =
+    "N0001 T2 G17 G90 G54 G0 X50 Y10 Z2\n"
+    "N0002 S1800 M3\n"
+    "N0003 G1 Z-3 F400\n"
+    "N0004 G3 X70 Y30 I50 J30 F900\n"
+    "N0005 G3 X50 Y50 I50 J30\n"
+    "N0006 G3 X30 Y30 I50 J30\n"
+    "N0007 G3 X50 Y10 I50 J30\n"
+    "N0008 G0 Z2\n"
+    "N0009 X80 Y40\n"
+    "N0010 G1 Z-1.5 F300\n"
+    "N0011 G41 X85 Y45 F700\n"
+    "N0012 X95\n"
+    "N0013 Y55\n"
+    "N0014 G40 X80 Y40\n"
+    "N0015 G0 Z2\n"
+    "N0016 M30\n";
+
+struct LiveFixture {
+    LiveFixture() : cell(demoCell()) { mill().setLiveCutting(true); }
+    core::Station& select(const std::string& source) {
+        core::ProgramPtr program = cell.addProgram(0, 1, "live.nc", source);
+        EXPECT_FALSE(program->diagnostics.hasErrors()) << diagnosticsText(program->diagnostics);
+        EXPECT_TRUE(mill().selectProgram(1));
+        return mill();
+    }
+    core::Station& mill() { return cell.station(0); }
+    const core::removal::PartModel* part() { return mill().liveCut().part(); }
+    /// Height of the part at program point (x, y): the cell whose centre is nearest.
+    double heightAt(double x, double y) {
+        const HeightField& f = *part()->heightField();
+        const auto cell = [](double at, double min, double step) {
+            return static_cast<int>(std::floor((at - min) / step));
+        };
+        return f.height(cell(x + kZeroX, f.stock().min[0], f.cellWidth()),
+                        cell(y + kZeroY, f.stock().min[1], f.cellDepth()));
+    }
+    /// Advances in `tick` steps until the station is done (bounded).
+    void runToEnd(double tick) {
+        for (int i = 0; i < 100000 && mill().busy(); ++i)
+            mill().advance(tick);
+        EXPECT_FALSE(mill().busy());
+        EXPECT_EQ(mill().runStatus(), core::RunStatus::Ended);
+    }
+    /// Advances in small steps until the tool is on the slot's X move at
+    /// program X `x` or beyond (bounded); returns where it is.
+    double runAlongTheSlotTo(double x) {
+        double at = 0.0;
+        for (int i = 0; i < 4000; ++i) {
+            mill().advance(0.05);
+            const core::QueuedBlockState* block = mill().executingBlockState();
+            at = mill().machine().position(0) - kZeroX;
+            if (block && block->index == 3 && at >= x) break;  // N0004
+        }
+        return at;
+    }
+    core::Cell cell;
+};
+
+TEST(LiveCut, CutsOnlyWhereTheToolHasTravelled) {
+    LiveFixture f;
+    core::Station& mill = f.select(kSlot);
+    ASSERT_TRUE(mill.press(ControlKey::Start));
+    ASSERT_NE(f.part(), nullptr) << diagnosticsText(mill.liveCut().problems());
+    EXPECT_EQ(f.part()->removedVolume(), 0.0) << "the blank at Start";
+    EXPECT_NEAR(f.part()->resolution(), 0.2, 1e-12);
+    const double x = f.runAlongTheSlotTo(50.0);  // half the slot
+    ASSERT_GE(x, 50.0);
+    ASSERT_LT(x, 52.0);
+    EXPECT_NEAR(f.heightAt(30.0, 30.0), kTop - 2.0, 1e-6) << "behind the tool: cut";
+    EXPECT_NEAR(f.heightAt(x - 0.5, 30.0), kTop - 2.0, 1e-6) << "under the tool: cut";
+    EXPECT_NEAR(f.heightAt(x + 3.5 + 0.5, 30.0), kTop, 1e-6) << "ahead of the tool: not yet";
+    EXPECT_NEAR(f.heightAt(70.0, 30.0), kTop, 1e-6) << "ahead of the tool: not yet";
+    // The share of the slot cut so far: the plunge disc and the travelled length.
+    const double travelled = (kPi * 3.5 * 3.5 + (x - 10.0) * 7.0) * 2.0;
+    EXPECT_NEAR(f.part()->removedVolume(), travelled, 0.05 * travelled);
+
+    f.runToEnd(0.25);
+    // Within the cells on the slot's border (MaterialRemovalTest's bound).
+    const double slot = (kPi * 3.5 * 3.5 + 80.0 * 7.0) * 2.0;
+    const double border = (2.0 * 80.0 + 2.0 * kPi * 3.5) * std::sqrt(2.0) * 0.2 * 2.0;
+    EXPECT_NEAR(f.part()->removedVolume(), slot, border);
+    EXPECT_NEAR(f.heightAt(70.0, 30.0), kTop - 2.0, 1e-6);
+    EXPECT_EQ(mill.liveCut().pendingMoves(), 0u);
+}
+
+TEST(LiveCut, FeedHoldHoldsTheCutAndResetStopsIt) {
+    LiveFixture f;
+    core::Station& mill = f.select(kSlot);
+    ASSERT_TRUE(mill.press(ControlKey::Start));
+    ASSERT_GE(f.runAlongTheSlotTo(30.0), 30.0);
+    ASSERT_TRUE(mill.press(ControlKey::Stop));
+    for (int i = 0; i < 40; ++i)  // decelerates, then stands
+        mill.advance(0.05);
+    const double held = f.part()->removedVolume();
+    const std::uint64_t revision = mill.liveCut().revision();
+    for (int i = 0; i < 40; ++i)
+        mill.advance(0.05);
+    EXPECT_EQ(f.part()->removedVolume(), held) << "standing axes cut nothing";
+    EXPECT_EQ(mill.liveCut().revision(), revision);
+    ASSERT_TRUE(mill.press(ControlKey::Start));  // resumes mid-block
+    for (int i = 0; i < 20; ++i)
+        mill.advance(0.05);
+    const double resumed = f.part()->removedVolume();
+    EXPECT_GT(resumed, held);
+
+    ASSERT_TRUE(mill.press(ControlKey::ControlReset));
+    const double stopped = f.part()->removedVolume();
+    const double stoppedX = mill.machine().position(0) - kZeroX;
+    mill.advance(5.0);
+    EXPECT_EQ(f.part()->removedVolume(), stopped) << "after reset nothing more is cut";
+    EXPECT_NEAR(f.heightAt(stoppedX + 3.5 + 0.5, 30.0), kTop, 1e-6);
+
+    // A new Start: a new blank.
+    const std::uint64_t run = mill.liveCut().run();
+    ASSERT_TRUE(mill.selectProgram(1));
+    ASSERT_TRUE(mill.press(ControlKey::Start));
+    EXPECT_EQ(mill.liveCut().run(), run + 1);
+    EXPECT_EQ(f.part()->removedVolume(), 0.0);
+}
+
+TEST(LiveCut, ARunToItsEndLeavesThePartTheSimulationMakes) {
+    for (const char* source : {kSlot, kRing}) {
+        SCOPED_TRACE(source == kSlot ? "slot" : "ring");
+        LiveFixture f;
+        core::Station& mill = f.select(source);
+        ASSERT_TRUE(mill.press(ControlKey::Start));
+        f.runToEnd(0.1);
+        ASSERT_NE(f.part(), nullptr);
+        const core::removal::RemovalRunResult simulated =
+            core::removal::simulateRemoval(f.cell.config().processes[0], f.cell.store(), 1,
+                                           core::removal::RemovalSettings{f.part()->resolution()});
+        ASSERT_TRUE(simulated.part);
+        const HeightField& live = *f.part()->heightField();
+        const HeightField& whole = *simulated.part->heightField();
+        ASSERT_EQ(live.columns(), whole.columns());
+        ASSERT_EQ(live.rows(), whole.rows());
+        int different = 0;
+        for (int j = 0; j < live.rows(); ++j)
+            for (int i = 0; i < live.columns(); ++i)
+                if (std::abs(live.height(i, j) - whole.height(i, j)) > 1e-4) ++different;
+        EXPECT_EQ(different, 0) << "cells that differ from the simulated part";
+        EXPECT_GT(f.part()->removedVolume(), 100.0);
+        EXPECT_NEAR(f.part()->removedVolume(), simulated.part->removedVolume(), 1e-3);
+    }
+}
+
+TEST(LiveCut, OffByDefaultAndNotForMdi) {
+    LiveFixture f;
+    f.mill().setLiveCutting(false);
+    core::Station& mill = f.select(kSlot);
+    ASSERT_TRUE(mill.press(ControlKey::Start));
+    f.runToEnd(0.5);
+    EXPECT_EQ(mill.liveCut().run(), 0u) << "the CLI's runs make no part";
+    EXPECT_EQ(f.part(), nullptr);
+}
+
+}  // namespace
+}  // namespace mtc::test
