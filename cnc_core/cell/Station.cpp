@@ -215,12 +215,6 @@ void Station::logRunDiagnostics(const DiagnosticList& diagnostics) {
     }
 }
 
-void Station::logRestartDiagnostics() {
-    const auto& items = restart_.diagnostics().items();
-    for (; restartLogged_ < items.size(); ++restartLogged_)
-        log_.add(DiagnosticSource::Restart, items[restartLogged_]);
-}
-
 void Station::beginRun(Run run) {
     run_ = run;
     feeding_ = true;
@@ -280,14 +274,6 @@ void Station::reset() {
     if (mdi) endMdi(false);
 }
 
-void Station::continueAfterRestart() {
-    if (!runOnAfterRestart_) return;
-    run_ = Run::Program;
-    feeding_ = true;
-    pending_ = Pending::None;
-    ++revision_;
-}
-
 double Station::advance(double seconds, std::uint64_t maxBlocks) {
     std::uint64_t blocks = 0;
     double left = seconds > 0.0 ? seconds : 0.0;
@@ -321,34 +307,6 @@ double Station::advance(double seconds, std::uint64_t maxBlocks) {
     return seconds > 0.0 ? seconds - left : 0.0;
 }
 
-bool Station::acceptRestart(const RestartSelection& selection, DiagnosticList& diagnostics,
-                            std::uint64_t budget) {
-    const InterpreterState snapshot = interpreter_.state();
-    if (!restart_.accept(selection, diagnostics, budget)) return false;
-    restartLogged_ = 0;  // accept() began a new list
-    logRestartDiagnostics();
-    restartBefore_ = snapshot;
-    restartStarted_ = true;
-    beginTrace(control_.selectedProgram());
-    // The blank a restart's run would cut is the part at the target block:
-    // not simulated live (the view shows the program's finished part).
-    output_.cut = nullptr;
-    if (liveCutting_) liveCut_.clear();
-    restartComputingMs_ = 0.0;
-    computingSince_ = std::chrono::steady_clock::now();
-    followRestartPhase();
-    ++revision_;
-    return true;
-}
-
-void Station::abortRestart() {
-    if (!restart_.active()) return;
-    restart_.requestAbort();
-    std::uint64_t blocks = 0;
-    advanceRestart(blocks, 0);
-    machine_.stop();
-}
-
 bool Station::jogBy(int axis, double distance, bool rapid) {
     if (restart_.active()) return jogRestart(axis, distance);
     return jogDone(jog_.moveBy(axis, distance, rapid));
@@ -377,65 +335,6 @@ bool Station::jogDone(const std::string& refusal) {
     if (refusal.empty()) return true;
     control_.setAlarm(refusal);
     return false;
-}
-
-bool Station::jogRestart(int axis, double distance) {
-    if (axis < 0 || axis >= kMaxAxes) return false;
-    // From where the last jog goes (the axis may still be on its way there).
-    const double from = machine_.idle() ? machine_.position(axis)
-                                        : machine_.lastMoveEnd()[static_cast<std::size_t>(axis)];
-    const bool ok = restart_.jog(axis, from + distance);
-    if (ok) ++revision_;
-    return ok;
-}
-
-bool Station::computing() const {
-    const RestartPhase phase = restart_.phase();
-    return (phase == RestartPhase::Active || phase == RestartPhase::Computing) &&
-           !restart_.held() && restart_.waitingFor().empty();
-}
-
-void Station::advanceRestart(std::uint64_t& blocks, std::uint64_t maxBlocks) {
-    if (!restart_.active()) return followRestartPhase();
-    const RestartPhase phase = restart_.phase();
-    if (phase == RestartPhase::Active || phase == RestartPhase::Computing) {
-        const std::uint64_t before = restart_.computing().blocksSoFar();
-        restart_.advance(maxBlocks > blocks ? maxBlocks - blocks : 0);
-        blocks += restart_.computing().blocksSoFar() - before;
-    } else if (phase == RestartPhase::Adjusting || phase == RestartPhase::Repositioning) {
-        // ADJUST and REPOS move the axes block by block, each when the
-        // machine has finished the one before (no look-ahead): the sequence
-        // sees its phase end (manual mode, state re-established) only when
-        // the axes are really there.
-        while (machine_.idle() && blocks < maxBlocks && !restart_.held() &&
-               (restart_.phase() == RestartPhase::Adjusting ||
-                restart_.phase() == RestartPhase::Repositioning)) {
-            const std::uint64_t before = restart_.sequenceBlocks();
-            restart_.advance(1);
-            blocks += std::max<std::uint64_t>(1, restart_.sequenceBlocks() - before);
-        }
-    } else {
-        restart_.advance(0);  // an SPS scan while the sequence waits for the operator
-    }
-    followRestartPhase();
-}
-
-void Station::followRestartPhase() {
-    logRestartDiagnostics();
-    const RestartPhase phase = restart_.phase();
-    if (phase == restartPhase_) return;
-    const auto computingPhase = [](RestartPhase p) {
-        return p == RestartPhase::Active || p == RestartPhase::Computing;
-    };
-    if (computingPhase(restartPhase_) && !computingPhase(phase))
-        restartComputingMs_ = std::chrono::duration<double, std::milli>(
-                                  std::chrono::steady_clock::now() - computingSince_)
-                                  .count();
-    restartPhase_ = phase;
-    ++revision_;
-    // State re-established: machining continues at the target block in
-    // simulated time, as after Start (seed 000, 2.9 step 9).
-    if (phase == RestartPhase::Reestablished) continueAfterRestart();
 }
 
 void Station::feed(std::uint64_t& blocks, std::uint64_t maxBlocks) {

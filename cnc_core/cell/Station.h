@@ -18,6 +18,7 @@
 #include "cnc_core/mdi/MdiRun.h"
 #include "cnc_core/mdi/MdiSession.h"
 #include "cnc_core/removal/LiveCut.h"
+#include "cnc_core/removal/ReentryCollisions.h"
 #include "cnc_core/restart/RestartSequence.h"
 #include "cnc_core/restart/SimulatedSps.h"
 #include "cnc_core/toolpath/RunTrace.h"
@@ -240,6 +241,15 @@ class Station : private ProgramRunner {
     /// False: a re-established state does not run on (the CLI reports the
     /// state at the re-entry); true (default): machining continues.
     void setRunOnAfterRestart(bool runOn) { runOnAfterRestart_ = runOn; }
+    /// Checks the restart's way back against the part at its target
+    /// (D-021, removal::checkRestartReentry; nullopt unless the restart
+    /// stands between the target reached and the re-entry). With live
+    /// cutting on and the restart still at its target, the part at the
+    /// target becomes the live part that ADJUST, REPOS and the run after
+    /// them cut on (TP-027).
+    const std::optional<removal::ReentryCheck>& checkReentry();
+    /// The last checkReentry() of this restart (nullopt: none yet).
+    const std::optional<removal::ReentryCheck>& reentryCheck() const { return reentryCheck_; }
     /// The computing process runs and is not waiting (held, GAX / FAX): it
     /// only needs processor time, the panel may give it back-to-back slices.
     bool computing() const;
@@ -348,7 +358,8 @@ class Station : private ProgramRunner {
     RunTrace trace_;
     bool tracing_ = false;  ///< setRunTracing()
     removal::LiveCut liveCut_;
-    bool liveCutting_ = false;  ///< setLiveCutting()
+    std::optional<removal::ReentryCheck> reentryCheck_;  ///< the last checkReentry()
+    bool liveCutting_ = false;                           ///< setLiveCutting()
     ManualJog jog_;
     DiagnosticLog log_;
     std::size_t restartLogged_ = 0;  ///< restart diagnostics already in log_

@@ -43,8 +43,15 @@ void LiveCut::begin(int program, std::optional<PartModel> blank, DiagnosticList 
     program_ = program;
     moves_ = 0;
     stopped_ = !part_;
+    fromRestart_ = false;
     ++run_;
     ++revision_;
+}
+
+void LiveCut::beginAt(int program, PartModel part) {
+    begin(program, std::move(part), {});
+    fromRestart_ = true;
+    moves_ = 1;  // no approach: the first move is cut
 }
 
 void LiveCut::sent(const Motion& motion, bool queued) {

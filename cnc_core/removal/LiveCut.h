@@ -37,6 +37,12 @@ class LiveCut {
                std::shared_ptr<const ZeroOffsetTable> zeroOffsets);
     /// The same on `blank` (nullopt: this run cuts nothing, `problems` say why).
     void begin(int program, std::optional<PartModel> blank, DiagnosticList problems);
+    /// A restart's run of program `program` on `part`, the part at its
+    /// target block: every move is cut, the first too (ADJUST starts where
+    /// the axes are, a real place on the part).
+    void beginAt(int program, PartModel part);
+    /// The run began at a restart's target (beginAt).
+    bool fromRestart() const { return fromRestart_; }
     /// No part: nothing is cut until the next begin() (a run whose blank is
     /// not known, e.g. a restart's).
     void clear() { begin(0, std::nullopt, {}); }
@@ -86,6 +92,7 @@ class LiveCut {
     std::deque<PendingMove> pending_;
     std::uint64_t moves_ = 0;  ///< moves sent this run
     bool stopped_ = true;
+    bool fromRestart_ = false;
     DiagnosticList problems_;
     int program_ = 0;
     std::uint64_t revision_ = 0;

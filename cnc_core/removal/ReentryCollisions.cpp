@@ -226,6 +226,7 @@ ReentryCheck checkReentry(const ReentryCheckInput& in) {
     }
     check.moves = moves.size();
     check.checked = true;
+    check.partAtTarget = std::make_shared<const PartModel>(std::move(*run.part));
     return check;
 }
 

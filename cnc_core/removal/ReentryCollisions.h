@@ -40,6 +40,8 @@ struct ReentryCheck {
     double tolerance = 0.0;      ///< mm, half the resolution
     std::uint64_t blocks = 0;    ///< blocks interpreted up to the target
     std::size_t moves = 0;       ///< ADJUST / REPOS moves checked
+    /// The part the moves were checked against (set when checked).
+    std::shared_ptr<const PartModel> partAtTarget;
 };
 
 /// What the check reads.

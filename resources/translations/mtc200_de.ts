@@ -3514,6 +3514,10 @@ Nullpunkt bei Maschine %2</translation>
         <source>Part as the run left it: %1 mm³ removed at %2 mm</source>
         <translation>Werkstück nach dem Lauf: %1 mm³ abgetragen bei %2 mm</translation>
     </message>
+    <message>
+        <source>Part from the restart&apos;s target block on: %1 mm³ removed at %2 mm</source>
+        <translation>Werkstück ab dem Zielsatz des Wiederanlaufs: %1 mm³ abgetragen bei %2 mm</translation>
+    </message>
 </context>
 <context>
     <name>mtc::screens::ToolpathScreen</name>

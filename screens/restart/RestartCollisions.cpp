@@ -13,8 +13,7 @@ void RestartCollisions::check() {
     mtc::core::Station& station = session_->station(slot_);
     // The resolution `mtc200-cli restart --check-collisions` uses by default:
     // the panel and the CLI list the same collisions.
-    result_ = mtc::core::removal::checkRestartReentry(station.restart(), station.interpreter(),
-                                                      session_->store());
+    result_ = station.checkReentry();
 }
 
 QString RestartCollisions::summary() const {

@@ -169,9 +169,14 @@ void ToolpathModel::followLiveCut() {
     livePart_.heightField = part.heightField() != nullptr;
     const QString removed = QString::number(part.removedVolume(), 'f', 0);
     const QString resolution = QString::number(part.resolution());
-    livePart_.note =
-        moving ? tr("Part being cut: %1 mm³ removed at %2 mm").arg(removed, resolution)
-               : tr("Part as the run left it: %1 mm³ removed at %2 mm").arg(removed, resolution);
+    if (cut.fromRestart())  // the part at the target, cut on by ADJUST, REPOS and the run
+        livePart_.note = tr("Part from the restart's target block on: %1 mm³ removed at %2 mm")
+                             .arg(removed, resolution);
+    else if (moving)
+        livePart_.note = tr("Part being cut: %1 mm³ removed at %2 mm").arg(removed, resolution);
+    else
+        livePart_.note =
+            tr("Part as the run left it: %1 mm³ removed at %2 mm").arg(removed, resolution);
     emit partChanged();
 }
 

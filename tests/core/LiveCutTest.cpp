@@ -8,8 +8,10 @@
 #include <string>
 
 #include "InterpTestSupport.h"
+#include "RestartStation.h"
 #include "cnc_core/cell/Cell.h"
 #include "cnc_core/removal/RemovalRun.h"
+#include "tests/support/SlotRestartProgram.h"
 
 namespace mtc::test {
 namespace {
@@ -180,7 +182,70 @@ TEST(LiveCut, ARunToItsEndLeavesThePartTheSimulationMakes) {
     }
 }
 
-TEST(LiveCut, OffByDefaultAndNotForMdi) {
+// Program 99 for the restart below: up to a safe height, over the part,
+// down into the slot; or straight across the part at slot depth.
+constexpr const char* kOverThePart =
+    "N0000 M30\n"
+    "N0001 .ADJUST G0 G54 Z20\n"
+    "N0002 .REPOS G77 X0 Y0 F3000\n"
+    "N0003 G77 Z0 F600 RTS\n";
+constexpr const char* kThroughThePart =
+    "N0000 M30\n"
+    "N0001 .ADJUST @150=0\n"
+    "N0002 .REPOS G77 X0 Y0 F3000\n"
+    "N0003 G77 Z0 F600 RTS\n";
+
+/// Restarts the slot program at N0050 with the axes beside the part at slot
+/// depth, runs it to its end; the removed volume at the target (from the
+/// check) and at the end.
+std::array<double, 2> restartTheSlot(const char* library) {
+    RestartStation mill(0);
+    core::Station& station = mill.cell.station;
+    station.setLiveCutting(true);
+    mill.cell.add(library, 99);
+    mill.cell.add(kSlotRestartProgram, 1);
+    mill.cell.live.takeMachinePositions({50.0 + kZeroX, 70.0 + kZeroY, -4.0 + kTop});
+    DiagnosticList refused;
+    EXPECT_TRUE(station.acceptRestart(mill.cell.selection(1, 1, 50), refused))
+        << diagnosticsText(refused);
+    EXPECT_EQ(station.liveCut().part(), nullptr) << "no part before the target is known";
+    for (int i = 0; i < 200 && station.restart().phase() != RestartPhase::TargetReached; ++i)
+        station.advance(0.05);
+    EXPECT_EQ(station.restart().phase(), RestartPhase::TargetReached);
+    const auto& check = station.checkReentry();
+    EXPECT_TRUE(check && check->checked);
+    if (!check || !station.liveCut().part()) return {-1.0, -1.0};
+    const double atTarget = station.liveCut().part()->removedVolume();
+    EXPECT_EQ(atTarget, check->removedVolume) << "the live part is the part at the target";
+    EXPECT_TRUE(station.liveCut().fromRestart());
+    EXPECT_TRUE(station.press(ControlKey::Start));  // ADJUST, REPOS, the rest of the slot
+    for (int i = 0; i < 20000 && (station.busy() || station.restart().active()); ++i)
+        station.advance(0.1);
+    EXPECT_FALSE(station.busy());
+    return {atTarget, station.liveCut().part()->removedVolume()};
+}
+
+TEST(LiveCut, ARestartCutsOnFromThePartAtItsTarget) {
+    const core::ProcessConfig& mill = demoCell().processes[0];
+    core::ProgramStore store;
+    store.put(0, 1, parse(kSlotRestartProgram, 1));
+    const core::removal::RemovalRunResult finished =
+        core::removal::simulateRemoval(mill, store, 1, core::removal::RemovalSettings{});
+    ASSERT_TRUE(finished.part);
+
+    const std::array<double, 2> over = restartTheSlot(kOverThePart);
+    EXPECT_GT(over[0], 0.0) << "the slot was cut before the target";
+    EXPECT_GT(over[1], over[0]) << "the target block cuts on";
+    EXPECT_NEAR(over[1], finished.part->removedVolume(), 1e-6)
+        << "a way back over the part leaves the finished part";
+
+    const std::array<double, 2> through = restartTheSlot(kThroughThePart);
+    EXPECT_EQ(through[0], over[0]);
+    EXPECT_GT(through[1], finished.part->removedVolume() + 100.0)
+        << "the way back across the part cut a groove into it";
+}
+
+TEST(LiveCut, OffByDefault) {
     LiveFixture f;
     f.mill().setLiveCutting(false);
     core::Station& mill = f.select(kSlot);
