@@ -57,19 +57,44 @@ void LiveCut::beginAt(int program, PartModel part) {
 void LiveCut::sent(const Motion& motion, bool queued) {
     if (stopped_) return;
     PendingMove move;
-    if (++moves_ == 1) {
+    if (++moves_ == 1)
         sweep_->pass(motion);  // the approach from where the axes stood
-    } else if (sweep_->sweep(motion, toolSource_ ? toolSource_() : ToolData{}) ==
-               ToolSweep::Kind::Swept) {
-        move.chords = sweep_->chords();
-        move.cutter = sweep_->cutter();
-    }
+    else
+        takeSweep(motion, move);
     if (!queued) return;  // no length: nothing to cut
     double length = 0.0;
     for (const ToolChord& chord : move.chords)
         move.ends.push_back(length += distance(chord.a, chord.b));
     if (!move.chords.empty()) move.at = move.chords.front().a;
     pending_.push_back(std::move(move));
+}
+
+void LiveCut::takeSweep(const Motion& motion, PendingMove& move) {
+    switch (sweep_->sweep(motion, toolSource_ ? toolSource_() : ToolData{})) {
+        case ToolSweep::Kind::Swept:
+            move.chords = sweep_->chords();
+            break;
+        case ToolSweep::Kind::Developed: {
+            std::string coarser;
+            if (!part_->makeJacket(coarser)) return;
+            if (!coarser.empty())  // the jacket is made at the run's first G32 move
+                problems_.warning("REMOVAL_DEVELOPED_COARSER", motion.where, coarser);
+            move.onJacket = true;
+            for (const auto& [a, b] : sweep_->jacketChords())
+                move.chords.push_back({{a.angle, a.axial, a.face}, {b.angle, b.axial, b.face}});
+            break;
+        }
+        case ToolSweep::Kind::Transformed:
+        case ToolSweep::Kind::InsideTool:
+            return;  // not simulated (RemovalSink counts them)
+    }
+    move.cutter = sweep_->cutter();
+}
+
+bool LiveCut::cutPiece(const PendingMove& move, const std::array<double, 3>& from,
+                       const std::array<double, 3>& to) {
+    if (!move.onJacket) return part_->cut(from, to, move.cutter);
+    return part_->cutJacket({from[0], from[1], from[2]}, {to[0], to[1], to[2]}, move.cutter.radius);
 }
 
 void LiveCut::follow(const motion::TrajectoryEngine& engine) {
@@ -95,7 +120,9 @@ void LiveCut::cutTo(PendingMove& move, double share) {
     const double target = std::min(share, 1.0) * move.ends.back();
     bool removed = false;
     // Chords end to end: the disc swept along a-p and then p-b is the one
-    // swept along a-b, so cutting in pieces leaves the part a whole cut does.
+    // swept along a-b, so cutting in pieces leaves the part a whole cut does
+    // (on the jacket the piece's length mixes degrees and millimetres: it
+    // only spreads the share over the chords of one move).
     while (move.chord < move.chords.size()) {
         const ToolChord& chord = move.chords[move.chord];
         const double end = move.ends[move.chord];
@@ -103,11 +130,11 @@ void LiveCut::cutTo(PendingMove& move, double share) {
             const double chordLength = end - (move.chord ? move.ends[move.chord - 1] : 0.0);
             const double t = 1.0 - (end - target) / chordLength;
             const std::array<double, 3> to = between(chord.a, chord.b, t);
-            if (to != move.at) removed = part_->cut(move.at, to, move.cutter) || removed;
+            if (to != move.at) removed = cutPiece(move, move.at, to) || removed;
             move.at = to;
             break;
         }
-        removed = part_->cut(move.at, chord.b, move.cutter) || removed;
+        removed = cutPiece(move, move.at, chord.b) || removed;
         if (++move.chord < move.chords.size()) move.at = move.chords[move.chord].a;
     }
     if (removed) ++revision_;

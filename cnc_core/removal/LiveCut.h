@@ -76,14 +76,22 @@ class LiveCut {
     /// A queued move: its chords (none when it is not cut) and how far along
     /// them the tool has cut.
     struct PendingMove {
+        /// Scene chords, or on the jacket (G32, D-027) (angle, axial, face)
+        /// of each JacketPoint: both are cut in pieces along straight lines.
         std::vector<ToolChord> chords;
+        bool onJacket = false;
         Cutter cutter;
         std::vector<double> ends;           ///< path length at the end of each chord
         std::size_t chord = 0;              ///< the chord the cut has reached
         std::array<double, 3> at{0, 0, 0};  ///< where on it
     };
+    /// The sweep of a move that is cut (ToolSweep::sweep's result).
+    void takeSweep(const Motion& motion, PendingMove& move);
     /// Cuts `move` from where its cut stands to `share` (0 ... 1) of its length.
     void cutTo(PendingMove& move, double share);
+    /// Cuts one straight piece of `move`.
+    bool cutPiece(const PendingMove& move, const std::array<double, 3>& from,
+                  const std::array<double, 3>& to);
 
     ProcessAxes axes_;
     std::optional<PartModel> part_;

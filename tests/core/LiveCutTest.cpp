@@ -245,6 +245,43 @@ TEST(LiveCut, ARestartCutsOnFromThePartAtItsTarget) {
         << "the way back across the part cut a groove into it";
 }
 
+// The lathe: a groove milled along the bar and around it under G32 with
+// the driven end mill T9, after the jacket is reached through a plunge.
+constexpr const char* kJacketGroove =
+    "N0001 T9 G18 G90 G54 G0 X46 Z-20\n"
+    "N0002 G0 C0\n"
+    "N0003 G20 Z0 C0 X0\n"
+    "N0004 G32 RI 40\n"
+    "N0005 G0 G56 Y1 30 Z1 230\n"
+    "N0006 G1 X37.5 F150\n"
+    "N0007 G1 Z1 180 F400\n"
+    "N0008 G1 Y1 90\n"
+    "N0009 G0 X46\n"
+    "N0010 G30\n"
+    "N0011 G18\n"
+    "N0012 M30\n";
+
+TEST(LiveCut, GroovesOnTheLathesJacketAreCutLiveToo) {
+    core::Cell cell(demoCell());
+    core::Station& lathe = cell.station(cell.slotOfProcess(1));
+    lathe.setLiveCutting(true);
+    cell.addProgram(cell.slotOfProcess(1), 1, "jacket.nc", kJacketGroove);
+    ASSERT_TRUE(lathe.selectProgram(1));
+    ASSERT_TRUE(lathe.press(ControlKey::Start));
+    for (int i = 0; i < 100000 && lathe.busy(); ++i)
+        lathe.advance(0.1);
+    ASSERT_EQ(lathe.runStatus(), core::RunStatus::Ended) << diagnosticsText(lathe.runDiagnostics());
+    const core::removal::PartModel* live = lathe.liveCut().part();
+    ASSERT_NE(live, nullptr);
+    ASSERT_NE(live->jacket(), nullptr) << "the G32 moves reached the jacket";
+    const core::removal::RemovalRunResult simulated =
+        core::removal::simulateRemoval(*cell.config().process(1), cell.store(), 1,
+                                       core::removal::RemovalSettings{live->resolution(), core::removal::kViewCells});
+    ASSERT_TRUE(simulated.part && simulated.part->jacket());
+    EXPECT_GT(live->removedVolume(), 1000.0);
+    EXPECT_NEAR(live->removedVolume(), simulated.part->removedVolume(), 1e-6);
+}
+
 TEST(LiveCut, OffByDefault) {
     LiveFixture f;
     f.mill().setLiveCutting(false);
