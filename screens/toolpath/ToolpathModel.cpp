@@ -164,6 +164,11 @@ void ToolpathModel::followLiveCut() {
     liveMeshed_.start();
     liveMoving_ = moving;
     showingLive_ = true;
+    meshLivePart(cut, moving);
+    emit partChanged();
+}
+
+void ToolpathModel::meshLivePart(const mtc::core::removal::LiveCut& cut, bool moving) {
     const mtc::core::removal::PartModel& part = *cut.part();
     livePart_.triangles = mtc::core::removal::partTriangles(part);
     livePart_.heightField = part.heightField() != nullptr;
@@ -177,7 +182,6 @@ void ToolpathModel::followLiveCut() {
     else
         livePart_.note =
             tr("Part as the run left it: %1 mm³ removed at %2 mm").arg(removed, resolution);
-    emit partChanged();
 }
 
 void ToolpathModel::togglePart() {

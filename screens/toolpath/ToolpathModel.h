@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "cnc_core/language/Program.h"
+#include "cnc_core/removal/LiveCut.h"
 #include "cnc_core/removal/ProgramStock.h"
 #include "cnc_core/toolpath/RunTrace.h"
 #include "cnc_core/toolpath/Stock.h"
@@ -177,6 +178,8 @@ class ToolpathModel : public QObject {
     /// Takes the station's live part when it belongs to a run of the
     /// program shown and changed (at most every kLiveMeshMs while moving).
     void followLiveCut();
+    /// The triangles and the legend's note of the live part.
+    void meshLivePart(const mtc::core::removal::LiveCut& cut, bool moving);
     void followPartner();
     /// While the station's program is active: highlights the block of the
     /// move the machine executes (TP-017); false when there is none.

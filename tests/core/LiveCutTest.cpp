@@ -274,9 +274,9 @@ TEST(LiveCut, GroovesOnTheLathesJacketAreCutLiveToo) {
     const core::removal::PartModel* live = lathe.liveCut().part();
     ASSERT_NE(live, nullptr);
     ASSERT_NE(live->jacket(), nullptr) << "the G32 moves reached the jacket";
-    const core::removal::RemovalRunResult simulated =
-        core::removal::simulateRemoval(*cell.config().process(1), cell.store(), 1,
-                                       core::removal::RemovalSettings{live->resolution(), core::removal::kViewCells});
+    const core::removal::RemovalRunResult simulated = core::removal::simulateRemoval(
+        *cell.config().process(1), cell.store(), 1,
+        core::removal::RemovalSettings{live->resolution(), core::removal::kViewCells});
     ASSERT_TRUE(simulated.part && simulated.part->jacket());
     EXPECT_GT(live->removedVolume(), 1000.0);
     EXPECT_NEAR(live->removedVolume(), simulated.part->removedVolume(), 1e-6);
