@@ -144,7 +144,7 @@ class ToolpathModel : public QObject {
     /// program it simulates the finished part (which takes a while).
     void togglePart();
     /// Least time between two meshes of the live part while the axes move
-    /// (a mesh of 250,000 cells and its first frame take tens of ms).
+    /// (each new mesh redraws the steady picture: a full frame on llvmpipe).
     static constexpr int kLiveMeshMs = 400;
     static constexpr std::size_t kPartBlocks = 200'000;
     /// The tolerance the next build tessellates with (mm).
