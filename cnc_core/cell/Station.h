@@ -248,8 +248,6 @@ class Station : private ProgramRunner {
     /// target becomes the live part that ADJUST, REPOS and the run after
     /// them cut on (TP-027).
     const std::optional<removal::ReentryCheck>& checkReentry();
-    /// The last checkReentry() of this restart (nullopt: none yet).
-    const std::optional<removal::ReentryCheck>& reentryCheck() const { return reentryCheck_; }
     /// The computing process runs and is not waiting (held, GAX / FAX): it
     /// only needs processor time, the panel may give it back-to-back slices.
     bool computing() const;
