@@ -90,6 +90,7 @@ std::string ManualJog::queue(int axis, double target, bool rapid) {
     move.feed = rapid ? 0.0 : model.maxVelocity * kJogFeedShare;
     move.exactStop = true;
     machine_.motion(move);
+    lastMove_ = move;
     moving_ = true;
     return {};
 }
@@ -151,13 +152,14 @@ void ManualJog::release() {
     machine_.hold();  // brakes on the path, at the axis's acceleration
 }
 
-void ManualJog::settle() {
-    if (!moving_) return;
+bool ManualJog::settle() {
+    if (!moving_) return false;
+    const bool dropped = releasing_;
     if (releasing_) {
-        if (!machine_.discardAtRest()) return;  // still braking
+        if (!machine_.discardAtRest()) return false;  // still braking
         releasing_ = false;
     } else if (!machine_.idle()) {
-        return;
+        return false;
     }
     moving_ = false;
     std::array<double, kMaxAxes> positions{};
@@ -165,6 +167,7 @@ void ManualJog::settle() {
         positions[static_cast<std::size_t>(a)] = machine_.position(a);
     interpreter_.manualJogPerformed();  // Bxx.036 = Yes: the program's state is cancelled
     interpreter_.takeMachinePositions(positions);
+    return dropped;
 }
 
 }  // namespace mtc::core

@@ -4,6 +4,8 @@
 #include <string>
 #include <vector>
 
+#include "cnc_core/interp/MachineSink.h"
+
 namespace mtc::core {
 
 class Interpreter;
@@ -42,10 +44,13 @@ class ManualJog {
     /// The jog key is released: the axis brakes on its path and stops.
     void release();
     /// After the machine's time: ends a braked continuous jog and hands the
-    /// positions to the interpreter once the axes stand.
-    void settle();
+    /// positions to the interpreter once the axes stand. True when the
+    /// machine dropped the braked jog's move (it ends where the axes stopped).
+    bool settle();
     /// A jog move is queued or running.
     bool moving() const { return moving_; }
+    /// The move moveBy() or start() queued last (machine axes, no tool data).
+    const Motion& lastMove() const { return lastMove_; }
     /// Manual spindle (MOT-018): `rotation` +1 clockwise (M3), -1
     /// counter-clockwise (M4), 0 stop (M5) of spindle `spindle` (1..3) at
     /// `rpm` (kept when negative), through the machine and its SPS as the
@@ -75,6 +80,7 @@ class ManualJog {
     };
     SpindleCommand commandOf(int spindle) const;
     std::array<SpindleCommand, 4> told_{};
+    Motion lastMove_;
     bool moving_ = false;
     bool releasing_ = false;  ///< a continuous jog brakes (hold) until at rest
 };

@@ -175,9 +175,15 @@ std::string Station::startMdi() {
     if (!alarm.empty()) return alarm;
     mdiDiagnostics_.clear();
     output_.trace = nullptr;  // the last program's backplot stays as it was
-    output_.cut = nullptr;    // and so does its part
+    cutByHand();              // its part is cut on
     beginRun(Run::Mdi);
     return {};
+}
+
+bool Station::cutByHand() {
+    const bool on = liveCutting_ && liveCut_.resume();
+    output_.cut = on ? &liveCut_ : nullptr;
+    return on;
 }
 
 void Station::setMdiInput(std::string text) {
@@ -299,9 +305,10 @@ double Station::advance(double seconds, std::uint64_t maxBlocks) {
             queued_.follow(machine_.itemsDone(), machine_.atBlockStop(), machine_.idle());
         if (used <= 0.0 && blocks == before) break;  // nothing can go on
     }
-    jog_.settle();
     if (output_.trace) trace_.follow(machine_.engine());
     if (output_.cut) liveCut_.follow(machine_.engine());
+    // A released continuous jog: its move ends where the cut has followed it.
+    if (jog_.settle() && output_.cut) liveCut_.dropPending();
     if (blocks > 0 || machine_.seconds() != busyBefore) ++revision_;
     showCurrentBlock();
     return seconds > 0.0 ? seconds - left : 0.0;
@@ -309,12 +316,12 @@ double Station::advance(double seconds, std::uint64_t maxBlocks) {
 
 bool Station::jogBy(int axis, double distance, bool rapid) {
     if (restart_.active()) return jogRestart(axis, distance);
-    return jogDone(jog_.moveBy(axis, distance, rapid));
+    return jogDone(jog_.moveBy(axis, distance, rapid), true);
 }
 
 bool Station::jogStart(int axis, int direction, bool rapid) {
     if (restart_.active()) return false;  // the restart jogs by increments only
-    return jogDone(jog_.start(axis, direction, rapid));
+    return jogDone(jog_.start(axis, direction, rapid), true);
 }
 
 bool Station::manualSpindle(int spindle, int rotation, double rpm) {
@@ -330,9 +337,12 @@ void Station::jogRelease() {
     ++revision_;
 }
 
-bool Station::jogDone(const std::string& refusal) {
+bool Station::jogDone(const std::string& refusal, bool moved) {
     ++revision_;
-    if (refusal.empty()) return true;
+    if (refusal.empty()) {
+        if (moved && cutByHand()) liveCut_.sentJog(jog_.lastMove());
+        return true;
+    }
     control_.setAlarm(refusal);
     return false;
 }

@@ -295,7 +295,11 @@ class Station : private ProgramRunner {
     void finish(const RunResult& result);
     void showCurrentBlock();
     /// A jog's refusal ("" = none) goes to the alarm line; true when none.
-    bool jogDone(const std::string& refusal);
+    /// `moved`: the refusal is empty and the jog queued jog_.lastMove().
+    bool jogDone(const std::string& refusal, bool moved = false);
+    /// MDI and jog moves cut on the last run's part (TP-028): the output's
+    /// cut is the live cut while it has a part.
+    bool cutByHand();
     /// Puts a run's diagnostics into the log (MDI: with the input line).
     void logRunDiagnostics(const DiagnosticList& diagnostics);
     /// Logs the restart's diagnostics that arose since the last look.

@@ -44,6 +44,7 @@ void LiveCut::begin(int program, std::optional<PartModel> blank, DiagnosticList 
     moves_ = 0;
     stopped_ = !part_;
     fromRestart_ = false;
+    byHand_ = false;
     ++run_;
     ++revision_;
 }
@@ -52,6 +53,24 @@ void LiveCut::beginAt(int program, PartModel part) {
     begin(program, std::move(part), {});
     fromRestart_ = true;
     moves_ = 1;  // no approach: the first move is cut
+}
+
+bool LiveCut::resume() {
+    if (!part_) return false;
+    if (stopped_ || moves_ == 0) {
+        stopped_ = false;
+        moves_ = std::max<std::uint64_t>(moves_, 1);  // no approach: the axes are on the part
+        ++revision_;
+    }
+    byHand_ = true;
+    return true;
+}
+
+void LiveCut::sentJog(const Motion& motion) {
+    if (stopped_) return;
+    Motion move = motion;
+    sweep_->carryOffsets(move);
+    sent(move, true);
 }
 
 void LiveCut::sent(const Motion& motion, bool queued) {

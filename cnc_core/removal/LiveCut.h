@@ -43,6 +43,19 @@ class LiveCut {
     void beginAt(int program, PartModel part);
     /// The run began at a restart's target (beginAt).
     bool fromRestart() const { return fromRestart_; }
+    /// Moves outside a program run (an MDI entry, a manual jog) cut on the
+    /// part the last run left (TP-028): from where the axes stand, so the
+    /// first is cut too. False when there is no part to cut.
+    bool resume();
+    /// Manual or MDI moves have cut on the part since the run (resume()).
+    bool cutOnByHand() const { return byHand_; }
+    /// A manual jog handed to the machine: the machine axes move, the tool
+    /// centre keeps its distance to them from the moves before (length,
+    /// cutting edge), since a jog changes no tool data.
+    void sentJog(const Motion& motion);
+    /// The machine dropped its queued moves at rest (a released continuous
+    /// jog): they end where follow() last cut them.
+    void dropPending() { pending_.clear(); }
     /// No part: nothing is cut until the next begin() (a run whose blank is
     /// not known, e.g. a restart's).
     void clear() { begin(0, std::nullopt, {}); }
@@ -101,6 +114,7 @@ class LiveCut {
     std::uint64_t moves_ = 0;  ///< moves sent this run
     bool stopped_ = true;
     bool fromRestart_ = false;
+    bool byHand_ = false;  ///< resume()d
     DiagnosticList problems_;
     int program_ = 0;
     std::uint64_t revision_ = 0;

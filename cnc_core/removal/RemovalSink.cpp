@@ -30,8 +30,18 @@ void ToolSweep::pass(const Motion& m) {
     path_.motion(m);  // keeps the tool offsets of consecutive moves
     path_.clearGeometry();
     lastOffset_ = offsetOf(m);
+    lastCompensated_ = m.compensated;
     chords_.clear();
     jacketChords_.clear();
+}
+
+void ToolSweep::carryOffsets(Motion& m) const {
+    m.compensated = lastCompensated_;
+    m.toolOffset = lastOffset_;
+    m.programmedEnd = m.end;
+    if (!m.compensated) return;
+    for (int a = 0; a < m.axisCount && a < kMaxAxes; ++a)
+        m.programmedEnd[static_cast<std::size_t>(a)] -= m.toolOffset[static_cast<std::size_t>(a)];
 }
 
 bool ToolSweep::developedChords(const Motion& m, const Position& previousOffset) {
@@ -76,6 +86,7 @@ ToolSweep::Kind ToolSweep::sweep(const Motion& m, const ToolData& tool) {
     path_.motion(m);  // keeps the tool offsets of consecutive moves
     const Position previousOffset = lastOffset_;
     lastOffset_ = offsetOf(m);
+    lastCompensated_ = m.compensated;
     if (m.transformation == 32 && developedChords(m, previousOffset)) {
         path_.clearGeometry();
         cutter_ = Cutter{tool.radius, 0, true};  // a driven end mill, standing radially

@@ -48,6 +48,9 @@ class ToolSweep {
     Kind sweep(const Motion& motion, const ToolData& tool);
     /// Takes a move into the path's memory (offsets) without sweeping it.
     void pass(const Motion& motion);
+    /// Gives `motion` (a manual jog: machine axes only) the tool offsets of
+    /// the move before it: the tool centre keeps its distance to the axes.
+    void carryOffsets(Motion& motion) const;
     const std::vector<ToolChord>& chords() const { return chords_; }
     /// A G32 move's chords on the turned part's jacket (D-027).
     const std::vector<std::array<JacketPoint, 2>>& jacketChords() const { return jacketChords_; }
@@ -68,6 +71,7 @@ class ToolSweep {
     ProcessAxes axes_;
     ToolpathBuilder path_;
     Position lastOffset_{};
+    bool lastCompensated_ = false;
     std::vector<ToolChord> chords_;
     std::vector<std::array<JacketPoint, 2>> jacketChords_;
     Cutter cutter_;

@@ -3518,6 +3518,10 @@ Nullpunkt bei Maschine %2</translation>
         <source>Part from the restart&apos;s target block on: %1 mm³ removed at %2 mm</source>
         <translation>Werkstück ab dem Zielsatz des Wiederanlaufs: %1 mm³ abgetragen bei %2 mm</translation>
     </message>
+    <message>
+        <source>Part of the run, cut on by MDI and jogging: %1 mm³ removed at %2 mm</source>
+        <translation>Werkstück des Laufs, mit MDI und Handverfahren weiter bearbeitet: %1 mm³ abgetragen bei %2 mm</translation>
+    </message>
 </context>
 <context>
     <name>mtc::screens::ToolpathScreen</name>

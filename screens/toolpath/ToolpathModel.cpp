@@ -177,6 +177,9 @@ void ToolpathModel::meshLivePart(const mtc::core::removal::LiveCut& cut, bool mo
     if (cut.fromRestart())  // the part at the target, cut on by ADJUST, REPOS and the run
         livePart_.note = tr("Part from the restart's target block on: %1 mm³ removed at %2 mm")
                              .arg(removed, resolution);
+    else if (cut.cutOnByHand())  // MDI entries or jogs after the run (TP-028)
+        livePart_.note = tr("Part of the run, cut on by MDI and jogging: %1 mm³ removed at %2 mm")
+                             .arg(removed, resolution);
     else if (moving)
         livePart_.note = tr("Part being cut: %1 mm³ removed at %2 mm").arg(removed, resolution);
     else

@@ -282,6 +282,92 @@ TEST(LiveCut, GroovesOnTheLathesJacketAreCutLiveToo) {
     EXPECT_NEAR(live->removedVolume(), simulated.part->removedVolume(), 1e-6);
 }
 
+// After the run, MDI entries and jogs cut on the part it left (TP-028).
+struct ByHandFixture : LiveFixture {
+    ByHandFixture() {
+        core::Station& station = select(kSlot);
+        EXPECT_TRUE(station.press(ControlKey::Start));
+        runToEnd(0.25);
+        EXPECT_TRUE(station.press(ControlKey::Manual));
+    }
+    void settle() {
+        for (int i = 0; i < 100'000 && (mill().jogging() || mill().busy()); ++i)
+            mill().advance(0.02);
+    }
+    /// Jogs Y (machine axis 1) with the held key until program Y `y`, then releases.
+    void holdJogTo(double y) {
+        ASSERT_TRUE(mill().jogStart(1, +1));
+        for (int i = 0; i < 10'000 && mill().machine().position(1) - kZeroY < y; ++i)
+            mill().advance(0.01);
+        mill().jogRelease();
+        settle();
+    }
+};
+
+TEST(LiveCut, JogsAfterTheRunCutOnItsPart) {
+    ByHandFixture f;
+    core::Station& mill = f.mill();
+    const double afterRun = f.part()->removedVolume();
+    EXPECT_FALSE(mill.liveCut().cutOnByHand());
+    ASSERT_TRUE(mill.jogBy(2, -3.0));  // from Z2 into the slot's end: air
+    f.settle();
+    EXPECT_EQ(f.part()->removedVolume(), afterRun) << "inside the slot nothing is left to cut";
+    EXPECT_TRUE(mill.liveCut().cutOnByHand());
+    ASSERT_TRUE(mill.jogBy(1, 10.0));  // along Y at Z-1: out of the slot into the block
+    mill.advance(0.1);
+    const double y = mill.machine().position(1) - kZeroY;
+    ASSERT_GT(y, 31.0);
+    ASSERT_LT(y, 39.0) << "mid-jog";
+    EXPECT_NEAR(f.heightAt(90.0, y + 3.5 + 0.5), kTop, 1e-6) << "ahead of the tool: not yet";
+    f.settle();
+    // The tool centre keeps the run's distance to the axes: Z-1 is 1 deep.
+    EXPECT_NEAR(f.heightAt(90.0, 38.0), kTop - 1.0, 1e-6);
+    EXPECT_NEAR(f.heightAt(90.0, 45.0), kTop, 1e-6) << "beyond the jog's end and radius";
+    const double groove = 10.0 * 7.0 * 1.0;  // 10 long, 7 wide, 1 deep, less the slot's round end
+    EXPECT_GT(f.part()->removedVolume() - afterRun, 0.7 * groove);
+    EXPECT_LT(f.part()->removedVolume() - afterRun, 1.2 * groove);
+}
+
+TEST(LiveCut, AReleasedJogIsCutOnlyToWhereTheAxisStopped) {
+    ByHandFixture f;
+    core::Station& mill = f.mill();
+    ASSERT_TRUE(mill.jogBy(2, -3.0));
+    f.settle();
+    f.holdJogTo(40.0);
+    const double stopped = mill.machine().position(1) - kZeroY;
+    ASSERT_GE(stopped, 40.0);
+    ASSERT_LT(stopped, 45.0);
+    EXPECT_NEAR(f.heightAt(90.0, stopped - 1.0), kTop - 1.0, 1e-6);
+    EXPECT_NEAR(f.heightAt(90.0, stopped + 3.5 + 0.5), kTop, 1e-6)
+        << "the continuous jog's far target is not cut";
+    EXPECT_EQ(mill.liveCut().pendingMoves(), 0u);
+    const double volume = f.part()->removedVolume();
+    mill.advance(1.0);
+    EXPECT_EQ(f.part()->removedVolume(), volume);
+}
+
+TEST(LiveCut, AnMdiEntryAfterTheRunCutsOnItsPart) {
+    ByHandFixture f;
+    core::Station& mill = f.mill();
+    ASSERT_TRUE(mill.jogBy(2, -3.0));
+    f.settle();
+    const double before = f.part()->removedVolume();
+    ASSERT_TRUE(mill.press(ControlKey::Mdi));
+    mill.setMdiInput("G91 G1 Y12 F900");
+    ASSERT_TRUE(mill.press(ControlKey::Start)) << mill.control().alarm();
+    f.settle();
+    EXPECT_NEAR(mill.machine().position(1) - kZeroY, 42.0, 1e-9);
+    EXPECT_NEAR(f.heightAt(90.0, 40.0), kTop - 1.0, 1e-6);
+    EXPECT_GT(f.part()->removedVolume(), before + 50.0);
+    EXPECT_TRUE(mill.liveCut().cutOnByHand());
+    // The next Start of the program takes a new blank.
+    ASSERT_TRUE(mill.press(ControlKey::Automatic));
+    ASSERT_TRUE(mill.selectProgram(1));
+    ASSERT_TRUE(mill.press(ControlKey::Start));
+    EXPECT_EQ(f.part()->removedVolume(), 0.0);
+    EXPECT_FALSE(mill.liveCut().cutOnByHand());
+}
+
 TEST(LiveCut, OffByDefault) {
     LiveFixture f;
     f.mill().setLiveCutting(false);

@@ -6,6 +6,7 @@
 // draws (tests/gl draws it).
 #include <QLabel>
 #include <QRegularExpression>
+#include <cmath>
 
 #include "PanelFixture.h"
 #include "screens/toolpath/ToolpathModel.h"
@@ -93,6 +94,49 @@ class ToolpathLiveTest : public QObject {
         panel.press(Qt::Key_M);
         QVERIFY(model->partShown());
         QVERIFY(model->partIsLive());
+    }
+
+    /// After the run, jogs on the base screen cut on its part (TP-028).
+    void jogsAfterTheRunCutOnItsPart() {
+        PanelFixture panel;
+        panel.session->selectProgram(0, 1);
+        panel.window->showScreen("toolpath");
+        panel.session->setTimerEnabled(false);
+        auto* screen = static_cast<ToolpathScreen*>(panel.window->screen(0, "toolpath"));
+        const auto* model = screen->model();
+        const mtc::core::Station& mill = panel.session->station(0);
+        panel.press(Qt::Key_F5, Qt::ShiftModifier);  // Start
+        for (int tick = 0; tick < 20000 && mill.busy(); ++tick)
+            panel.session->advance(0.25);
+        QVERIFY(!mill.busy());
+        const double afterRun = mill.liveCut().part()->removedVolume();
+
+        panel.press(Qt::Key_F3, Qt::ShiftModifier);  // M key Manual
+        panel.press(Qt::Key_F11);                    // base screen
+        panel.press(Qt::Key_F6);                     // step 10
+        // The run ends beside the plate at X-20 Y-20: over it at X20 Y20.
+        for (int axis = 0; axis < 2; ++axis) {
+            for (int press = 0; press < 4; ++press)
+                panel.press(Qt::Key_Plus);
+            panel.press(Qt::Key_Down);  // the next axis; Z last
+        }
+        // Down in steps of 10 mm until the tool is in the material.
+        for (int press = 0; press < 40 && mill.liveCut().part()->removedVolume() <= afterRun;
+             ++press) {
+            panel.press(Qt::Key_Minus);
+            for (int tick = 0; tick < 2000 && mill.jogging(); ++tick)
+                panel.session->advance(0.02);
+        }
+        const double jogged = mill.liveCut().part()->removedVolume();
+        QVERIFY2(jogged > afterRun, qPrintable(QString::number(jogged)));
+
+        panel.press(Qt::Key_F4);  // toolpath
+        QCOMPARE(panel.window->currentScreenName(), QString("toolpath"));
+        QTRY_VERIFY_WITH_TIMEOUT(
+            model->part().note.startsWith("Part of the run, cut on by MDI and jogging"),
+            4 * mtc::screens::ToolpathModel::kLiveMeshMs);
+        QVERIFY2(std::abs(removedIn(model->part().note) - jogged) <= 1.0,
+                 qPrintable(model->part().note));
     }
 };
 
