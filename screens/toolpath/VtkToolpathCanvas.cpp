@@ -240,13 +240,13 @@ void VtkToolpathCanvas::rebuild() {
         }
         s.scene.renderer->SetViewport(0.5, 0, 1, 1);
         s.scene.live->SetViewport(0.5, 0, 1, 1);
-        s.triad->SetViewport(0.5, 0, 0.62, 0.2);
+        s.triad->SetViewport(0.88, 0, 1, 0.2);  // clear of both captions (bottom left)
     } else {
         s.window->RemoveRenderer(s.developed.renderer);
         s.window->RemoveRenderer(s.developed.live);
         s.scene.renderer->SetViewport(0, 0, 1, 1);
         s.scene.live->SetViewport(0, 0, 1, 1);
-        s.triad->SetViewport(0, 0, 0.15, 0.2);
+        s.triad->SetViewport(0.85, 0, 1, 0.2);  // clear of the caption (bottom left)
     }
     for (Part* part : {&s.scene, &s.developed}) {
         const bool shown = g && (part == &s.scene || s.split);
@@ -348,6 +348,27 @@ bool VtkToolpathCanvas::updateBackplot() {
     return changed;
 }
 
+QRect VtkToolpathCanvas::sceneCaptionRect() const {
+    double box[4];  // x min, x max, y min, y max in device pixels from the bottom
+    scene_->scene.caption->GetBoundingBox(scene_->scene.renderer, box);
+    return deviceToWidget(box);
+}
+
+QRect VtkToolpathCanvas::triadRect() const {
+    const double* v = scene_->triad->GetViewport();
+    const int* size = scene_->window->GetSize();
+    const double box[4] = {v[0] * size[0], v[2] * size[0], v[1] * size[1], v[3] * size[1]};
+    return deviceToWidget(box);
+}
+
+QRect VtkToolpathCanvas::deviceToWidget(const double box[4]) const {
+    const double ratio = widget_->devicePixelRatioF();
+    const int height = scene_->window->GetSize()[1];
+    return QRectF(QPointF(box[0], height - box[3]) / ratio,
+                  QPointF(box[1], height - box[2]) / ratio)
+        .toAlignedRect();
+}
+
 QString VtkToolpathCanvas::sceneCaption() const {
     return QString::fromUtf8(scene_->scene.caption->GetInput());
 }
@@ -360,8 +381,8 @@ void VtkToolpathCanvas::updateLineWidths() {
     const double scale = deviceLineScale();
     if (scale == scene_->lineScale) return;
     scene_->lineScale = scale;
-    scene_->scene.setLineWidths(scale);
-    scene_->developed.setLineWidths(scale);
+    scene_->scene.setScreenScale(scale);
+    scene_->developed.setScreenScale(scale);
     scene_->repos->GetProperty()->SetLineWidth(static_cast<float>(scaledWidth(3.0, scale)));
     scene_->stillCache->invalidate();
 }

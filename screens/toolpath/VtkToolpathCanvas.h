@@ -51,6 +51,9 @@ class VtkToolpathCanvas : public ToolpathCanvas {
     /// `axis` (0 X, 1 Y, 2 Z) read, in the workpiece frame (TP-019).
     QString sceneCaption() const;
     std::array<double, 2> tickRange(int axis) const;
+    /// Where the scene's caption and the axes triad are drawn (widget pixels).
+    QRect sceneCaptionRect() const;
+    QRect triadRect() const;
     /// The title the axes box shows on scene axis `axis` (0 X, 1 Y, 2 Z).
     QString axisTitle(int axis) const;
     /// Cells the coarse copy shown while moving may have at most.
@@ -64,6 +67,9 @@ class VtkToolpathCanvas : public ToolpathCanvas {
 
   private:
     struct Scene;
+    /// A box (x min, x max, y min, y max; device pixels up from the
+    /// bottom, as VTK gives them) in widget pixels.
+    QRect deviceToWidget(const double box[4]) const;
     /// Sets the line widths for the screen the view is on now (TP-026; VTK
     /// draws in device pixels, known once the view is in its window).
     void updateLineWidths();

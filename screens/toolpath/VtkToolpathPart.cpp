@@ -1,6 +1,7 @@
 #include "screens/toolpath/VtkToolpathPart.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace mtc::screens {
 
@@ -43,9 +44,7 @@ void Part::setUp(const ToolpathPalette& palette) {
     setColour(axes->GetYAxesGridlinesProperty(), palette.grid);
     setColour(axes->GetZAxesGridlinesProperty(), palette.grid);
     axes->PickableOff();
-    caption->GetTextProperty()->SetFontSize(14);
     caption->GetTextProperty()->SetColor(1, 1, 1);
-    caption->SetPosition(8, 8);
     renderer->AddActor(contour);
     renderer->AddActor(path);
     renderer->AddActor(coarsePath);
@@ -53,13 +52,20 @@ void Part::setUp(const ToolpathPalette& palette) {
     renderer->AddActor(axes);
     renderer->AddActor2D(caption);
     backplot = std::make_unique<VtkBackplot>(renderer, live, palette.backplot);
-    setLineWidths(1.0);
+    setScreenScale(1.0);
 }
 
-void Part::setLineWidths(double scale) {
+void Part::setScreenScale(double scale) {
     const auto width = [scale](double w) {
         return static_cast<float>(ToolpathCanvas::scaledWidth(w, scale));
     };
+    // VTK's text sizes are device pixels too: the caption and the axes'
+    // labels grow with the lines (TP-026).
+    caption->GetTextProperty()->SetFontSize(static_cast<int>(std::lround(kCaptionSize * scale)));
+    caption->SetPosition(kCaptionMargin * scale, kCaptionMargin * scale);
+    axes->SetScreenSize(kAxesTextSize * scale);
+    axes->SetLabelOffset(kAxesTextOffset * scale);
+    axes->SetTitleOffset(kAxesTextOffset * scale);
     path->GetProperty()->SetLineWidth(width(kPathWidth));
     coarsePath->GetProperty()->SetLineWidth(width(kPathWidth));
     contour->GetProperty()->SetLineWidth(width(kContourWidth));

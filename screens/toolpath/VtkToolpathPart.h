@@ -62,9 +62,15 @@ struct Part {
 
     /// Colours and the actors in drawing order (the backplot last).
     void setUp(const ToolpathPalette& palette);
-    /// Line widths: the 96-dpi widths times `scale` (device pixels per
-    /// 96-dpi pixel, TP-026), whole pixels.
-    void setLineWidths(double scale);
+    /// Line widths and text sizes: the 96-dpi sizes times `scale` (device
+    /// pixels per 96-dpi pixel, TP-026), widths in whole pixels.
+    void setScreenScale(double scale);
+    /// The caption's font size and margin, the axes' text size and its
+    /// distance to the ticks at 96 dpi (pixels).
+    static constexpr double kCaptionSize = 14.0;
+    static constexpr double kCaptionMargin = 8.0;
+    static constexpr double kAxesTextSize = 10.0;
+    static constexpr double kAxesTextOffset = 20.0;
     /// The depth range of the camera: the steady and live props (the tool
     /// lives in the live renderer), with half their size to spare so that
     /// the tool stays inside it as it moves.

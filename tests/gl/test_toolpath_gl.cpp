@@ -380,6 +380,49 @@ class ToolpathGlTest : public QObject {
                  full.convertToFormat(QImage::Format_RGB32));
     }
 
+    /// TP-026: the caption and the axes triad do not cover each other, and
+    /// the caption's text grows with the screen's dpi like the lines.
+    void theCaptionKeepsClearOfTheTriadAndGrowsWithTheDpi() {
+        PanelFixture panel;
+        panel.session->selectProgram(0, 1);
+        QVERIFY(panel.window->showScreen("toolpath"));
+        ToolpathScreen* screen = toolpath(panel);
+        VtkToolpathCanvas* canvas = vtkCanvas(screen);
+        QVERIFY(canvas);
+        double ratio = 1.0;
+        int expected = 1;
+        lineWidthAtScale(*canvas, ratio, expected);
+        if (QTest::currentTestFailed()) return;
+        canvas->renderNow();
+        const QRect caption = canvas->sceneCaptionRect();
+        const QRect triad = canvas->triadRect();
+        QVERIFY2(!caption.isEmpty() && !triad.isEmpty(), "both drawn");
+        QVERIFY2(!caption.intersects(triad),
+                 qPrintable(QString("caption %1,%2 %3x%4 triad %5,%6 %7x%8")
+                                .arg(caption.x())
+                                .arg(caption.y())
+                                .arg(caption.width())
+                                .arg(caption.height())
+                                .arg(triad.x())
+                                .arg(triad.y())
+                                .arg(triad.width())
+                                .arg(triad.height())));
+        QVERIFY2(canvas->rect().adjusted(-1, -1, 1, 1).contains(caption),
+                 qPrintable(QString("caption %1,%2 %3x%4 in %5x%6")
+                                .arg(caption.x())
+                                .arg(caption.y())
+                                .arg(caption.width())
+                                .arg(caption.height())
+                                .arg(canvas->width())
+                                .arg(canvas->height())));
+        // Device pixels a caption line takes: 14-pixel text at 96 dpi.
+        const int lines = canvas->sceneCaption().count('\n') + 1;
+        const double lineHeight = caption.height() * ratio / lines;
+        const double scale = expected == 2 ? 1.5 : 1.0;
+        QVERIFY2(lineHeight >= 14.0 * scale * 0.9 && lineHeight <= 14.0 * scale * 1.6,
+                 qPrintable(QString("%1 px a line at scale %2").arg(lineHeight).arg(scale)));
+    }
+
     /// TP-020: the demo lathe programs radii (B015 = radius) and says so on
     /// its X axis; a G16 block is read in diameters: ticks twice the radius.
     void theLatheXReadsTheDiameterUnderG16AndSaysRadiusOtherwise() {
