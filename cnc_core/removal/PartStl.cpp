@@ -95,8 +95,12 @@ class TriangleBuffer {
     std::vector<float> data_;
 };
 
+/// Whether the view's mesh merges runs of facets that lie in one plane
+/// (partTriangles) or keeps one quad per cell as the STL does.
+enum class Facets { PerCell, MergeRuns };
+
 template <typename Out>
-void heightFieldSurface(const HeightField& f, Out& out) {
+void heightFieldSurface(const HeightField& f, Out& out, Facets facets = Facets::PerCell) {
     const Box& box = f.stock();
     const VertexLine xs = vertexLine(f.columns(), box.min[0], box.max[0], f.cellWidth());
     const VertexLine ys = vertexLine(f.rows(), box.min[1], box.max[1], f.cellDepth());
@@ -106,9 +110,25 @@ void heightFieldSurface(const HeightField& f, Out& out) {
         return Point{xs.position[k], ys.position[l], f.height(xs.cell[k], ys.cell[l])};
     };
     const auto bottom = [&](int k, int l) { return Point{xs.position[k], ys.position[l], zb}; };
-    for (int l = 0; l + 1 < nv; ++l)
-        for (int k = 0; k + 1 < nu; ++k)
-            out.quad(top(k, l), top(k + 1, l), top(k + 1, l + 1), top(k, l + 1));
+    for (int l = 0; l + 1 < nv; ++l) {
+        // A quad whose four corners have one height is flat; a run of flat
+        // quads of one height along the row is one quad of the same surface.
+        const auto flatAt = [&](int k, double z) {
+            return f.height(xs.cell[k], ys.cell[l]) == z &&
+                   f.height(xs.cell[k + 1], ys.cell[l]) == z &&
+                   f.height(xs.cell[k], ys.cell[l + 1]) == z &&
+                   f.height(xs.cell[k + 1], ys.cell[l + 1]) == z;
+        };
+        for (int k = 0; k + 1 < nu;) {
+            int end = k + 1;
+            const double z = f.height(xs.cell[k], ys.cell[l]);
+            if (facets == Facets::MergeRuns && flatAt(k, z))
+                while (end + 1 < nu && flatAt(end, z))
+                    ++end;
+            out.quad(top(k, l), top(end, l), top(end, l + 1), top(k, l + 1));
+            k = end;
+        }
+    }
     for (int k = 0; k + 1 < nu; ++k) {
         out.quad(bottom(k, 0), bottom(k + 1, 0), top(k + 1, 0), top(k, 0));  // -Y
         out.quad(bottom(k + 1, nv - 1), bottom(k, nv - 1), top(k, nv - 1), top(k + 1, nv - 1));
@@ -136,7 +156,7 @@ int turnedSegments(const PartModel& part) {
 }
 
 template <typename Out>
-void turnedSurface(const PartModel& part, Out& out) {
+void turnedSurface(const PartModel& part, Out& out, Facets facets = Facets::PerCell) {
     const TurnedProfile& p = *part.profile();
     const DevelopedSurface* jacket = part.jacket();
     const VertexLine zs = vertexLine(p.slices(), p.from(), p.to(), p.sliceLength());
@@ -146,14 +166,15 @@ void turnedSurface(const PartModel& part, Out& out) {
     const auto third = static_cast<std::size_t>((part.axialAxis() + 2) % 3);
     // Revolved: a ring of `segments` facets per vertex line; with a jacket
     // the vertices stand on its cell centres at the material's radius there.
-    const auto point = [&](int k, int s) {
+    const auto radius = [&](int k, int s) {
         const int cell = zs.cell[static_cast<std::size_t>(k)];
-        double angle = 2.0 * curve::kPi * (s % segments) / segments;
-        double r = p.radiusAt(cell);
-        if (jacket != nullptr) {
-            angle = jacket->columnAngle(s % segments);
-            r = std::min(r, jacket->radius(s % segments, cell));
-        }
+        const double r = p.radiusAt(cell);
+        return jacket != nullptr ? std::min(r, jacket->radius(s % segments, cell)) : r;
+    };
+    const auto point = [&](int k, int s) {
+        const double angle = jacket != nullptr ? jacket->columnAngle(s % segments)
+                                               : 2.0 * curve::kPi * (s % segments) / segments;
+        const double r = radius(k, s);
         Point q{0, 0, 0};
         q[axial] = zs.position[static_cast<std::size_t>(k)];
         q[radial] = r * std::cos(angle);
@@ -165,9 +186,29 @@ void turnedSurface(const PartModel& part, Out& out) {
         q[axial] = zs.position[static_cast<std::size_t>(k)];
         return q;
     };
-    for (int k = 0; k + 1 < rings; ++k)
-        for (int s = 0; s < segments; ++s)
-            out.quad(point(k, s), point(k, s + 1), point(k + 1, s + 1), point(k + 1, s));
+    if (facets == Facets::PerCell) {
+        for (int k = 0; k + 1 < rings; ++k)
+            for (int s = 0; s < segments; ++s)
+                out.quad(point(k, s), point(k, s + 1), point(k + 1, s + 1), point(k + 1, s));
+    } else {
+        // Along the axis: a run of facets whose edges keep their radii is
+        // one facet of the same surface (a turned diameter, its length).
+        for (int s = 0; s < segments; ++s) {
+            const auto straight = [&](int k, double r0, double r1) {
+                return radius(k, s) == r0 && radius(k + 1, s) == r0 && radius(k, s + 1) == r1 &&
+                       radius(k + 1, s + 1) == r1;
+            };
+            for (int k = 0; k + 1 < rings;) {
+                const double r0 = radius(k, s), r1 = radius(k, s + 1);
+                int end = k + 1;
+                if (straight(k, r0, r1))
+                    while (end + 1 < rings && straight(end, r0, r1))
+                        ++end;
+                out.quad(point(k, s), point(k, s + 1), point(end, s + 1), point(end, s));
+                k = end;
+            }
+        }
+    }
     for (int s = 0; s < segments; ++s) {
         out.triangle(axisPoint(0), point(0, s + 1), point(0, s));
         out.triangle(axisPoint(rings - 1), point(rings - 1, s), point(rings - 1, s + 1));
@@ -196,11 +237,11 @@ std::string partStl(const PartModel& part) {
 }
 
 std::vector<float> partTriangles(const PartModel& part) {
-    TriangleBuffer out(stlTriangleCount(part));
+    TriangleBuffer out(0);
     if (const HeightField* f = part.heightField())
-        heightFieldSurface(*f, out);
+        heightFieldSurface(*f, out, Facets::MergeRuns);
     else
-        turnedSurface(part, out);
+        turnedSurface(part, out, Facets::MergeRuns);
     return out.take();
 }
 

@@ -20,9 +20,15 @@ std::uint64_t stlTriangleCount(const PartModel& part);
 /// top and bottom touching.
 std::string partStl(const PartModel& part);
 
-/// The same closed surface as partStl(), for a view: 9 floats per triangle
-/// (its three corners x, y, z in scene mm, counter-clockwise seen from
-/// outside), in the STL's order.
+/// The same surface as partStl(), for a view: 9 floats per triangle (its
+/// three corners x, y, z in scene mm, counter-clockwise seen from outside).
+/// Runs of facets in one plane are merged into one quad (TP-029): along a
+/// row of the height field the flat quads of one height, along the axis of
+/// a turned part the facets of one radius. A milled plate's floors and top
+/// then take a few thousand triangles instead of two per cell, which is
+/// what a view pays for in building, uploading and drawing the mesh each
+/// time the live part changes. (Merged runs meet their neighbours in
+/// T-junctions: a view, not an STL, takes this mesh.)
 std::vector<float> partTriangles(const PartModel& part);
 
 /// Writes partStl() to `path` atomically (writeFileAtomically: only over a

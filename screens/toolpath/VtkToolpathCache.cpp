@@ -38,7 +38,6 @@ void VtkStillCache::setEnabled(bool enabled) {
 }
 
 void VtkStillCache::invalidate() {
-    changed_ = true;
     drop();
 }
 
@@ -129,9 +128,12 @@ bool VtkStillCache::keep() {
 void VtkStillCache::render(bool mayKeep) {
     const std::vector<double> now = key();
     if (keeping_ && now != lastKey_) drop();
-    if (!keeping_ && mayKeep && enabled_ && !unreadable_ && !changed_ && now == lastKey_ && !keep())
+    // A steady picture that changed is kept at once when the cameras stand
+    // (TP-029): drawing it in full first and keeping it at the next render
+    // drew it twice - on llvmpipe twice the part's mesh each time the live
+    // part changed. While the cameras move, nothing is kept.
+    if (!keeping_ && mayKeep && enabled_ && !unreadable_ && now == lastKey_ && !keep())
         unreadable_ = true;
-    changed_ = false;
     lastKey_ = now;
     window_->Render();
     if (keeping_) ++kept_;

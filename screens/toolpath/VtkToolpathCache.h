@@ -18,13 +18,13 @@ namespace mtc::screens {
 /// (layer 0: the path, its coarse copy, contour, axes, stock, marks, the
 /// backplot's sealed pieces) and `live` (layer 1: the tool, the highlight,
 /// the backplot's open piece; it clears the depth, so live props lie over
-/// the steady picture the same way in both modes). When two renders in a
-/// row found the steady picture and the cameras unchanged, the steady
+/// the steady picture the same way in both modes). When a render finds the
+/// cameras and the window as the last render left them, the steady
 /// renderers draw once alone, their pixels become the live renderers'
 /// background texture and the steady renderers stop drawing: a frame then
 /// costs the texture and the live props, not the million lines. Any render
 /// (the widget's, the interactor's) first checks the cameras and the window
-/// size; a change, or invalidate(), draws everything again.
+/// size; a change draws everything again, invalidate() the steady picture.
 class VtkStillCache {
   public:
     explicit VtkStillCache(vtkRenderWindow* window);
@@ -66,7 +66,6 @@ class VtkStillCache {
     vtkRenderWindow* window_;
     std::vector<Area> areas_;
     std::vector<double> lastKey_;
-    bool changed_ = true;  ///< steady picture changed since the last render
     bool keeping_ = false;
     bool capturing_ = false;
     bool enabled_ = true;

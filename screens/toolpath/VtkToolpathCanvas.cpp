@@ -60,7 +60,7 @@ struct VtkToolpathCanvas::Scene {
     vtkNew<vtkOrientationMarkerWidget> triad;
     vtkNew<vtkCallbackCommand> interaction;
     ToolpathPreset preset = ToolpathPreset::Isometric;
-    bool split = false, coarse = false, renderPending = false;
+    bool split = false, coarse = false;
     int renders = 0, coarsePicks = 0;
     QTimer still;
     QPoint pressed;
@@ -78,7 +78,9 @@ struct VtkToolpathCanvas::Scene {
 };
 
 VtkToolpathCanvas::VtkToolpathCanvas(ToolpathModel* model, QWidget* parent)
-    : ToolpathCanvas(model, parent), scene_(std::make_unique<Scene>()) {
+    : ToolpathCanvas(model, parent),
+      pacer_([this] { renderNow(); }),
+      scene_(std::make_unique<Scene>()) {
     setObjectName("toolpathVtk");
     widget_ = new QVTKOpenGLNativeWidget(this);
     widget_->setObjectName("toolpathVtkWidget");
@@ -179,16 +181,8 @@ void VtkToolpathCanvas::updatePart() {
     scene_->part->SetVisibility(shown);
 }
 
-void VtkToolpathCanvas::requestRender() {
-    if (scene_->renderPending) return;
-    scene_->renderPending = true;
-    QTimer::singleShot(0, this, [this] {
-        scene_->renderPending = false;
-        renderNow();
-    });
-}
-
 void VtkToolpathCanvas::renderNow() {
+    pacer_.drawn();
     updateLineWidths();
     // While the view moves every frame is a new picture: nothing to keep.
     scene_->stillCache->render(!scene_->coarse);

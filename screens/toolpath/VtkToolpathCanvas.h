@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "screens/toolpath/ToolpathCanvas.h"
+#include "screens/toolpath/ToolpathFramePacer.h"
 
 class QVTKOpenGLNativeWidget;
 
@@ -14,8 +15,8 @@ namespace mtc::screens {
 /// while the view moves (level of detail, TP-010), the highlighted block, the restart marks and
 /// REPOS path, the stock, axes triad, grid with the extents and their dimensions. With G32 moves
 /// the developed plane (left) and the wrapped cylinder (right) are shown side by side. Render
-/// requests are coalesced into one render per event-loop pass. Needs an OpenGL context: create it
-/// only after openGlAvailable() said yes (VTK aborts the process without one).
+/// requests are coalesced and paced to ToolpathFramePacer's rate. Needs an OpenGL context: create
+/// it only after openGlAvailable() said yes (VTK aborts the process without one).
 class VtkToolpathCanvas : public ToolpathCanvas {
     Q_OBJECT
   public:
@@ -31,8 +32,15 @@ class VtkToolpathCanvas : public ToolpathCanvas {
     QImage picture() override;
     bool threeD() const override { return true; }
     std::optional<QPoint> positionOfMove(long move) override;
-    /// Renders now (tests, frame timing); otherwise renders are coalesced.
+    /// Renders now (tests, frame timing); otherwise renders are coalesced
+    /// and paced: at most one per frame interval (TP-029).
     void renderNow();
+    /// Least time between the starts of two paced renders (0: one per
+    /// event-loop pass, as the tests that step the station use).
+    void setFrameInterval(int milliseconds) { pacer_.setInterval(milliseconds); }
+    int frameInterval() const { return pacer_.interval(); }
+    /// A render was asked for and waits for its time.
+    bool framePending() const { return pacer_.pending(); }
     /// Renders done so far (coalescing check).
     int renderCount() const;
     /// Renders that drew the steady picture from the kept image (TP-018).
@@ -90,7 +98,7 @@ class VtkToolpathCanvas : public ToolpathCanvas {
     /// frame (TP-019): relabelled with `always` or when the frame changed.
     /// True when the picture changed.
     bool updateFrame(bool always);
-    void requestRender();
+    void requestRender() { pacer_.request(); }
     void moving();
     void showLevelOfDetail(bool coarse);
     /// Frames ToolpathModel::frame (the part, or with `all` every move).
@@ -101,6 +109,7 @@ class VtkToolpathCanvas : public ToolpathCanvas {
     void pickAt(QPoint position);
 
     QVTKOpenGLNativeWidget* widget_;
+    ToolpathFramePacer pacer_;  ///< renders at a bounded rate (TP-029)
     std::unique_ptr<Scene> scene_;
 };
 

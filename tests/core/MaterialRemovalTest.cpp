@@ -4,10 +4,13 @@
 // cells, and the closed STL surface of the finished part.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <cstring>
 #include <limits>
 #include <map>
+#include <set>
+#include <vector>
 
 #include "InterpTestSupport.h"
 #include "cnc_core/removal/PartStl.h"
@@ -403,20 +406,53 @@ TEST(PartStl, FinishedPartsAreClosedSurfaces) {
     expectClosed(partStl(*lathe.part), stlTriangleCount(*lathe.part));
 }
 
-TEST(PartStl, TheViewsTrianglesAreTheStlsCorners) {
+/// Volume and area of a surface given as 9 floats per triangle.
+std::array<double, 2> volumeAndArea(const float* v, std::size_t triangles) {
+    double volume = 0.0, area = 0.0;
+    for (std::size_t t = 0; t < triangles; ++t, v += 9) {
+        const double ux = v[3] - v[0], uy = v[4] - v[1], uz = v[5] - v[2];
+        const double wx = v[6] - v[0], wy = v[7] - v[1], wz = v[8] - v[2];
+        area += 0.5 * std::sqrt(std::pow(uy * wz - uz * wy, 2) + std::pow(uz * wx - ux * wz, 2) +
+                                std::pow(ux * wy - uy * wx, 2));
+        volume += (double{v[0]} * (double{v[4]} * v[8] - double{v[5]} * v[7]) -
+                   double{v[1]} * (double{v[3]} * v[8] - double{v[5]} * v[6]) +
+                   double{v[2]} * (double{v[3]} * v[7] - double{v[4]} * v[6])) /
+                  6.0;
+    }
+    return {volume, area};
+}
+
+// The view's mesh (TP-029) is the STL's surface with the runs of facets in
+// one plane merged: the same enclosed volume and area, far fewer triangles
+// for a milled pocket and a turned shaft, and on the mill the STL's heights.
+TEST(PartStl, TheViewsMeshIsTheStlsSurfaceWithFlatRunsMerged) {
     for (const auto& [program, process] :
          {std::pair{kPocketByCentre, 0}, std::pair{kTurnedShaft, 1}, std::pair{kRingGroove, 1}}) {
-        const RemovalRunResult run = simulate(program, process, 1.0);
+        const RemovalRunResult run = simulate(program, process, 0.5);
         ASSERT_TRUE(run.part);
         const std::string stl = partStl(*run.part);
-        const std::vector<float> corners = partTriangles(*run.part);
-        ASSERT_EQ(corners.size(), 9 * stlTriangleCount(*run.part));
-        for (std::size_t t = 0; t < corners.size() / 9; ++t) {
-            float v[9];
-            std::memcpy(v, stl.data() + 84 + 50 * t + 12, 36);
-            for (std::size_t i = 0; i < 9; ++i)
-                ASSERT_EQ(corners[9 * t + i], v[i]) << "triangle " << t << " value " << i;
+        const std::uint64_t count = stlTriangleCount(*run.part);
+        std::vector<float> cells(9 * count);
+        for (std::size_t t = 0; t < count; ++t)
+            std::memcpy(&cells[9 * t], stl.data() + 84 + 50 * t + 12, 36);
+        const std::vector<float> merged = partTriangles(*run.part);
+        ASSERT_EQ(merged.size() % 9, 0u);
+        const auto full = volumeAndArea(cells.data(), count);
+        const auto view = volumeAndArea(merged.data(), merged.size() / 9);
+        EXPECT_NEAR(view[0], full[0], 1e-6 * full[0]) << program;
+        EXPECT_NEAR(view[1], full[1], 1e-6 * full[1]) << program;
+        if (process == 0 || !run.part->jacket()) {  // a groove on the jacket merges little
+            EXPECT_LT(merged.size() / 9, count / 5) << program;
+        } else {
+            EXPECT_LE(merged.size() / 9, count) << program;
         }
+        if (process != 0) continue;
+        std::set<float> stlHeights, viewHeights;  // every floor of the z-map is there
+        for (std::size_t i = 2; i < cells.size(); i += 3)
+            stlHeights.insert(cells[i]);
+        for (std::size_t i = 2; i < merged.size(); i += 3)
+            viewHeights.insert(merged[i]);
+        EXPECT_EQ(viewHeights, stlHeights) << program;
     }
 }
 

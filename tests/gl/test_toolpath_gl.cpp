@@ -6,8 +6,9 @@
 // are coalesced. A compensated program shows its programmed contour beside
 // the tool-centre path, with a legend entry. A 200,000-segment program moves with a coarse copy
 // within the cell budget, and picking on that copy still selects the right block.
-// While a program runs the backplot is drawn and the steady picture is kept
-// as an image; a frame from it is the full frame. The labels name the zero
+// While a program runs the backplot is drawn, the steady picture is kept
+// as an image; a frame from it is the full frame; the steps of the station
+// are rendered at the frame rate, not each one. The labels name the zero
 // offset of the block shown and read workpiece coordinates. A path that
 // retraces itself draws each line once. The finished part is drawn; M
 // hides it.
@@ -307,6 +308,7 @@ class ToolpathGlTest : public QObject {
         ToolpathScreen* screen = toolpath(panel);
         VtkToolpathCanvas* canvas = vtkCanvas(screen);
         QVERIFY(canvas);
+        canvas->setFrameInterval(0);  // one render per step: this test is about the kept picture
         const auto& palette = screen->model()->palette();
         const int nearWhite = count(canvas->picture(), palette.backplot);  // text, labels
         panel.press(Qt::Key_F5, Qt::ShiftModifier);                        // Start
@@ -611,6 +613,7 @@ class ToolpathGlTest : public QObject {
         panel.session->setTimerEnabled(false);
         VtkToolpathCanvas* canvas = vtkCanvas(toolpath(panel));
         QVERIFY(canvas);
+        canvas->setFrameInterval(0);                 // each step's render in its event-loop pass
         panel.press(Qt::Key_F5, Qt::ShiftModifier);  // Start
         const auto& station = panel.session->station(0);
         const auto dwelling = [&] {
@@ -638,6 +641,39 @@ class ToolpathGlTest : public QObject {
             QCoreApplication::processEvents();
         }
         QVERIFY(canvas->renderCount() > renders);
+    }
+
+    /// TP-029: while the program runs, the station's steps ask for renders
+    /// at the panel's tick; the view renders at most once per frame
+    /// interval, with what is newest then. An interval no test run reaches
+    /// (one hour) shows that steps alone render nothing until it is over.
+    void theStepsOfARunningProgramAreRenderedAtTheFrameRate() {
+        PanelFixture panel;
+        panel.session->selectProgram(0, 1);
+        QVERIFY(panel.window->showScreen("toolpath"));
+        panel.session->setTimerEnabled(false);
+        ToolpathScreen* screen = toolpath(panel);
+        VtkToolpathCanvas* canvas = vtkCanvas(screen);
+        QVERIFY(canvas);
+        QVERIFY(canvas->frameInterval() > 0 && canvas->frameInterval() <= 50);  // 20 Hz or more
+        const QColor backplot = screen->model()->palette().backplot;
+        const int nearWhite = count(canvas->picture(), backplot);  // text, labels
+        canvas->setFrameInterval(3600 * 1000);
+        canvas->renderNow();  // the interval counts from here
+        const int renders = canvas->renderCount();
+        panel.press(Qt::Key_F5, Qt::ShiftModifier);  // Start
+        for (int tick = 0; tick < 60; ++tick) {
+            panel.session->advance(0.2);
+            QCoreApplication::processEvents();
+        }
+        QVERIFY(!screen->model()->backplot(false).empty());
+        QCOMPARE(canvas->renderCount(), renders);  // asked for, waiting for its time
+        QVERIFY(canvas->framePending());
+        canvas->setFrameInterval(0);  // its time has come: one render, the newest state
+        QTRY_COMPARE(canvas->renderCount(), renders + 1);
+        QVERIFY(!canvas->framePending());
+        const int drawn = count(canvas->picture(), backplot);
+        QVERIFY2(drawn > nearWhite + 100, qPrintable(QString("%1 %2").arg(drawn).arg(nearWhite)));
     }
 };
 
