@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "screens/toolpath/ToolpathModel.h"
+#include "screens/toolpath/ToolpathPartRaster.h"
 
 namespace mtc::screens {
 
@@ -37,7 +38,7 @@ double segmentDistance(QPointF p, QPointF a, QPointF b) {
 }  // namespace
 
 PainterToolpathCanvas::PainterToolpathCanvas(ToolpathModel* model, QWidget* parent)
-    : ToolpathCanvas(model, parent) {
+    : ToolpathCanvas(model, parent), pacer_([this] { update(); }) {
     setObjectName("toolpathPainter");
     setMinimumSize(320, 240);
     setFocusPolicy(Qt::NoFocus);
@@ -48,7 +49,12 @@ PainterToolpathCanvas::PainterToolpathCanvas(ToolpathModel* model, QWidget* pare
         layout();
         fit();
     });
-    connect(model_, &ToolpathModel::marksChanged, this, qOverload<>(&QWidget::update));
+    // A running program changes the marks at every tick: repaints are paced.
+    connect(model_, &ToolpathModel::marksChanged, &pacer_, &ToolpathFramePacer::request);
+    connect(model_, &ToolpathModel::partChanged, this, [this] {
+        partChanged_ = true;
+        pacer_.request();
+    });
 }
 
 void PainterToolpathCanvas::layout() {
@@ -147,6 +153,7 @@ QImage PainterToolpathCanvas::picture() {
 }
 
 void PainterToolpathCanvas::paintEvent(QPaintEvent*) {
+    pacer_.drawn();
     QPainter painter(this);
     painter.fillRect(rect(), model_->palette().background);
     if (!model_->geometry()) {
@@ -166,7 +173,10 @@ void PainterToolpathCanvas::drawView(QPainter& painter, const View& view) {
     painter.save();
     painter.setClipRect(view.rect);
     painter.setRenderHint(QPainter::Antialiasing, false);
-    if (!view.developed) drawStock(painter, view);
+    if (!view.developed) {
+        drawStock(painter, view);
+        drawPart(painter, view);
+    }
     drawContour(painter, view);
     drawLayer(painter, view);
     drawHighlight(painter, view);
@@ -372,6 +382,48 @@ void PainterToolpathCanvas::drawStock(QPainter& painter, const View& view) {
             painter.drawPath(ring);
         }
     }
+}
+
+void PainterToolpathCanvas::drawPart(QPainter& painter, const View& view) {
+    if (!model_->partShown()) return;
+    const double ratio = devicePixelRatioF();  // the image has the screen's pixels
+    const Vec right = view.pose.right();
+    std::vector<double> key{view.pose.direction[0],
+                            view.pose.direction[1],
+                            view.pose.direction[2],
+                            view.pose.up[0],
+                            view.pose.up[1],
+                            view.pose.up[2],
+                            view.focal[0],
+                            view.focal[1],
+                            view.focal[2],
+                            view.scale,
+                            view.centre.x(),
+                            view.centre.y(),
+                            double(view.rect.x()),
+                            double(view.rect.y()),
+                            double(view.rect.width()),
+                            double(view.rect.height()),
+                            ratio};
+    if (partChanged_ || key != partKey_) {
+        PartProjection projection;
+        projection.right = right;
+        projection.up = view.pose.up;
+        projection.toward = {-view.pose.direction[0], -view.pose.direction[1],
+                             -view.pose.direction[2]};
+        projection.focal = view.focal;
+        projection.scale = view.scale * ratio;
+        projection.centreX = (view.centre.x() - view.rect.x()) * ratio;
+        projection.centreY = (view.centre.y() - view.rect.y()) * ratio;
+        const ToolpathPart& part = model_->part();
+        partImage_ = rasterizePart(part.triangles, model_->palette().part, part.heightField,
+                                   projection, (QSizeF(view.rect.size()) * ratio).toSize());
+        partImage_.setDevicePixelRatio(ratio);
+        partKey_ = std::move(key);
+        partChanged_ = false;
+        ++partImagesMade_;
+    }
+    painter.drawImage(view.rect.topLeft(), partImage_);
 }
 
 QRectF PainterToolpathCanvas::triadBox(const View& view) const {

@@ -1,8 +1,11 @@
 #pragma once
 
+#include <QImage>
 #include <array>
+#include <vector>
 
 #include "screens/toolpath/ToolpathCanvas.h"
+#include "screens/toolpath/ToolpathFramePacer.h"
 #include "screens/toolpath/ToolpathModel.h"
 #include "screens/toolpath/ToolpathTicks.h"
 
@@ -13,9 +16,9 @@ struct ToolpathLayer;
 namespace mtc::screens {
 
 /// The toolpath view without OpenGL: an orthographic 2D drawing with
-/// QPainter (same presets, zoom, pan, rotation, picking, highlight and marks
-/// as the VTK view; no shading). Used where no OpenGL context can be made
-/// (QT_QPA_PLATFORM=offscreen, no X server), where VTK would abort.
+/// QPainter (same presets, zoom, pan, rotation, picking, highlight, marks
+/// and part as the VTK view; the path is drawn over the part). Used where no OpenGL context can be
+/// made (QT_QPA_PLATFORM=offscreen, no X server), where VTK would abort.
 class PainterToolpathCanvas : public ToolpathCanvas {
     Q_OBJECT
   public:
@@ -36,6 +39,11 @@ class PainterToolpathCanvas : public ToolpathCanvas {
     /// The ticks, labels and titles drawn at the last paint along the
     /// scene's (developed plane's) frame, in workpiece coordinates (TP-025).
     const ToolpathRulers& rulers(bool developed) const { return rulers_[developed ? 1 : 0]; }
+    /// Least time between two repaints the model's changes ask for (0: one
+    /// per event-loop pass), as the 3D view's (TP-029).
+    void setFrameInterval(int milliseconds) { pacer_.setInterval(milliseconds); }
+    /// Times the part's image was made (it is kept while nothing changes).
+    int partImagesMade() const { return partImagesMade_; }
 
   protected:
     void paintEvent(QPaintEvent* event) override;
@@ -71,6 +79,9 @@ class PainterToolpathCanvas : public ToolpathCanvas {
     /// pixels), on the mill with its shank up the Z axis.
     void drawTool(QPainter& painter, const View& view, const ToolpathMarks& marks);
     void drawStock(QPainter& painter, const View& view);
+    /// The part (TP-030): the model's mesh filled with a depth buffer into an
+    /// image, made again when the part or the view changed.
+    void drawPart(QPainter& painter, const View& view);
     void drawTriad(QPainter& painter, const View& view);
     /// Where the axis triad and its names are drawn (top right).
     QRectF triadBox(const View& view) const;
@@ -83,6 +94,11 @@ class PainterToolpathCanvas : public ToolpathCanvas {
     bool split_ = false;
     bool framedAll_ = false;                ///< the last fit was fitAll()
     std::array<ToolpathRulers, 2> rulers_;  ///< scene, developed plane
+    ToolpathFramePacer pacer_;              ///< repaints at a bounded rate (TP-029)
+    QImage partImage_;                      ///< the part as drawPart made it last
+    std::vector<double> partKey_;           ///< the view it was made for
+    bool partChanged_ = true;               ///< the model's part changed since
+    int partImagesMade_ = 0;
 };
 
 }  // namespace mtc::screens

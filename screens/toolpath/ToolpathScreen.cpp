@@ -109,7 +109,7 @@ QString ToolpathScreen::legendText() const {
     if (!model_->backplot(false).empty() || !model_->backplot(true).empty())
         text += " &nbsp;&nbsp; " + swatch(p.backplot, tr("travelled since Start"));
     const QString part = model_->part().note;
-    if (model_->partShown() && glReason_.isEmpty())  // the 2D view draws no part
+    if (model_->partShown())  // both views draw it (TP-023, TP-030)
         text += " &nbsp;&nbsp; " + swatch(p.part, part + " " + tr("(M hides)"));
     else if (g && !part.isEmpty())
         text += " &nbsp;&nbsp; " + part;
