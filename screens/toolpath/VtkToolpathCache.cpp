@@ -122,6 +122,7 @@ bool VtkStillCache::keep() {
         area.live->TexturedBackgroundOn();
     }
     keeping_ = true;
+    ++pictures_;
     return true;
 }
 

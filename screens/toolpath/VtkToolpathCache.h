@@ -44,6 +44,8 @@ class VtkStillCache {
     void setEnabled(bool enabled);
     /// Renders that drew the steady picture from the kept image.
     int keptRenders() const { return kept_; }
+    /// Steady pictures drawn and kept (each one a draw of the steady renderers).
+    int pictures() const { return pictures_; }
     /// The steady picture is drawn from the kept image now.
     bool keeping() const { return keeping_; }
 
@@ -71,6 +73,7 @@ class VtkStillCache {
     bool enabled_ = true;
     bool unreadable_ = false;  ///< the pixels could not be read: always draw everything
     int kept_ = 0;
+    int pictures_ = 0;
     unsigned long observer_ = 0;
 };
 

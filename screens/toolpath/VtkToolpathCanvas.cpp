@@ -137,7 +137,10 @@ VtkToolpathCanvas::VtkToolpathCanvas(ToolpathModel* model, QWidget* parent)
     widget_->installEventFilter(this);
     connect(model_, &ToolpathModel::geometryChanged, this, &VtkToolpathCanvas::rebuild);
     connect(model_, &ToolpathModel::partChanged, this, [this] {
+        const bool wasShown = scene_->part->GetVisibility();
         updatePart();
+        // A live part meshed again while M hides it changes no pixel (TP-029).
+        if (!wasShown && !scene_->part->GetVisibility()) return;
         scene_->stillCache->invalidate();
         requestRender();
     });
@@ -163,6 +166,10 @@ int VtkToolpathCanvas::renderCount() const {
 
 int VtkToolpathCanvas::keptRenders() const {
     return scene_->stillCache->keptRenders();
+}
+
+int VtkToolpathCanvas::keptPictures() const {
+    return scene_->stillCache->pictures();
 }
 
 void VtkToolpathCanvas::keepSteadyPicture(bool on) {

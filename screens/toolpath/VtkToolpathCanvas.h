@@ -45,6 +45,8 @@ class VtkToolpathCanvas : public ToolpathCanvas {
     int renderCount() const;
     /// Renders that drew the steady picture from the kept image (TP-018).
     int keptRenders() const;
+    /// Steady pictures drawn and kept since the view was made (TP-018).
+    int keptPictures() const;
     /// Off: every render draws the whole scene (frame timing, tests).
     void keepSteadyPicture(bool on);
     /// True while the coarse copy is shown (the view is moving).

@@ -15,6 +15,7 @@
 #include <QDir>
 #include <QLabel>
 #include <QSet>
+#include <QSignalSpy>
 #include <QTemporaryDir>
 #include <cmath>
 #include <cstdio>
@@ -641,6 +642,45 @@ class ToolpathGlTest : public QObject {
             QCoreApplication::processEvents();
         }
         QVERIFY(canvas->renderCount() > renders);
+    }
+
+    /// TP-029: while M hides the part, the live part meshed again as the
+    /// tool cuts it draws nothing: the steady picture kept before stays.
+    void aHiddenLivePartKeepsTheSteadyPicture() {
+        PanelFixture panel;
+        panel.session->selectProgram(0, 1);
+        QVERIFY(panel.window->showScreen("toolpath"));
+        panel.session->setTimerEnabled(false);
+        ToolpathScreen* screen = toolpath(panel);
+        VtkToolpathCanvas* canvas = vtkCanvas(screen);
+        QVERIFY(canvas);
+        canvas->setFrameInterval(0);
+        panel.press(Qt::Key_F5, Qt::ShiftModifier);  // Start
+        panel.session->advance(0.02);
+        QVERIFY(screen->model()->partIsLive());
+        panel.press(Qt::Key_M);
+        QVERIFY(!screen->model()->partShown());
+        // On to the cutting (after the tool change's G53 moves: the labels'
+        // zero offset then stays G54, TP-019).
+        const auto& cut = panel.session->station(0).liveCut();
+        for (int tick = 0; tick < 6000 && !(cut.part()->removedVolume() > 0.0); ++tick) {
+            panel.session->advance(0.05);
+            QCoreApplication::processEvents();
+        }
+        QVERIFY(cut.part()->removedVolume() > 0.0);
+        canvas->renderNow();
+        canvas->renderNow();  // kept from here on
+        const int pictures = canvas->keptPictures(), renders = canvas->renderCount();
+        QSignalSpy meshed(screen->model(), &mtc::screens::ToolpathModel::partChanged);
+        // Until the view has taken the live part twice (at most every
+        // kLiveMeshMs while the axes move, so the test waits for it).
+        for (int tick = 0; tick < 3000 && meshed.count() < 2; ++tick) {
+            panel.session->advance(0.05);
+            QTest::qWait(10);
+        }
+        QVERIFY(meshed.count() >= 2);
+        QVERIFY(canvas->renderCount() > renders);  // the tool and backplot moved
+        QCOMPARE(canvas->keptPictures(), pictures);
     }
 
     /// TP-029: while the program runs, the station's steps ask for renders
