@@ -27,6 +27,7 @@
 #include <QMouseEvent>
 #include <QTimer>
 #include <QVBoxLayout>
+#include <algorithm>
 #include <cmath>
 
 #include "cnc_core/toolpath/ToolpathPick.h"
@@ -62,6 +63,9 @@ struct VtkToolpathCanvas::Scene {
     ToolpathPreset preset = ToolpathPreset::Isometric;
     bool split = false, coarse = false;
     int renders = 0, coarsePicks = 0;
+    /// A frame (of everything: true) made before the view had its size and
+    /// scale: made again at the first render on screen (the caption's room).
+    std::optional<bool> refitWhenShown;
     QTimer still;
     QPoint pressed;
     std::unique_ptr<VtkStillCache> stillCache;  ///< the steady picture kept as an image (TP-018)
@@ -191,6 +195,12 @@ void VtkToolpathCanvas::updatePart() {
 void VtkToolpathCanvas::renderNow() {
     pacer_.drawn();
     updateLineWidths();
+    if (scene_->refitWhenShown && widget_->isVisible()) {
+        const bool all = *scene_->refitWhenShown;
+        scene_->refitWhenShown.reset();
+        for (Part* part : {&scene_->scene, &scene_->developed})
+            part->frame(model_->frame(part->developed, all));
+    }
     // While the view moves every frame is a new picture: nothing to keep.
     scene_->stillCache->render(!scene_->coarse);
     ++scene_->renders;
@@ -223,6 +233,7 @@ void VtkToolpathCanvas::showLevelOfDetail(bool coarse) {
 }
 
 void VtkToolpathCanvas::moving() {
+    scene_->refitWhenShown.reset();  // the operator moved the view: keep it
     if (!scene_->coarse) showLevelOfDetail(true);
     scene_->still.start();
 }
@@ -350,9 +361,29 @@ bool VtkToolpathCanvas::updateBackplot() {
 }
 
 QRect VtkToolpathCanvas::sceneCaptionRect() const {
-    double box[4];  // x min, x max, y min, y max in device pixels from the bottom
+    double box[4];  // x min, x max, y min, y max in its viewport's device pixels
     scene_->scene.caption->GetBoundingBox(scene_->scene.renderer, box);
-    return deviceToWidget(box);
+    const int* origin = scene_->scene.renderer->GetOrigin();
+    const double inWindow[4] = {box[0] + origin[0], box[1] + origin[0], box[2] + origin[1],
+                                box[3] + origin[1]};
+    return deviceToWidget(inWindow);
+}
+
+QRect VtkToolpathCanvas::framedRect() const {
+    const mtc::core::ToolpathBounds box = model_->frame(false, false);
+    if (box.empty) return {};
+    double rect[4] = {1e300, -1e300, 1e300, -1e300};
+    for (int corner = 0; corner < 8; ++corner) {
+        const auto at = [&](std::size_t k) { return (corner >> k) & 1 ? box.max[k] : box.min[k]; };
+        scene_->scene.renderer->SetWorldPoint(at(0), at(1), at(2), 1.0);
+        scene_->scene.renderer->WorldToDisplay();
+        const double* display = scene_->scene.renderer->GetDisplayPoint();
+        rect[0] = std::min(rect[0], display[0]);
+        rect[1] = std::max(rect[1], display[0]);
+        rect[2] = std::min(rect[2], display[1]);
+        rect[3] = std::max(rect[3], display[1]);
+    }
+    return deviceToWidget(rect);
 }
 
 QRect VtkToolpathCanvas::triadRect() const {
@@ -513,17 +544,9 @@ void VtkToolpathCanvas::fitAll() {
 }
 
 void VtkToolpathCanvas::frame(bool all) {
-    for (Part* part : {&scene_->scene, &scene_->developed}) {
-        const mtc::core::ToolpathBounds box = model_->frame(part->developed, all);
-        if (box.empty) {
-            part->renderer->ResetCamera();
-        } else {
-            double bounds[6] = {box.min[0], box.max[0], box.min[1],
-                                box.max[1], box.min[2], box.max[2]};
-            part->renderer->ResetCamera(bounds);
-        }
-        part->fitClippingRange();
-    }
+    for (Part* part : {&scene_->scene, &scene_->developed})
+        part->frame(model_->frame(part->developed, all));
+    scene_->refitWhenShown = widget_->isVisible() ? std::nullopt : std::optional<bool>(all);
     requestRender();
 }
 

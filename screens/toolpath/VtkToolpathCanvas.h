@@ -64,6 +64,8 @@ class VtkToolpathCanvas : public ToolpathCanvas {
     /// Where the scene's caption and the axes triad are drawn (widget pixels).
     QRect sceneCaptionRect() const;
     QRect triadRect() const;
+    /// The scene's framed box (ToolpathModel::frame) on the screen.
+    QRect framedRect() const;
     /// The title the axes box shows on scene axis `axis` (0 X, 1 Y, 2 Z).
     QString axisTitle(int axis) const;
     /// Cells the coarse copy shown while moving may have at most.

@@ -1,5 +1,7 @@
 #include "screens/toolpath/VtkToolpathPart.h"
 
+#include <vtkCamera.h>
+
 #include <algorithm>
 #include <cmath>
 
@@ -56,6 +58,7 @@ void Part::setUp(const ToolpathPalette& palette) {
 }
 
 void Part::setScreenScale(double scale) {
+    screenScale = scale;
     const auto width = [scale](double w) {
         return static_cast<float>(ToolpathCanvas::scaledWidth(w, scale));
     };
@@ -71,6 +74,101 @@ void Part::setScreenScale(double scale) {
     contour->GetProperty()->SetLineWidth(width(kContourWidth));
     highlight->GetProperty()->SetLineWidth(width(kHighlightWidth));
     backplot->setWidth(width(VtkBackplot::kWidth));
+}
+
+namespace {
+
+/// Where a box lies on a parallel camera's screen, in world units from the
+/// focal point along the screen's up: lowest and highest, and the lowest
+/// of its edges left of `right` (along the screen's right).
+struct ScreenExtent {
+    double low = 0.0, high = 0.0;
+    double lowOverCaption = 1e300;
+};
+
+ScreenExtent screenExtent(const mtc::core::ToolpathBounds& box, vtkCamera& camera, double right) {
+    double up[3], direction[3], focal[3];
+    camera.GetViewUp(up);
+    camera.GetDirectionOfProjection(direction);
+    camera.GetFocalPoint(focal);
+    const double side[3] = {direction[1] * up[2] - direction[2] * up[1],
+                            direction[2] * up[0] - direction[0] * up[2],
+                            direction[0] * up[1] - direction[1] * up[0]};
+    double x[8], y[8];
+    for (int corner = 0; corner < 8; ++corner) {
+        x[corner] = y[corner] = 0.0;
+        for (std::size_t k = 0; k < 3; ++k) {
+            const double at = ((corner >> k) & 1 ? box.max[k] : box.min[k]) - focal[k];
+            x[corner] += at * side[k];
+            y[corner] += at * up[k];
+        }
+    }
+    ScreenExtent extent{*std::min_element(y, y + 8), *std::max_element(y, y + 8)};
+    // The 12 edges, each cut at `right`: its lowest point left of it.
+    for (int a = 0; a < 8; ++a) {
+        for (int k = 0; k < 3; ++k) {
+            if ((a >> k) & 1) continue;
+            const int b = a | (1 << k);
+            if (x[a] <= right) extent.lowOverCaption = std::min(extent.lowOverCaption, y[a]);
+            if (x[b] <= right) extent.lowOverCaption = std::min(extent.lowOverCaption, y[b]);
+            if ((x[a] <= right) != (x[b] <= right)) {
+                const double t = (right - x[a]) / (x[b] - x[a]);
+                extent.lowOverCaption = std::min(extent.lowOverCaption, y[a] + t * (y[b] - y[a]));
+            }
+        }
+    }
+    return extent;
+}
+
+}  // namespace
+
+void Part::frame(const mtc::core::ToolpathBounds& box) {
+    if (box.empty) {
+        renderer->ResetCamera();
+    } else {
+        double bounds[6] = {box.min[0], box.max[0], box.min[1], box.max[1], box.min[2], box.max[2]};
+        renderer->ResetCamera(bounds);
+        keepClearOfCaption(box);
+    }
+    fitClippingRange();
+}
+
+void Part::keepClearOfCaption(const mtc::core::ToolpathBounds& box) {
+    vtkCamera* camera = renderer->GetActiveCamera();
+    const int* size = renderer->GetSize();
+    if (!camera->GetParallelProjection() || size[0] <= 0 || size[1] <= 0) return;
+    // The caption's box, and room for the tick labels and title the axes
+    // hang beside the box: device pixels, as shares of the view.
+    double text[4];  // x min, x max, y min, y max
+    caption->GetBoundingBox(renderer, text);
+    const double labelPixels =
+        ((kAxesTextOffset + kAxesTextSize) * 2 + kCaptionMargin) * screenScale;
+    const double below = std::min(0.45, (text[3] + labelPixels) / size[1]);
+    const double beside = std::min(1.0, (text[1] + labelPixels) / size[0]);
+    camera->OrthogonalizeViewUp();
+    double scale = camera->GetParallelScale();  // half the view's height
+    const double halfWidth = scale * size[0] / size[1];
+    const ScreenExtent extent = screenExtent(box, *camera, -halfWidth + 2.0 * beside * halfWidth);
+    const double lowest = -scale * (1.0 - 2.0 * below);  // where the free part begins
+    if (extent.lowOverCaption >= lowest) return;         // already clear
+    // Up just far enough; if the top would leave the view, zoomed out to
+    // the free part's height and centred in it.
+    double shift = extent.lowOverCaption - lowest;  // the camera's move along up
+    if (extent.high - shift > scale) {
+        scale = (extent.high - extent.low) / (2.0 * (1.0 - below));
+        shift = (extent.high + extent.low) / 2.0 - below * scale;
+    }
+    double up[3], focal[3], position[3];
+    camera->GetViewUp(up);
+    camera->GetFocalPoint(focal);
+    camera->GetPosition(position);
+    for (int k = 0; k < 3; ++k) {
+        focal[k] += shift * up[k];
+        position[k] += shift * up[k];
+    }
+    camera->SetFocalPoint(focal);
+    camera->SetPosition(position);
+    camera->SetParallelScale(scale);
 }
 
 void Part::fitClippingRange() {

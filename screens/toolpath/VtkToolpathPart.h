@@ -71,6 +71,14 @@ struct Part {
     static constexpr double kCaptionMargin = 8.0;
     static constexpr double kAxesTextSize = 10.0;
     static constexpr double kAxesTextOffset = 20.0;
+    /// The screen scale set last (setScreenScale).
+    double screenScale = 1.0;
+    /// Frames `box` (empty: everything shown), clear of the caption: the
+    /// box and the labels hanging below it stay above the caption's lines.
+    void frame(const mtc::core::ToolpathBounds& box);
+    /// Moves and zooms the camera out so that `box`, with room for its tick
+    /// labels and title below it, sits above the caption (parallel views).
+    void keepClearOfCaption(const mtc::core::ToolpathBounds& box);
     /// The depth range of the camera: the steady and live props (the tool
     /// lives in the live renderer), with half their size to spare so that
     /// the tool stays inside it as it moves.

@@ -356,6 +356,40 @@ class ToolpathGlTest : public QObject {
                  qPrintable(QString("%1 px a line at scale %2").arg(lineHeight).arg(scale)));
     }
 
+    /// TP-014: every preset view of both demo machines frames the part
+    /// above the caption; in a plane view whose box stands over the
+    /// caption, the tick labels and title under its bottom edge (two rows of
+    /// 10-pixel text 20 pixels apart at 96 dpi) fit between the two.
+    void theFramedPartStaysAboveTheCaptionInEveryView() {
+        for (const int slot : {0, 1}) {
+            PanelFixture panel;
+            panel.window->showStation(slot);
+            panel.session->selectProgram(slot, 1);
+            QVERIFY(panel.window->showScreen("toolpath"));
+            ToolpathScreen* screen = toolpath(panel, slot);
+            VtkToolpathCanvas* canvas = vtkCanvas(screen);
+            QVERIFY(canvas);
+            const int labels = static_cast<int>(
+                std::ceil(60.0 * canvas->deviceLineScale() / canvas->devicePixelRatioF()));
+            for (const Qt::Key preset : {Qt::Key_1, Qt::Key_2, Qt::Key_3, Qt::Key_4}) {
+                panel.press(preset);
+                canvas->renderNow();
+                const QRect caption = canvas->sceneCaptionRect();
+                const QRect part = canvas->framedRect();
+                QVERIFY(!part.isEmpty() && !caption.isEmpty());
+                // A plane view labels the box's bottom edge across its width.
+                const bool over = preset != Qt::Key_4 && part.left() <= caption.right() + labels;
+                QVERIFY2(part.bottom() < caption.top() &&
+                             (!over || part.bottom() + labels <= caption.top()),
+                         qPrintable(QString("station %1 view %2: part bottom %3, caption top %4")
+                                        .arg(slot)
+                                        .arg(preset - Qt::Key_0)
+                                        .arg(part.bottom())
+                                        .arg(caption.top())));
+            }
+        }
+    }
+
     /// TP-020: the demo lathe programs radii (B015 = radius) and says so on
     /// its X axis; a G16 block is read in diameters: ticks twice the radius.
     void theLatheXReadsTheDiameterUnderG16AndSaysRadiusOtherwise() {
