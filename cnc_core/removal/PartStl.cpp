@@ -99,6 +99,45 @@ class TriangleBuffer {
 /// (partTriangles) or keeps one quad per cell as the STL does.
 enum class Facets { PerCell, MergeRuns };
 
+/// Where the runs of one strip of facets begin and end: vertex indices
+/// along the strip, ascending, the first 0 and the last its end.
+using RunBounds = std::vector<int>;
+
+RunBounds everyVertex(int count) {
+    RunBounds all(static_cast<std::size_t>(count));
+    for (int i = 0; i < count; ++i)
+        all[static_cast<std::size_t>(i)] = i;
+    return all;
+}
+
+/// A run of facets in one plane from vertex a to vertex b of its strip,
+/// as triangles through every vertex the neighbouring strips' runs have on
+/// its two edges (`low`, `high`): no vertex lies inside another triangle's
+/// edge, so a rasteriser leaves no cracks between the runs (a T-junction
+/// would). `corner(i, high)` is vertex i of the low or the high edge; the
+/// low edge runs a -> b counter-clockwise seen from outside.
+template <typename Out, typename Corner>
+void zipRun(Out& out, int a, int b, const RunBounds& low, const RunBounds& high, Corner corner) {
+    const auto onEdge = [a, b](const RunBounds& neighbour) {
+        RunBounds v{a};
+        for (int i : neighbour)
+            if (i > a && i < b) v.push_back(i);
+        v.push_back(b);
+        return v;
+    };
+    const RunBounds l = onEdge(low), h = onEdge(high);
+    std::size_t i = 0, j = 0;
+    while (i + 1 < l.size() || j + 1 < h.size()) {
+        if (j + 1 == h.size() || (i + 1 < l.size() && l[i + 1] <= h[j + 1])) {
+            out.triangle(corner(l[i], false), corner(l[i + 1], false), corner(h[j], true));
+            ++i;
+        } else {
+            out.triangle(corner(l[i], false), corner(h[j + 1], true), corner(h[j], true));
+            ++j;
+        }
+    }
+}
+
 template <typename Out>
 void heightFieldSurface(const HeightField& f, Out& out, Facets facets = Facets::PerCell) {
     const Box& box = f.stock();
@@ -110,23 +149,40 @@ void heightFieldSurface(const HeightField& f, Out& out, Facets facets = Facets::
         return Point{xs.position[k], ys.position[l], f.height(xs.cell[k], ys.cell[l])};
     };
     const auto bottom = [&](int k, int l) { return Point{xs.position[k], ys.position[l], zb}; };
+    // A quad whose four corners have one height is flat; a run of flat
+    // quads of one height along a row is one piece of the same surface.
+    std::vector<RunBounds> runs(static_cast<std::size_t>(nv - 1));
     for (int l = 0; l + 1 < nv; ++l) {
-        // A quad whose four corners have one height is flat; a run of flat
-        // quads of one height along the row is one quad of the same surface.
         const auto flatAt = [&](int k, double z) {
             return f.height(xs.cell[k], ys.cell[l]) == z &&
                    f.height(xs.cell[k + 1], ys.cell[l]) == z &&
                    f.height(xs.cell[k], ys.cell[l + 1]) == z &&
                    f.height(xs.cell[k + 1], ys.cell[l + 1]) == z;
         };
+        RunBounds& row = runs[static_cast<std::size_t>(l)];
         for (int k = 0; k + 1 < nu;) {
+            row.push_back(k);
             int end = k + 1;
             const double z = f.height(xs.cell[k], ys.cell[l]);
             if (facets == Facets::MergeRuns && flatAt(k, z))
                 while (end + 1 < nu && flatAt(end, z))
                     ++end;
-            out.quad(top(k, l), top(end, l), top(end, l + 1), top(k, l + 1));
             k = end;
+        }
+        row.push_back(nu - 1);
+    }
+    const RunBounds border = everyVertex(nu);  // the side walls have every vertex
+    for (int l = 0; l + 1 < nv; ++l) {
+        const RunBounds& row = runs[static_cast<std::size_t>(l)];
+        const RunBounds& below = l == 0 ? border : runs[static_cast<std::size_t>(l - 1)];
+        const RunBounds& above = l + 2 == nv ? border : runs[static_cast<std::size_t>(l + 1)];
+        for (std::size_t r = 0; r + 1 < row.size(); ++r) {
+            const int k = row[r], end = row[r + 1];
+            if (end == k + 1)  // one cell: as the STL splits it
+                out.quad(top(k, l), top(k + 1, l), top(k + 1, l + 1), top(k, l + 1));
+            else
+                zipRun(out, k, end, below, above,
+                       [&](int i, bool high) { return top(i, high ? l + 1 : l); });
         }
     }
     for (int k = 0; k + 1 < nu; ++k) {
@@ -192,20 +248,39 @@ void turnedSurface(const PartModel& part, Out& out, Facets facets = Facets::PerC
                 out.quad(point(k, s), point(k, s + 1), point(k + 1, s + 1), point(k + 1, s));
     } else {
         // Along the axis: a run of facets whose edges keep their radii is
-        // one facet of the same surface (a turned diameter, its length).
+        // one piece of the same surface (a turned diameter, its length).
+        std::vector<RunBounds> runs(static_cast<std::size_t>(segments));
         for (int s = 0; s < segments; ++s) {
             const auto straight = [&](int k, double r0, double r1) {
                 return radius(k, s) == r0 && radius(k + 1, s) == r0 && radius(k, s + 1) == r1 &&
                        radius(k + 1, s + 1) == r1;
             };
+            RunBounds& facet = runs[static_cast<std::size_t>(s)];
             for (int k = 0; k + 1 < rings;) {
+                facet.push_back(k);
                 const double r0 = radius(k, s), r1 = radius(k, s + 1);
                 int end = k + 1;
                 if (straight(k, r0, r1))
                     while (end + 1 < rings && straight(end, r0, r1))
                         ++end;
-                out.quad(point(k, s), point(k, s + 1), point(end, s + 1), point(end, s));
                 k = end;
+            }
+            facet.push_back(rings - 1);
+        }
+        for (int s = 0; s < segments; ++s) {
+            const RunBounds& facet = runs[static_cast<std::size_t>(s)];
+            // The edge at angle s + 1 is shared with facet s + 1, the one at s
+            // with facet s - 1.
+            const RunBounds& next = runs[static_cast<std::size_t>((s + 1) % segments)];
+            const RunBounds& previous =
+                runs[static_cast<std::size_t>((s + segments - 1) % segments)];
+            for (std::size_t r = 0; r + 1 < facet.size(); ++r) {
+                const int k = facet[r], end = facet[r + 1];
+                if (end == k + 1)
+                    out.quad(point(k, s), point(k, s + 1), point(k + 1, s + 1), point(k + 1, s));
+                else
+                    zipRun(out, k, end, next, previous,
+                           [&](int i, bool high) { return point(i, high ? s : s + 1); });
             }
         }
     }

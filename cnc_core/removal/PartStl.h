@@ -27,8 +27,9 @@ std::string partStl(const PartModel& part);
 /// a turned part the facets of one radius. A milled plate's floors and top
 /// then take a few thousand triangles instead of two per cell, which is
 /// what a view pays for in building, uploading and drawing the mesh each
-/// time the live part changes. (Merged runs meet their neighbours in
-/// T-junctions: a view, not an STL, takes this mesh.)
+/// time the live part changes. Each run is triangulated through the
+/// vertices its neighbours have on its edges: closed edge to edge, no
+/// T-junction for a rasteriser to crack open.
 std::vector<float> partTriangles(const PartModel& part);
 
 /// Writes partStl() to `path` atomically (writeFileAtomically: only over a

@@ -424,7 +424,8 @@ std::array<double, 2> volumeAndArea(const float* v, std::size_t triangles) {
 
 // The view's mesh (TP-029) is the STL's surface with the runs of facets in
 // one plane merged: the same enclosed volume and area, far fewer triangles
-// for a milled pocket and a turned shaft, and on the mill the STL's heights.
+// for a milled pocket and a turned shaft, on the mill the STL's heights, and
+// closed edge to edge (no T-junction where a rasteriser would leave cracks).
 TEST(PartStl, TheViewsMeshIsTheStlsSurfaceWithFlatRunsMerged) {
     for (const auto& [program, process] :
          {std::pair{kPocketByCentre, 0}, std::pair{kTurnedShaft, 1}, std::pair{kRingGroove, 1}}) {
@@ -437,6 +438,12 @@ TEST(PartStl, TheViewsMeshIsTheStlsSurfaceWithFlatRunsMerged) {
             std::memcpy(&cells[9 * t], stl.data() + 84 + 50 * t + 12, 36);
         const std::vector<float> merged = partTriangles(*run.part);
         ASSERT_EQ(merged.size() % 9, 0u);
+        std::string closed(84 + 50 * (merged.size() / 9), '\0');  // as an STL for the check
+        const auto triangles = static_cast<std::uint32_t>(merged.size() / 9);
+        std::memcpy(&closed[80], &triangles, 4);
+        for (std::size_t t = 0; t < triangles; ++t)
+            std::memcpy(&closed[84 + 50 * t + 12], &merged[9 * t], 36);
+        expectClosed(closed, triangles);
         const auto full = volumeAndArea(cells.data(), count);
         const auto view = volumeAndArea(merged.data(), merged.size() / 9);
         EXPECT_NEAR(view[0], full[0], 1e-6 * full[0]) << program;
