@@ -35,6 +35,7 @@
 #include "screens/toolpath/VtkToolpathCache.h"
 #include "screens/toolpath/VtkToolpathData.h"
 #include "screens/toolpath/VtkToolpathPart.h"
+#include "screens/toolpath/VtkToolpathScene.h"
 
 namespace mtc::screens {
 
@@ -50,36 +51,6 @@ bool sameSteadyMarks(const ToolpathMarks& a, const ToolpathMarks& b) {
 }
 
 }  // namespace
-
-struct VtkToolpathCanvas::Scene {
-    vtkNew<vtkGenericOpenGLRenderWindow> window;
-    Part scene, developed;
-    vtkNew<vtkActor> stock, cylinder, start, target, reentry, repos, tool;
-    vtkNew<vtkActor> collision;  ///< where the way back first meets the part (D-021)
-    vtkNew<vtkActor> part;       ///< the finished part (TP-023)
-    vtkNew<vtkAxesActor> triadAxes;
-    vtkNew<vtkOrientationMarkerWidget> triad;
-    vtkNew<vtkCallbackCommand> interaction;
-    ToolpathPreset preset = ToolpathPreset::Isometric;
-    bool split = false, coarse = false;
-    int renders = 0, coarsePicks = 0;
-    /// A frame (of everything: true) made before the view had its size and
-    /// scale: made again at the first render on screen (the caption's room).
-    std::optional<bool> refitWhenShown;
-    QTimer still;
-    QPoint pressed;
-    std::unique_ptr<VtkStillCache> stillCache;  ///< the steady picture kept as an image (TP-018)
-    ToolpathMarks shownMarks;                   ///< the marks the steady picture shows
-    std::vector<std::uint32_t> shownHighlight;  ///< the moves the highlight shows
-    std::array<double, 4> toolShape{};          ///< has tool, turning, radius, length shown
-    double toolPictureSize = 0.0;               ///< picture size the tool was made for
-    std::array<double, 3> toolAt{};             ///< where the tool is drawn
-    mtc::core::ToolpathFrame shownFrame;        ///< the frame the scene's labels are in
-    double lineScale = 0.0;                     ///< line widths set for (updateLineWidths)
-    QString sceneCaption;                       ///< the scene caption without the frame line
-    /// Per area (scene, developed): backplot shown (0/1), its run and revision.
-    std::array<std::array<std::uint64_t, 3>, 2> shownBackplot{};
-};
 
 VtkToolpathCanvas::VtkToolpathCanvas(ToolpathModel* model, QWidget* parent)
     : ToolpathCanvas(model, parent),
@@ -360,55 +331,6 @@ bool VtkToolpathCanvas::updateBackplot() {
     return changed;
 }
 
-QRect VtkToolpathCanvas::sceneCaptionRect() const {
-    double box[4];  // x min, x max, y min, y max in its viewport's device pixels
-    scene_->scene.caption->GetBoundingBox(scene_->scene.renderer, box);
-    const int* origin = scene_->scene.renderer->GetOrigin();
-    const double inWindow[4] = {box[0] + origin[0], box[1] + origin[0], box[2] + origin[1],
-                                box[3] + origin[1]};
-    return deviceToWidget(inWindow);
-}
-
-QRect VtkToolpathCanvas::framedRect() const {
-    const mtc::core::ToolpathBounds box = model_->frame(false, false);
-    if (box.empty) return {};
-    double rect[4] = {1e300, -1e300, 1e300, -1e300};
-    for (int corner = 0; corner < 8; ++corner) {
-        const auto at = [&](std::size_t k) { return (corner >> k) & 1 ? box.max[k] : box.min[k]; };
-        scene_->scene.renderer->SetWorldPoint(at(0), at(1), at(2), 1.0);
-        scene_->scene.renderer->WorldToDisplay();
-        const double* display = scene_->scene.renderer->GetDisplayPoint();
-        rect[0] = std::min(rect[0], display[0]);
-        rect[1] = std::max(rect[1], display[0]);
-        rect[2] = std::min(rect[2], display[1]);
-        rect[3] = std::max(rect[3], display[1]);
-    }
-    return deviceToWidget(rect);
-}
-
-QRect VtkToolpathCanvas::triadRect() const {
-    const double* v = scene_->triad->GetViewport();
-    const int* size = scene_->window->GetSize();
-    const double box[4] = {v[0] * size[0], v[2] * size[0], v[1] * size[1], v[3] * size[1]};
-    return deviceToWidget(box);
-}
-
-QRect VtkToolpathCanvas::deviceToWidget(const double box[4]) const {
-    const double ratio = widget_->devicePixelRatioF();
-    const int height = scene_->window->GetSize()[1];
-    return QRectF(QPointF(box[0], height - box[3]) / ratio,
-                  QPointF(box[1], height - box[2]) / ratio)
-        .toAlignedRect();
-}
-
-QString VtkToolpathCanvas::sceneCaption() const {
-    return QString::fromUtf8(scene_->scene.caption->GetInput());
-}
-
-std::array<double, 2> VtkToolpathCanvas::tickRange(int axis) const {
-    return axisRange(scene_->scene.axes, axis);
-}
-
 void VtkToolpathCanvas::updateLineWidths() {
     const double scale = deviceLineScale();
     if (scale == scene_->lineScale) return;
@@ -417,10 +339,6 @@ void VtkToolpathCanvas::updateLineWidths() {
     scene_->developed.setScreenScale(scale);
     scene_->repos->GetProperty()->SetLineWidth(static_cast<float>(scaledWidth(3.0, scale)));
     scene_->stillCache->invalidate();
-}
-
-QString VtkToolpathCanvas::axisTitle(int axis) const {
-    return axisTitleOf(scene_->scene.axes, axis);
 }
 
 bool VtkToolpathCanvas::updateFrame(bool always) {
@@ -509,90 +427,6 @@ bool VtkToolpathCanvas::updateMarks(bool always) {
         setColour(scene_->repos->GetProperty(), palette.repos);
     }
     return true;
-}
-
-void VtkToolpathCanvas::showAxesFor(ToolpathPreset preset) {
-    vtkCubeAxesActor* axes = scene_->scene.axes;
-    axes->SetXAxisVisibility(preset != ToolpathPreset::G19);
-    axes->SetYAxisVisibility(preset != ToolpathPreset::G18);
-    axes->SetZAxisVisibility(preset != ToolpathPreset::G17);
-}
-
-void VtkToolpathCanvas::showPreset(ToolpathPreset preset) {
-    scene_->preset = preset;
-    showAxesFor(preset);
-    const CameraPose pose = presetPose(preset);
-    vtkCamera* camera = scene_->scene.renderer->GetActiveCamera();
-    camera->SetFocalPoint(0, 0, 0);
-    camera->SetPosition(-pose.direction[0], -pose.direction[1], -pose.direction[2]);
-    camera->SetViewUp(pose.up[0], pose.up[1], pose.up[2]);
-    camera->ParallelProjectionOn();
-    vtkCamera* flat = scene_->developed.renderer->GetActiveCamera();
-    flat->SetFocalPoint(0, 0, 0);
-    flat->SetPosition(0, 0, 1);
-    flat->SetViewUp(0, 1, 0);
-    flat->ParallelProjectionOn();
-    fit();
-}
-
-void VtkToolpathCanvas::fit() {
-    frame(false);
-}
-
-void VtkToolpathCanvas::fitAll() {
-    frame(true);
-}
-
-void VtkToolpathCanvas::frame(bool all) {
-    for (Part* part : {&scene_->scene, &scene_->developed})
-        part->frame(model_->frame(part->developed, all));
-    scene_->refitWhenShown = widget_->isVisible() ? std::nullopt : std::optional<bool>(all);
-    requestRender();
-}
-
-void VtkToolpathCanvas::zoom(double factor) {
-    for (Part* part : {&scene_->scene, &scene_->developed}) {
-        part->renderer->GetActiveCamera()->Zoom(factor);
-        part->fitClippingRange();
-    }
-    moving();
-    requestRender();
-}
-
-void VtkToolpathCanvas::pan(double right, double up) {
-    for (Part* part : {&scene_->scene, &scene_->developed}) {
-        vtkCamera* camera = part->renderer->GetActiveCamera();
-        const double height = 2 * camera->GetParallelScale();
-        const double width = height * std::max(part->renderer->GetTiledAspectRatio(), 1e-3);
-        double direction[3], upVector[3], side[3], focal[3], position[3];
-        camera->GetDirectionOfProjection(direction);
-        camera->GetViewUp(upVector);
-        side[0] = direction[1] * upVector[2] - direction[2] * upVector[1];
-        side[1] = direction[2] * upVector[0] - direction[0] * upVector[2];
-        side[2] = direction[0] * upVector[1] - direction[1] * upVector[0];
-        camera->GetFocalPoint(focal);
-        camera->GetPosition(position);
-        for (int i = 0; i < 3; ++i) {
-            const double shift = -(right * width * side[i] + up * height * upVector[i]);
-            focal[i] += shift;
-            position[i] += shift;
-        }
-        camera->SetFocalPoint(focal);
-        camera->SetPosition(position);
-    }
-    moving();
-    requestRender();
-}
-
-void VtkToolpathCanvas::rotate(double azimuth, double elevation) {
-    showAxesFor(ToolpathPreset::Isometric);  // out of the plane: all three
-    vtkCamera* camera = scene_->scene.renderer->GetActiveCamera();
-    camera->Azimuth(azimuth);
-    camera->Elevation(elevation);
-    camera->OrthogonalizeViewUp();
-    scene_->scene.fitClippingRange();
-    moving();
-    requestRender();
 }
 
 QImage VtkToolpathCanvas::picture() {
