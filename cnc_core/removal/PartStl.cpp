@@ -175,7 +175,7 @@ void heightFieldSurface(const HeightField& f, Out& out, Facets facets = Facets::
     for (int l = 0; l + 1 < nv; ++l) {
         const RunBounds& row = runs[static_cast<std::size_t>(l)];
         const RunBounds& below = l == 0 ? border : runs[static_cast<std::size_t>(l - 1)];
-        const RunBounds& above = l + 2 == nv ? border : runs[static_cast<std::size_t>(l + 1)];
+        const RunBounds& above = l + 2 == nv ? border : runs[static_cast<std::size_t>(l) + 1];
         for (std::size_t r = 0; r + 1 < row.size(); ++r) {
             const int k = row[r], end = row[r + 1];
             if (end == k + 1)  // one cell: as the STL splits it
