@@ -291,6 +291,7 @@ AfcStatus AdaptiveFeedControl::recordStallTorque(const std::string& axis, double
     if (!(periodMs >= 0.0 && periodMs <= 60000.0))
         return refuse(AfcStatus::BadPeriod, "P-7-3651: the period must be 0.0 ... 60000 ms");
     used_ = true;
+    if (clockSync_) clockSync_();
     const int samples =
         std::max(1, static_cast<int>(std::lround(periodMs / 1000.0 / kSampleSeconds)));
     double sum = 0.0;

@@ -2,6 +2,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <string>
 #include <vector>
@@ -90,6 +91,10 @@ class AdaptiveFeedControl {
     /// sample or stall torque sample belongs to. The simulated machine sets it
     /// at the start of every move; advance() and holdSteady() move it on.
     void setClock(double seconds) { time_ = seconds; }
+    /// Called before the interpreter reads the clock (a stall torque
+    /// recording): a machine that works its queue off in batches brings the
+    /// clock to where it would be without them (MOT-022). Empty: none.
+    void setClockSync(std::function<void()> sync) { clockSync_ = std::move(sync); }
     double clock() const { return time_; }
 
     /// ITM: idling torque of the reference axis over the measuring period
@@ -240,9 +245,10 @@ class AdaptiveFeedControl {
     double peakReduction_ = 0.0;
     double zeroFeedSeconds_ = 0.0;
     double stopFraction_ = 1.0;
-    double lastActual_ = 0.0;     ///< S-0-0084 of the last cycle
-    double lastMachining_ = 0.0;  ///< 007 of the last cycle
-    double time_ = 0.0;           ///< machine clock, s (setClock)
+    double lastActual_ = 0.0;          ///< S-0-0084 of the last cycle
+    double lastMachining_ = 0.0;       ///< 007 of the last cycle
+    double time_ = 0.0;                ///< machine clock, s (setClock)
+    std::function<void()> clockSync_;  ///< setClockSync
     std::string message_;
     std::vector<AfcSample> trend_;
     AfcStatus runtimeError_ = AfcStatus::Ok;

@@ -355,6 +355,7 @@ void Station::feed(std::uint64_t& blocks, std::uint64_t maxBlocks) {
         const int callLevel = static_cast<int>(state.callStack.size());
         const std::uint64_t outputsBefore = output_.outputs;
         const std::uint64_t itemsBefore = machine_.itemsQueued();
+        machine_.beginBlock();
         const RunResult result = budget_ > 0 && runBlocks_ >= budget_ ? budgetExceeded()
                                  : run_ == Run::Mdi                   ? mdi_.step()
                                                                       : interpreter_.step();

@@ -82,6 +82,13 @@ class Station : private ProgramRunner {
         keepBlockStates_ = keep;
         if (!keep) queued_.clear();
     }
+    /// Lets the interpreter run `entries` machine queue entries beyond the
+    /// look-ahead depth, the machine working them off in one go (MOT-022;
+    /// 0, the default: none). Only for a driver that gives every advance()
+    /// all the simulated time it asks for and presses no key mid-run (the
+    /// CLI without samples): when the machine's time is read during a
+    /// block (adaptive feed control), the machine catches up within it.
+    void batchMachineWork(std::size_t entries) { machine_.setBatch(entries); }
 
     /// A machine control key (M key), as the operator presses it. Returns
     /// false (the alarm says why) when it is not allowed now.

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "cnc_core/afc/AdaptiveFeedControl.h"
 #include "cnc_core/afc/AfcMaterial.h"
 #include "cnc_core/afc/AfcMotion.h"
 #include "cnc_core/interp/MotionPath.h"
@@ -115,7 +116,9 @@ SimulatedMachine::SimulatedMachine(const ProcessConfig& config)
       engine_(motion::MotionLimits::fromConfig(config)),
       material_(std::make_unique<AfcMaterial>(config)) {}
 
-SimulatedMachine::~SimulatedMachine() = default;
+SimulatedMachine::~SimulatedMachine() {
+    if (afc_ && engine_.batch() > 0) afc_->setClockSync({});  // catchUp() goes with this machine
+}
 
 void SimulatedMachine::motion(const Motion& m) {
     ++motions_;
@@ -136,8 +139,7 @@ void SimulatedMachine::motion(const Motion& m) {
     if (afc_ && afc_->available() && planned > 0 && m.type != MotionType::Rapid) {
         observeMove(m, planned, length);  // the trend observes the torque; the move is a plain one
     } else {
-        afcClock_ = std::max(afcClock_, seconds()) + planned;
-        if (afc_) afc_->setClock(afcClock_);  // the end of the queued work
+        queueClock(planned);  // the end of the queued work
     }
     engine_.pushMove(m, {m.exactStop, m.blendCorners});
 }
@@ -152,7 +154,9 @@ double SimulatedMachine::advance(double seconds) {
         const double used = engine_.advance(left);
         left = used >= left ? 0.0 : left - used;
         collectReached();
-        if (engine_.idle() || (!hadRoom && engine_.wantsMore())) break;
+        applyClockSteps();
+        // With a batch: on until the look-ahead of the next move is no longer full.
+        if (engine_.idle() || (!hadRoom && !engine_.lookAheadFull())) break;
     }
     return seconds - left;
 }
@@ -169,6 +173,8 @@ void SimulatedMachine::collectReached() {
 void SimulatedMachine::stop() {
     engine_.stop();
     standWhereStopped();
+    clockSteps_.clear();
+    clockStepsDone_ = 0;
     afcClock_ = seconds();
 }
 
@@ -194,8 +200,7 @@ void SimulatedMachine::auxiliary(const AuxOutput& output) {
 void SimulatedMachine::dwell(const SourceLocation& where, double seconds) {
     if (!(seconds > 0)) return;
     engine_.pushDwell(where, seconds);
-    afcClock_ = std::max(afcClock_, this->seconds()) + seconds;
-    if (afc_) afc_->setClock(afcClock_);
+    queueClock(seconds);
 }
 
 void SimulatedMachine::command(const MachineCommand& command) {
@@ -209,6 +214,8 @@ void SimulatedMachine::reset() {
     engine_.clearLocation();
     motions_ = 0;
     aux_.clear();
+    clockSteps_.clear();
+    clockStepsDone_ = 0;
     afcClock_ = 0.0;
     if (afc_) afc_->setClock(0.0);
 }

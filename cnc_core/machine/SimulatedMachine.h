@@ -37,9 +37,10 @@ double motionSeconds(const Motion& motion, const ProcessConfig& config, double l
 ///  - the interpreter may send the next block while wantsMore() is true; a
 ///    block's outputs are always taken, even when they overfill the queue;
 ///  - advance(dt) moves on by at most dt and returns the time it used; it
-///    returns early the moment the queue has room again (when it had none)
-///    or runs empty, so the station refills it at exactly that simulated
-///    instant. The result does not depend on how the time is cut into
+///    returns early the moment the queue has room again (when it had none;
+///    under a batch, MOT-022: the moment fewer than the look-ahead depth
+///    are queued) or runs empty, so the station refills it at exactly that
+///    simulated instant. The result does not depend on how the time is cut into
 ///    advance() calls (the CLI advances in one call what the panel does in
 ///    20 ms ticks);
 ///  - seconds() counts only busy time (moving, dwelling, waiting for a
@@ -65,6 +66,15 @@ class SimulatedMachine : public MachineSink {
     // ---- time (driven by the station)
     /// True while the look-ahead queue has room for the next block's outputs.
     bool wantsMore() const { return engine_.wantsMore(); }
+    /// Batching (docs/decisions/motion.md MOT-022), for a driver that gives
+    /// the machine all the time it asks for in one advance() (the CLI
+    /// without samples, no operator): the queue takes `entries` beyond the
+    /// look-ahead depth, so the interpreter runs a batch of blocks and the
+    /// machine works them off in one go. Positions, times, the trend clock
+    /// and every signal come out as without a batch. 0: no batch.
+    void setBatch(std::size_t entries);
+    /// The station begins a block (before the interpreter's step).
+    void beginBlock();
     /// Moves on by at most `seconds` of simulated time; returns the time
     /// used (less when the queue got room or ran empty first).
     double advance(double seconds);
@@ -159,6 +169,18 @@ class SimulatedMachine : public MachineSink {
     double accelerationSeconds(const Motion& motion, double feed) const;
     /// Moves the auxiliary functions the engine reached into recentAux().
     void collectReached();
+    /// Trend clock: the queued work ends `seconds` later, counted from the
+    /// end of what was queued or from the machine's busy time when the block
+    /// was queued, whichever is later. Under a batch it is counted once the
+    /// machine is where it would stand without the batch (MOT-022).
+    void queueClock(double seconds);
+    void stepClock(double seconds);
+    /// The clock steps whose moment the machine has reached.
+    void applyClockSteps();
+    void dropTakenClockSteps();
+    /// Batching: works the queue off to where the machine would stand now
+    /// without a batch (before anything reads the machine's time).
+    void catchUp();
 
     const ProcessConfig& config_;
     motion::TrajectoryEngine engine_;
@@ -179,6 +201,16 @@ class SimulatedMachine : public MachineSink {
     std::uint32_t nextTag_ = 0;         ///< tag of the last queued auxiliary function
     std::deque<AuxOutput> pendingAux_;  ///< queued, not yet reached (tags in order)
     std::vector<AuxOutput> aux_;
+    /// Batching: a clock step waiting for the machine to have done `itemsDone` items.
+    struct ClockStep {
+        std::uint64_t itemsDone = 0;
+        double seconds = 0.0;
+    };
+    std::vector<ClockStep> clockSteps_;  ///< in queue order, from clockStepsDone_ on
+    std::size_t clockStepsDone_ = 0;
+    /// Batching: itemsDone() when the block being interpreted would have been
+    /// queued without a batch (0 without a batch: now).
+    std::uint64_t blockDue_ = 0;
 };
 
 }  // namespace mtc::core

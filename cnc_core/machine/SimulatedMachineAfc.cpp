@@ -15,8 +15,10 @@
 namespace mtc::core {
 
 void SimulatedMachine::attachAdaptiveFeed(AdaptiveFeedControl* afc, AfcTrendRecorder* recorder) {
+    if (afc_ && afc_ != afc) afc_->setClockSync({});
     afc_ = afc;
     recorder_ = recorder;
+    if (afc_ && engine_.batch() > 0) afc_->setClockSync([this] { catchUp(); });
 }
 
 double SimulatedMachine::referenceSpeedFraction(const Motion& m, double pathFeed,
@@ -77,6 +79,7 @@ AfcMoveInput SimulatedMachine::afcInput(const Motion& m, double planned, double 
 }
 
 void SimulatedMachine::adaptiveMove(const Motion& m, double planned, double length) {
+    catchUp();  // the controller runs on the machine's time and queue now
     AfcMoveInput move = afcInput(m, planned, length);
     move.accelerationSeconds = accelerationSeconds(m, move.feed);
     // It starts when the queue before it is worked off (at the overrides in
@@ -102,13 +105,13 @@ void SimulatedMachine::observeMove(const Motion& m, double planned, double lengt
     // or not its torque is observed; only the trend recorder (none in the
     // CLI, MOT-019) reads the observation.
     const double moveSeconds = planned / overrideShare(m);
-    const double startTime = std::max(afcClock_, seconds());
-    if (recorder_) {
-        AfcMoveInput move = afcInput(m, planned, length);
-        move.startTime = startTime;
-        simulateAfcMove(*afc_, move, recorder_);
-    }
     lastFeed_ = length / moveSeconds * 60.0;
+    if (!recorder_) return queueClock(moveSeconds);
+    catchUp();  // the trend's samples are taken at the machine's time now
+    const double startTime = std::max(afcClock_, seconds());
+    AfcMoveInput move = afcInput(m, planned, length);
+    move.startTime = startTime;
+    simulateAfcMove(*afc_, move, recorder_);
     afcClock_ = startTime + moveSeconds;
     afc_->setClock(afcClock_);
 }

@@ -9,7 +9,15 @@ MotionQueue::MotionQueue(std::size_t capacity)
       capacity_(std::max<std::size_t>(capacity, 1)) {}
 
 void MotionQueue::grow() {
-    std::vector<QueueItem> grown(storage_.size() * 2);
+    regrow(storage_.size() * 2);
+}
+
+void MotionQueue::reserve(std::size_t items) {
+    if (items > storage_.size()) regrow(items);
+}
+
+void MotionQueue::regrow(std::size_t slots) {
+    std::vector<QueueItem> grown(slots);
     for (std::size_t i = 0; i < size_; ++i)
         grown[i] = std::move(at(i));
     storage_ = std::move(grown);

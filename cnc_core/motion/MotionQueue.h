@@ -40,6 +40,10 @@ struct QueueItem {
     double feed = 0.0;        ///< programmed path feed, plane units/s (0 for G0)
     double entryLimit = 0.0;  ///< junction velocity with the move before (0: starts at rest)
     double exitLimit = 0.0;   ///< planned velocity at the end (look-ahead), plane units/s
+    /// Batching (MOT-022): the exit velocity planned over the move's own
+    /// look-ahead window, once that window is closed (windowClosed).
+    double windowExit = 0.0;
+    bool windowClosed = false;
     // Dwell, Timed:
     double seconds = 0.0;
     // Timed:
@@ -75,6 +79,8 @@ class MotionQueue {
         return storage_[slot(size_)];
     }
     void popFront();
+    /// Storage for at least `items` entries without growing (batching).
+    void reserve(std::size_t items);
     void clear() {
         head_ = size_ = 0;
         popped_ = pushed_;
@@ -89,6 +95,8 @@ class MotionQueue {
   private:
     /// Doubles the storage, the items moved to its start in queue order.
     void grow();
+    /// `slots` of storage, the items moved to its start in queue order.
+    void regrow(std::size_t slots);
     /// Storage index of item `i` < storage size: one wrap at most, so a
     /// subtraction instead of a division (the planner walks the queue on
     /// every move).

@@ -20,6 +20,27 @@ bool sameBlock(const SourceLocation& a, const SourceLocation& b) {
 TrajectoryEngine::TrajectoryEngine(const MotionLimits& limits, std::size_t lookAhead)
     : limits_(limits), queue_(lookAhead), spindles_(limits) {}
 
+void TrajectoryEngine::setBatch(std::size_t entries) {
+    batch_ = entries;
+    // Room for a full batch and a block's usual overfill without growing
+    // (every slot beyond costs first-level cache, MOT-022).
+    queue_.reserve(queue_.capacity() + entries + 2);
+}
+
+void TrajectoryEngine::beginBlock() {
+    blockStart_ = queue_.pushed();
+    if (batch_ == 0) return;
+    // Item n would have started before this block was queued when n + depth
+    // <= blockStart_: its plan over what is queued now is the one it gets.
+    const std::uint64_t depth = queue_.capacity();
+    windowsOpenFrom_ = std::max(windowsOpenFrom_, queue_.popped());
+    for (; windowsOpenFrom_ + depth <= blockStart_; ++windowsOpenFrom_) {
+        QueueItem& item = queue_.at(static_cast<std::size_t>(windowsOpenFrom_ - queue_.popped()));
+        item.windowExit = item.exitLimit;
+        item.windowClosed = true;
+    }
+}
+
 // ----------------------------------------------------------------- input
 
 const SegmentGeometry& TrajectoryEngine::prepareMove(const Motion& motion) {
@@ -59,6 +80,7 @@ void TrajectoryEngine::pushMove(const Motion& motion, BlockTransition mode) {
     item.feed = rapid ? 0.0 : std::max(0.0, motion.feed) / 60.0;
     item.entryLimit = entry;
     item.exitLimit = 0.0;
+    item.windowClosed = false;
     afterPlanChange(planBackward(true));
 }
 
@@ -131,14 +153,17 @@ void TrajectoryEngine::replanFront() {
     if (queue_.empty() || queue_.front().kind != QueueItem::Kind::Move) return;
     const QueueItem& move = queue_.front();
     const double length = move.geometry.length() - pathS_;
-    profile_.plan(pathS_, velocity_, length, capOf(move), move.exitLimit, move.limits.acceleration);
-    plannedExit_ = move.exitLimit;
+    const double exit = frontExit();
+    profile_.plan(pathS_, velocity_, length, capOf(move), exit, move.limits.acceleration);
+    plannedExit_ = exit;
     profileTime_ = 0.0;
     planned_ = true;
 }
 
 void TrajectoryEngine::afterPlanChange(bool frontChanged) {
-    if (frontChanged && planned_) replanFront();
+    if (!planned_) return;
+    // Under a batch what is queued behind the front's window leaves it as planned.
+    if (batch_ == 0 ? frontChanged : frontExit() != plannedExit_) replanFront();
 }
 
 void TrajectoryEngine::replanAll() {

@@ -33,8 +33,32 @@ class TrajectoryEngine {
                               std::size_t lookAhead = kDefaultLookAhead);
 
     // --- input, in program order ---
-    /// True while the look-ahead queue has room for another block.
-    bool wantsMore() const { return !queue_.full(); }
+    /// True while the queue has room for another block: up to the
+    /// look-ahead depth, plus the batch (setBatch()).
+    bool wantsMore() const { return queue_.size() < queue_.capacity() + batch_; }
+    /// The entries queued fill the look-ahead depth: the plan of the move
+    /// at the front is complete (batching, MOT-022).
+    bool lookAheadFull() const { return queue_.full(); }
+    /// Batching (MOT-022): the queue takes `entries` more than the
+    /// look-ahead depth, so a driver can interpret a batch of blocks and
+    /// then let the machine work them off in one go. Every move is still
+    /// planned with the look-ahead window it would have seen without a
+    /// batch: the blocks begun while fewer than the depth were queued
+    /// behind it. The driver calls beginBlock() before each block and lets
+    /// the machine run only while the depth is queued (lookAheadFull()) or
+    /// it has nothing more to give. Overrides, hold and single block replan
+    /// the whole queue: a batch is for a driver without an operator (the
+    /// CLI). 0 (the default): no batch.
+    void setBatch(std::size_t entries);
+    std::size_t batch() const { return batch_; }
+    /// The driver begins a block. Under a batch this closes the look-ahead
+    /// window of every move that has the depth or more queued behind it:
+    /// without a batch the block would not have been queued before the move
+    /// started.
+    void beginBlock();
+    /// itemsQueued() at the last beginBlock().
+    std::uint64_t blockStart() const { return blockStart_; }
+    std::size_t lookAhead() const { return queue_.capacity(); }
     /// A G0/G1/G2/G3 move (Motion::start .. Motion::end). A move of length 0
     /// takes no time and is not queued.
     void pushMove(const Motion& motion, BlockTransition mode);
@@ -151,6 +175,12 @@ class TrajectoryEngine {
 
   private:
     double capOf(const QueueItem& move) const;
+    /// The velocity the front move may leave with: its exitLimit, or under
+    /// a batch the one of its own look-ahead window once that is closed.
+    double frontExit() const {
+        const QueueItem& front = queue_.front();
+        return batch_ > 0 && front.windowClosed ? front.windowExit : front.exitLimit;
+    }
     /// Look-ahead: the velocity each move may leave with, from the end of
     /// the queue backwards (0 at the end). With `early` it stops at the
     /// first move whose limit did not change. Returns true when the front's changed.
@@ -196,6 +226,9 @@ class TrajectoryEngine {
     SourceLocation lastWhere_;
     std::uint32_t lastBlock_ = 0;
     std::vector<std::uint32_t> reached_;
+    std::size_t batch_ = 0;              ///< entries beyond the look-ahead depth (setBatch)
+    std::uint64_t blockStart_ = 0;       ///< itemsQueued() at the last beginBlock()
+    std::uint64_t windowsOpenFrom_ = 0;  ///< first item whose look-ahead window is open
     /// What prepareMove() left: the motion, the slot holding its geometry
     /// and the pushes so far. Only a push writes a slot, so while no push
     /// came in between and the slot did not move, the geometry is there.
