@@ -166,6 +166,8 @@ void VtkToolpathCanvas::updatePart() {
 void VtkToolpathCanvas::renderNow() {
     pacer_.drawn();
     updateLineWidths();
+    for (Part* part : {&scene_->scene, &scene_->developed})
+        if (part->fitCaptionToWidth()) scene_->stillCache->invalidate();
     if (scene_->refitWhenShown && widget_->isVisible()) {
         const bool all = *scene_->refitWhenShown;
         scene_->refitWhenShown.reset();

@@ -122,6 +122,26 @@ ScreenExtent screenExtent(const mtc::core::ToolpathBounds& box, vtkCamera& camer
 
 }  // namespace
 
+bool Part::fitCaptionToWidth() {
+    const int width = renderer->GetSize()[0];
+    const char* text = caption->GetInput();
+    std::string key = text ? text : "";
+    key += "|" + std::to_string(width) + "|" + std::to_string(screenScale);
+    if (key == captionFittedFor || width <= 0) return false;
+    captionFittedFor = std::move(key);
+    vtkTextProperty* font = caption->GetTextProperty();
+    const int before = font->GetFontSize();
+    const int nominal = static_cast<int>(std::lround(kCaptionSize * screenScale));
+    font->SetFontSize(nominal);
+    double box[4];  // x min, x max, y min, y max
+    caption->GetBoundingBox(renderer, box);
+    const double room = width - 2.0 * kCaptionMargin * screenScale;
+    const double used = box[1] - box[0];
+    if (used > room && room > 0.0)
+        font->SetFontSize(std::max(8, static_cast<int>(std::floor(nominal * room / used))));
+    return font->GetFontSize() != before;
+}
+
 void Part::frame(const mtc::core::ToolpathBounds& box) {
     if (box.empty) {
         renderer->ResetCamera();

@@ -15,6 +15,7 @@
 
 #include <QColor>
 #include <memory>
+#include <string>
 
 #include "cnc_core/toolpath/ToolpathDecimation.h"
 #include "screens/toolpath/ToolpathCanvas.h"
@@ -73,6 +74,12 @@ struct Part {
     static constexpr double kAxesTextOffset = 20.0;
     /// The screen scale set last (setScreenScale).
     double screenScale = 1.0;
+    /// Caption text, area width and scale fitCaptionToWidth() last sized it for.
+    std::string captionFittedFor;
+    /// The caption at its size for the screen, smaller where it would be
+    /// wider than its picture area (the halves beside a developed plane).
+    /// True when its size changed.
+    bool fitCaptionToWidth();
     /// Frames `box` (empty: everything shown), clear of the caption: the
     /// box and the labels hanging below it stay above the caption's lines.
     void frame(const mtc::core::ToolpathBounds& box);

@@ -357,7 +357,7 @@ class ToolpathGlTest : public QObject {
     }
 
     /// TP-014: every preset view of both demo machines frames the part
-    /// above the caption; in a plane view whose box stands over the
+    /// above the caption, which fits its picture area; in a plane view whose box stands over the
     /// caption, the tick labels and title under its bottom edge (two rows of
     /// 10-pixel text 20 pixels apart at 96 dpi) fit between the two.
     void theFramedPartStaysAboveTheCaptionInEveryView() {
@@ -377,6 +377,12 @@ class ToolpathGlTest : public QObject {
                 const QRect caption = canvas->sceneCaptionRect();
                 const QRect part = canvas->framedRect();
                 QVERIFY(!part.isEmpty() && !caption.isEmpty());
+                // Beside a developed plane too, the caption fits its half.
+                QVERIFY2(canvas->rect().adjusted(-1, -1, 1, 1).contains(caption),
+                         qPrintable(QString("station %1: caption right %2 of %3")
+                                        .arg(slot)
+                                        .arg(caption.right())
+                                        .arg(canvas->width())));
                 // A plane view labels the box's bottom edge across its width.
                 const bool over = preset != Qt::Key_4 && part.left() <= caption.right() + labels;
                 QVERIFY2(part.bottom() < caption.top() &&
