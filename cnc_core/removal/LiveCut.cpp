@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "cnc_core/motion/QueueFollower.h"
 #include "cnc_core/motion/TrajectoryEngine.h"
 #include "cnc_core/removal/RemovalRun.h"
 
@@ -118,15 +119,9 @@ bool LiveCut::cutPiece(const PendingMove& move, const std::array<double, 3>& fro
 
 void LiveCut::follow(const motion::TrajectoryEngine& engine) {
     if (stopped_) return;
-    // The machine works its queue off in order: the moves it no longer
-    // holds are finished (RunTrace::follow reads the queue the same way).
-    const std::size_t inQueue = engine.queuedMoves();
-    while (pending_.size() > inQueue) {
-        cutTo(pending_.front(), 1.0);
-        pending_.pop_front();
-    }
-    if (!pending_.empty() && engine.currentMove() != nullptr)
-        cutTo(pending_.front(), engine.travelledShare());
+    const std::optional<double> travelled = motion::followMachineQueue(
+        engine, pending_, [this](PendingMove& finished) { cutTo(finished, 1.0); });
+    if (travelled) cutTo(pending_.front(), *travelled);
 }
 
 void LiveCut::stop() {

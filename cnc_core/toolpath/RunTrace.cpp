@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "cnc_core/motion/QueueFollower.h"
 #include "cnc_core/motion/TrajectoryEngine.h"
 
 namespace mtc::core {
@@ -40,14 +41,12 @@ void RunTrace::sent(const Motion& motion, bool queued) {
 
 void RunTrace::follow(const motion::TrajectoryEngine& engine) {
     if (cut_) return;
-    // The machine works its queue off in order: the traced moves it no
-    // longer holds are finished (a move without length never was queued).
-    const std::size_t inQueue = engine.queuedMoves();
-    while (pending_.size() > inQueue)
-        pending_.pop_front();
+    // A move without length never was queued, so it is not pending either.
+    const std::optional<double> travelled =
+        motion::followMachineQueue(engine, pending_, [](std::size_t) {});
     const std::size_t done = pending_.empty() ? builder_.geometry().moves.size() : pending_.front();
-    const bool moving = !pending_.empty() && engine.currentMove() != nullptr;
-    const double share = moving ? engine.travelledShare() : 0.0;
+    const bool moving = travelled.has_value();
+    const double share = travelled.value_or(0.0);
     if (done == done_ && moving == moving_ && share == share_) return;
     done_ = done;
     moving_ = moving;

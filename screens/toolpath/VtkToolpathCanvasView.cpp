@@ -122,16 +122,15 @@ void VtkToolpathCanvas::pan(double right, double up) {
         vtkCamera* camera = part->renderer->GetActiveCamera();
         const double height = 2 * camera->GetParallelScale();
         const double width = height * std::max(part->renderer->GetTiledAspectRatio(), 1e-3);
-        double direction[3], upVector[3], side[3], focal[3], position[3];
-        camera->GetDirectionOfProjection(direction);
-        camera->GetViewUp(upVector);
-        side[0] = direction[1] * upVector[2] - direction[2] * upVector[1];
-        side[1] = direction[2] * upVector[0] - direction[0] * upVector[2];
-        side[2] = direction[0] * upVector[1] - direction[1] * upVector[0];
+        const CameraPose pose = poseOf(*camera);
+        const std::array<double, 3> side = pose.right();
+        const std::array<double, 3>& upVector = pose.up;
+        double focal[3], position[3];
         camera->GetFocalPoint(focal);
         camera->GetPosition(position);
         for (int i = 0; i < 3; ++i) {
-            const double shift = -(right * width * side[i] + up * height * upVector[i]);
+            const auto k = static_cast<std::size_t>(i);
+            const double shift = -(right * width * side[k] + up * height * upVector[k]);
             focal[i] += shift;
             position[i] += shift;
         }

@@ -57,6 +57,13 @@ void Part::setUp(const ToolpathPalette& palette) {
     setScreenScale(1.0);
 }
 
+CameraPose poseOf(vtkCamera& camera) {
+    CameraPose pose;
+    camera.GetDirectionOfProjection(pose.direction.data());
+    camera.GetViewUp(pose.up.data());
+    return pose;
+}
+
 void Part::setScreenScale(double scale) {
     screenScale = scale;
     const auto width = [scale](double w) {
@@ -87,13 +94,11 @@ struct ScreenExtent {
 };
 
 ScreenExtent screenExtent(const mtc::core::ToolpathBounds& box, vtkCamera& camera, double right) {
-    double up[3], direction[3], focal[3];
-    camera.GetViewUp(up);
-    camera.GetDirectionOfProjection(direction);
+    const CameraPose pose = poseOf(camera);
+    const std::array<double, 3>& up = pose.up;
+    const std::array<double, 3> side = pose.right();
+    double focal[3];
     camera.GetFocalPoint(focal);
-    const double side[3] = {direction[1] * up[2] - direction[2] * up[1],
-                            direction[2] * up[0] - direction[0] * up[2],
-                            direction[0] * up[1] - direction[1] * up[0]};
     double x[8], y[8];
     for (int corner = 0; corner < 8; ++corner) {
         x[corner] = y[corner] = 0.0;
@@ -124,11 +129,12 @@ ScreenExtent screenExtent(const mtc::core::ToolpathBounds& box, vtkCamera& camer
 
 bool Part::fitCaptionToWidth() {
     const int width = renderer->GetSize()[0];
-    const char* text = caption->GetInput();
-    std::string key = text ? text : "";
-    key += "|" + std::to_string(width) + "|" + std::to_string(screenScale);
-    if (key == captionFittedFor || width <= 0) return false;
-    captionFittedFor = std::move(key);
+    const char* input = caption->GetInput();
+    const char* text = input ? input : "";
+    CaptionFit& last = captionFittedFor;
+    if (width <= 0 || (width == last.width && screenScale == last.scale && last.text == text))
+        return false;
+    last = {text, width, screenScale};
     vtkTextProperty* font = caption->GetTextProperty();
     const int before = font->GetFontSize();
     const int nominal = static_cast<int>(std::lround(kCaptionSize * screenScale));

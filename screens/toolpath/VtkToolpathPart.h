@@ -3,6 +3,7 @@
 // One picture area of the VTK toolpath view (VtkToolpathCanvas): the scene
 // (3D) or the developed plane (2D), with its renderer and actors.
 #include <vtkActor.h>
+#include <vtkCamera.h>
 #include <vtkCubeAxesActor.h>
 #include <vtkNew.h>
 #include <vtkPolyData.h>
@@ -18,11 +19,16 @@
 #include <string>
 
 #include "cnc_core/toolpath/ToolpathDecimation.h"
+#include "screens/toolpath/ToolpathCamera.h"
 #include "screens/toolpath/ToolpathCanvas.h"
 #include "screens/toolpath/ToolpathPalette.h"
 #include "screens/toolpath/VtkToolpathBackplot.h"
 
 namespace mtc::screens {
+
+/// The direction `camera` looks along and its screen up, as a pose (its
+/// right() is the screen's right).
+CameraPose poseOf(vtkCamera& camera);
 
 /// Line widths in pixels at 96 dpi (TP-026 scales them with the screen):
 /// the path 1, because wider lines cost llvmpipe frame time (TP-010); the
@@ -74,8 +80,13 @@ struct Part {
     static constexpr double kAxesTextOffset = 20.0;
     /// The screen scale set last (setScreenScale).
     double screenScale = 1.0;
-    /// Caption text, area width and scale fitCaptionToWidth() last sized it for.
-    std::string captionFittedFor;
+    /// Caption text, area width and scale fitCaptionToWidth() last sized it
+    /// for (compared each render, rebuilt only when one of them changed).
+    struct CaptionFit {
+        std::string text;
+        int width = -1;
+        double scale = 0.0;
+    } captionFittedFor;
     /// The caption at its size for the screen, smaller where it would be
     /// wider than its picture area (the halves beside a developed plane).
     /// True when its size changed.

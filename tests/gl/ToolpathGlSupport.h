@@ -31,3 +31,16 @@ inline int count(const QImage& image, const QColor& colour) {
 inline mtc::screens::VtkToolpathCanvas* vtkCanvas(mtc::screens::ToolpathScreen* screen) {
     return qobject_cast<mtc::screens::VtkToolpathCanvas*>(screen->canvas());
 }
+
+/// Selects program `number` of the first station, shows the toolpath screen
+/// and returns it; `canvas` is its VTK view (nullptr when the screen could
+/// not be shown or has no 3D view).
+inline mtc::screens::ToolpathScreen* showToolpathOf(PanelFixture& panel, int number,
+                                                    mtc::screens::VtkToolpathCanvas*& canvas) {
+    panel.session->selectProgram(0, number);
+    canvas = nullptr;
+    if (!panel.window->showScreen("toolpath")) return nullptr;
+    mtc::screens::ToolpathScreen* screen = toolpath(panel);
+    canvas = vtkCanvas(screen);
+    return screen;
+}

@@ -124,10 +124,8 @@ class ToolpathGlTest : public QObject {
         mtc::hmi::PanelOptions options;
         options.programsDir = dir.path();
         PanelFixture panel(options);
-        panel.session->selectProgram(0, 8);
-        QVERIFY(panel.window->showScreen("toolpath"));
-        ToolpathScreen* screen = toolpath(panel);
-        VtkToolpathCanvas* canvas = vtkCanvas(screen);
+        VtkToolpathCanvas* canvas = nullptr;
+        ToolpathScreen* screen = showToolpathOf(panel, 8, canvas);
         QVERIFY(canvas);
         auto* model = screen->model();
         QVERIFY2(model->geometry(), qPrintable(model->summary()));
@@ -233,10 +231,8 @@ class ToolpathGlTest : public QObject {
         mtc::hmi::PanelOptions options;
         options.programsDir = dir.path();
         PanelFixture panel(options);
-        panel.session->selectProgram(0, 9);
-        QVERIFY(panel.window->showScreen("toolpath"));
-        ToolpathScreen* screen = toolpath(panel);
-        VtkToolpathCanvas* canvas = vtkCanvas(screen);
+        VtkToolpathCanvas* canvas = nullptr;
+        ToolpathScreen* screen = showToolpathOf(panel, 9, canvas);
         QVERIFY(canvas);
         auto* model = screen->model();
         QVERIFY2(model->geometry(), qPrintable(model->summary()));
@@ -281,10 +277,8 @@ class ToolpathGlTest : public QObject {
                                   "N0001 G54 G0 X5 Y5 Z5\nN0002 G1 Z-2 F2000\nN0003 X40\n"
                                   "N0004 G0 Z5\nN0005 G55 G0 X5 Y5\nN0006 G1 Z-2\n"
                                   "N0007 X40\nN0008 G0 Z5\nN0009 M30\n");
-        panel.session->selectProgram(0, 50);
-        QVERIFY(panel.window->showScreen("toolpath"));
-        ToolpathScreen* screen = toolpath(panel);
-        VtkToolpathCanvas* canvas = vtkCanvas(screen);
+        VtkToolpathCanvas* canvas = nullptr;
+        ToolpathScreen* screen = showToolpathOf(panel, 50, canvas);
         QVERIFY(canvas);
         panel.press(Qt::Key_PageDown);  // N0001 G54 G0 ...
         canvas->picture();
@@ -317,10 +311,8 @@ class ToolpathGlTest : public QObject {
     /// the caption's text grows with the screen's dpi like the lines.
     void theCaptionKeepsClearOfTheTriadAndGrowsWithTheDpi() {
         PanelFixture panel;
-        panel.session->selectProgram(0, 1);
-        QVERIFY(panel.window->showScreen("toolpath"));
-        ToolpathScreen* screen = toolpath(panel);
-        VtkToolpathCanvas* canvas = vtkCanvas(screen);
+        VtkToolpathCanvas* canvas = nullptr;
+        showToolpathOf(panel, 1, canvas);
         QVERIFY(canvas);
         double ratio = 1.0;
         int expected = 1;
@@ -435,10 +427,8 @@ class ToolpathGlTest : public QObject {
         panel.session->addProgram(0, 50, "line.nc",
                                   "N0001 G54 G0 X0 Y30 Z5\nN0002 G1 Z-2 F500\nN0003 X100\n"
                                   "N0004 M30\n");
-        panel.session->selectProgram(0, 50);
-        QVERIFY(panel.window->showScreen("toolpath"));
-        ToolpathScreen* screen = toolpath(panel);
-        VtkToolpathCanvas* canvas = vtkCanvas(screen);
+        VtkToolpathCanvas* canvas = nullptr;
+        ToolpathScreen* screen = showToolpathOf(panel, 50, canvas);
         QVERIFY(canvas);
         panel.press(Qt::Key_1);  // G17: the X move is a horizontal line
         double ratio = 1.0;
@@ -503,10 +493,8 @@ class ToolpathGlTest : public QObject {
     // program is drawn in the 3D view; M hides it and shows it again.
     void theFinishedPartIsDrawnAndTheKeyMHidesIt() {
         PanelFixture panel;
-        panel.session->selectProgram(0, 1);
-        QVERIFY(panel.window->showScreen("toolpath"));
-        ToolpathScreen* screen = toolpath(panel);
-        VtkToolpathCanvas* canvas = vtkCanvas(screen);
+        VtkToolpathCanvas* canvas = nullptr;
+        ToolpathScreen* screen = showToolpathOf(panel, 1, canvas);
         QVERIFY(canvas);
         auto* model = screen->model();
         QVERIFY2(model->partShown(), qPrintable(model->part().note));

@@ -67,12 +67,10 @@ class ToolpathGlRunningTest : public QObject {
     /// as the axes travel; at the end the part the run left.
     void thePartBeingCutIsDrawnWhileTheProgramRuns() {
         PanelFixture panel;
-        panel.session->selectProgram(0, 1);
-        QVERIFY(panel.window->showScreen("toolpath"));
-        panel.session->setTimerEnabled(false);
-        ToolpathScreen* screen = toolpath(panel);
-        VtkToolpathCanvas* canvas = vtkCanvas(screen);
+        VtkToolpathCanvas* canvas = nullptr;
+        ToolpathScreen* screen = showToolpathOf(panel, 1, canvas);
         QVERIFY(canvas);
+        panel.session->setTimerEnabled(false);
         const auto* model = screen->model();
         const auto differing = [](const QImage& a, const QImage& b) {
             int n = 0;
@@ -149,12 +147,10 @@ class ToolpathGlRunningTest : public QObject {
     /// tool cuts it draws nothing: the steady picture kept before stays.
     void aHiddenLivePartKeepsTheSteadyPicture() {
         PanelFixture panel;
-        panel.session->selectProgram(0, 1);
-        QVERIFY(panel.window->showScreen("toolpath"));
-        panel.session->setTimerEnabled(false);
-        ToolpathScreen* screen = toolpath(panel);
-        VtkToolpathCanvas* canvas = vtkCanvas(screen);
+        VtkToolpathCanvas* canvas = nullptr;
+        ToolpathScreen* screen = showToolpathOf(panel, 1, canvas);
         QVERIFY(canvas);
+        panel.session->setTimerEnabled(false);
         canvas->setFrameInterval(0);
         panel.press(Qt::Key_F5, Qt::ShiftModifier);  // Start
         panel.session->advance(0.02);
@@ -190,12 +186,10 @@ class ToolpathGlRunningTest : public QObject {
     /// (one hour) shows that steps alone render nothing until it is over.
     void theStepsOfARunningProgramAreRenderedAtTheFrameRate() {
         PanelFixture panel;
-        panel.session->selectProgram(0, 1);
-        QVERIFY(panel.window->showScreen("toolpath"));
-        panel.session->setTimerEnabled(false);
-        ToolpathScreen* screen = toolpath(panel);
-        VtkToolpathCanvas* canvas = vtkCanvas(screen);
+        VtkToolpathCanvas* canvas = nullptr;
+        ToolpathScreen* screen = showToolpathOf(panel, 1, canvas);
         QVERIFY(canvas);
+        panel.session->setTimerEnabled(false);
         QVERIFY(canvas->frameInterval() > 0 && canvas->frameInterval() <= 50);  // 20 Hz or more
         const QColor backplot = screen->model()->palette().backplot;
         const int nearWhite = count(canvas->picture(), backplot);  // text, labels
