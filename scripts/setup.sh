@@ -4,6 +4,8 @@
 # Usage: scripts/setup.sh [release|debug|asan|fuzz]
 #        scripts/setup.sh tools   only the packages of scripts/fuzz.sh,
 #                                 scripts/lint.sh and scripts/valgrind.sh
+#        scripts/setup.sh bench   only the reference of scripts/bench.sh:
+#                                 LinuxCNC's rs274 (linuxcnc-uspace)
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 preset="${1:-release}"
@@ -17,6 +19,7 @@ tools=(clang clang-tidy clang-tools valgrind)
 case "$preset" in
   fuzz) packages+=(clang) ;;
   tools) packages+=("${tools[@]}") ;;
+  bench) packages+=(linuxcnc-uspace) ;;  # rs274 -g, issue 21's reference (docs/DECISIONS.md)
 esac
 missing=()
 for p in "${packages[@]}"; do
@@ -42,7 +45,7 @@ if ! locale -a 2>/dev/null | grep -qi '^de_DE\.utf-\?8$'; then
   "${sudo_cmd[@]}" locale-gen >/dev/null
 fi
 
-[ "$preset" = tools ] && exit 0
+[ "$preset" = tools ] || [ "$preset" = bench ] && exit 0
 cd "$here"
 cmake --preset "$preset" >/dev/null
 cmake --build --preset "$preset"
