@@ -33,7 +33,6 @@ struct QueueItem {
     SourceLocation where;
     std::uint32_t blockIndex = 0;
     // Move:
-    SegmentGeometry geometry;
     PathLimits limits;
     bool rapid = false;
     BlockTransition mode;
@@ -51,6 +50,8 @@ struct QueueItem {
     std::shared_ptr<const TimedCourse> course;  ///< null: constant velocity
     // Action:
     MachineAction action;
+    // Move, Timed: last, after the fields every entry uses (MOT-023).
+    SegmentGeometry geometry;
 };
 
 /// The bounded look-ahead queue: a ring of items in program order.

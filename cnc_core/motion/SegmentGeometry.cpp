@@ -12,15 +12,15 @@ namespace {
 
 using curve::kPi;
 
-/// Writes the `count` values `component(i)` divided by their norm to `out`
-/// (undivided when the norm is 0) and returns the norm. Each component is
-/// computed twice, for the norm and for the store, instead of being read
-/// back from `out`: a wide load over the narrow stores just made there
+/// Hands `store(i, value)` the `count` values `component(i)` divided by
+/// their norm (undivided when the norm is 0) and returns the norm. Each
+/// component is computed twice, for the norm and for the store, instead of
+/// being read back: a wide load over the narrow stores just made there
 /// stalled the store forwarding on every move (about a quarter of the time
 /// of an arc's tangents). Same operations in the same order as storing,
 /// summing the squares and dividing in place.
-template <typename Component>
-double storeUnit(Position& out, int count, const Component& component) {
+template <typename Component, typename Store>
+double storeUnit(int count, const Component& component, const Store& store) {
     double sum = 0.0;
     for (int i = 0; i < count; ++i) {
         const double c = component(i);
@@ -29,7 +29,7 @@ double storeUnit(Position& out, int count, const Component& component) {
     const double norm = std::sqrt(sum);
     const bool divide = !(norm <= 0.0);
     for (int i = 0; i < count; ++i)
-        out[static_cast<std::size_t>(i)] = divide ? component(i) / norm : component(i);
+        store(static_cast<std::size_t>(i), divide ? component(i) / norm : component(i));
     return norm;
 }
 
@@ -105,8 +105,13 @@ void SegmentGeometry::describeLine() {
         const auto k = static_cast<std::size_t>(i);
         return end_[k] - start_[k];
     };
-    length_ = storeUnit(startTangent_, axisCount_, difference);  // the norm is the length
-    storeUnit(endTangent_, axisCount_, difference);
+    // A line's tangent is the same at both ends: worked out once and stored
+    // in both (the same operations as twice; not copied over, which would
+    // read the narrow stores back with wide loads). The norm is the length.
+    length_ = storeUnit(axisCount_, difference, [this](std::size_t k, double unit) {
+        startTangent_[k] = unit;
+        endTangent_[k] = unit;
+    });
 }
 
 void SegmentGeometry::describeArc(double c1, double c2, bool clockwise, bool fullCircle) {
@@ -145,12 +150,15 @@ SegmentGeometry::Polar SegmentGeometry::polar(double d1, double d2, double radiu
 void SegmentGeometry::arcTangent(Polar at, double radius, Position& tangent) const {
     const double dr = radius1_ - radius0_;
     clearFrom(tangent, axisCount_);
-    storeUnit(tangent, axisCount_, [&](int i) {
-        if (i == p1_) return dr * at.cos - radius * sweep_ * at.sin;
-        if (i == p2_) return dr * at.sin + radius * sweep_ * at.cos;
-        const auto k = static_cast<std::size_t>(i);
-        return end_[k] - start_[k];
-    });
+    storeUnit(
+        axisCount_,
+        [&](int i) {
+            if (i == p1_) return dr * at.cos - radius * sweep_ * at.sin;
+            if (i == p2_) return dr * at.sin + radius * sweep_ * at.cos;
+            const auto k = static_cast<std::size_t>(i);
+            return end_[k] - start_[k];
+        },
+        [&tangent](std::size_t k, double unit) { tangent[k] = unit; });
 }
 
 void SegmentGeometry::planePoint(double s, Position& plane) const {
