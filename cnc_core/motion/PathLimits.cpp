@@ -8,6 +8,7 @@ namespace mtc::core::motion {
 
 AxisLimit planeLimit(const SegmentGeometry& g, const MotionLimits& limits, int axis) {
     const PlaneMapping& map = g.mapping();
+    if (map.identity()) return limits.axes[static_cast<std::size_t>(axis)];  // no unit to change
     int source = axis;
     if (map.kind() == 31 && (axis == map.axis1() || axis == map.axis2()))
         source =

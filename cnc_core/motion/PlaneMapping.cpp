@@ -54,7 +54,7 @@ bool PlaneMapping::developed(int axis) const {
     return (axis == axis1_ && rotaryAxis_[0]) || (axis == axis2_ && rotaryAxis_[1]);
 }
 
-double PlaneMapping::planeUnits(int axis, double degreesValue) const {
+double PlaneMapping::developedUnits(int axis, double degreesValue) const {
     return developed(axis) ? degreesValue / kDegPerRad * radius_ : degreesValue;
 }
 

@@ -36,11 +36,18 @@ class PlaneMapping {
     void toMachine(const Position& plane, Position& machine) const;
     /// A rotary plane axis's velocity or acceleration (degrees) in plane
     /// units (mm) under G32; unchanged otherwise.
-    double planeUnits(int axis, double degreesValue) const;
+    double planeUnits(int axis, double degreesValue) const {
+        // Inline for the usual case: the limits of every moving axis of
+        // every queued move come through here (MOT-023).
+        return kind_ == 32 ? developedUnits(axis, degreesValue) : degreesValue;
+    }
     /// True when machine axis `axis` is a rotary axis measured in mm in the plane.
     bool developed(int axis) const;
 
   private:
+    /// planeUnits() under G32.
+    double developedUnits(int axis, double degreesValue) const;
+
     int kind_ = 30;
     int axis1_ = -1, axis2_ = -1;
     int linear_ = -1, rotary_ = -1;  ///< G31: the linear and the rotary plane axis

@@ -142,9 +142,17 @@ bool TrajectoryEngine::planBackward(bool early) {
             frontChanged = !unchanged || !planned_ || plannedExit_ != following;
             break;
         }
+        // min(entry, cap, reach) with reach >= 0 (or NaN): a move that starts
+        // at rest (a corner) bounds it to 0 whatever it can reach, and the
+        // square root on the chain from move to move is skipped (MOT-023).
+        const double bound = std::min(item.entryLimit, capOf(item));
+        if (bound <= 0.0) {
+            following = bound;
+            continue;
+        }
         const double reach = std::sqrt(following * following +
                                        2.0 * item.limits.acceleration * item.geometry.length());
-        following = std::min({item.entryLimit, capOf(item), reach});
+        following = std::min(bound, reach);
     }
     return frontChanged;
 }
@@ -482,6 +490,7 @@ std::uint32_t TrajectoryEngine::currentBlockIndex() const {
 }
 
 std::vector<std::uint32_t> TrajectoryEngine::takeReached() {
+    if (reached_.empty()) return {};  // after nearly every move: nothing to swap
     std::vector<std::uint32_t> out;
     out.swap(reached_);
     return out;
