@@ -100,11 +100,43 @@ void PainterToolpathCanvas::fitView(View& view, bool all) {
         w = std::max(w, 2 * std::fabs(dot(d, view.pose.right())));
         h = std::max(h, 2 * std::fabs(dot(d, view.pose.up)));
     }
-    // The part in the middle of what the rulers leave free (TP-025).
+    // The part in the middle of what the rulers leave free (TP-025) ...
     const QRectF free =
         QRectF(view.rect).marginsRemoved(rulerMargins(QFontMetricsF(font()), 5.0 * lineScale()));
-    view.centre = free.center();
-    view.scale = 0.92 * std::min(std::max(free.width(), 1.0) / w, std::max(free.height(), 1.0) / h);
+    const QSizeF extent(w, h);
+    view.framed = extent;
+    fitInto(view, free, extent);
+    // ... and clear of the triad in the top right corner: below it or left
+    // of it, whichever leaves the part larger (TP-031).
+    const QRectF triad = triadInk(view);
+    if (!framedArea(view, extent).intersects(triad)) return;
+    QRectF below = free, beside = free;
+    below.setTop(std::max(free.top(), triad.bottom()));
+    beside.setRight(std::min(free.right(), triad.left()));
+    View underTriad = view;
+    fitInto(underTriad, below, extent);
+    fitInto(view, beside, extent);
+    if (underTriad.scale > view.scale) view = underTriad;
+}
+
+QRectF PainterToolpathCanvas::framedRect(bool developed) const {
+    const View& view = developed ? developed_ : scene_;
+    return framedArea(view, view.framed);
+}
+
+QRectF PainterToolpathCanvas::triadRect(bool developed) const {
+    return triadInk(developed ? developed_ : scene_);
+}
+
+void PainterToolpathCanvas::fitInto(View& view, const QRectF& area, const QSizeF& box) {
+    view.centre = area.center();
+    view.scale = kFitShare * std::min(std::max(area.width(), 1.0) / box.width(),
+                                      std::max(area.height(), 1.0) / box.height());
+}
+
+QRectF PainterToolpathCanvas::framedArea(const View& view, const QSizeF& box) {
+    const QSizeF size = box * view.scale;
+    return {view.centre - QPointF(size.width() / 2, size.height() / 2), size};
 }
 
 void PainterToolpathCanvas::showPreset(ToolpathPreset preset) {
@@ -438,21 +470,41 @@ QRectF PainterToolpathCanvas::triadBox(const View& view) const {
     return {view.rect.right() - side, double(view.rect.top()), side, side};
 }
 
+QPointF PainterToolpathCanvas::triadTip(const View& view, int axis) const {
+    Vec unit{0, 0, 0};
+    unit[static_cast<std::size_t>(axis)] = 1.0;
+    const double arm = 28 * lineScale();
+    return triadBox(view).center() +
+           QPointF(arm * dot(unit, view.pose.right()), -arm * dot(unit, view.pose.up));
+}
+
+QString PainterToolpathCanvas::triadName(const View& view, int axis) {
+    const char* names[3] = {"X", "Y", "Z"};
+    if (view.developed && axis < 2) return axis == 0 ? tr("axial") : tr("circ.");
+    return QString(names[axis]);
+}
+
+QRectF PainterToolpathCanvas::triadInk(const View& view) const {
+    const QFontMetricsF metrics(font());
+    const QPointF origin = triadBox(view).center();
+    QRectF ink(origin, QSizeF(0, 0));
+    for (int axis = 0; axis < 3; ++axis) {
+        const QPointF text = triadTip(view, axis) + QPointF(3, 3);  // the baseline's start
+        ink |= QRectF(triadTip(view, axis), QSizeF(0, 0));
+        ink |= QRectF(text.x(), text.y() - metrics.ascent(),
+                      metrics.horizontalAdvance(triadName(view, axis)), metrics.height());
+    }
+    return ink.marginsAdded(QMarginsF(4, 4, 4, 4));
+}
+
 void PainterToolpathCanvas::drawTriad(QPainter& painter, const View& view) {
     const QPointF origin = triadBox(view).center();
-    const double arm = 28 * lineScale();
-    const char* names[3] = {"X", "Y", "Z"};
     const QColor colours[3] = {Qt::red, Qt::green, QColor(80, 140, 255)};
     for (int axis = 0; axis < 3; ++axis) {
-        Vec unit{0, 0, 0};
-        unit[static_cast<std::size_t>(axis)] = 1.0;
-        const QPointF tip =
-            origin + QPointF(arm * dot(unit, view.pose.right()), -arm * dot(unit, view.pose.up));
+        const QPointF tip = triadTip(view, axis);
         painter.setPen(QPen(colours[axis], penWidth(2)));
         painter.drawLine(origin, tip);
-        painter.drawText(tip + QPointF(3, 3), view.developed && axis < 2
-                                                  ? (axis == 0 ? tr("axial") : tr("circ."))
-                                                  : QString(names[axis]));
+        painter.drawText(tip + QPointF(3, 3), triadName(view, axis));
     }
 }
 

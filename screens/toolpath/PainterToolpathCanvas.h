@@ -44,6 +44,10 @@ class PainterToolpathCanvas : public ToolpathCanvas {
     void setFrameInterval(int milliseconds) { pacer_.setInterval(milliseconds); }
     /// Times the part's image was made (it is kept while nothing changes).
     int partImagesMade() const { return partImagesMade_; }
+    /// Where the last framing put the framed box, and what the axis triad
+    /// covers, in the scene's (developed plane's) area: apart (TP-031).
+    QRectF framedRect(bool developed) const;
+    QRectF triadRect(bool developed) const;
 
   protected:
     void paintEvent(QPaintEvent* event) override;
@@ -60,9 +64,18 @@ class PainterToolpathCanvas : public ToolpathCanvas {
         QPointF centre;      ///< where the focal point is drawn
         QRect rect;
         bool developed = false;
+        QSizeF framed{1e-3, 1e-3};  ///< the framed box across and up (mm)
     };
     void layout();
     void fitView(View& view, bool all);
+    /// Share of the free area the framed box takes (a margin around it).
+    static constexpr double kFitShare = 0.92;
+    /// Centres a box of `box` millimetres in `area` at the largest scale
+    /// that leaves the margin of kFitShare.
+    static void fitInto(View& view, const QRectF& area, const QSizeF& box);
+    /// Where a box of `box` millimetres framed by fitInto() is drawn
+    /// (without the margin).
+    static QRectF framedArea(const View& view, const QSizeF& box);
     /// Frames the part, or with `all` every move, and remembers which.
     void frame(bool all);
     QPointF project(const View& view, const Vec& p) const;
@@ -85,6 +98,11 @@ class PainterToolpathCanvas : public ToolpathCanvas {
     void drawTriad(QPainter& painter, const View& view);
     /// Where the axis triad and its names are drawn (top right).
     QRectF triadBox(const View& view) const;
+    /// The end of the triad's arm of `axis` (0..2) in `view`, and its name.
+    QPointF triadTip(const View& view, int axis) const;
+    static QString triadName(const View& view, int axis);
+    /// What the triad covers in `view`: its arms and names, with a margin.
+    QRectF triadInk(const View& view) const;
     /// Ticks and titles along the frame (TP-025), clear of the caption's box.
     void drawRulers(QPainter& painter, const View& view, const QRect& caption);
     long pickIn(const View& view, QPointF at) const;

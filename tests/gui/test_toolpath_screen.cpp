@@ -557,6 +557,45 @@ class ToolpathScreenTest : public QObject {
         QVERIFY(screen->model()->summary().contains("developed plane"));
         QVERIFY(screen->model()->stock().shape == mtc::core::Stock::Shape::Cylinder);
     }
+
+    /// TP-031: the framed part keeps clear of the axis triad in the top
+    /// right corner, in the developed plane and the scene of both machines
+    /// and every preset, and still fills most of its free area.
+    void theFramedPartKeepsClearOfTheTriad() {
+        PanelFixture panel;
+        for (int station : {0, 1}) {
+            panel.window->showStation(station);
+            panel.session->selectProgram(station, 1);
+            panel.window->showScreen("toolpath");
+            ToolpathScreen* screen = toolpath(panel, station);
+            auto* canvas = qobject_cast<mtc::screens::PainterToolpathCanvas*>(screen->canvas());
+            QVERIFY(canvas);
+            QTRY_VERIFY(screen->model()->geometry() != nullptr);
+            const bool split = screen->model()->geometry()->developed.segmentCount() > 0;
+            for (Qt::Key preset : {Qt::Key_1, Qt::Key_2, Qt::Key_3, Qt::Key_4}) {
+                panel.press(preset);
+                for (bool developed : {false, true}) {
+                    if (developed && !split) continue;
+                    const QRectF part = canvas->framedRect(developed);
+                    const QRectF triad = canvas->triadRect(developed);
+                    QVERIFY2(!part.intersects(triad),
+                             qPrintable(QString("station %1 preset %2 %3: part %4,%5 %6x%7, "
+                                                "triad %8,%9")
+                                            .arg(station)
+                                            .arg(preset - Qt::Key_0)
+                                            .arg(developed ? "developed" : "scene")
+                                            .arg(part.x())
+                                            .arg(part.y())
+                                            .arg(part.width())
+                                            .arg(part.height())
+                                            .arg(triad.x())
+                                            .arg(triad.y())));
+                    QVERIFY(part.width() > 0.4 * canvas->width() / (split ? 2 : 1) ||
+                            part.height() > 0.4 * canvas->height());
+                }
+            }
+        }
+    }
 };
 
 QTEST_MAIN(ToolpathScreenTest)
