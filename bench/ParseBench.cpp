@@ -9,6 +9,7 @@
 #endif
 
 #include "cnc_core/language/Parser.h"
+#include "tests/support/ProgramDifference.h"
 
 namespace {
 
@@ -53,13 +54,26 @@ std::string generateMotionProgram(int blocks) {
     return text;
 }
 
+/// The fast paths against the general path, once: the timed parses must
+/// give exactly the program the general path gives.
+bool fastPathsAgree(const std::string& source, benchmark::State& state) {
+    mtc::core::ParseOptions general;
+    general.plainBlockFastPath = false;
+    const std::string difference = mtc::core::testing::programDifference(
+        mtc::core::parseProgram(source), mtc::core::parseProgram(source, general));
+    if (difference.empty()) return true;
+    state.SkipWithError(("the fast path parses differently: " + difference).c_str());
+    return false;
+}
+
 void BM_ParseMotionProgram(benchmark::State& state) {
     const std::string source = generateMotionProgram(static_cast<int>(state.range(0)));
+    if (!fastPathsAgree(source, state)) return;
     double memoryRatio = 0.0;
     double heapRatio = 0.0;
     std::size_t blocks = 0;
     std::size_t errors = 0;
-    for (auto _ : state) {
+    for (auto _ : state) {  // NOLINT(clang-analyzer-deadcode.DeadStores)
         // The copy stands for reading the file; only parsing is timed.
         state.PauseTiming();
         std::string text = source;

@@ -47,6 +47,26 @@ class BlockList {
     const_iterator end() const;
     /// Appends `block`.
     void push_back(const Block& block);
+    /// Appends a one-line block with a number of N0000..N9999 or none (-1),
+    /// no flags, label, comment, text or sub-number (the parser's fast path
+    /// for whole lines), as push_back would. Appends nothing and returns false
+    /// when its text is longer than 65535 bytes; the caller then appends a
+    /// full Block.
+    bool tryPushPlain(std::uint32_t firstWord, std::uint16_t wordCount, std::int16_t number,
+                      std::uint32_t line, std::uint32_t sourceOffset, std::uint32_t sourceLength) {
+        if (sourceLength > 65535) return false;
+        // Field stores into the element itself, as WordList::tryPushNumber.
+        Packed& p = packed_.emplace_back();
+        p.firstWord = firstWord;
+        p.sourceOffset = sourceOffset;
+        p.line = line;
+        p.number = number;
+        p.wordCount = wordCount;
+        p.sourceLength = static_cast<std::uint16_t>(sourceLength);
+        p.flags = 0;
+        p.lineCount = 1;
+        return true;
+    }
     /// Replaces the block at `index`. Precondition: index < size().
     void set(std::size_t index, const Block& block);
     /// N number of block `index` without unpacking the rest (fast path).

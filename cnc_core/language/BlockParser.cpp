@@ -38,7 +38,7 @@ BlockParser::BlockParser(ParseContext& context)
       lexer_(text_, 0, 0),
       plainFastPath_(context.plainBlockFastPath()) {}
 
-void BlockParser::parse(const BlockSource& source) {
+void BlockParser::startBlock(const BlockSource& source) {
     source_ = source;
     lexer_ = Lexer(text_, source.begin, source.end);
     block_ = Block{};
@@ -47,6 +47,10 @@ void BlockParser::parse(const BlockSource& source) {
     block_.lineCount = source.lineCount;
     block_.sourceText = TextSpan{source.begin, source.end - source.begin};
     primarySeen_ = false;
+}
+
+void BlockParser::parse(const BlockSource& source) {
+    startBlock(source);
     if (parsePrefix()) {
         if (!context_.macros().empty() && blockUsesMacro()) {
             emitMacroBlock();

@@ -33,6 +33,14 @@ class BlockParser {
 
     /// Parses `source` and appends exactly one Block.
     void parse(const BlockSource& source);
+    /// The fast path for whole lines (BlockParserPlain.cpp): when the line
+    /// at `begin` (1-based number `line`) starts like a plain block and the
+    /// next line cannot continue it, parses it as parse() would parse it as
+    /// a one-line block, appends exactly one Block, sets `newline` to the
+    /// offset of the line's '\n' (the source size when it has none) and
+    /// returns true. Otherwise appends nothing and returns false. Only for a
+    /// parse with the plain-block fast path and no macros.
+    bool parseLine(std::uint32_t begin, std::uint32_t line, std::uint32_t& newline);
     /// True once a PROGRAMMENDE block was parsed.
     bool programEnded() const { return programEnded_; }
 
@@ -64,6 +72,17 @@ class BlockParser {
     /// (no skip, primary colon, number or label: the general prefix reads nothing).
     bool startsWithoutPrefix() const;
     void parsePlainWords();
+    /// Takes plain words from `pos` up to `end` at most as the fast path
+    /// takes them (stopping at the first word it does not take, a character
+    /// that is not a blank ' ' / '\t', or `end`; at most kMaxWords words);
+    /// columns count from `lineBegin`. Returns where it stopped.
+    std::uint32_t scanPlainWords(std::uint32_t pos, std::uint32_t end, std::uint32_t lineBegin);
+    /// Starts the Block of `source` (block_, lexer_ and source_).
+    void startBlock(const BlockSource& source);
+    /// parseLine's general part: the line [begin, end) whose plain words
+    /// up to `stop` are parsed already (from `firstWord` on).
+    void finishLine(const BlockSource& source, std::int32_t number, std::uint32_t firstWord,
+                    std::uint32_t stop);
 
     // Keywords (BlockParserKeywords.cpp).
     bool parseKeyword(std::string_view name, std::uint32_t start);

@@ -12,6 +12,16 @@
 // general path would take it without a diagnostic, and at the first word it
 // does not take it stops and leaves the lexer at that word, where the general
 // path (parseNextWord) goes on. The parser tests compare both paths.
+//
+// For a loose file without macros the line scanner hands whole lines to
+// parseLine (issue 21): the block number, the words and the line end are
+// found in one pass over the line, the words written straight into the
+// word list, the block stored packed; no BlockSource, Lexer or Block in
+// between unless a word sends the rest of the line to the general path.
+// A line the next line may continue (it starts with a blank) is left whole
+// to the line scanner.
+#include <cstring>
+
 #include "cnc_core/language/BlockParser.h"
 #include "cnc_core/language/WordRules.h"
 
@@ -108,7 +118,146 @@ bool scanPlainNumber(const char* text, std::uint32_t pos, std::uint32_t end, Num
     return true;
 }
 
+/// True when the line ends at `pos` of the text of `size` bytes: its '\n',
+/// a '\r' before the '\n' or the text's end, or the text's end itself.
+bool lineEndAt(const char* text, std::uint32_t pos, std::uint32_t size) {
+    if (pos >= size || text[pos] == '\n') return true;
+    return text[pos] == '\r' && (pos + 1 == size || text[pos + 1] == '\n');
+}
+
+/// takePlainBlockNumber for the line starting at `begin` with 'N' before
+/// its end is known: true, with the number's value and the offset after its
+/// digits, only where takePlainBlockNumber takes it as a one-line block (it
+/// leaves "N0053:0001" and a '\r' inside the line to the general path).
+bool lineBlockNumberAt(const char* text, std::uint32_t begin, std::uint32_t size,
+                       std::int32_t& number, std::uint32_t& after) {
+    if (!fourDigitsAt(text, begin + 1, size, number)) return false;
+    const std::uint32_t digitsEnd = begin + 1 + kBlockNumberDigits;
+    after = digitsEnd;
+    if (lineEndAt(text, digitsEnd, size)) return true;
+    if (!isPlainBlank(text[digitsEnd])) return false;
+    std::uint32_t next = digitsEnd;
+    while (next < size && isPlainBlank(text[next]))
+        ++next;
+    if (lineEndAt(text, next, size)) return true;
+    const char c = text[next];
+    return c != '/' && c != ':' && c != '.' && c != '\r';  // the general prefix takes these
+}
+
+/// Where the line whose words stopped at `stop` ends: `end` (without a
+/// final '\r') and `newline` (its '\n', or `size`).
+void findLineEnd(const char* text, std::uint32_t stop, std::uint32_t size, std::uint32_t& end,
+                 std::uint32_t& newline) {
+    if (lineEndAt(text, stop, size)) {
+        end = stop;
+        newline = stop < size && text[stop] == '\r' ? stop + 1 : stop;
+        return;
+    }
+    const void* found = std::memchr(text + stop, '\n', size - stop);
+    newline = found ? static_cast<std::uint32_t>(static_cast<const char*>(found) - text) : size;
+    end = newline;
+    if (text[end - 1] == '\r') --end;  // end > stop: the line does not end at stop
+}
+
+/// The digits of a number as the common case reads them: before and after
+/// one point, stopped by any other byte.
+struct PlainNumber {
+    std::uint64_t mantissa = 0;  // wraps for a long run of digits: then unused
+    std::uint32_t digits = 0;
+    unsigned scale = 0;
+};
+
+PlainNumber scanDigits(const unsigned char* text, std::uint32_t& pos) {
+    PlainNumber number;
+    std::uint32_t p = pos;
+    for (unsigned digit = 0; (digit = text[p] - static_cast<unsigned>('0')) <= 9; ++p)
+        number.mantissa = number.mantissa * 10 + digit;
+    number.digits = p - pos;
+    if (text[p] == '.') {
+        const std::uint32_t decimals = ++p;
+        for (unsigned digit = 0; (digit = text[p] - static_cast<unsigned>('0')) <= 9; ++p)
+            number.mantissa = number.mantissa * 10 + digit;
+        number.scale = p - decimals;
+        number.digits += number.scale;
+    }
+    pos = p;
+    return number;
+}
+
+/// A plain word up to its value: address letter, table entry, sign, column.
+struct WordStart {
+    WordKind kind;
+    char letter;
+    std::uint8_t address;
+    bool negative;
+    std::uint32_t column;
+};
+
+/// The number of `word` at `value` by the rules themselves (scanNumberAt,
+/// normalizeNumber, tryPushNumber) for what the common case leaves: more
+/// than nine digits, more than seven decimals, a second point, a sign or
+/// decimals on a whole-number word, no digits. Appends the word and sets
+/// `after` when the fast path takes it; false otherwise.
+bool takeNumber(WordList& words, const char* text, std::uint32_t value, std::uint32_t end,
+                const WordStart& word, std::uint32_t& after) {
+    NumberText number;
+    after = value;
+    if (!scanPlainNumber(text, value, end, number, after))
+        after = Lexer::scanNumberAt(text, value, end, number);
+    if (after == value || (after < end && text[after] == '.') || !number.exact) return false;
+    std::int64_t mantissa = number.mantissa;
+    unsigned scale = number.scale;
+    // normalizeNumber changes and refuses nothing for a number of at most
+    // 7 decimals below 2^31 unless its word needs a whole number and it
+    // is negative or has decimals: its branches are skipped then.
+    const bool normalize = (scale > 7) | (mantissa > 2147483647) |
+                           (((word.address & kWhole) != 0) & (word.negative | (scale != 0)));
+    if (normalize && normalizeNumber(word.kind, word.negative, mantissa, scale) != NumberCheck::Ok)
+        return false;
+    return words.tryPushNumber(word.kind, word.letter, 0, word.column,
+                               word.negative ? -mantissa : mantissa, scale);
+}
+
 }  // namespace
+
+bool BlockParser::parseLine(std::uint32_t begin, std::uint32_t line, std::uint32_t& newline) {
+    const char* text = text_.data();
+    const auto size = static_cast<std::uint32_t>(text_.size());
+    std::int32_t number = -1;
+    std::uint32_t pos = begin;
+    if (text[begin] == 'N') {
+        if (!lineBlockNumberAt(text, begin, size, number, pos)) return false;
+    } else if (!(kAddressTable.entry[static_cast<unsigned char>(text[begin])] & kAddress)) {
+        return false;
+    }
+    const auto firstWord = static_cast<std::uint32_t>(program_.words.size());
+    const std::uint32_t stop = scanPlainWords(pos, size, begin);
+    std::uint32_t end = stop;
+    findLineEnd(text, stop, size, end, newline);
+    if (newline < size && text[newline + 1] == ' ') {  // the next line may continue the block
+        program_.words.truncate(firstWord);
+        return false;
+    }
+    const auto words = static_cast<std::uint16_t>(program_.words.size() - firstWord);
+    if (stop == end &&
+        program_.blocks.tryPushPlain(firstWord, words, static_cast<std::int16_t>(number), line,
+                                     begin, end - begin))
+        return true;
+    finishLine(BlockSource{begin, end, line, 1}, number, firstWord, stop);
+    return true;
+}
+
+void BlockParser::finishLine(const BlockSource& source, std::int32_t number,
+                             std::uint32_t firstWord, std::uint32_t stop) {
+    startBlock(source);
+    block_.firstWord = firstWord;
+    block_.number = number;
+    lexer_.seek(stop);
+    if (!lexer_.atEnd())
+        while (parseNextWord()) {
+        }
+    finish();
+}
 
 bool BlockParser::takePlainBlockNumber() {
     const char* text = text_.data();
@@ -146,46 +295,61 @@ bool BlockParser::startsWithoutPrefix() const {
 }
 
 void BlockParser::parsePlainWords() {
-    const char* text = text_.data();
-    const std::uint32_t end = source_.end;
-    std::uint32_t pos = lexer_.position();
-    // The block has no words yet and each plain word takes two characters at
-    // least: only a block this long can reach kMaxWords.
-    const bool mayBeFull = end - pos >= 2 * kMaxWords;
-    for (;;) {
-        if (pos < end && text[pos] == ' ') ++pos;  // the usual single blank
-        while (pos < end && isPlainBlank(text[pos]))
-            ++pos;
-        if (pos >= end) break;
-        const char letter = text[pos];
-        const std::uint8_t address = kAddressTable.entry[static_cast<unsigned char>(letter)];
-        if (!(address & kAddress)) break;
-        const auto kind = static_cast<WordKind>(address & kKindBits);
+    lexer_.seek(scanPlainWords(lexer_.position(), source_.end, source_.begin));
+}
+
+std::uint32_t BlockParser::scanPlainWords(std::uint32_t pos, const std::uint32_t end,
+                                          const std::uint32_t lineBegin) {
+    // The line ends at `end` with '\n', '\r' or the '\0' after the source:
+    // no scan below passes a byte of these, so only axisIndexAt needs `end`.
+    const char* const base = text_.data();
+    const auto* text = reinterpret_cast<const unsigned char*>(base);
+    const std::uint32_t lastColumn = lineBegin + WordList::kMaxPackedColumn - 1;
+    // Words go straight into the list's free slots (all in locals: a store
+    // through a member would make the compiler reload every member).
+    WordList& words = program_.words;
+    WordList::Packed* out = words.spareBegin();
+    WordList::Packed* outEnd = words.spareEnd();
+    // The block has no words yet: the fast path takes kMaxWords at most and
+    // leaves the rest to the general path (PARSE_TOO_MANY_WORDS).
+    for (std::uint32_t budget = kMaxWords;; --budget) {
+        unsigned c = text[pos];
+        while (c == ' ' || c == '\t')
+            c = text[++pos];
+        const std::uint8_t address = kAddressTable.entry[c];
+        if (!(address & kAddress) || budget == 0 || pos > lastColumn) break;
         std::uint32_t value = pos + 1;
-        if ((address & kIndexed) && axisIndexAt(text, value, end) != 0) break;
-        const bool negative = value < end && text[value] == '-';
-        if (value < end && (text[value] == '-' || text[value] == '+')) ++value;
-        NumberText number;
+        if ((address & kIndexed) && axisIndexAt(base, value, end) != 0) break;
+        const bool negative = text[value] == '-';
+        value += negative || text[value] == '+';
         std::uint32_t after = value;
-        if (!scanPlainNumber(text, value, end, number, after))
-            after = Lexer::scanNumberAt(text, value, end, number);
-        if (after == value || (after < end && text[after] == '.') || !number.exact) break;
-        std::int64_t mantissa = number.mantissa;
-        unsigned scale = number.scale;
-        // normalizeNumber changes and refuses nothing for a number of at most
-        // 7 decimals below 2^31 unless its word needs a whole number and it
-        // is negative or has decimals: its branches are skipped then.
-        const bool normalize = (scale > 7) | (mantissa > 2147483647) |
-                               (((address & kWhole) != 0) & (negative | (scale != 0)));
-        if (normalize && normalizeNumber(kind, negative, mantissa, scale) != NumberCheck::Ok) break;
-        if (mayBeFull && program_.words.size() - block_.firstWord >= kMaxWords) break;
-        const std::uint32_t column = pos - source_.begin + 1;  // a one-line block
-        if (!program_.words.tryPushNumber(kind, letter, 0, column, negative ? -mantissa : mantissa,
-                                          scale))
-            break;
+        const PlainNumber number = scanDigits(text, after);
+        const WordStart word{static_cast<WordKind>(address & kKindBits), static_cast<char>(c),
+                             address, negative, pos - lineBegin + 1};
+        // Up to nine digits, seven decimals, no sign or decimals on a whole-
+        // number word: nothing to normalise, the packed form holds it.
+        if (number.digits - 1 < 9 && number.scale < 8 && text[after] != '.' &&
+            !((address & kWhole) && (negative || number.scale != 0))) {
+            if (out == outEnd) {
+                words.endAt(out);
+                words.makeSpare();
+                out = words.spareBegin();
+                outEnd = words.spareEnd();
+            }
+            const auto mantissa = static_cast<std::int32_t>(number.mantissa);
+            *out++ = WordList::smallNumber(word.kind, word.letter, word.column,
+                                           negative ? -mantissa : mantissa, number.scale);
+        } else {
+            words.endAt(out);
+            const bool taken = takeNumber(words, base, value, end, word, after);
+            out = words.spareBegin();
+            outEnd = words.spareEnd();
+            if (!taken) break;
+        }
         pos = after;
     }
-    lexer_.seek(pos);
+    words.endAt(out);
+    return pos;
 }
 
 }  // namespace mtc::core

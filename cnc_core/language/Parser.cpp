@@ -27,12 +27,19 @@ constexpr std::uint32_t kContinuationIndent = 6;
 class LineScanner {
   public:
     LineScanner(ParseContext& context, const SourceLayout& layout)
-        : context_(context), text_(context.program().source), layout_(layout), blocks_(context) {}
+        : context_(context),
+          text_(context.program().source),
+          layout_(layout),
+          blocks_(context),
+          wholeLines_(context.plainBlockFastPath() && !layout.dat) {}
 
     void run();
 
   private:
     enum class LineKind { Blank, CommentOnly, Continuation, BlockStart };
+    /// The fast path for the line at `pos`: true when it took the whole
+    /// line (then `pos` and `line` are those of the next line).
+    bool takeWholeLine(std::uint32_t& pos, std::uint32_t& line);
     LineKind classify(std::uint32_t begin, std::uint32_t end) const;
     void flush();
     void checkDatLine(std::uint32_t begin, std::uint32_t end, std::uint32_t line);
@@ -47,6 +54,8 @@ class LineScanner {
     bool open_ = false;
     bool ended_ = false;
     bool warnedAfterEnd_ = false;
+    /// Whether lines may take BlockParser::parseLine.
+    const bool wholeLines_;
     std::uint32_t lastLine_ = 0;
 };
 
@@ -58,6 +67,7 @@ void LineScanner::run() {
     lastLine_ =
         std::max<std::uint32_t>(line, 2) - 1;  // the header's last line when no block follows
     while (pos < size) {
+        if (takeWholeLine(pos, line)) continue;
         const void* newline = std::memchr(data + pos, '\n', size - pos);
         std::uint32_t next =
             newline ? static_cast<std::uint32_t>(static_cast<const char*>(newline) - data) : size;
@@ -96,6 +106,20 @@ void LineScanner::run() {
         context_.report(Severity::Warning, "DAT_MISSING_PROGRAMMENDE", lastLine_, 1, "",
                         "the last block of a program file should be PROGRAMMENDE");
     (void)program;
+}
+
+bool LineScanner::takeWholeLine(std::uint32_t& pos, std::uint32_t& line) {
+    // Only a line starting with a blank can continue the pending block: any
+    // other line ends it. Line limits are checked line by line in .DAT files.
+    if (!wholeLines_ || ended_ || text_[pos] == ' ' || !context_.macros().empty()) return false;
+    flush();
+    std::uint32_t newline = 0;
+    if (ended_ || !blocks_.parseLine(pos, line, newline)) return false;
+    ended_ = blocks_.programEnded();
+    lastLine_ = line;
+    pos = newline + 1;
+    ++line;
+    return true;
 }
 
 LineScanner::LineKind LineScanner::classify(std::uint32_t begin, std::uint32_t end) const {

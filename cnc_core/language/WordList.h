@@ -6,7 +6,7 @@
 
 #include "cnc_core/language/IndexIterator.h"
 #include "cnc_core/language/Word.h"
-#include "cnc_core/support/LargeAllocator.h"
+#include "cnc_core/support/PodArray.h"
 
 namespace mtc::core {
 
@@ -14,6 +14,16 @@ namespace mtc::core {
 class WordList {
   public:
     using const_iterator = IndexIterator<WordList, Word>;
+    /// Largest column the 8-byte form holds.
+    static constexpr std::uint32_t kMaxPackedColumn = 255;
+    /// The 8-byte form of a word.
+    struct Packed {
+        std::uint8_t kind;
+        std::uint8_t letter;
+        std::uint8_t bits;     ///< axisIndex (2) | scale (3) << 2 | extended << 5
+        std::uint8_t column;   ///< 1..255
+        std::int32_t payload;  ///< mantissa, or index into extended_
+    };
     /// Number of words.
     std::size_t size() const { return packed_.size(); }
     bool empty() const { return packed_.empty(); }
@@ -61,8 +71,8 @@ class WordList {
     /// axisIndex > 3); the caller then appends a full Word.
     bool tryPushNumber(WordKind kind, char letter, std::uint8_t axisIndex, std::uint32_t column,
                        std::int64_t mantissa, unsigned scale) {
-        if (scale >= 8 || column < 1 || column > 255 || axisIndex > 3 || mantissa > 2147483647 ||
-            mantissa < -2147483647)
+        if (scale >= 8 || column < 1 || column > kMaxPackedColumn || axisIndex > 3 ||
+            mantissa > 2147483647 || mantissa < -2147483647)
             return false;
         // Field stores into the element itself: building a temporary and
         // copying it stalls on store forwarding in this hot path.
@@ -74,6 +84,25 @@ class WordList {
         p.payload = static_cast<std::int32_t>(mantissa);
         return true;
     }
+    /// The form tryPushNumber stores for a word it takes for sure: no axis
+    /// index, column 1..kMaxPackedColumn, |mantissa| < 2^31, scale < 8.
+    static Packed smallNumber(WordKind kind, char letter, std::uint32_t column,
+                              std::int32_t mantissa, unsigned scale) {
+        return Packed{static_cast<std::uint8_t>(kind), static_cast<std::uint8_t>(letter),
+                      static_cast<std::uint8_t>(scale << 2), static_cast<std::uint8_t>(column),
+                      mantissa};
+    }
+    /// Appending in place (the parser's fast path): the free slots after the
+    /// last word are [spareBegin(), spareEnd()); write words of smallNumber()
+    /// there, then endAt(the slot after the last one written). makeSpare()
+    /// makes room for one more word when there is none, as push_back would.
+    Packed* spareBegin() { return packed_.spareBegin(); }
+    Packed* spareEnd() { return packed_.spareEnd(); }
+    void endAt(const Packed* end) { packed_.endAt(end); }
+    void makeSpare() { packed_.makeSpare(); }
+    /// Drops the words from `count` on. Precondition: count <= size(), and
+    /// every word dropped was appended by tryPushNumber.
+    void truncate(std::size_t count) { packed_.resize(count); }
     /// Replaces the word at `index`. Precondition: index < size().
     void set(std::size_t index, const Word& word);
     /// Reserves room for `count` words (no effect on the contents).
@@ -88,16 +117,9 @@ class WordList {
   private:
     static constexpr double kPow10[8] = {1.0, 10.0, 100.0, 1e3, 1e4, 1e5, 1e6, 1e7};
     static constexpr std::uint8_t kExtendedBit = 1u << 5;
-    struct Packed {
-        std::uint8_t kind;
-        std::uint8_t letter;
-        std::uint8_t bits;     ///< axisIndex (2) | scale (3) << 2 | extended << 5
-        std::uint8_t column;   ///< 1..255
-        std::int32_t payload;  ///< mantissa, or index into extended_
-    };
     static bool packable(const Word& word, std::int32_t& mantissa, unsigned& scale);
     Packed pack(const Word& word);
-    std::vector<Packed, LargeAllocator<Packed>> packed_;  // large: huge pages
+    PodArray<Packed> packed_;  // large: huge pages
     std::vector<Word> extended_;
 };
 

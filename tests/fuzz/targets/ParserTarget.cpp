@@ -50,20 +50,28 @@ void checkProgram(const Program& p, std::string_view input) {
     require(p.diagnostics.size() <= 1001, "diagnostics are bounded", input);
 }
 
+/// The fast paths (whole lines, plain blocks) against the general path.
+void compareWithGeneralPath(const std::string& text, core::ParseOptions options,
+                            std::string_view input) {
+    const Program fast = core::DatFile::parse(text, "loose.nc", options);
+    checkProgram(fast, input);
+    options.plainBlockFastPath = false;
+    const Program general = core::DatFile::parse(text, "loose.nc", options);
+    require(core::testing::programDifference(fast, general).empty(),
+            "the fast path for plain blocks parses as the general path", input);
+}
+
 }  // namespace
 
 void fuzzParser(std::string_view input) {
     const std::string text(input);
     checkProgram(core::DatFile::parse(text, "N1010005.DAT"), input);
+    // Without macros: the fast path for whole lines (BlockParser::parseLine).
+    compareWithGeneralPath(text, core::ParseOptions{}, input);
     core::ParseOptions options;
     options.programNumber = 7;
     options.macroNames = {"FAST", "SLOW", "M860", "X1"};
-    const Program loose = core::DatFile::parse(text, "loose.nc", options);
-    checkProgram(loose, input);
-    options.plainBlockFastPath = false;
-    const Program general = core::DatFile::parse(text, "loose.nc", options);
-    require(core::testing::programDifference(loose, general).empty(),
-            "the fast path for plain blocks parses as the general path", input);
+    compareWithGeneralPath(text, options, input);
 }
 
 }  // namespace mtc::fuzz

@@ -1,0 +1,154 @@
+// The parser's fast path for whole lines (BlockParser::parseLine, issue 21):
+// a line is scanned once, its plain words stored as they are found, and the
+// line end found on the way. Every input is parsed both ways (the general
+// path with ParseOptions::plainBlockFastPath off) and must give the same
+// program; a few tests check the values themselves.
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "cnc_core/language/Parser.h"
+#include "tests/support/ProgramDifference.h"
+
+using namespace mtc::core;
+
+namespace {
+
+Program parseWith(const std::string& text, bool fastPath) {
+    ParseOptions options;
+    options.plainBlockFastPath = fastPath;
+    return parseProgram(text, options);
+}
+
+std::string differenceBetweenPaths(const std::string& text) {
+    return mtc::core::testing::programDifference(parseWith(text, true), parseWith(text, false));
+}
+
+// Line ends, blanks and what may follow a line the fast path has taken.
+const std::vector<std::string> kLineShapes = {
+    "N0001 G1 X1",  // no final newline
+    "N0001 G1 X1\n",
+    "N0001 G1 X1\r\nN0002 X2\r\n",
+    "N0001 G1 X1\r",      // a '\r' and the end of the text
+    "N0001 G1\rX1\n",     // a '\r' inside the line is a blank
+    "N0001\r/X1\n",       // ... and then the skip slash is misplaced
+    "N0001 \r\nN0002\r",  // blanks before the line end
+    "N0001 X1\r\r\n",
+    "N0001\tG1\tX1\t\n",
+    "N0001 \t G1  X1   \n",
+    "N0001 G1 X1 ; comment\nN0002 X2\n",
+    "N0001 G1 X1 (text) Y2\n",
+    "N0001 G1 X1\n      Y2 Z3\nN0002 X4\n",       // a continuation line
+    "N0001 G1 X1\n      \nN0002 X4\n",            // six blanks only: no continuation
+    "N0001 G1 X1\n ;comment\nN0002 X4\n",         // a blank first: comment line
+    "N0001 G1 X1\n       ; comment\nN0002 X4\n",  // continuation with a comment
+    "N0001 X1\nN0002 PROGRAMMENDE\nN0003 X1\n",
+    "N0001 X1\nN0002 PROGRAMMENDE ; end\n\n  \n",
+    "N0001 DEFINE FOO AS G1\nN0002 FOO X1\nN0003 X2\n",
+    "N0001 .L1 X1\nN0002 BRA .L1\nN0003 .L1 X2\n",
+    "G1 X1 Y2\nX1\nF1000\n",
+    "\n\nN0001 X1\n\n\nN0002 X2",
+    "N0001\nN0002 \nN0003",
+    "N0001:0002 X1\nN0001 X1\n",
+    std::string("N0001 X1\0Y2\nN0002 X2\n", 21),  // a NUL inside the line
+    "N0001 x1\nN0002 GAX X1\nN0003 X1 @1=2\n",
+    "N0001 X1 \n5\n",         // an axis index looked for past the line end
+    "N0001 X1\t\r\n25 Y1\n",  // ... and past a '\r'
+    "N0001 X1 25 Y1-3 Z2=4 S1 3000 S2=800 S2800\n",
+    "n0001 X1\nN001 X1\nN00001 X1\nN0001X1\nN0001.5 X1\n",
+    "N0001 X1\n\tN0002 X2\n  N0003 X3\n",
+};
+
+// Numbers around the limits of the common case: nine digits, seven decimals,
+// 2^31, 17 digits; signs; whole-number words; no exponents in NC ("1E5" is X1 E5).
+const std::vector<std::string> kNumbers = {
+    "N0001 X999999999 Y1000000000 Z-999999999 A2147483647 B2147483648 C-2147483648\n",
+    "N0002 X0.1234567 Y0.12345678 Z1.00000000 A1234567.8901 B.5 C5. U-.5 V+.5\n",
+    "N0003 X12345678901234567 Y123456789012345678 Z12345678901234567890\n",
+    "N0004 X00000000000000000000001 Y0.000000000000000000001 Z-0 A-0.0 B+0\n",
+    "N0005 G1 G01 G1.0 G1.5 G-1 G+1 M3. M-3 T1.00 T0.10 D1.5 E+2 Q007\n",
+    "N0006 X1E5 Y1e5 Z1.5E-3\n",
+    "N0007 X- Y+ Z. A.. B1..2 C1.2.3 U-+1 V+-1\n",
+    "N0008 F99999999 F999999999 F9999999999 S12.3456789\n",
+};
+
+TEST(ParserWholeLine, LineShapesParseAsOnTheGeneralPath) {
+    for (const std::string& text : kLineShapes)
+        EXPECT_EQ(differenceBetweenPaths(text), "") << text;
+    std::string all;
+    for (const std::string& text : kLineShapes)
+        all += text + "\n";
+    EXPECT_EQ(differenceBetweenPaths(all), "");
+}
+
+TEST(ParserWholeLine, NumbersParseAsOnTheGeneralPath) {
+    for (const std::string& text : kNumbers) {
+        EXPECT_EQ(differenceBetweenPaths(text), "") << text;
+        std::string crlf = text;
+        crlf.insert(crlf.size() - 1, "\r");
+        EXPECT_EQ(differenceBetweenPaths(crlf), "") << crlf;
+        EXPECT_EQ(differenceBetweenPaths(text.substr(0, text.size() - 1)), "") << text;
+    }
+}
+
+TEST(ParserWholeLine, LongLinesParseAsOnTheGeneralPath) {
+    // a word past column 255, a line of more than 65535 bytes, more than
+    // 65535 words in one line (PARSE_TOO_MANY_WORDS)
+    EXPECT_EQ(differenceBetweenPaths("N0001" + std::string(300, ' ') + "X1 Y2\nN0002 X3\n"), "");
+    EXPECT_EQ(differenceBetweenPaths("N0001 X1" + std::string(70000, ' ') + "\nN0002 X3\n"), "");
+    std::string manyWords = "N0001";
+    for (int i = 0; i < 66000; ++i)
+        manyWords += " X1";
+    const Program program = parseWith(manyWords + "\nN0002 X3\n", true);
+    EXPECT_EQ(differenceBetweenPaths(manyWords + "\nN0002 X3\n"), "");
+    ASSERT_EQ(program.diagnostics.size(), 1u);
+    EXPECT_EQ(program.diagnostics.items()[0].code, "PARSE_TOO_MANY_WORDS");
+    EXPECT_EQ(program.blocks.size(), 2u);
+}
+
+TEST(ParserWholeLine, ValuesColumnsAndSpans) {
+    const Program program =
+        parseWith("N0001 G1 X-12.5 Y+3 F1000\r\nN0002\tX1234567890 Z0.12345678\r\nG2 I.5", true);
+    ASSERT_TRUE(program.diagnostics.empty());
+    ASSERT_EQ(program.blocks.size(), 3u);
+    const Block first = program.blocks[0];
+    EXPECT_EQ(first.number, 1);
+    EXPECT_EQ(first.line, 1u);
+    EXPECT_EQ(first.sourceText.offset, 0u);
+    EXPECT_EQ(first.sourceText.length, 25u);  // without the "\r"
+    ASSERT_EQ(first.wordCount, 4u);
+    const Word x = program.words[first.firstWord + 1];
+    EXPECT_EQ(x.kind, WordKind::Axis);
+    EXPECT_EQ(x.letter, 'X');
+    EXPECT_EQ(x.column, 10);
+    EXPECT_EQ(x.number, -12.5);
+    EXPECT_EQ(program.words[first.firstWord + 2].number, 3.0);
+    EXPECT_EQ(program.words[first.firstWord + 3].kind, WordKind::F);
+    EXPECT_EQ(program.words[first.firstWord + 3].number, 1000.0);
+    const Block second = program.blocks[1];
+    EXPECT_EQ(second.line, 2u);
+    ASSERT_EQ(second.wordCount, 2u);
+    EXPECT_EQ(program.words[second.firstWord].number, 1234567890.0);
+    EXPECT_EQ(program.words[second.firstWord].column, 7);
+    EXPECT_EQ(program.words[second.firstWord + 1].number, 0.12345678);
+    const Block third = program.blocks[2];
+    EXPECT_EQ(third.number, -1);
+    EXPECT_EQ(third.line, 3u);
+    EXPECT_EQ(third.sourceText.length, 6u);  // no newline at the end of the text
+    ASSERT_EQ(third.wordCount, 2u);
+    EXPECT_EQ(program.words[third.firstWord + 1].kind, WordKind::CircleCenter);
+    EXPECT_EQ(program.words[third.firstWord + 1].number, 0.5);
+}
+
+TEST(ParserWholeLine, AFullWordListGrowsInPlace) {
+    // More words than the counting pass reserves: blanks are tabs here.
+    std::string text;
+    for (int i = 0; i < 2000; ++i)
+        text += "G1\tX1\tY2\tZ3\tF4\n";
+    const Program program = parseWith(text, true);
+    EXPECT_EQ(program.words.size(), 10000u);
+    EXPECT_EQ(differenceBetweenPaths(text), "");
+}
+
+}  // namespace
