@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <optional>
+#include <string_view>
 
 #include "cnc_core/compiler/ChamferRoundScan.h"
 #include "cnc_core/compiler/CompilerText.h"
@@ -42,30 +43,58 @@ long long planeTicks(const CompilerPlane& plane, bool diameter, const Point2& p,
     return coordinateTicks(p[k] / axisScale(plane.axis[k], diameter));
 }
 
+/// Appends "<nameA><a> <nameB><b>" ("X12.5 Y3", "I2 J-1.5"; numbers as
+/// appendTicks writes them) with one append: the words are written back to
+/// front into one buffer (names of at most 8 characters; longer ones are
+/// appended piece by piece).
+void appendWordPair(std::string& out, std::string_view nameA, long long a, std::string_view nameB,
+                    long long b) {
+    constexpr std::size_t kShortName = 8;
+    if (nameA.size() > kShortName || nameB.size() > kShortName) {
+        out += nameA;
+        appendTicks(out, a);
+        out += ' ';
+        out += nameB;
+        appendTicks(out, b);
+        return;
+    }
+    char buffer[2 * (kShortName + kMaxTicksText) + 1];
+    char* const end = buffer + sizeof buffer;
+    char* first = writeTicksBefore(end, b);
+    first -= nameB.size();
+    nameB.copy(first, nameB.size());
+    *--first = ' ';
+    first = writeTicksBefore(first, a);
+    first -= nameA.size();
+    nameA.copy(first, nameA.size());
+    out.append(first, static_cast<std::size_t>(end - first));
+}
+
 /// Appends "X12.5 Y3" for the point `to` of the plane in programmed units:
 /// absolute (G90), or incremental from `from` (G91) as the difference of the
 /// two points' rounded values, so that a chain of incremental blocks ends
 /// exactly where the programmed one does (no drift from rounding).
 void appendPlaneWords(std::string& out, const CompilerPlane& plane, bool diameter, bool absolute,
                       const Point2& from, const Point2& to) {
+    long long ticks[2];
     for (int k = 0; k < 2; ++k) {
-        if (k) out += ' ';
-        out += plane.axis[k];
         const long long end = planeTicks(plane, diameter, to, k);
-        appendTicks(out, absolute ? end : end - planeTicks(plane, diameter, from, k));
+        ticks[k] = absolute ? end : end - planeTicks(plane, diameter, from, k);
     }
+    appendWordPair(out, plane.axis[0], ticks[0], plane.axis[1], ticks[1]);
 }
 
 /// Appends "I2 J-1.5" for the circle centre `c`: absolute (G90) or relative
 /// to the arc's start `from` (G91), in programmed units.
 void appendCentreWords(std::string& out, const CompilerPlane& plane, bool diameter, bool absolute,
                        const Point2& from, const Point2& c) {
+    long long ticks[2];
     for (int k = 0; k < 2; ++k) {
-        if (k) out += ' ';
-        out += plane.centre[k];
         const long long centre = planeTicks(plane, diameter, c, k);
-        appendTicks(out, absolute ? centre : centre - planeTicks(plane, diameter, from, k));
+        ticks[k] = absolute ? centre : centre - planeTicks(plane, diameter, from, k);
     }
+    appendWordPair(out, std::string_view(&plane.centre[0], 1), ticks[0],
+                   std::string_view(&plane.centre[1], 1), ticks[1]);
 }
 
 /// True when `p` and `q` are written as the same point: a block between
@@ -156,7 +185,7 @@ void editedText(const std::string& text, const ScannedBlock& s, const ScanResult
     std::size_t insertAt = remove.empty() || !geometry ? comment : remove.front().begin;
     if (edit.prependG >= 0) {
         out += 'G';
-        out += std::to_string(edit.prependG);
+        appendTicks(out, static_cast<long long>(edit.prependG) * 10000);  // the number, no fraction
         out += ' ';
     }
     std::size_t copied = 0;
@@ -330,33 +359,29 @@ void CornerJob::apply() {
         const BlockEdit& e = edits_[i];
         if (!e.newStart && !e.newEnd && !e.consumed && !e.removeCorner && e.prependG < 0) continue;
         editedText(blocks_[i].text, scanned_[i], scan_, e, scratch);
-        blocks_[i].text.assign(scratch.out);
+        blocks_[i].text.swap(scratch.out);  // the old text's buffer is the next scratch
         blocks_[i].changed = true;
     }
     if (insertions_.empty()) return;
-    // make room at the end and move the blocks back, last first, putting
-    // each insertion right after the block it belongs to
-    const std::size_t oldSize = blocks_.size();
-    blocks_.resize(oldSize + insertions_.size());
-    std::size_t to = blocks_.size();
-    std::size_t next = insertions_.size();  // insertions_[0, next) are not placed yet
-    for (std::size_t i = oldSize; i-- > 0 && next > 0;) {
-        std::size_t first = next;  // insertions_[first, next) follow block i
-        while (first > 0 && insertions_[first - 1].at == i)
-            --first;
-        for (std::size_t k = next; k-- > first;) {
-            CompileBlock& block = blocks_[--to];
-            block = CompileBlock{};
-            block.number = blocks_[i].number;
-            block.sourceIndex = blocks_[i].sourceIndex;
-            block.sourceLine = blocks_[i].sourceLine;
+    // one new sequence: every block moved once, each insertion right after
+    // the block it belongs to (insertions_ are in block order)
+    BlockSequence merged;
+    merged.reserve(blocks_.size() + insertions_.size());
+    std::size_t next = 0;
+    for (std::size_t i = 0; i < blocks_.size(); ++i) {
+        merged.push_back(std::move(blocks_[i]));
+        for (; next < insertions_.size() && insertions_[next].at == i; ++next) {
+            const CompileBlock& owner = merged.back();
+            CompileBlock& block = merged.emplace_back();
+            block.number = owner.number;
+            block.sourceIndex = owner.sourceIndex;
+            block.sourceLine = owner.sourceLine;
             block.intermediate = true;
             block.changed = true;
-            block.text = std::move(insertions_[k].text);
+            block.text = std::move(insertions_[next].text);
         }
-        next = first;
-        if (--to != i) blocks_[to] = std::move(blocks_[i]);
     }
+    blocks_.swap(merged);
 }
 
 }  // namespace

@@ -268,10 +268,6 @@ void buildMotion(ScanState& state, ScannedBlock& out, const ScanResult& result) 
 
 }  // namespace
 
-double axisScale(const std::string& name, bool diameter) {
-    return diameter && !name.empty() && name[0] == 'X' ? 0.5 : 1.0;
-}
-
 std::string describeIllegal(const ScannedBlock& block) {
     if (!block.illegal) return std::string();
     if (!block.illegalIsG) return block.illegal;

@@ -99,6 +99,8 @@ ScanResult scanBlocks(const BlockSequence& blocks, const ParsedSequence& parsed,
 
 /// The scale from programmed to geometric units of axis `name` (0.5 for the
 /// X axis under diameter programming).
-double axisScale(const std::string& name, bool diameter);
+inline double axisScale(const std::string& name, bool diameter) {
+    return diameter && !name.empty() && name[0] == 'X' ? 0.5 : 1.0;
+}
 
 }  // namespace mtc::core

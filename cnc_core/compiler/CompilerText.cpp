@@ -83,46 +83,61 @@ void appendCoordinate(std::string& out, double value) {
     appendTicks(out, coordinateTicks(value));
 }
 
-long long coordinateTicks(double value) {
-    if (!std::isfinite(value) || std::fabs(value) > 1e14) return 0;
-    return roundHalfAway(value * 10000.0);
+namespace {
+
+/// "00" "01" ... "99": two digits per division.
+constexpr char kDigitPairs[] =
+    "00010203040506070809101112131415161718192021222324252627282930313233343536373839"
+    "40414243444546474849505152535455565758596061626364656667686970717273747576777879"
+    "8081828384858687888990919293949596979899";
+
+/// Writes the two digits of `pair` (0..99) before `first`.
+char* putPair(char* first, unsigned pair) {
+    *--first = kDigitPairs[2 * pair + 1];
+    *--first = kDigitPairs[2 * pair];
+    return first;
 }
 
-long long roundHalfAway(double value) {
-    // std::llround without the library call: the fraction is exact (|value|
-    // <= 1e18 < 2^63, and a double with a fraction is below 2^52)
-    const auto whole = static_cast<long long>(value);  // towards zero
-    const double fraction = value - static_cast<double>(whole);
-    if (fraction >= 0.5) return whole + 1;
-    if (fraction <= -0.5) return whole - 1;
-    return whole;
+/// Writes the fraction (1..9999 steps of 0.0001) as ".dddd" without
+/// trailing zeros before `first`.
+char* putFraction(char* first, unsigned fraction) {
+    char digits[4];
+    putPair(putPair(digits + 4, fraction % 100), fraction / 100);
+    std::size_t length = 4;
+    while (digits[length - 1] == '0')
+        --length;
+    first -= length;
+    std::copy(digits, digits + length, first);
+    *--first = '.';
+    return first;
 }
 
-void appendTicks(std::string& out, long long scaled) {
-    // written back to front into one buffer, appended at once
-    char buffer[32];
-    char* const end = buffer + sizeof buffer;
-    char* first = end;
+}  // namespace
+
+char* writeTicksBefore(char* end, long long scaled) {
+    char* first = end;                 // written back to front
     const bool negative = scaled < 0;  // a count of zero has no sign: no "-0"
     unsigned long long magnitude = negative ? 0ull - static_cast<unsigned long long>(scaled)
                                             : static_cast<unsigned long long>(scaled);
-    int fraction = static_cast<int>(magnitude % 10000);
+    const auto fraction = static_cast<unsigned>(magnitude % 10000);
     magnitude /= 10000;
-    if (fraction != 0) {
-        int length = 4;  // no trailing zeros
-        while (fraction % 10 == 0) {
-            fraction /= 10;
-            --length;
-        }
-        for (int k = 0; k < length; ++k, fraction /= 10)
-            *--first = static_cast<char>('0' + fraction % 10);
-        *--first = '.';
+    if (fraction != 0) first = putFraction(first, fraction);
+    while (magnitude >= 100) {
+        first = putPair(first, static_cast<unsigned>(magnitude % 100));
+        magnitude /= 100;
     }
-    do {
-        *--first = static_cast<char>('0' + magnitude % 10);
-        magnitude /= 10;
-    } while (magnitude > 0);
+    if (magnitude >= 10)
+        first = putPair(first, static_cast<unsigned>(magnitude));
+    else
+        *--first = static_cast<char>('0' + magnitude);
     if (negative) *--first = '-';
+    return first;
+}
+
+void appendTicks(std::string& out, long long scaled) {
+    char buffer[kMaxTicksText];  // one append for the whole number
+    char* const end = buffer + sizeof buffer;
+    const char* first = writeTicksBefore(end, scaled);
     out.append(first, static_cast<std::size_t>(end - first));
 }
 

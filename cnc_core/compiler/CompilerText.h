@@ -1,6 +1,7 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <initializer_list>
 #include <string>
@@ -31,9 +32,17 @@ std::vector<std::string> limitDetails(const std::vector<std::string>& details);
 /// longer than `width` is cut).
 std::vector<std::string> wrapWords(std::string_view text, std::size_t width);
 
-/// True for A-Z, 0-9 and '_'.
+/// True for A-Z, 0-9 and '_' (one table look-up: the macro and keyword
+/// scans call it for every character of every block).
 inline bool isNameChar(char c) {
-    return (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_';
+    static constexpr std::array<bool, 256> kNameChars = [] {
+        std::array<bool, 256> table{};
+        for (int k = 0; k < 256; ++k)
+            table[static_cast<std::size_t>(k)] =
+                (k >= 'A' && k <= 'Z') || (k >= '0' && k <= '9') || k == '_';
+        return table;
+    }();
+    return kNameChars[static_cast<unsigned char>(c)];
 }
 
 /// Offset of the ';' comment of a block text outside brackets, or text.size().
@@ -44,15 +53,33 @@ std::size_t commentOffset(std::string_view text);
 std::string formatCoordinate(double value);
 /// Appends formatCoordinate(value) to `out` (no temporary string).
 void appendCoordinate(std::string& out, double value);
-/// `value` in whole steps of 0.0001 (the resolution written), rounded; 0
-/// for values that are not finite or beyond 1e14.
-long long coordinateTicks(double value);
 /// std::llround for finite values of magnitude at most 1e18 (halves away
 /// from zero), computed inline.
-long long roundHalfAway(double value);
+inline long long roundHalfAway(double value) {
+    // the fraction is exact (|value| <= 1e18 < 2^63, and a double with a
+    // fraction is below 2^52)
+    const auto whole = static_cast<long long>(value);  // towards zero
+    const double fraction = value - static_cast<double>(whole);
+    if (fraction >= 0.5) return whole + 1;
+    if (fraction <= -0.5) return whole - 1;
+    return whole;
+}
+/// `value` in whole steps of 0.0001 (the resolution written), rounded; 0
+/// for values that are not finite or beyond 1e14 (inline: the CF/RD pass
+/// rounds every corner point several times).
+inline long long coordinateTicks(double value) {
+    if (!std::isfinite(value) || std::fabs(value) > 1e14) return 0;
+    return roundHalfAway(value * 10000.0);
+}
 /// Appends a number of 0.0001 steps as formatCoordinate does. Incremental
 /// words written as differences of ticks add up exactly along a chain.
 void appendTicks(std::string& out, long long ticks);
+/// Longest text `writeTicks` writes ("-9223372036854775808" without its
+/// fraction is 20 characters, with ".dddd" 25).
+constexpr std::size_t kMaxTicksText = 26;
+/// Writes the text appendTicks(ticks) appends so that it ends right before
+/// `end`; returns its first character (at most kMaxTicksText before `end`).
+char* writeTicksBefore(char* end, long long ticks);
 
 /// Keywords (written in capitals) looked for in block texts, letters of the
 /// text compared without case. A cheap pre-check of passes that act only on
