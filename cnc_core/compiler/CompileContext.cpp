@@ -75,7 +75,7 @@ const ParsedSequence& CompileContext::parsed(const BlockSequence& blocks) {
     std::vector<std::uint32_t> lineOwner;  // parse line - 1 -> sequence index
     for (std::size_t i = 0; i < blocks.size(); ++i) {
         if (blocks[i].programEnd) continue;
-        text += blocks[i].prefix;
+        if (!blocks[i].prefix.empty()) text += blocks[i].prefix;  // nearly always empty
         text += blocks[i].text;
         text += '\n';
         lineOwner.push_back(static_cast<std::uint32_t>(i));

@@ -114,6 +114,11 @@ char* putFraction(char* first, unsigned fraction) {
 
 }  // namespace
 
+void writeFourDigits(char* at, int number) {
+    putPair(putPair(at + 4, static_cast<unsigned>(number % 100)),
+            static_cast<unsigned>(number / 100));
+}
+
 char* writeTicksBefore(char* end, long long scaled) {
     char* first = end;                 // written back to front
     const bool negative = scaled < 0;  // a count of zero has no sign: no "-0"

@@ -117,10 +117,8 @@ void setBlockLead(std::string& lead, const CompileBlock& block, int number, int 
         return;
     }
     char text[10] = {'N', 0, 0, 0, 0, ':', 0, 0, 0, 0};  // one append for the common case
-    for (int k = 4; k >= 1; --k, number /= 10, sub /= 10) {
-        text[k] = static_cast<char>('0' + number % 10);
-        text[k + 5] = static_cast<char>('0' + sub % 10);
-    }
+    writeFourDigits(text + 1, number);
+    writeFourDigits(text + 6, sub);
     lead.append(text, sizeof text);
 }
 
