@@ -111,10 +111,11 @@ void LineScanner::run() {
 bool LineScanner::takeWholeLine(std::uint32_t& pos, std::uint32_t& line) {
     // Only a line starting with a blank can continue the pending block: any
     // other line ends it. Line limits are checked line by line in .DAT files.
-    if (!wholeLines_ || ended_ || text_[pos] == ' ' || !context_.macros().empty()) return false;
-    flush();
+    if (!wholeLines_ || ended_ || text_[pos] == ' ') return false;
+    flush();  // the pending block may define a macro (DEFINE): test them after it
     std::uint32_t newline = 0;
-    if (ended_ || !blocks_.parseLine(pos, line, newline)) return false;
+    if (ended_ || !context_.macros().empty() || !blocks_.parseLine(pos, line, newline))
+        return false;
     ended_ = blocks_.programEnded();
     lastLine_ = line;
     pos = newline + 1;

@@ -46,6 +46,10 @@ const std::vector<std::string> kLineShapes = {
     "N0001 X1\nN0002 PROGRAMMENDE\nN0003 X1\n",
     "N0001 X1\nN0002 PROGRAMMENDE ; end\n\n  \n",
     "N0001 DEFINE FOO AS G1\nN0002 FOO X1\nN0003 X2\n",
+    // a DEFINE the per-block path takes (short block number) just before a
+    // use of its macro: fuzz finding of 2026-11-27
+    "N00DEFINE FAST AS G01 F15000\nFAST X5\nN0003 X2\n",
+    "DEFINE FAST AS G01\nFAST X5\n",
     "N0001 .L1 X1\nN0002 BRA .L1\nN0003 .L1 X2\n",
     "G1 X1 Y2\nX1\nF1000\n",
     "\n\nN0001 X1\n\n\nN0002 X2",
