@@ -15,21 +15,11 @@
 #include "tests/support/ProgramDifference.h"
 
 using namespace mtc::core;
+using mtc::core::testing::differenceBetweenPaths;
+using mtc::core::testing::parseWith;
 namespace fs = std::filesystem;
 
 namespace {
-
-Program parseWith(const std::string& text, bool fastPath) {
-    ParseOptions options;
-    options.plainBlockFastPath = fastPath;
-    return parseProgram(text, options);
-}
-
-/// Parses `text` both ways; an empty string when they agree, else the first
-/// difference.
-std::string differenceBetweenPaths(const std::string& text) {
-    return mtc::core::testing::programDifference(parseWith(text, true), parseWith(text, false));
-}
 
 // Blocks at the edge of what the fast path takes: indexes, signs, points,
 // long and inexact numbers, whole-number words, prefixes it leaves to the

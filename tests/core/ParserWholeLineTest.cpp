@@ -12,18 +12,10 @@
 #include "tests/support/ProgramDifference.h"
 
 using namespace mtc::core;
+using mtc::core::testing::differenceBetweenPaths;
+using mtc::core::testing::parseWith;
 
 namespace {
-
-Program parseWith(const std::string& text, bool fastPath) {
-    ParseOptions options;
-    options.plainBlockFastPath = fastPath;
-    return parseProgram(text, options);
-}
-
-std::string differenceBetweenPaths(const std::string& text) {
-    return mtc::core::testing::programDifference(parseWith(text, true), parseWith(text, false));
-}
 
 // Line ends, blanks and what may follow a line the fast path has taken.
 const std::vector<std::string> kLineShapes = {

@@ -9,6 +9,7 @@
 #include <sstream>
 #include <string>
 
+#include "cnc_core/language/Parser.h"
 #include "cnc_core/language/Program.h"
 
 namespace mtc::core::testing {
@@ -66,6 +67,19 @@ inline std::string programDifference(const Program& a, const Program& b) {
         if (x != y) return "diagnostic: " + x + " / " + y;
     }
     return "";
+}
+
+/// `text` parsed with the fast path for plain blocks on or off.
+inline Program parseWith(const std::string& text, bool fastPath) {
+    ParseOptions options;
+    options.plainBlockFastPath = fastPath;
+    return parseProgram(text, options);
+}
+
+/// Parses `text` both ways; an empty string when they agree, else the first
+/// difference.
+inline std::string differenceBetweenPaths(const std::string& text) {
+    return programDifference(parseWith(text, true), parseWith(text, false));
 }
 
 }  // namespace mtc::core::testing
