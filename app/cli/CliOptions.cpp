@@ -315,10 +315,12 @@ Commands available:
                               execute one program in simulated time, as
                               fast as possible (the panel's station, same
                               time, positions and signals); --no-motion
-                              leaves the motion list out (and the machine
-                              does not move); --sample-ms N also samples
-                              time, block, position and feed every N ms of
-                              simulated time (1..3600000)
+                              leaves the motion list out (without adaptive
+                              feed control the machine then does not move
+                              and the time is the programmed one);
+                              --sample-ms N also samples time, block,
+                              position and feed every N ms of simulated
+                              time (1..3600000)
   restart FILE|PROG --target PATH [--runs K] [--from-primary] [--adjust]
           [--check-collisions [--resolution MM]]
                               NC program restart: the computing process up to
