@@ -9,8 +9,9 @@ namespace mtc::core {
 std::string formatFourDigits(int number) {
     if (number < 0) number = 0;
     if (number > 9999) return std::to_string(number);
-    return {static_cast<char>('0' + number / 1000), static_cast<char>('0' + number / 100 % 10),
-            static_cast<char>('0' + number / 10 % 10), static_cast<char>('0' + number % 10)};
+    std::string digits(4, '0');
+    writeFourDigits(digits.data(), number);
+    return digits;
 }
 
 std::string formatBlockNumber(int number) {

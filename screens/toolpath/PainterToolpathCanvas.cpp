@@ -470,12 +470,11 @@ QRectF PainterToolpathCanvas::triadBox(const View& view) const {
     return {view.rect.right() - side, double(view.rect.top()), side, side};
 }
 
-QPointF PainterToolpathCanvas::triadTip(const View& view, int axis) const {
+QPointF PainterToolpathCanvas::triadTip(const View& view, QPointF origin, int axis) const {
     Vec unit{0, 0, 0};
     unit[static_cast<std::size_t>(axis)] = 1.0;
     const double arm = 28 * lineScale();
-    return triadBox(view).center() +
-           QPointF(arm * dot(unit, view.pose.right()), -arm * dot(unit, view.pose.up));
+    return origin + QPointF(arm * dot(unit, view.pose.right()), -arm * dot(unit, view.pose.up));
 }
 
 QString PainterToolpathCanvas::triadName(const View& view, int axis) {
@@ -489,8 +488,9 @@ QRectF PainterToolpathCanvas::triadInk(const View& view) const {
     const QPointF origin = triadBox(view).center();
     QRectF ink(origin, QSizeF(0, 0));
     for (int axis = 0; axis < 3; ++axis) {
-        const QPointF text = triadTip(view, axis) + QPointF(3, 3);  // the baseline's start
-        ink |= QRectF(triadTip(view, axis), QSizeF(0, 0));
+        const QPointF tip = triadTip(view, origin, axis);
+        const QPointF text = tip + QPointF(3, 3);  // the baseline's start
+        ink |= QRectF(tip, QSizeF(0, 0));
         ink |= QRectF(text.x(), text.y() - metrics.ascent(),
                       metrics.horizontalAdvance(triadName(view, axis)), metrics.height());
     }
@@ -501,7 +501,7 @@ void PainterToolpathCanvas::drawTriad(QPainter& painter, const View& view) {
     const QPointF origin = triadBox(view).center();
     const QColor colours[3] = {Qt::red, Qt::green, QColor(80, 140, 255)};
     for (int axis = 0; axis < 3; ++axis) {
-        const QPointF tip = triadTip(view, axis);
+        const QPointF tip = triadTip(view, origin, axis);
         painter.setPen(QPen(colours[axis], penWidth(2)));
         painter.drawLine(origin, tip);
         painter.drawText(tip + QPointF(3, 3), triadName(view, axis));

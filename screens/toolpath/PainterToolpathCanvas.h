@@ -98,8 +98,9 @@ class PainterToolpathCanvas : public ToolpathCanvas {
     void drawTriad(QPainter& painter, const View& view);
     /// Where the axis triad and its names are drawn (top right).
     QRectF triadBox(const View& view) const;
-    /// The end of the triad's arm of `axis` (0..2) in `view`, and its name.
-    QPointF triadTip(const View& view, int axis) const;
+    /// The end of the triad's arm of `axis` (0..2) in `view` from the
+    /// triad's middle `origin`, and the arm's name.
+    QPointF triadTip(const View& view, QPointF origin, int axis) const;
     static QString triadName(const View& view, int axis);
     /// What the triad covers in `view`: its arms and names, with a margin.
     QRectF triadInk(const View& view) const;
