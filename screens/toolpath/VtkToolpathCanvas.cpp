@@ -70,6 +70,7 @@ VtkToolpathCanvas::VtkToolpathCanvas(ToolpathModel* model, QWidget* parent)
     scene_->developed.developed = true;
     scene_->scene.setUp(palette);
     scene_->developed.setUp(palette);
+    applyLineScale(1.0);  // updateLineWidths changes it when the screen's scale differs
     scene_->window->AddRenderer(scene_->scene.renderer);
     scene_->window->AddRenderer(scene_->scene.live);
     scene_->stillCache = std::make_unique<VtkStillCache>(scene_->window);
@@ -335,12 +336,15 @@ bool VtkToolpathCanvas::updateBackplot() {
 
 void VtkToolpathCanvas::updateLineWidths() {
     const double scale = deviceLineScale();
-    if (scale == scene_->lineScale) return;
-    scene_->lineScale = scale;
+    if (scale == scene_->scene.screenScale) return;  // both areas and the marks have it
+    applyLineScale(scale);
+    scene_->stillCache->invalidate();
+}
+
+void VtkToolpathCanvas::applyLineScale(double scale) {
     scene_->scene.setScreenScale(scale);
     scene_->developed.setScreenScale(scale);
     scene_->repos->GetProperty()->SetLineWidth(static_cast<float>(scaledWidth(3.0, scale)));
-    scene_->stillCache->invalidate();
 }
 
 bool VtkToolpathCanvas::updateFrame(bool always) {

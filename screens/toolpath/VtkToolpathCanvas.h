@@ -85,6 +85,8 @@ class VtkToolpathCanvas : public ToolpathCanvas {
     /// Sets the line widths for the screen the view is on now (TP-026; VTK
     /// draws in device pixels, known once the view is in its window).
     void updateLineWidths();
+    /// Line widths and text sizes of both areas and of the marks for `scale`.
+    void applyLineScale(double scale);
     void rebuild();
     /// The highlighted moves (uploaded again with `always` or when they
     /// changed). True when the picture changed.

@@ -178,7 +178,9 @@ void Part::keepClearOfCaption(const mtc::core::ToolpathBounds& box) {
     const double lowest = -scale * (1.0 - 2.0 * below);  // where the free part begins
     if (extent.lowOverCaption >= lowest) return;         // already clear
     // Up just far enough; if the top would leave the view, zoomed out to
-    // the free part's height and centred in it.
+    // the free part's height and centred in it. The zoom-out lifts the whole
+    // part over the caption's band, not only what lies beside the caption:
+    // it may leave more room than needed, but it never covers (TP-031).
     double shift = extent.lowOverCaption - lowest;  // the camera's move along up
     if (extent.high - shift > scale) {
         scale = (extent.high - extent.low) / (2.0 * (1.0 - below));

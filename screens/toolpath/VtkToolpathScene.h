@@ -51,7 +51,6 @@ struct VtkToolpathCanvas::Scene {
     double toolPictureSize = 0.0;               ///< picture size the tool was made for
     std::array<double, 3> toolAt{};             ///< where the tool is drawn
     mtc::core::ToolpathFrame shownFrame;        ///< the frame the scene's labels are in
-    double lineScale = 0.0;                     ///< line widths set for (updateLineWidths)
     QString sceneCaption;                       ///< the scene caption without the frame line
     /// Per area (scene, developed): backplot shown (0/1), its run and revision.
     std::array<std::array<std::uint64_t, 3>, 2> shownBackplot{};
