@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <cstring>
 #include <optional>
 #include <vector>
 
@@ -98,6 +99,40 @@ std::string usedByEarlierMacro(const std::string& name, const MacroTable& table)
     return std::string();
 }
 
+/// A macro name in a block text: [begin, end) and the macro's instructions.
+struct MacroUse {
+    std::size_t begin, end;  // no initialisers: an array of them is left as it is
+    const std::string* body;
+};
+
+/// Writes `text` with its `count` macro uses expanded to `out`, which has
+/// room for all of it.
+void writeExpansion(const std::string& text, const MacroUse* uses, std::size_t count, char* out) {
+    std::size_t copied = 0;
+    for (std::size_t u = 0; u < count; ++u) {
+        std::memcpy(out, text.data() + copied, uses[u].begin - copied);
+        out += uses[u].begin - copied;
+        std::memcpy(out, uses[u].body->data(), uses[u].body->size());
+        out += uses[u].body->size();
+        copied = uses[u].end;
+    }
+    std::memcpy(out, text.data() + copied, text.size() - copied);
+}
+
+/// Appends `text` with every macro use expanded to `out` (not `text`).
+void appendExpansion(const std::string& text, const MacroMatcher& macros, std::string& out) {
+    std::size_t copied = 0;
+    const std::string_view view(text);
+    forEachName(view, [&](std::size_t begin, std::size_t end) {
+        const std::string* body = macros.find(view.substr(begin, end - begin));
+        if (!body) return;
+        out.append(text, copied, begin - copied);
+        out += *body;
+        copied = end;
+    });
+    out.append(text, copied, std::string::npos);
+}
+
 }  // namespace
 
 std::string checkMacroName(std::string_view name) {
@@ -131,18 +166,9 @@ MacroMatcher::MacroMatcher(const MacroTable& table) : table_(table) {
     if (entries_.size() > kCompared) entries_.clear();  // the hash table is quicker then
 }
 
-const std::string* MacroMatcher::find(std::string_view name) const {
-    // a visited name starts with a letter
-    if (name.size() < shortest_ || name.size() > longest_ ||
-        !((firstLetters_ >> (name[0] - 'A')) & 1u))
-        return nullptr;
-    if (entries_.empty()) {
-        const auto it = table_.find(std::string(name));
-        return it == table_.end() ? nullptr : &it->second;
-    }
-    for (const auto& [entryName, body] : entries_)
-        if (entryName == name) return body;
-    return nullptr;
+const std::string* MacroMatcher::findInTable(std::string_view name) const {
+    const auto it = table_.find(std::string(name));
+    return it == table_.end() ? nullptr : &it->second;
 }
 
 bool expandMacros(const std::string& text, const MacroTable& table, std::string& out) {
@@ -150,30 +176,37 @@ bool expandMacros(const std::string& text, const MacroTable& table, std::string&
 }
 
 bool expandMacros(const std::string& text, const MacroMatcher& macros, std::string& out) {
-    if (&out == &text) {  // written in place: expand into a copy first
-        std::string expanded;
-        if (!expandMacros(text, macros, expanded)) return false;
-        out = std::move(expanded);
-        return true;
-    }
     if (!macros.canMatch()) return false;
-    bool replaced = false;
-    std::size_t copied = 0;
+    // the uses first (a block has a few), then the result written into a
+    // buffer on the stack and assigned to `out` at once (which may be
+    // `text`); a block with more uses or a longer result is appended use by
+    // use into a string of its own
+    constexpr std::size_t kUses = 16;
+    constexpr std::size_t kStackText = 512;
+    MacroUse uses[kUses];
+    std::size_t count = 0, size = text.size();
+    bool fits = true;
     const std::string_view view(text);
     forEachName(view, [&](std::size_t begin, std::size_t end) {
         const std::string* body = macros.find(view.substr(begin, end - begin));
         if (!body) return;
-        if (!replaced) {  // from here on the result is built in `out` (its capacity reused)
-            out.clear();
-            out.reserve(text.size() + body->size());
+        if (count == kUses) {
+            fits = false;
+            return;
         }
-        out.append(text, copied, begin - copied);
-        out += *body;
-        copied = end;
-        replaced = true;
+        uses[count++] = {begin, end, body};
+        size += body->size() - (end - begin);
     });
-    if (!replaced) return false;
-    out.append(text, copied, std::string::npos);
+    if (count == 0) return false;
+    if (fits && size <= kStackText) {
+        char buffer[kStackText];
+        writeExpansion(text, uses, count, buffer);
+        out.assign(buffer, size);
+        return true;
+    }
+    std::string expanded;
+    appendExpansion(text, macros, expanded);
+    out = std::move(expanded);
     return true;
 }
 
@@ -195,7 +228,6 @@ void MacroPass::run(BlockSequence& blocks, CompileContext& context) const {
         }
         table[global.name] = global.body;
     }
-    std::string expanded;                                      // reused for every block
     std::optional<MacroMatcher> macros{std::in_place, table};  // made anew when the table changes
     for (std::size_t i = 0; i < blocks.size() && !context.stopped(); ++i) {
         CompileBlock& block = blocks[i];
@@ -204,10 +236,8 @@ void MacroPass::run(BlockSequence& blocks, CompileContext& context) const {
         std::size_t labelEnd = 0;
         Definition d = readDefinition(block.text, isDefine, labelEnd);
         if (!isDefine) {
-            if (!table.empty() && expandMacros(block.text, *macros, expanded)) {
-                block.text.assign(expanded);  // keeps the block's buffer when it is large enough
-                block.changed = true;
-            }
+            if (!table.empty() && expandMacros(block.text, *macros, block.text))
+                block.changed = true;  // written in place (the block keeps its buffer)
             continue;
         }
         if (d.problem.empty()) d.problem = checkMacroName(d.name);

@@ -32,13 +32,25 @@ using MacroTable = std::unordered_map<std::string, std::string>;
 class MacroMatcher {
   public:
     explicit MacroMatcher(const MacroTable& table);
-    /// The instructions of the macro called `name`, or nullptr.
-    const std::string* find(std::string_view name) const;
+    /// The instructions of the macro called `name` (a name starting with
+    /// A-Z), or nullptr. Inline: the compiler asks for every name of every
+    /// block, and the filter refuses nearly all of them.
+    const std::string* find(std::string_view name) const {
+        if (name.size() < shortest_ || name.size() > longest_ ||
+            !((firstLetters_ >> (name[0] - 'A')) & 1u))
+            return nullptr;
+        if (entries_.empty()) return findInTable(name);
+        for (const auto& [entryName, body] : entries_)
+            if (entryName == name) return body;
+        return nullptr;
+    }
     /// False when no name can ever match (no table entry starts with A-Z).
     bool canMatch() const { return firstLetters_ != 0; }
 
   private:
     static constexpr std::size_t kCompared = 8;  ///< up to this many: compared one by one
+
+    const std::string* findInTable(std::string_view name) const;
 
     const MacroTable& table_;
     std::uint32_t firstLetters_ = 0;  ///< bit c - 'A': some name starts with c
@@ -51,7 +63,8 @@ class MacroMatcher {
 /// Returns false (and leaves `out` alone) when no macro is used. Also the
 /// function for global macros in an MDI line.
 bool expandMacros(const std::string& text, const MacroTable& table, std::string& out);
-/// The same with a prepared table (the compiler's loop over the blocks).
+/// The same with a prepared table (the compiler's loop over the blocks;
+/// `out` may be `text`).
 bool expandMacros(const std::string& text, const MacroMatcher& macros, std::string& out);
 /// First macro name of `table` used in `text`, or "" (for the nesting check).
 std::string findMacroUse(std::string_view text, const MacroTable& table);

@@ -39,7 +39,8 @@ class BlockParser {
     /// a one-line block, appends exactly one Block, sets `newline` to the
     /// offset of the line's '\n' (the source size when it has none) and
     /// returns true. Otherwise appends nothing and returns false. Only for a
-    /// parse with the plain-block fast path and no macros.
+    /// parse with the plain-block fast path, and only after the blocks
+    /// before the line are parsed (a DEFINE among them names a macro).
     bool parseLine(std::uint32_t begin, std::uint32_t line, std::uint32_t& newline);
     /// True once a PROGRAMMENDE block was parsed.
     bool programEnded() const { return programEnded_; }
@@ -81,8 +82,17 @@ class BlockParser {
     void startBlock(const BlockSource& source);
     /// parseLine's general part: the line [begin, end) whose plain words
     /// up to `stop` are parsed already (from `firstWord` on).
-    void finishLine(const BlockSource& source, std::int32_t number, std::uint32_t firstWord,
-                    std::uint32_t stop);
+    void finishLine(const BlockSource& source, std::int32_t number, std::int32_t subNumber,
+                    std::uint32_t firstWord, std::uint32_t stop);
+    /// What takeMacroLine did with a line.
+    enum class MacroLine { NoMacro, Taken, General };
+    /// parseLine for a parse with macros: a line whose words from `pos` use
+    /// a macro (no DEFINE, no comment) becomes the one macro word the
+    /// general path makes of it (Taken, `newline` set); NoMacro when its
+    /// words use none (parseLine reads them), General when the general path
+    /// must parse it (a comment, or the next line may continue it).
+    MacroLine takeMacroLine(std::uint32_t begin, std::uint32_t pos, std::uint32_t line,
+                            std::int32_t number, std::uint32_t& newline);
 
     // Keywords (BlockParserKeywords.cpp).
     bool parseKeyword(std::string_view name, std::uint32_t start);
@@ -98,6 +108,9 @@ class BlockParser {
     bool checkDefine(std::uint32_t argsBegin, std::uint32_t argsEnd);
     bool parseProgramEnd(std::uint32_t start);
     bool blockUsesMacro() const;
+    /// blockUsesMacro for the words from `begin` of a block ending at `end`
+    /// whose comment starts at `comment` (`end` when it has none).
+    bool wordsUseMacro(std::uint32_t begin, std::uint32_t end, std::uint32_t comment) const;
     void emitMacroBlock();
     std::uint32_t commentStart() const;
 

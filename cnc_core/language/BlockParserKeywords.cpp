@@ -21,8 +21,23 @@ std::string shortened(std::string_view name) {
     return shown;
 }
 
+/// A-Z 0-9 _ as a table: the macro name scan reads every character of a
+/// block that may use a macro.
+struct NameChars {
+    bool is[256];
+};
+
+constexpr NameChars makeNameChars() {
+    NameChars table{};
+    for (int c = 0; c < 256; ++c)
+        table.is[c] = (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_';
+    return table;
+}
+
+constexpr NameChars kNameChars = makeNameChars();
+
 bool isNameChar(char c) {
-    return (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_';
+    return kNameChars.is[static_cast<unsigned char>(c)];
 }
 
 /// Offset of the first name in [begin, end) that is a defined macro (names:
@@ -302,11 +317,15 @@ bool BlockParser::checkDefine(std::uint32_t argsBegin, std::uint32_t argsEnd) {
 }
 
 bool BlockParser::blockUsesMacro() const {
-    std::uint32_t begin = lexer_.position();
-    while (begin < source_.end && Lexer::isBlank(static_cast<unsigned char>(text_[begin])))
+    return wordsUseMacro(lexer_.position(), source_.end, commentStart());
+}
+
+bool BlockParser::wordsUseMacro(std::uint32_t begin, std::uint32_t end,
+                                std::uint32_t comment) const {
+    while (begin < end && Lexer::isBlank(static_cast<unsigned char>(text_[begin])))
         ++begin;
     if (text_.substr(begin, 6) == "DEFINE") return false;
-    return findMacroUse(text_, begin, commentStart(), context_) != kNotFound;
+    return findMacroUse(text_, begin, comment, context_) != kNotFound;
 }
 
 void BlockParser::emitMacroBlock() {

@@ -13,13 +13,16 @@
 // does not take it stops and leaves the lexer at that word, where the general
 // path (parseNextWord) goes on. The parser tests compare both paths.
 //
-// For a loose file without macros the line scanner hands whole lines to
-// parseLine (issue 21): the block number, the words and the line end are
-// found in one pass over the line, the words written straight into the
-// word list, the block stored packed; no BlockSource, Lexer or Block in
-// between unless a word sends the rest of the line to the general path.
-// A line the next line may continue (it starts with a blank) is left whole
-// to the line scanner.
+// For a loose file the line scanner hands whole lines to parseLine (issue
+// 21): the block number, the words and the line end are found in one pass
+// over the line, the words written straight into the word list, the block
+// stored packed; no BlockSource, Lexer or Block in between unless a word
+// sends the rest of the line to the general path. A line the next line may
+// continue (it starts with a blank) is left whole to the line scanner. Once
+// a macro is known, a line that uses one becomes the one macro word of the
+// general path (takeMacroLine); the enhanced number "N0053:0001" of a
+// compiled program is read here too (its block is stored whole).
+#include <algorithm>
 #include <cstring>
 
 #include "cnc_core/language/BlockParser.h"
@@ -126,13 +129,19 @@ bool lineEndAt(const char* text, std::uint32_t pos, std::uint32_t size) {
 }
 
 /// takePlainBlockNumber for the line starting at `begin` with 'N' before
-/// its end is known: true, with the number's value and the offset after its
-/// digits, only where takePlainBlockNumber takes it as a one-line block (it
-/// leaves "N0053:0001" and a '\r' inside the line to the general path).
+/// its end is known: true, with the number's value (and the enhanced
+/// number's, else -1) and the offset after its digits, only where
+/// takePlainBlockNumber takes it as a one-line block (it leaves a '\r'
+/// inside the line to the general path). A digit never ends a line, so
+/// the digits are counted up to the text's end as well as the line's.
 bool lineBlockNumberAt(const char* text, std::uint32_t begin, std::uint32_t size,
-                       std::int32_t& number, std::uint32_t& after) {
+                       std::int32_t& number, std::int32_t& subNumber, std::uint32_t& after) {
     if (!fourDigitsAt(text, begin + 1, size, number)) return false;
-    const std::uint32_t digitsEnd = begin + 1 + kBlockNumberDigits;
+    std::uint32_t digitsEnd = begin + 1 + kBlockNumberDigits;
+    if (digitsEnd < size && text[digitsEnd] == ':') {  // "N0053:0001" of a compiled program
+        if (!fourDigitsAt(text, digitsEnd + 1, size, subNumber)) return false;
+        digitsEnd += 1 + kBlockNumberDigits;
+    }
     after = digitsEnd;
     if (lineEndAt(text, digitsEnd, size)) return true;
     if (!isPlainBlank(text[digitsEnd])) return false;
@@ -223,12 +232,17 @@ bool takeNumber(WordList& words, const char* text, std::uint32_t value, std::uin
 bool BlockParser::parseLine(std::uint32_t begin, std::uint32_t line, std::uint32_t& newline) {
     const char* text = text_.data();
     const auto size = static_cast<std::uint32_t>(text_.size());
-    std::int32_t number = -1;
+    std::int32_t number = -1, subNumber = -1;
     std::uint32_t pos = begin;
     if (text[begin] == 'N') {
-        if (!lineBlockNumberAt(text, begin, size, number, pos)) return false;
+        if (!lineBlockNumberAt(text, begin, size, number, subNumber, pos)) return false;
     } else if (!(kAddressTable.entry[static_cast<unsigned char>(text[begin])] & kAddress)) {
         return false;
+    }
+    if (!context_.macros().empty()) {  // parse() asks for a macro before any word
+        if (subNumber >= 0) return false;
+        const MacroLine macro = takeMacroLine(begin, pos, line, number, newline);
+        if (macro != MacroLine::NoMacro) return macro == MacroLine::Taken;
     }
     const auto firstWord = static_cast<std::uint32_t>(program_.words.size());
     const std::uint32_t stop = scanPlainWords(pos, size, begin);
@@ -239,19 +253,58 @@ bool BlockParser::parseLine(std::uint32_t begin, std::uint32_t line, std::uint32
         return false;
     }
     const auto words = static_cast<std::uint16_t>(program_.words.size() - firstWord);
-    if (stop == end &&
+    if (stop == end && subNumber < 0 &&
         program_.blocks.tryPushPlain(firstWord, words, static_cast<std::int16_t>(number), line,
                                      begin, end - begin))
         return true;
-    finishLine(BlockSource{begin, end, line, 1}, number, firstWord, stop);
+    finishLine(BlockSource{begin, end, line, 1}, number, subNumber, firstWord, stop);
     return true;
 }
 
-void BlockParser::finishLine(const BlockSource& source, std::int32_t number,
+BlockParser::MacroLine BlockParser::takeMacroLine(std::uint32_t begin, std::uint32_t pos,
+                                                  std::uint32_t line, std::int32_t number,
+                                                  std::uint32_t& newline) {
+    const char* text = text_.data();
+    const auto size = static_cast<std::uint32_t>(text_.size());
+    const void* found = std::memchr(text + pos, '\n', size - pos);
+    newline = found ? static_cast<std::uint32_t>(static_cast<const char*>(found) - text) : size;
+    std::uint32_t end = newline;  // as the line scanner ends the line
+    if (end > begin && text[end - 1] == '\r') --end;
+    if (newline < size && text[newline + 1] == ' ') return MacroLine::General;  // may continue
+    const void* semicolon = std::memchr(text + pos, ';', end - pos);
+    const std::uint32_t comment =
+        semicolon ? static_cast<std::uint32_t>(static_cast<const char*>(semicolon) - text) : end;
+    if (!wordsUseMacro(pos, end, comment)) return MacroLine::NoMacro;
+    if (comment != end) return MacroLine::General;
+    // emitMacroBlock's word and finish's block
+    std::uint32_t start = pos;
+    while (start < end && Lexer::isBlank(static_cast<unsigned char>(text[start])))
+        ++start;
+    Word word;
+    word.kind = WordKind::Command;
+    word.flags = kWordNeedsCompiler;
+    word.column = static_cast<std::uint16_t>(std::min<std::uint32_t>(start - begin + 1, 65535));
+    word.text = trimmedSpan(start, comment);
+    word.args = word.text;
+    const auto firstWord = static_cast<std::uint32_t>(program_.words.size());
+    program_.words.push_back(word);
+    program_.usesCompilerKeywords = true;
+    if (!program_.blocks.tryPushPlain(firstWord, 1, static_cast<std::int16_t>(number), line, begin,
+                                      end - begin)) {
+        startBlock(BlockSource{begin, end, line, 1});
+        block_.firstWord = firstWord;
+        block_.number = number;
+        finish();
+    }
+    return MacroLine::Taken;
+}
+
+void BlockParser::finishLine(const BlockSource& source, std::int32_t number, std::int32_t subNumber,
                              std::uint32_t firstWord, std::uint32_t stop) {
     startBlock(source);
     block_.firstWord = firstWord;
     block_.number = number;
+    if (subNumber >= 0) block_.subNumber = static_cast<std::int16_t>(subNumber);
     lexer_.seek(stop);
     if (!lexer_.atEnd())
         while (parseNextWord()) {

@@ -1,5 +1,6 @@
 #include "cnc_core/language/ParseContext.h"
 
+#include <algorithm>
 #include <cstdio>
 
 namespace mtc::core {
@@ -18,7 +19,15 @@ void ParseContext::report(Severity severity, const char* code, std::uint32_t lin
     program_.diagnostics.add(Diagnostic{severity, code, std::move(where), std::move(message), {}});
 }
 
-bool ParseContext::isMacro(std::string_view name) const {
+void ParseContext::addMacro(std::string_view name) {
+    macros_.emplace_back(name);
+    shortestMacro_ = std::min(shortestMacro_, name.size());
+    longestMacro_ = std::max(longestMacro_, name.size());
+    const unsigned letter = name.empty() ? 0 : static_cast<unsigned char>(name[0]) - 'A';
+    if (letter < 26) macroLetters_ |= 1u << letter;
+}
+
+bool ParseContext::findMacro(std::string_view name) const {
     for (const auto& macro : macros_)  // the length first: most names differ in it
         if (macro.size() == name.size() && std::string_view(macro) == name) return true;
     return false;

@@ -31,8 +31,16 @@ class ParseContext {
 
     /// Macro names defined by DEFINE so far (seed 001, ch. 4).
     const std::vector<std::string>& macros() const { return macros_; }
-    void addMacro(std::string_view name) { macros_.emplace_back(name); }
-    bool isMacro(std::string_view name) const;
+    void addMacro(std::string_view name);
+    /// True when `name` is one of macros(). Names whose length or first
+    /// letter no macro has are refused at once (the name scan asks for
+    /// every name of every block).
+    bool isMacro(std::string_view name) const {
+        if (name.size() < shortestMacro_ || name.size() > longestMacro_) return false;
+        const unsigned letter = name.empty() ? 26 : static_cast<unsigned char>(name[0]) - 'A';
+        if (letter < 26 && !((macroLetters_ >> letter) & 1u)) return false;
+        return findMacro(name);
+    }
     /// Whether the parser may take plain blocks by its fast path.
     bool plainBlockFastPath() const { return plainBlockFastPath_; }
 
@@ -40,7 +48,14 @@ class ParseContext {
     Program& program_;
     bool plainBlockFastPath_ = true;
     std::size_t reported_ = 0;
+    bool findMacro(std::string_view name) const;
+
     std::vector<std::string> macros_;
+    /// Bit c - 'A' set: a macro name starts with c; names starting with
+    /// another byte are not filtered by their first letter.
+    std::uint32_t macroLetters_ = 0;
+    std::size_t shortestMacro_ = static_cast<std::size_t>(-1);
+    std::size_t longestMacro_ = 0;
 };
 
 /// "N0012" / "N0012:0003" / "" (number < 0).

@@ -114,8 +114,7 @@ bool LineScanner::takeWholeLine(std::uint32_t& pos, std::uint32_t& line) {
     if (!wholeLines_ || ended_ || text_[pos] == ' ') return false;
     flush();  // the pending block may define a macro (DEFINE): test them after it
     std::uint32_t newline = 0;
-    if (ended_ || !context_.macros().empty() || !blocks_.parseLine(pos, line, newline))
-        return false;
+    if (ended_ || !blocks_.parseLine(pos, line, newline)) return false;
     ended_ = blocks_.programEnded();
     lastLine_ = line;
     pos = newline + 1;

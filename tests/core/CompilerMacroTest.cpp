@@ -35,6 +35,19 @@ TEST(CompilerMacros, LongLabelAndCommentOfADefineBlockStay) {
                                         "N0002:0000 BRA " + label, "N0003:0000 G1 X1"}));
 }
 
+// More uses in one block than expandMacros keeps aside (16): the rest is
+// appended use by use.
+TEST(CompilerMacros, ManyUsesInOneBlock) {
+    std::string uses, expanded;
+    for (int i = 0; i < 18; ++i) {
+        uses += "ZZ ";
+        expanded += "M8 ";
+    }
+    const CompileResult r = compileText("N0001 DEFINE ZZ AS M8\nN0002 " + uses + "X1\n");
+    ASSERT_EQ(r.status, CompileStatus::Compiled) << codes(r).size();
+    EXPECT_EQ(objectBlocks(r)[1], "N0002:0000 " + expanded + "X1");
+}
+
 TEST(CompilerMacros, MacroNamesOnlyAsWholeWordsOutsideCommentsAndTexts) {
     const CompileResult r = compileText(
         "N0001 DEFINE M860 AS M86 M3 S10\n"

@@ -103,6 +103,62 @@ TEST(ParserWholeLine, LongLinesParseAsOnTheGeneralPath) {
     EXPECT_EQ(program.blocks.size(), 2u);
 }
 
+// Lines once a macro is known (takeMacroLine): a use makes the whole block
+// one macro word; a comment, a label, a skip, an enhanced number or a line
+// that may be continued go to the general path.
+const std::vector<std::string> kMacroLines = {
+    "N0001 X1 FEED COOL CF0.8\nN0002 X2 Y3\n",
+    "N0001 FEED ;comment\nN0002 FEED;c\nN0003 ;FEED\n",
+    "N0001 X1 (FEED) COOL\nN0002 X1 (FEED)\nN0003 @1=FEED\nN0004 X.FEED\nN0005 XFEED\n",
+    "N0001 .L1 FEED\n/N0002 FEED\nN0003 /FEED\nN0004 :FEED\n:N0005 FEED\n",
+    "N0001:0002 FEED\nN0001:0003 X1\n",
+    "FEED X1\nX1 FEED\nfeed X1\nN0001FEED\nN001 FEED\n",
+    "N0001   FEED  \r\nN0002\tFEED\t\nN0003 FEED\rX1\nN0004 FEED\r",
+    "N0001 FEED\n      X2\nN0002 FEED\n       ;c\n",
+    "N0001 DEFINE SLOW AS F10\nN0002 SLOW X1\nN0003 DEFINESLOW\nN0004 X1 DEFINE FEED AS F1\n",
+    "N0001 DEFINE FEED AS F10\nN0002 FEED X1\nN0003 FEEDS\n",
+    "N0001 G1 X1 COOL\nN0002 PROGRAMMENDE\nN0003 FEED\n",
+    "N0001 COOL PROGRAMMENDE\nN0002 FEED\n",
+    std::string("N0001 FEED\0X\nN0002 FEED\n", 24),
+};
+
+TEST(ParserWholeLine, MacroLinesParseAsOnTheGeneralPath) {
+    const std::vector<std::string> macros = {"FEED", "COOL"};
+    for (const std::string& text : kMacroLines) {
+        EXPECT_EQ(differenceBetweenPaths(text, macros), "") << text;
+        EXPECT_EQ(differenceBetweenPaths(text), "") << text;
+    }
+    EXPECT_EQ(
+        differenceBetweenPaths("N0001 X1 FEED" + std::string(70000, ' ') + "\nN0002 X3\n", macros),
+        "");
+    EXPECT_EQ(
+        differenceBetweenPaths("N0001" + std::string(70000, ' ') + "FEED\nN0002 X3\n", macros), "");
+    const Program program = parseWith("N0001 X1  FEED COOL  \nN0002 X2\n", true, macros);
+    ASSERT_EQ(program.blocks.size(), 2u);
+    ASSERT_EQ(program.blocks[0].wordCount, 1u);
+    const Word word = program.words[program.blocks[0].firstWord];
+    EXPECT_EQ(word.kind, WordKind::Command);
+    EXPECT_EQ(program.text(word.text), "X1  FEED COOL");
+    EXPECT_EQ(word.column, 7);
+    EXPECT_TRUE(program.usesCompilerKeywords);
+}
+
+// The enhanced numbers of a compiled program ("N0053:0001", the object
+// check of the compiler) and what is no enhanced number.
+TEST(ParserWholeLine, EnhancedNumbersParseAsOnTheGeneralPath) {
+    const std::string text =
+        "N0001:0002 X1\nN0001:0003 G1 X2 Y3\r\nN0001:00021 X1\nN0001:002 X1\n"
+        "N0001: X1\nN0001:0002\nN0001:0002 ;c\n N0001:0002\nN0001:0002/X1\n"
+        "N0001:0002 .L X1\nN0001:0002 :X1\nN0001:0002 / X1\nN0001:0002\tX1 RD1\n"
+        "N9999:9999 X1\nN0001:0002 X1\n      Y2\nN0001:0002";
+    EXPECT_EQ(differenceBetweenPaths(text), "");
+    const Program program = parseWith("N0053:0001 G1 X2\n", true);
+    ASSERT_EQ(program.blocks.size(), 1u);
+    EXPECT_EQ(program.blocks[0].number, 53);
+    EXPECT_EQ(program.blocks[0].subNumber, 1);
+    EXPECT_EQ(program.blocks[0].wordCount, 2u);
+}
+
 TEST(ParserWholeLine, ValuesColumnsAndSpans) {
     const Program program =
         parseWith("N0001 G1 X-12.5 Y+3 F1000\r\nN0002\tX1234567890 Z0.12345678\r\nG2 I.5", true);

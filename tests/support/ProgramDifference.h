@@ -8,6 +8,7 @@
 #include <cstring>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "cnc_core/language/Parser.h"
 #include "cnc_core/language/Program.h"
@@ -69,17 +70,21 @@ inline std::string programDifference(const Program& a, const Program& b) {
     return "";
 }
 
-/// `text` parsed with the fast path for plain blocks on or off.
-inline Program parseWith(const std::string& text, bool fastPath) {
+/// `text` parsed with the fast path for plain blocks on or off (and the
+/// names of global macros).
+inline Program parseWith(const std::string& text, bool fastPath,
+                         const std::vector<std::string>& macroNames = {}) {
     ParseOptions options;
     options.plainBlockFastPath = fastPath;
+    options.macroNames = macroNames;
     return parseProgram(text, options);
 }
 
 /// Parses `text` both ways; an empty string when they agree, else the first
 /// difference.
-inline std::string differenceBetweenPaths(const std::string& text) {
-    return programDifference(parseWith(text, true), parseWith(text, false));
+inline std::string differenceBetweenPaths(const std::string& text,
+                                          const std::vector<std::string>& macroNames = {}) {
+    return programDifference(parseWith(text, true, macroNames), parseWith(text, false, macroNames));
 }
 
 }  // namespace mtc::core::testing
