@@ -164,6 +164,9 @@ CaselessNeedles::CaselessNeedles(std::initializer_list<std::string_view> upperNe
         startingHere_[static_cast<unsigned char>(first)] |= bit;
         if (first >= 'A' && first <= 'Z')
             startingHere_[static_cast<unsigned char>(first + 32)] |= bit;
+        for (std::size_t c = 0; c < secondHere_.size(); ++c)  // as matchesAt compares it
+            if (needle.size() == 1 || upperLetter(static_cast<char>(c)) == needle[1])
+                secondHere_[c] |= bit;
     }
 }
 
@@ -191,6 +194,8 @@ std::size_t CaselessNeedles::nextStart(std::string_view text, std::size_t from) 
 bool CaselessNeedles::foundIn(std::string_view text) const {
     for (std::size_t i = nextStart(text, 0); i < text.size(); i = nextStart(text, i + 1)) {
         std::uint32_t candidates = startingHere_[static_cast<unsigned char>(text[i])];
+        if (i + 1 < text.size())  // the second character rules out nearly all of them
+            candidates &= secondHere_[static_cast<unsigned char>(text[i + 1])];
         for (std::size_t n = 0; candidates != 0; ++n, candidates >>= 1)
             if ((candidates & 1u) && matchesAt(text, i, needles_[n])) return true;
     }

@@ -102,6 +102,9 @@ class CaselessNeedles {
     std::vector<std::string> needles_;
     /// Bit n set: needle n starts with this character (either case).
     std::array<std::uint32_t, 256> startingHere_{};
+    /// Bit n set: needle n has this character second (either case), or
+    /// has one character only.
+    std::array<std::uint32_t, 256> secondHere_{};
 };
 
 /// True when `text` contains one of `upperNeedles` (CaselessNeedles for one text).

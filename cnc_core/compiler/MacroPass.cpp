@@ -123,7 +123,7 @@ void writeExpansion(const std::string& text, const MacroUse* uses, std::size_t c
 void appendExpansion(const std::string& text, const MacroMatcher& macros, std::string& out) {
     std::size_t copied = 0;
     const std::string_view view(text);
-    forEachName(view, [&](std::size_t begin, std::size_t end) {
+    forEachNameStartingWith(view, macros.firstLetters(), [&](std::size_t begin, std::size_t end) {
         const std::string* body = macros.find(view.substr(begin, end - begin));
         if (!body) return;
         out.append(text, copied, begin - copied);
@@ -187,7 +187,7 @@ bool expandMacros(const std::string& text, const MacroMatcher& macros, std::stri
     std::size_t count = 0, size = text.size();
     bool fits = true;
     const std::string_view view(text);
-    forEachName(view, [&](std::size_t begin, std::size_t end) {
+    forEachNameStartingWith(view, macros.firstLetters(), [&](std::size_t begin, std::size_t end) {
         const std::string* body = macros.find(view.substr(begin, end - begin));
         if (!body) return;
         if (count == kUses) {

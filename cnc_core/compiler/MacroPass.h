@@ -46,6 +46,8 @@ class MacroMatcher {
     }
     /// False when no name can ever match (no table entry starts with A-Z).
     bool canMatch() const { return firstLetters_ != 0; }
+    /// Bit c - 'A' set: some macro name starts with the letter c.
+    std::uint32_t firstLetters() const { return firstLetters_; }
 
   private:
     static constexpr std::size_t kCompared = 8;  ///< up to this many: compared one by one

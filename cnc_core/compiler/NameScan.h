@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstdint>
 #include <string_view>
 #include <vector>
 
@@ -41,6 +42,23 @@ void forEachNameWithoutBrackets(std::string_view text, Visit visit) {
         const char before = start > 0 ? text[start - 1] : ' ';
         if (isLetter(text[start]) && before != '.' && before != '*' && before != '@')
             visit(start, i);
+    }
+}
+
+/// forEachNameWithoutBrackets for only the names whose first letter c has
+/// bit c - 'A' set in `letters`: the scan stops only at those letters and
+/// skips the ones inside a run of name characters.
+template <typename Visit>
+void forEachNameWithoutBrackets(std::string_view text, std::uint32_t letters, Visit visit) {
+    for (std::size_t i = 0; i < text.size(); ++i) {
+        const unsigned letter = static_cast<unsigned char>(text[i]) - 'A';
+        if (letter >= 26 || !((letters >> letter) & 1u)) continue;
+        if (i > 0 && isNameChar(text[i - 1])) continue;  // inside a run
+        const std::size_t start = i;
+        while (i + 1 < text.size() && isNameChar(text[i + 1]))
+            ++i;
+        const char before = start > 0 ? text[start - 1] : ' ';
+        if (before != '.' && before != '*' && before != '@') visit(start, i + 1);
     }
 }
 
@@ -107,6 +125,17 @@ void forEachName(std::string_view text, Visit visit) {
         forEachNameAnyText(text, visit);
     else  // the common block: no free text, no arguments
         forEachNameWithoutBrackets(text.substr(0, end), visit);
+}
+
+/// forEachName for a visitor that only cares for names whose first letter c
+/// has bit c - 'A' set in `letters` (it may be called for others too).
+template <typename Visit>
+void forEachNameStartingWith(std::string_view text, std::uint32_t letters, Visit visit) {
+    const std::size_t end = commentOffset(text);
+    if (hasBracketBefore(text, end))
+        forEachNameAnyText(text, visit);
+    else
+        forEachNameWithoutBrackets(text.substr(0, end), letters, visit);
 }
 
 }  // namespace mtc::core

@@ -84,6 +84,12 @@ class BlockParser {
     /// up to `stop` are parsed already (from `firstWord` on).
     void finishLine(const BlockSource& source, std::int32_t number, std::int32_t subNumber,
                     std::uint32_t firstWord, std::uint32_t stop);
+    /// The chamfer or rounding "CF0.8" / "RD1.5" (a plain value) as the last
+    /// word of the line [.., end) at `stop`: appends the word parseCommand
+    /// makes of it and returns `end`; otherwise appends nothing and returns
+    /// `stop`.
+    std::uint32_t takeCornerWord(std::uint32_t stop, std::uint32_t end, std::uint32_t lineBegin,
+                                 std::uint32_t firstWord);
     /// What takeMacroLine did with a line.
     enum class MacroLine { NoMacro, Taken, General };
     /// parseLine for a parse with macros: a line whose words from `pos` use

@@ -42,21 +42,23 @@ bool isNameChar(char c) {
 
 /// Offset of the first name in [begin, end) that is a defined macro (names:
 /// runs of A-Z 0-9 _ starting with a letter; label names after '.' and
-/// variables after '@' do not count), or kNotFound.
+/// variables after '@' do not count), or kNotFound. Only a letter some
+/// macro starts with can start one: the scan stops at those and skips the
+/// ones inside a run (a run starts at `begin` or after a byte that is no
+/// name character).
 std::uint32_t findMacroUse(std::string_view text, std::uint32_t begin, std::uint32_t end,
                            const ParseContext& context) {
-    std::uint32_t i = begin;
-    while (i < end) {
-        if (!isNameChar(text[i])) {
+    const std::uint32_t letters = context.macroLetters();
+    for (std::uint32_t i = begin; i < end; ++i) {
+        const unsigned letter = static_cast<unsigned char>(text[i]) - 'A';
+        if (letter >= 26 || !((letters >> letter) & 1u)) continue;
+        if (i != begin && isNameChar(text[i - 1])) continue;  // inside a run
+        const std::uint32_t start = i;
+        while (i + 1 < end && isNameChar(text[i + 1]))
             ++i;
-            continue;
-        }
-        std::uint32_t start = i;
-        while (i < end && isNameChar(text[i]))
-            ++i;
-        char before = start > 0 ? text[start - 1] : ' ';
-        bool name = text[start] >= 'A' && text[start] <= 'Z' && before != '.' && before != '*';
-        if (name && context.isMacro(text.substr(start, i - start))) return start;
+        const char before = start > 0 ? text[start - 1] : ' ';
+        if (before != '.' && before != '*' && context.isMacro(text.substr(start, i + 1 - start)))
+            return start;
     }
     return kNotFound;
 }

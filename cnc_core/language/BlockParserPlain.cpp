@@ -245,20 +245,63 @@ bool BlockParser::parseLine(std::uint32_t begin, std::uint32_t line, std::uint32
         if (macro != MacroLine::NoMacro) return macro == MacroLine::Taken;
     }
     const auto firstWord = static_cast<std::uint32_t>(program_.words.size());
-    const std::uint32_t stop = scanPlainWords(pos, size, begin);
+    std::uint32_t stop = scanPlainWords(pos, size, begin);
     std::uint32_t end = stop;
     findLineEnd(text, stop, size, end, newline);
     if (newline < size && text[newline + 1] == ' ') {  // the next line may continue the block
         program_.words.truncate(firstWord);
         return false;
     }
-    const auto words = static_cast<std::uint16_t>(program_.words.size() - firstWord);
-    if (stop == end && subNumber < 0 &&
-        program_.blocks.tryPushPlain(firstWord, words, static_cast<std::int16_t>(number), line,
-                                     begin, end - begin))
+    if (stop != end) stop = takeCornerWord(stop, end, begin, firstWord);
+    if (stop != end) {
+        finishLine(BlockSource{begin, end, line, 1}, number, subNumber, firstWord, stop);
         return true;
-    finishLine(BlockSource{begin, end, line, 1}, number, subNumber, firstWord, stop);
+    }
+    // every word taken: the block is stored without the general path's Block
+    const auto words = static_cast<std::uint16_t>(program_.words.size() - firstWord);
+    if (subNumber >= 0 ||
+        !program_.blocks.tryPushPlain(firstWord, words, static_cast<std::int16_t>(number), line,
+                                      begin, end - begin)) {
+        Block block;  // as startBlock and finish make it
+        block.firstWord = firstWord;
+        block.wordCount = words;
+        block.number = number;
+        if (subNumber >= 0) block.subNumber = static_cast<std::int16_t>(subNumber);
+        block.line = line;
+        block.lineCount = 1;
+        block.sourceText = TextSpan{begin, end - begin};
+        program_.blocks.push_back(block);
+    }
     return true;
+}
+
+std::uint32_t BlockParser::takeCornerWord(std::uint32_t stop, std::uint32_t end,
+                                          std::uint32_t lineBegin, std::uint32_t firstWord) {
+    static const bool commands =  // (they are: the general path would read them so)
+        lookupKeyword("CF").keywordClass == KeywordClass::CompilerCommand &&
+        lookupKeyword("RD").keywordClass == KeywordClass::CompilerCommand;
+    const char* text = text_.data();
+    if (end - stop < 3 || !commands ||
+        !((text[stop] == 'C' && text[stop + 1] == 'F') ||
+          (text[stop] == 'R' && text[stop + 1] == 'D')))
+        return stop;
+    std::uint32_t token = stop + 2;  // the value, as skipRawToken reads it
+    while (token < end && (digitValue(text[token]) <= 9 || text[token] == '.'))
+        ++token;
+    std::uint32_t after = token;
+    while (after < end && isPlainBlank(text[after]))
+        ++after;
+    if (token == stop + 2 || after != end || program_.words.size() - firstWord >= kMaxWords)
+        return stop;
+    Word word;  // parseCommand's word
+    word.kind = WordKind::Command;
+    word.flags = kWordNeedsCompiler;
+    word.column = static_cast<std::uint16_t>(std::min<std::uint32_t>(stop - lineBegin + 1, 65535));
+    word.text = TextSpan{stop, token - stop};
+    word.args = TextSpan{stop + 2, token - stop - 2};
+    program_.words.push_back(word);
+    program_.usesCompilerKeywords = true;
+    return end;
 }
 
 BlockParser::MacroLine BlockParser::takeMacroLine(std::uint32_t begin, std::uint32_t pos,

@@ -32,6 +32,8 @@ class ParseContext {
     /// Macro names defined by DEFINE so far (seed 001, ch. 4).
     const std::vector<std::string>& macros() const { return macros_; }
     void addMacro(std::string_view name);
+    /// Bit c - 'A' set: some macro name starts with the letter c.
+    std::uint32_t macroLetters() const { return macroLetters_; }
     /// True when `name` is one of macros(). Names whose length or first
     /// letter no macro has are refused at once (the name scan asks for
     /// every name of every block).

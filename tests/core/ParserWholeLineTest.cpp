@@ -143,6 +143,27 @@ TEST(ParserWholeLine, MacroLinesParseAsOnTheGeneralPath) {
     EXPECT_TRUE(program.usesCompilerKeywords);
 }
 
+// A chamfer or rounding as the last word of a line (takeCornerWord) and the
+// shapes the general path reads.
+TEST(ParserWholeLine, CornerWordsParseAsOnTheGeneralPath) {
+    const std::string text =
+        "N0001 X1 CF0.8\nX1 RD1.5  \nN0002 X1 CF0.8 ;c\nX1 CF1A\nX1 CF.\nX1 CF\nX1 CF \n"
+        "X1 CF=1\nX1 CF 1\nX1 RD1.5 X1\nX1 RD1.5\r\nX1 RD1.5\r X\nN0001:0001 X1 CF1\n"
+        "X1 CF1(x)\nX1 CFX\nX1 RD_1\nX1 CF0.8\t\nCF2\nN0003 RD3\nX1 CF1.2.3\nX1 CF1 -2\n"
+        "X1 RD1 @1\nX1 CF1 (A)\nX1 RD1\n      Y2\nX1 CFRD1\nX1 RDCF1\nX1 CF1;\nX1 RD1";
+    EXPECT_EQ(differenceBetweenPaths(text), "");
+    EXPECT_EQ(differenceBetweenPaths("N0001" + std::string(300, ' ') + "X1 RD2\n"), "");
+    const Program program = parseWith("N0001 X1 Y2 RD1.5\n", true);
+    ASSERT_EQ(program.blocks.size(), 1u);
+    ASSERT_EQ(program.blocks[0].wordCount, 3u);
+    const Word word = program.words[program.blocks[0].firstWord + 2];
+    EXPECT_EQ(word.kind, WordKind::Command);
+    EXPECT_EQ(program.text(word.text), "RD1.5");
+    EXPECT_EQ(program.text(word.args), "1.5");
+    EXPECT_EQ(word.column, 13);
+    EXPECT_TRUE(word.flags & kWordNeedsCompiler);
+}
+
 // The enhanced numbers of a compiled program ("N0053:0001", the object
 // check of the compiler) and what is no enhanced number.
 TEST(ParserWholeLine, EnhancedNumbersParseAsOnTheGeneralPath) {
