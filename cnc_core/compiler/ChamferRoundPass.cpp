@@ -1,6 +1,7 @@
 #include "cnc_core/compiler/ChamferRoundPass.h"
 
 #include <algorithm>
+#include <cstring>
 #include <optional>
 #include <string_view>
 
@@ -128,14 +129,25 @@ void squeezeBlanks(std::string& text) {
     char* const data = text.data();  // a plain pointer: no reload of the string per character
     const std::size_t size = text.size();
     std::size_t kept = 0;
-    for (std::size_t i = 0; i < size; ++i) {
+    for (std::size_t i = 0; i < comment; ++i) {  // the words; the comment as it is
         const char c = data[i];
-        if (i < comment && c == ' ' && (kept == 0 || data[kept - 1] == ' ')) continue;
+        if (c == ' ' && (kept == 0 || data[kept - 1] == ' ')) continue;
         data[kept++] = c;
     }
+    if (kept != comment) std::memmove(data + kept, data + comment, size - comment);
+    kept += size - comment;
+    while (kept > 0 && data[kept - 1] == ' ')
+        --kept;
     text.resize(kept);
-    while (!text.empty() && text.back() == ' ')
-        text.pop_back();
+}
+
+/// True when squeezeBlanks leaves `text` (its comment at `comment`) as it is.
+bool squeezed(std::string_view text, std::size_t comment) {
+    if (text.empty()) return true;
+    if (text.front() == ' ' || text.back() == ' ') return false;
+    for (std::size_t i = 1; i < comment; ++i)
+        if (text[i] == ' ' && text[i - 1] == ' ') return false;
+    return true;
 }
 
 /// Buffers editedText reuses from block to block.
@@ -149,8 +161,9 @@ struct EditScratch {
 };
 
 /// Applies `edit` to the text of a motion block scanned as `s`; the result
-/// is left in `scratch.out`.
-void editedText(const std::string& text, const ScannedBlock& s, const ScanResult& scan,
+/// is left in `scratch.out`. Returns false (nothing written) when the text
+/// stays as it is.
+bool editedText(const std::string& text, const ScannedBlock& s, const ScanResult& scan,
                 const BlockEdit& edit, EditScratch& scratch) {
     using Span = EditScratch::Span;
     std::vector<Span>& remove = scratch.remove;
@@ -179,9 +192,12 @@ void editedText(const std::string& text, const ScannedBlock& s, const ScanResult
             }
         }
     }
+    const std::size_t comment = commentOffset(text);
+    // a new start of an absolute block: nothing to write but the squeeze
+    if (!geometry && !edit.removeCorner && edit.prependG < 0 && squeezed(text, comment))
+        return false;
     if (edit.removeCorner) remove.push_back({s.cornerBegin, s.cornerEnd});
     std::sort(remove.begin(), remove.end(), [](Span x, Span y) { return x.begin < y.begin; });
-    const std::size_t comment = commentOffset(text);
     std::size_t insertAt = remove.empty() || !geometry ? comment : remove.front().begin;
     if (edit.prependG >= 0) {
         out += 'G';
@@ -208,6 +224,7 @@ void editedText(const std::string& text, const ScannedBlock& s, const ScanResult
     }
     out.append(text, copied, std::string::npos);
     squeezeBlanks(out);
+    return true;
 }
 
 class CornerJob {
@@ -358,8 +375,8 @@ void CornerJob::apply() {
     for (std::size_t i = 0; i < blocks_.size(); ++i) {
         const BlockEdit& e = edits_[i];
         if (!e.newStart && !e.newEnd && !e.consumed && !e.removeCorner && e.prependG < 0) continue;
-        editedText(blocks_[i].text, scanned_[i], scan_, e, scratch);
-        blocks_[i].text.swap(scratch.out);  // the old text's buffer is the next scratch
+        if (editedText(blocks_[i].text, scanned_[i], scan_, e, scratch))
+            blocks_[i].text.swap(scratch.out);  // the old text's buffer is the next scratch
         blocks_[i].changed = true;
     }
     if (insertions_.empty()) return;

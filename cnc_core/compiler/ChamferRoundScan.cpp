@@ -68,9 +68,37 @@ std::size_t wordEnd(const std::string& text, std::size_t begin) {
     while (i < text.size() && text[i] == ' ')
         ++i;
     if (i < text.size() && (text[i] == '-' || text[i] == '+')) ++i;
-    while (i < text.size() && ((text[i] >= '0' && text[i] <= '9') || text[i] == '.'))
+    const char* const data = text.data();  // the digits: the common and the long part
+    const std::size_t size = text.size();
+    while (i < size && (static_cast<unsigned char>(data[i] - '0') <= 9 || data[i] == '.'))
         ++i;
     return i;
+}
+
+/// readNumberPrefix for "12", "1.5", ".8" (at most 15 digits) followed by
+/// the end or a blank: the value is digits / 10^decimals, both exact as
+/// doubles, so the division rounds as from_chars does. Returns nullptr for
+/// any other text.
+const char* plainDecimal(const char* first, const char* last, double& value) {
+    constexpr double kPowers[] = {1e0, 1e1, 1e2,  1e3,  1e4,  1e5,  1e6,  1e7,
+                                  1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15};
+    std::int64_t digits = 0;
+    int count = 0, decimals = -1;
+    const char* p = first;
+    for (; p != last; ++p) {
+        if (*p >= '0' && *p <= '9') {
+            digits = digits * 10 + (*p - '0');
+            ++count;
+            if (decimals >= 0) ++decimals;
+        } else if (*p == '.' && decimals < 0) {
+            decimals = 0;
+        } else {
+            break;
+        }
+    }
+    if (count == 0 || count > 15 || (p != last && *p != ' ')) return nullptr;
+    value = static_cast<double>(digits) / kPowers[decimals < 0 ? 0 : decimals];
+    return p;
 }
 
 /// CF/RD value from its raw arguments ("2", "=2.5", " = 1"), read in place.
@@ -83,7 +111,8 @@ bool cornerValue(std::string_view args, double& value) {
         ++i;
     if (i >= args.size()) return false;
     const char* stop = args.data() + args.size();
-    const char* end = readNumberPrefix(args.data() + i, stop, value);
+    const char* end = plainDecimal(args.data() + i, stop, value);
+    if (!end) end = readNumberPrefix(args.data() + i, stop, value);
     while (end < stop && *end == ' ')
         ++end;
     return (end == stop || *end == '\0') && std::isfinite(value);
@@ -104,11 +133,30 @@ struct ScanState {
     bool planeChanged = true;  ///< plane differs from the last entry of ScanResult::planes
     std::vector<AxisPosition> positions;
 
+    /// Indices of the positions of plane.axis[0] and [1] (planeIndexValid).
+    std::size_t planeIndex[2] = {0, 0};
+    bool planeIndexValid = false;
+
     AxisPosition& position(const std::string& name) {
         for (AxisPosition& p : positions)
             if (sameAxisName(p.name, name)) return p;
         positions.push_back({name, 0.0, false});
         return positions.back();
+    }
+    /// position(plane.axis[k]); the two are looked up (and made, in this
+    /// order) once per plane.
+    AxisPosition& planePosition(int k) {
+        if (!planeIndexValid) {
+            for (int a = 0; a < 2; ++a)
+                planeIndex[a] = static_cast<std::size_t>(&position(plane.axis[a]) - &positions[0]);
+            planeIndexValid = true;
+        }
+        return positions[planeIndex[k]];
+    }
+    /// The plane changed (its axes are looked up again).
+    void newPlane() {
+        planeChanged = true;
+        planeIndexValid = false;
     }
 };
 
@@ -151,7 +199,7 @@ void readWords(const Program& program, const Block& block, std::size_t prefixSiz
                 if (g == 15 || g == 16) state.diameter = g == 16;
                 if (g >= 17 && g <= 19) {
                     state.plane = standardPlane(g, options.process);
-                    state.planeChanged = true;
+                    state.newPlane();
                 }
                 if (g == 20) g20 = true;
                 if (const char* why = g < 0 ? "a computed G function" : illegalG(g))
@@ -203,7 +251,7 @@ void readWords(const Program& program, const Block& block, std::size_t prefixSiz
             state.plane.axis[1] = result.axisWords[out.axes.begin + 1].name;
             state.plane.centre[0] = 'I';
             state.plane.centre[1] = 'J';
-            state.planeChanged = true;
+            state.newPlane();
         }
         result.axisWords.resize(out.axes.begin);
         out.axes.end = out.axes.begin;
@@ -216,7 +264,7 @@ void buildMotion(ScanState& state, ScannedBlock& out, const ScanResult& result) 
     Point2 start, end, centre;
     out.startKnown = true;
     for (int k = 0; k < 2; ++k) {
-        AxisPosition& p = state.position(plane.axis[k]);
+        AxisPosition& p = state.planePosition(k);
         out.startKnown = out.startKnown && p.known;
         start[k] = p.value;
     }
@@ -231,7 +279,7 @@ void buildMotion(ScanState& state, ScannedBlock& out, const ScanResult& result) 
         if (k >= 0 && w.variable) out.planeVariable = true;
         const double v = w.value * axisScale(w.name, state.diameter);
         if (k >= 0) end[k] = state.absolute ? v : start[k] + v;
-        AxisPosition& p = state.position(w.name);
+        AxisPosition& p = k >= 0 ? state.planePosition(k) : state.position(w.name);
         p.known = !w.variable && (state.absolute || p.known);
         p.value = state.absolute ? v : p.value + v;
     }

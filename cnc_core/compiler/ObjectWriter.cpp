@@ -1,6 +1,7 @@
 #include "cnc_core/compiler/ObjectWriter.h"
 
 #include <algorithm>
+#include <string_view>
 
 #include "cnc_core/compiler/CompilerText.h"
 
@@ -122,11 +123,36 @@ void setBlockLead(std::string& lead, const CompileBlock& block, int number, int 
     lead.append(text, sizeof text);
 }
 
+/// setBlockLead's lead in a buffer (the common case: a short prefix and
+/// four-digit numbers).
+struct ShortLead {
+    static constexpr std::size_t kMaxPrefix = 8;
+    char data[kMaxPrefix + 10];
+    std::size_t size = 0;
+};
+
+/// setBlockLead into `lead`; false (nothing written) for a prefix of more
+/// than kMaxPrefix characters or numbers of more than four digits.
+bool setShortLead(ShortLead& lead, const CompileBlock& block, int number, int sub) {
+    if (block.prefix.size() > ShortLead::kMaxPrefix ||
+        (number >= 0 && (number > 9999 || sub < 0 || sub > 9999)))
+        return false;
+    lead.size = block.prefix.copy(lead.data, ShortLead::kMaxPrefix);
+    if (number < 0) return true;
+    char* const at = lead.data + lead.size;
+    at[0] = 'N';
+    writeFourDigits(at + 1, number);
+    at[5] = ':';
+    writeFourDigits(at + 6, sub);
+    lead.size += 10;
+    return true;
+}
+
 /// The common case of a block that is one line of at most 71 characters:
 /// appends that line (with '\n') to `out` and returns true; false (nothing
 /// appended) when the block needs the general layout (sourceLayoutLines,
 /// wrapBlock). Writes exactly the line those would give.
-bool appendSingleLine(const std::string& lead, const CompileBlock& block, std::string& out) {
+bool appendSingleLine(std::string_view lead, const CompileBlock& block, std::string& out) {
     const std::string& text = block.text;
     const bool asSource = !block.intermediate && !block.changed;
     if (asSource && !block.sourceLayout.empty()) return false;  // continuation lines
@@ -136,10 +162,10 @@ bool appendSingleLine(const std::string& lead, const CompileBlock& block, std::s
     // (wrapBlock's one-line case counts the blank even after an empty lead)
     const std::size_t counted = lead.size() + (blank || !asSource ? 1 : 0) + text.size();
     if (text.empty() ? lead.size() > kMaxObjectLine : counted > kMaxObjectLine) return false;
-    out += lead;
-    if (blank) out += ' ';
-    out += text;
-    out += '\n';
+    out.append(lead.data(), lead.size());
+    if (blank) out.push_back(' ');
+    out.append(text);
+    out.push_back('\n');
     return true;
 }
 
@@ -179,6 +205,7 @@ ObjectText writeObjectText(const SourceFrame& frame, const BlockSequence& blocks
     int number = -1, sub = 0;
     std::vector<std::string> lines;
     std::string lead;
+    ShortLead fastLead;
     bool endWritten = false;
     for (std::size_t i = 0; i < blocks.size(); ++i) {
         const CompileBlock& block = blocks[i];
@@ -188,10 +215,13 @@ ObjectText writeObjectText(const SourceFrame& frame, const BlockSequence& blocks
             number = block.number;
             sub = block.sourceSub;
         }
-        setBlockLead(lead, block, number, sub);
         const ObjectLineKind kind =
             block.programEnd ? ObjectLineKind::ProgramEnd : ObjectLineKind::Block;
-        if (appendSingleLine(lead, block, out.text)) {
+        const bool shortLead = setShortLead(fastLead, block, number, sub);
+        if (!shortLead) setBlockLead(lead, block, number, sub);
+        if (appendSingleLine(
+                shortLead ? std::string_view(fastLead.data, fastLead.size) : std::string_view(lead),
+                block, out.text)) {
             out.lineMap.push_back({kind, block.sourceLine, number, sub, block.intermediate});
             if (block.programEnd) {
                 endWritten = true;
@@ -200,6 +230,7 @@ ObjectText writeObjectText(const SourceFrame& frame, const BlockSequence& blocks
             ++out.blocks;
             continue;
         }
+        if (shortLead) lead.assign(fastLead.data, fastLead.size);
         if (block.intermediate || block.changed || !sourceLayoutLines(lead, block, lines)) {
             lines = wrapBlock(lead, block.text);
             if (!fits(lines)) {

@@ -20,9 +20,10 @@ std::string withoutCarriageReturns(std::string_view text) {
     return out;
 }
 
-/// One logical line: each line break and the blanks after it become one blank.
-std::string joinContinuationLines(std::string_view layout) {
-    if (layout.find('\n') == std::string_view::npos) {
+/// One logical line: each line break and the blanks after it become one
+/// blank. `lineBreak`: `layout` has a '\n'.
+std::string joinContinuationLines(std::string_view layout, bool lineBreak) {
+    if (!lineBreak) {
         while (!layout.empty() && layout.back() == ' ')
             layout.remove_suffix(1);
         return std::string(layout);
@@ -77,8 +78,9 @@ void splitNumber(std::string_view raw, CompileBlock& block) {
             ++i;
     }
     const std::string_view layout = raw.substr(i);
-    block.text = joinContinuationLines(layout);
-    if (layout.find('\n') != std::string_view::npos) block.sourceLayout = std::string(layout);
+    const bool lineBreak = layout.find('\n') != std::string_view::npos;
+    block.text = joinContinuationLines(layout, lineBreak);
+    if (lineBreak) block.sourceLayout = std::string(layout);
 }
 
 }  // namespace

@@ -322,4 +322,35 @@ TEST(CompilerChamfer, EveryCornerOfAZigZagGetsItsBlockRightAfterItsOwnBlock) {
     EXPECT_EQ(b.back().substr(0, 10), "N0009:0000");
 }
 
+// Every spelling of the same value gives the same object program (the
+// plain decimal is read directly, the others by readNumberPrefix).
+TEST(CompilerChamfer, SpellingsOfOneValueGiveOneObject) {
+    const auto object = [](const std::string& corner) {
+        const CompileResult r =
+            compileText("N0001 G1 X0 Y0 F100\nN0002 X10 " + corner + "\nN0003 Y10\n");
+        EXPECT_EQ(r.status, CompileStatus::Compiled) << corner;
+        return r.objectText;
+    };
+    for (const char* kind : {"RD", "CF"}) {
+        const std::string k(kind);
+        const std::string expected = object(k + "1.5");
+        for (const char* value : {"=1.5", " 1.5", "1.50", "01.5", "1.5e0", "15e-1",
+                                  "1.500000000000000", "0000000000000001.5", "= 1.5 "})
+            EXPECT_EQ(object(k + value), expected) << k + value;
+        EXPECT_EQ(object(k + ".5"), object(k + "0.5"));
+        EXPECT_EQ(object(k + "2."), object(k + "2"));
+    }
+}
+
+// A block after a corner keeps its text, blanks squeezed (also when its
+// motion stays as written).
+TEST(CompilerChamfer, BlocksAfterACornerHaveTheirBlanksSqueezed) {
+    const CompileResult r =
+        compileText("N0001 G1 X0 Y0 F100\nN0002 X10 CF1\nN0003 Y10  F200   M8 ;a  b\nN0004 X0\n");
+    ASSERT_EQ(r.status, CompileStatus::Compiled);
+    const std::vector<std::string> b = objectBlocks(r);
+    ASSERT_EQ(b.size(), 5u);
+    EXPECT_EQ(b[3], "N0003:0000 Y10 F200 M8 ;a  b");
+}
+
 }  // namespace
