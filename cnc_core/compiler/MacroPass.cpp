@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cstdint>
-#include <cstring>
 #include <optional>
 #include <vector>
 
@@ -108,15 +107,14 @@ struct MacroUse {
 /// Writes `text` with its `count` macro uses expanded to `out`, which has
 /// room for all of it.
 void writeExpansion(const std::string& text, const MacroUse* uses, std::size_t count, char* out) {
+    const char* const data = text.data();
     std::size_t copied = 0;
     for (std::size_t u = 0; u < count; ++u) {
-        std::memcpy(out, text.data() + copied, uses[u].begin - copied);
-        out += uses[u].begin - copied;
-        std::memcpy(out, uses[u].body->data(), uses[u].body->size());
-        out += uses[u].body->size();
+        out = std::copy(data + copied, data + uses[u].begin, out);
+        out = std::copy(uses[u].body->begin(), uses[u].body->end(), out);
         copied = uses[u].end;
     }
-    std::memcpy(out, text.data() + copied, text.size() - copied);
+    std::copy(data + copied, data + text.size(), out);
 }
 
 /// Appends `text` with every macro use expanded to `out` (not `text`).

@@ -127,7 +127,7 @@ void setBlockLead(std::string& lead, const CompileBlock& block, int number, int 
 /// four-digit numbers).
 struct ShortLead {
     static constexpr std::size_t kMaxPrefix = 8;
-    char data[kMaxPrefix + 10];
+    char data[kMaxPrefix + 10] = {};
     std::size_t size = 0;
 };
 
