@@ -27,6 +27,71 @@ std::string shortNumber(double value) {
     return formatGeneral(value, 6);
 }
 
+/// FEED_MISSING, FEED_PER_REVOLUTION_NO_SPEED or FEED_TOO_SMALL: cold paths
+/// out of line, plan() runs for every move.
+[[gnu::cold]] bool feedError(const BlockContext& context, int g, double feed, double feedRate) {
+    if (feed <= 0.0)
+        return context.error("FEED_MISSING", "G" + std::to_string(g) + " needs a feed F > 0");
+    if (feedRate <= 0.0)
+        return context.error(
+            "FEED_PER_REVOLUTION_NO_SPEED",
+            "G95 feed per revolution needs a spindle speed S of the reference spindle");
+    // bounded simulated time (issue 22 §6, MOT-010)
+    return context.error("FEED_TOO_SMALL", "the path feed " + shortNumber(feedRate) +
+                                               " mm/min is below the smallest feed " +
+                                               shortNumber(kMinimumFeed) + " mm/min");
+}
+
+[[gnu::cold]] bool radiusMismatch(const BlockContext& context, const BlockInput& input, double r1,
+                                  double r2, double arcTolerance) {
+    return context.error(
+        "ARC_RADIUS_MISMATCH", "start and end point are not on one circle around the centre",
+        input.centerColumn,
+        {"radius at the start point " + format(r1) + " mm",
+         "radius at the end point " + format(r2) + " mm",
+         "difference " + format(r2 - r1) + " mm, tolerance " + format(arcTolerance) + " mm"});
+}
+
+/// What an arc's axis time is worked out from: start, end and centre (work
+/// coordinates of the plane axes), radii at start and end, the sweep, the
+/// helical axes' time and the plane axes' seconds per unit.
+struct ArcFigures {
+    double s1, s2, e1, e2, c1, c2;
+    double r1, r2, angle, signedSweep;
+    double helixSeconds, secondsPerUnit1, secondsPerUnit2;
+};
+
+/// The time the slowest axis needs for its share of the arc at its
+/// max_velocity, the plane axes at the peak of their tangent share.
+double arcAxisSeconds(const ArcFigures& t) {
+    // The plane axes' shares of the tangent peak where the circle runs
+    // along them (motion::arcTangentExtreme).
+    const double a0 = std::atan2(t.s2 - t.c2, t.s1 - t.c1);
+    // |sin| and |cos| at the ends from the radius vectors (no trigonometry).
+    const double endSin = t.r2 > 0.0 ? (t.e2 - t.c2) / t.r2 : std::sin(a0 + t.signedSweep);
+    const double endCos = t.r2 > 0.0 ? (t.e1 - t.c1) / t.r2 : std::cos(a0 + t.signedSweep);
+    const double path = t.r1 * t.angle;
+    return std::max(
+        {t.helixSeconds,
+         path * motion::arcTangentExtreme(a0, t.signedSweep, false, (t.s2 - t.c2) / t.r1, endSin) *
+             t.secondsPerUnit1,
+         path * motion::arcTangentExtreme(a0, t.signedSweep, true, (t.s1 - t.c1) / t.r1, endCos) *
+             t.secondsPerUnit2});
+}
+
+/// arcAxisSeconds() where it can decide the move's time, else an upper bound
+/// of it below `feedSeconds` (MOT-024): the plane axes' shares of the unit
+/// tangent are at most 1 (to a few ulps; the margin covers them), so each
+/// plane term is at most the arc's length times the axis's seconds per unit.
+/// max(feedSeconds, either) is the same then; NaN takes the exact path.
+double arcAxisTime(const ArcFigures& t, double feedSeconds) {
+    constexpr double kMargin = 1.0 + 1e-9;
+    const double path = t.r1 * t.angle;
+    const double bound = std::max(
+        {t.helixSeconds, path * t.secondsPerUnit1 * kMargin, path * t.secondsPerUnit2 * kMargin});
+    return bound < feedSeconds ? bound : arcAxisSeconds(t);
+}
+
 }  // namespace
 
 double MotionPlanner::offsetOf(const ModalState& modal, int axis) const {
@@ -137,16 +202,8 @@ bool MotionPlanner::plan(const BlockContext& context, const BlockInput& input,
     if (perRevolution && !feedPerRevolutionAxes(context, input, next, moved)) return false;
     const double speed = next.spindleSpeed[static_cast<size_t>(next.referenceSpindle)];
     plan.feedRate = perRevolution ? next.feed * speed : next.feed;
-    if (next.feed <= 0.0)
-        return context.error("FEED_MISSING", "G" + std::to_string(g) + " needs a feed F > 0");
-    if (plan.feedRate <= 0.0)
-        return context.error(
-            "FEED_PER_REVOLUTION_NO_SPEED",
-            "G95 feed per revolution needs a spindle speed S of the reference spindle");
-    if (plan.feedRate < kMinimumFeed)  // bounded simulated time (issue 22 §6, MOT-010)
-        return context.error("FEED_TOO_SMALL", "the path feed " + shortNumber(plan.feedRate) +
-                                                   " mm/min is below the smallest feed " +
-                                                   shortNumber(kMinimumFeed) + " mm/min");
+    if (next.feed <= 0.0 || plan.feedRate < kMinimumFeed)
+        return feedError(context, g, next.feed, plan.feedRate);
     if (plan.feedRate != feedCache_.feed) {  // the feed changes far less often than blocks
         feedCache_.feed = plan.feedRate;
         feedCache_.secondsPerUnit = 60.0 / plan.feedRate;
@@ -254,12 +311,7 @@ bool MotionPlanner::arc(const BlockContext& context, const BlockInput& input,
     if (r1 < 1e-9)
         return context.error("ARC_RADIUS_ZERO", "the circle's start point is its centre");
     if (std::fabs(r1 - r2) > arcTolerance)
-        return context.error(
-            "ARC_RADIUS_MISMATCH", "start and end point are not on one circle around the centre",
-            input.centerColumn,
-            {"radius at the start point " + format(r1) + " mm",
-             "radius at the end point " + format(r2) + " mm",
-             "difference " + format(r2 - r1) + " mm, tolerance " + format(arcTolerance) + " mm"});
+        return radiusMismatch(context, input, r1, r2, arcTolerance);
     // D-016: an end within the radius tolerance of the start closes the circle.
     const bool full = closesCircle(s1, s2, e1, e2, arcTolerance);
     const double angle = std::fabs(
@@ -273,21 +325,19 @@ bool MotionPlanner::arc(const BlockContext& context, const BlockInput& input,
         helixSeconds = std::max(helixSeconds, std::fabs(d) * secondsPerPlaneUnit(next, a));
     }
     length = helix == 0.0 ? r1 * angle : std::sqrt(r1 * angle * r1 * angle + helix);
-    // The plane axes' shares of the tangent peak where the circle runs
-    // along them (motion::arcTangentExtreme).
+    // The feed's time as plan() works it out (feedCache_ as there; a feed
+    // it refuses gives an error after this, whatever the figure).
+    const double speed = next.spindleSpeed[static_cast<size_t>(next.referenceSpindle)];
+    const double feed = next.g[kGroupFeedType] == 95 ? next.feed * speed : next.feed;
+    if (feed != feedCache_.feed) {
+        feedCache_.feed = feed;
+        feedCache_.secondsPerUnit = 60.0 / feed;
+    }
     const double signedSweep = plan.motionType == MotionType::ArcCW ? -angle : angle;
-    const double a0 = std::atan2(s2 - centre[1], s1 - centre[0]);
-    // |sin| and |cos| at the ends from the radius vectors (no trigonometry).
-    const double endSin = r2 > 0.0 ? (e2 - centre[1]) / r2 : std::sin(a0 + signedSweep);
-    const double endCos = r2 > 0.0 ? (e1 - centre[0]) / r2 : std::cos(a0 + signedSweep);
-    axisSeconds = std::max(
-        {helixSeconds,
-         r1 * angle *
-             motion::arcTangentExtreme(a0, signedSweep, false, (s2 - centre[1]) / r1, endSin) *
-             secondsPerPlaneUnit(next, p1),
-         r1 * angle *
-             motion::arcTangentExtreme(a0, signedSweep, true, (s1 - centre[0]) / r1, endCos) *
-             secondsPerPlaneUnit(next, p2)});
+    const double perUnit1 = secondsPerPlaneUnit(next, p1), perUnit2 = secondsPerPlaneUnit(next, p2);
+    const ArcFigures figures{s1, s2,    e1,          e2,           centre[0], centre[1], r1,
+                             r2, angle, signedSweep, helixSeconds, perUnit1,  perUnit2};
+    axisSeconds = arcAxisTime(figures, length * feedCache_.secondsPerUnit);
     plan.planeAxis1 = p1;
     plan.planeAxis2 = p2;
     const Transformation& t = next.transformation;

@@ -149,12 +149,15 @@ SegmentGeometry::Polar SegmentGeometry::polar(double d1, double d2, double radiu
 
 void SegmentGeometry::arcTangent(Polar at, double radius, Position& tangent) const {
     const double dr = radius1_ - radius0_;
+    // The plane components once (registers, not stores: storeUnit's reason).
+    const double t1 = dr * at.cos - radius * sweep_ * at.sin;
+    const double t2 = dr * at.sin + radius * sweep_ * at.cos;
     clearFrom(tangent, axisCount_);
     storeUnit(
         axisCount_,
         [&](int i) {
-            if (i == p1_) return dr * at.cos - radius * sweep_ * at.sin;
-            if (i == p2_) return dr * at.sin + radius * sweep_ * at.cos;
+            if (i == p1_) return t1;
+            if (i == p2_) return t2;
             const auto k = static_cast<std::size_t>(i);
             return end_[k] - start_[k];
         },
