@@ -73,6 +73,7 @@ const ParsedSequence& CompileContext::parsed(const BlockSequence& blocks) {
     parsed_.blockOf.clear();
     parsed_.parsedOf.assign(blocks.size(), -1);
     std::vector<std::uint32_t> lineOwner;  // parse line - 1 -> sequence index
+    lineOwner.reserve(blocks.size());
     for (std::size_t i = 0; i < blocks.size(); ++i) {
         if (blocks[i].programEnd) continue;
         if (!blocks[i].prefix.empty()) text += blocks[i].prefix;  // nearly always empty

@@ -107,12 +107,13 @@ std::set<int> linesWithErrors(const std::vector<CompilerError>& errors) {
     return lines;
 }
 
-/// Syntax of the object program and compiler keywords left in it that no
-/// pass handles (seed 001 ch. 7: keywords of functions this compiler lacks).
-void checkObject(const ObjectText& object, const std::set<std::string>& handled,
-                 const std::set<int>& reported, CompileContext& context) {
+/// Syntax of the object program `program` (the parse of `object`) and
+/// compiler keywords left in it that no pass handles (seed 001 ch. 7:
+/// keywords of functions this compiler lacks).
+void reportObjectProblems(const Program& program, const ObjectText& object,
+                          const std::set<std::string>& handled, const std::set<int>& reported,
+                          CompileContext& context) {
     const CompilerOptions& options = context.options();
-    Program program = parseProgram(object.text, {options.programNumber, options.programName, {}});
     for (const Diagnostic& d : program.diagnostics.items()) {
         if (d.severity != Severity::Error || d.code == "FILE_TOO_MANY_LINES") continue;  // A error
         CompilerError error = errorAtObjectLine(object, d.where.line, options);
@@ -135,6 +136,17 @@ void checkObject(const ObjectText& object, const std::set<std::string>& handled,
             if (!context.submit(std::move(error))) return;
         }
     }
+}
+
+/// reportObjectProblems of a parse of `object`, which borrows its text (no
+/// copy of the whole object program) and gives it back.
+void checkObject(ObjectText& object, const std::set<std::string>& handled,
+                 const std::set<int>& reported, CompileContext& context) {
+    const CompilerOptions& options = context.options();
+    Program program =
+        parseProgram(std::move(object.text), {options.programNumber, options.programName, {}});
+    reportObjectProblems(program, object, handled, reported, context);
+    object.text = std::move(program.source);
 }
 
 }  // namespace

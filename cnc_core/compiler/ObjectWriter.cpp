@@ -179,7 +179,9 @@ bool continuesNumbering(const CompileBlock& block, int previousNumber) {
 ObjectText writeObjectText(const SourceFrame& frame, const BlockSequence& blocks,
                            CompileContext& context) {
     ObjectText out;
-    std::size_t estimate = frame.identification.size() + frame.header.size() + 16;
+    // the frame, a line of lead, blank, text and '\n' per block, and a
+    // PROGRAMMENDE line of its own ("N9999:0000 PROGRAMMENDE")
+    std::size_t estimate = frame.identification.size() + frame.header.size() + 48;
     for (const CompileBlock& block : blocks)
         estimate += block.text.size() + block.prefix.size() + 12;
     out.text.reserve(estimate);
