@@ -52,6 +52,13 @@ void formatBlockId(const Block& block, std::string& out) {
     out.assign(text, static_cast<std::size_t>(end - text));
 }
 
+/// True when a function of the block may go to the sink (an over-estimate
+/// is harmless): only then does emitAux() build the outputs' location.
+bool auxForwarded(const BlockInput& in, const OutputOptions& out) {
+    return (out.s && in.spindleMask != 0) || (out.te && (in.hasTool || in.hasEdge)) ||
+           (out.m && in.mCount > 0) || (out.q && in.qCount > 0);
+}
+
 }  // namespace
 
 SourceLocation Interpreter::sinkLocation(const Program& program, std::uint32_t /*index*/) const {
@@ -137,9 +144,13 @@ void Interpreter::sendAux(AuxOutput& out, char type, int spindle, double value, 
 
 void Interpreter::emitAux(const Program& program, std::uint32_t index) {
     const BlockInput& in = input_;
-    AuxOutput aux;  // one location for all functions of the block
-    aux.where = sinkLocation(program, index);
     const OutputOptions& out = options_.output;
+    // One location for all functions of the block, and only when one goes to
+    // the sink: an AuxObserver reads the location of forwarded outputs only
+    // (the computing process's collector none; R-018), and the block id is a
+    // string per block.
+    AuxOutput aux;
+    if (auxForwarded(in, out)) aux.where = sinkLocation(program, index);
     if (!in.speedLimit)
         for (int slot = 0; slot < kSpindleSlots; ++slot)
             if ((in.spindleMask >> slot) & 1u) {
