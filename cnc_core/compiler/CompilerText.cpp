@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "cnc_core/text/Digits.h"
+
 namespace mtc::core {
 
 std::string formatFourDigits(int number) {
@@ -86,24 +88,11 @@ void appendCoordinate(std::string& out, double value) {
 
 namespace {
 
-/// "00" "01" ... "99": two digits per division.
-constexpr char kDigitPairs[] =
-    "00010203040506070809101112131415161718192021222324252627282930313233343536373839"
-    "40414243444546474849505152535455565758596061626364656667686970717273747576777879"
-    "8081828384858687888990919293949596979899";
-
-/// Writes the two digits of `pair` (0..99) before `first`.
-char* putPair(char* first, unsigned pair) {
-    *--first = kDigitPairs[2 * pair + 1];
-    *--first = kDigitPairs[2 * pair];
-    return first;
-}
-
 /// Writes the fraction (1..9999 steps of 0.0001) as ".dddd" without
 /// trailing zeros before `first`.
 char* putFraction(char* first, unsigned fraction) {
     char digits[4];
-    putPair(putPair(digits + 4, fraction % 100), fraction / 100);
+    putDigitPair(putDigitPair(digits + 4, fraction % 100), fraction / 100);
     std::size_t length = 4;
     while (digits[length - 1] == '0')
         --length;
@@ -115,11 +104,6 @@ char* putFraction(char* first, unsigned fraction) {
 
 }  // namespace
 
-void writeFourDigits(char* at, int number) {
-    putPair(putPair(at + 4, static_cast<unsigned>(number % 100)),
-            static_cast<unsigned>(number / 100));
-}
-
 char* writeTicksBefore(char* end, long long scaled) {
     char* first = end;                 // written back to front
     const bool negative = scaled < 0;  // a count of zero has no sign: no "-0"
@@ -129,11 +113,11 @@ char* writeTicksBefore(char* end, long long scaled) {
     magnitude /= 10000;
     if (fraction != 0) first = putFraction(first, fraction);
     while (magnitude >= 100) {
-        first = putPair(first, static_cast<unsigned>(magnitude % 100));
+        first = putDigitPair(first, static_cast<unsigned>(magnitude % 100));
         magnitude /= 100;
     }
     if (magnitude >= 10)
-        first = putPair(first, static_cast<unsigned>(magnitude));
+        first = putDigitPair(first, static_cast<unsigned>(magnitude));
     else
         *--first = static_cast<char>('0' + magnitude);
     if (negative) *--first = '-';

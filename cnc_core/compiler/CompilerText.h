@@ -74,8 +74,6 @@ inline long long coordinateTicks(double value) {
 /// Appends a number of 0.0001 steps as formatCoordinate does. Incremental
 /// words written as differences of ticks add up exactly along a chain.
 void appendTicks(std::string& out, long long ticks);
-/// Writes the four digits of `number` (0..9999, leading zeros) to `at`.
-void writeFourDigits(char* at, int number);
 /// Longest text `writeTicks` writes ("-9223372036854775808" without its
 /// fraction is 20 characters, with ".dddd" 25).
 constexpr std::size_t kMaxTicksText = 26;

@@ -4,6 +4,7 @@
 #include <string_view>
 
 #include "cnc_core/compiler/CompilerText.h"
+#include "cnc_core/text/Digits.h"
 
 namespace mtc::core {
 

@@ -22,18 +22,37 @@ SourceLocation blockLocation(const Program& program, std::uint32_t blockIndex, i
 
 bool BlockDecoder::decode(const Block& block) const {
     t_.input.clear();
-    const std::size_t end = std::min<std::size_t>(std::size_t{block.firstWord} + block.wordCount,
-                                                  t_.program.words.size());
+    const WordList& words = t_.program.words;
+    const std::size_t end =
+        std::min<std::size_t>(std::size_t{block.firstWord} + block.wordCount, words.size());
     bool ok = true;
-    Word w;
+    NumberWord w;
     for (std::size_t i = block.firstWord; i < end; ++i) {
-        t_.program.words.read(i, w);
-        if (!word(w, static_cast<std::uint32_t>(i))) ok = false;
+        // Most words are plain numbers in the 8-byte form: no Word is built for them.
+        if (words.readNumber(i, w) ? !numberWord(w) : !wholeWord(static_cast<std::uint32_t>(i)))
+            ok = false;
     }
     return ok;
 }
 
-bool BlockDecoder::word(const Word& w, std::uint32_t index) const {
+bool BlockDecoder::wholeWord(std::uint32_t index) const {
+    Word w;
+    t_.program.words.read(index, w);
+    switch (w.kind) {
+        case WordKind::Assign:
+            return assignment(w);
+        case WordKind::AssignMTD:
+            return machineDataAssignment(w);
+        case WordKind::Jump:
+            return jumpWord(w, index);
+        case WordKind::Command:
+            return commandWord(w, index);
+        default:
+            return numberWord(numberWordOf(w));
+    }
+}
+
+inline bool BlockDecoder::numberWord(const NumberWord& w) const {
     switch (w.kind) {
         case WordKind::G:
             return gWord(w);
@@ -52,27 +71,20 @@ bool BlockDecoder::word(const Word& w, std::uint32_t index) const {
         case WordKind::D:
         case WordKind::EffectiveRadius:
             return scalarWord(w);
-        case WordKind::Assign:
-            return assignment(w);
-        case WordKind::AssignMTD:
-            return machineDataAssignment(w);
-        case WordKind::Jump:
-            return jumpWord(w, index);
-        case WordKind::Command:
-            return commandWord(w, index);
+        default:
+            return error(w.column, "UNKNOWN_WORD", "unknown word");
     }
-    return error(w, "UNKNOWN_WORD", "unknown word");
 }
 
-bool BlockDecoder::gWord(const Word& w) const {
+inline bool BlockDecoder::gWord(const NumberWord& w) const {
     double v = 0;
     int number = 0;
-    if (!value(w, v) || !integer(w, v, number, "G")) return false;
+    if (!value(w, v) || !integer(w.column, v, number, "G")) return false;
     const GCodeInfo info = gCodeInfo(number);
     BlockInput& in = t_.input;
     if (info.kind == GKind::Modal) {
         auto& slot = in.g[static_cast<size_t>(info.group)];
-        if (slot >= 0 && slot != number) return badG(w, number, info, slot);
+        if (slot >= 0 && slot != number) return badG(w.column, number, info, slot);
         slot = static_cast<std::int16_t>(number);
         in.gColumn[static_cast<size_t>(info.group)] = w.column;
         in.gMask |= 1u << info.group;
@@ -89,24 +101,22 @@ bool BlockDecoder::gWord(const Word& w) const {
     }
     if (info.kind == GKind::AxisFunction) {
         if (in.axisFunction != 0 && in.axisFunction != number)
-            return error(w, "G_GROUP_CONFLICT",
-                         "G" + std::to_string(in.axisFunction) + " and G" + std::to_string(number) +
-                             " cannot share a block");
+            return axisFunctionConflict(w.column, number);
         in.axisFunction = static_cast<std::uint8_t>(number);
         in.axisFunctionColumn = w.column;
         return true;
     }
     if (info.kind == GKind::AdaptiveFeed) {
         if (in.adaptiveFeed != 0 && in.adaptiveFeed != number)
-            return error(w, "G_GROUP_CONFLICT", "G25 and G26 cannot share a block");
+            return error(w.column, "G_GROUP_CONFLICT", "G25 and G26 cannot share a block");
         in.adaptiveFeed = static_cast<std::uint8_t>(number);
         in.adaptiveFeedColumn = w.column;
         return true;
     }
-    return badG(w, number, info, -1);
+    return badG(w.column, number, info, -1);
 }
 
-bool BlockDecoder::axisWord(const Word& w) const {
+inline bool BlockDecoder::axisWord(const NumberWord& w) const {
     const AxisLookup found = names_.find(w.letter, w.axisIndex);
     if (found.status != AxisNameStatus::Ok) {
         if (found.status != AxisNameStatus::TransformedLinear) return badAxis(w, found);
@@ -116,7 +126,7 @@ bool BlockDecoder::axisWord(const Word& w) const {
     if (!value(w, v)) return false;
     BlockInput& in = t_.input;
     if (in.axisCount == BlockInput::kMaxAxisWords)
-        return error(w, "TOO_MANY_AXES", "more than 16 axis words in one block");
+        return error(w.column, "TOO_MANY_AXES", "more than 16 axis words in one block");
     const auto axis = static_cast<size_t>(found.axis);
     const auto bit = static_cast<std::uint16_t>(1u << found.axis);
     if ((in.axisMask & bit) && in.repeatedAxisColumn == 0)
@@ -131,76 +141,77 @@ bool BlockDecoder::axisWord(const Word& w) const {
     return true;
 }
 
-bool BlockDecoder::centerWord(const Word& w) const {
+inline bool BlockDecoder::centerWord(const NumberWord& w) const {
     const int slot = w.letter - 'I';  // I J K
-    if (slot < 0 || slot > 2) return error(w, "UNKNOWN_WORD", "unknown interpolation parameter");
+    if (slot < 0 || slot > 2)
+        return error(w.column, "UNKNOWN_WORD", "unknown interpolation parameter");
     double v = 0;
     if (!value(w, v)) return false;
     BlockInput& in = t_.input;
     const auto bit = static_cast<std::uint8_t>(1u << slot);
-    if (in.centerMask & bit) return twice(w, std::string(1, w.letter));
+    if (in.centerMask & bit) {
+        static constexpr const char* kLetters[3] = {"I", "J", "K"};
+        return twice(w.column, kLetters[slot]);
+    }
     in.centerMask |= bit;
     in.center[static_cast<size_t>(slot)] = v;
     in.centerColumn = w.column;
     return true;
 }
 
-bool BlockDecoder::auxWord(const Word& w) const {
+inline bool BlockDecoder::auxWord(const NumberWord& w) const {
     const bool isM = w.kind == WordKind::M;
     double v = 0;
     int number = 0;
-    if (!value(w, v) || !integer(w, v, number, isM ? "M" : "Q")) return false;
+    if (!value(w, v) || !integer(w.column, v, number, isM ? "M" : "Q")) return false;
     int& count = isM ? t_.input.mCount : t_.input.qCount;
     if (count == BlockInput::kMaxAux)
-        return error(w, "TOO_MANY_AUX", "more than 8 M or Q functions in one block");
+        return error(w.column, "TOO_MANY_AUX", "more than 8 M or Q functions in one block");
     (isM ? t_.input.m : t_.input.q)[static_cast<size_t>(count++)] = {number, w.column};
     return true;
 }
 
-bool BlockDecoder::spindleWord(const Word& w) const {
+inline bool BlockDecoder::spindleWord(const NumberWord& w) const {
     double v = 0;
     if (!value(w, v)) return false;
     const int slot = w.axisIndex;  // 0 = S without index (reference spindle)
-    if (slot != 0 && axes_.spindleAxis(slot) < 0)
-        return error(
-            w, "AXIS_UNKNOWN",
-            "S" + std::to_string(slot) + ": this process has no spindle " + std::to_string(slot));
+    if (slot != 0 && axes_.spindleAxis(slot) < 0) return noSpindle(w.column, slot);
     const auto bit = static_cast<std::uint8_t>(1u << slot);
-    if (t_.input.spindleMask & bit) return twice(w, "spindle speed");
-    if (v < 0) return error(w, "VALUE_RANGE", "a spindle speed cannot be negative");
+    if (t_.input.spindleMask & bit) return twice(w.column, "spindle speed");
+    if (v < 0) return error(w.column, "VALUE_RANGE", "a spindle speed cannot be negative");
     if (t_.input.spindleMask == 0) t_.input.spindleColumn = w.column;
     t_.input.spindleMask |= bit;
     t_.input.spindle[static_cast<size_t>(slot)] = v;
     return true;
 }
 
-bool BlockDecoder::scalarWord(const Word& w) const {
+inline bool BlockDecoder::scalarWord(const NumberWord& w) const {
     double v = 0;
     if (!value(w, v)) return false;
     BlockInput& in = t_.input;
     switch (w.kind) {
         case WordKind::T:
-            if (in.hasTool) return twice(w, "T");
+            if (in.hasTool) return twice(w.column, "T");
             in.hasTool = true;
             in.toolColumn = w.column;
-            return integer(w, v, in.tool, "T");
+            return integer(w.column, v, in.tool, "T");
         case WordKind::E:
-            if (in.hasEdge) return twice(w, "E");
+            if (in.hasEdge) return twice(w.column, "E");
             in.hasEdge = true;
-            return integer(w, v, in.edge, "E");
+            return integer(w.column, v, in.edge, "E");
         case WordKind::D:
-            if (in.hasCorrection) return twice(w, "D");
+            if (in.hasCorrection) return twice(w.column, "D");
             in.hasCorrection = true;
-            return integer(w, v, in.correction, "D");
+            return integer(w.column, v, in.correction, "D");
         case WordKind::F:
-            if (in.hasFeed) return twice(w, "F");
-            if (v < 0) return error(w, "VALUE_RANGE", "F cannot be negative");
+            if (in.hasFeed) return twice(w.column, "F");
+            if (v < 0) return error(w.column, "VALUE_RANGE", "F cannot be negative");
             in.hasFeed = true;
             in.feed = v;
             in.feedColumn = w.column;
             return true;
         default:
-            if (in.hasRadius) return twice(w, "RI");
+            if (in.hasRadius) return twice(w.column, "RI");
             in.hasRadius = true;
             in.radius = v;
             in.radiusColumn = w.column;
@@ -212,17 +223,17 @@ bool BlockDecoder::assignment(const Word& w) const {
     const auto& nodes = t_.program.expressions;
     if (w.target < 0 || static_cast<size_t>(w.target) >= nodes.size() ||
         nodes[static_cast<size_t>(w.target)].op != ExprOp::Variable)
-        return error(w, "EXPRESSION_MALFORMED", "assignment without a variable");
+        return error(w.column, "EXPRESSION_MALFORMED", "assignment without a variable");
     const ExprNode& target = nodes[static_cast<size_t>(w.target)];
     if (target.index < 0 || target.index >= kVariableCount)
-        return error(w, "VARIABLE_RANGE",
+        return error(w.column, "VARIABLE_RANGE",
                      "variable @" + std::to_string(target.index) + " does not exist (0.." +
                          std::to_string(kVariableCount - 1) + ")");
     double v = 0;
     if (!value(w, v)) return false;
     BlockInput& in = t_.input;
     if (in.writeCount == BlockInput::kMaxWrites)
-        return error(w, "TOO_MANY_ASSIGNMENTS", "more than 16 assignments in one block");
+        return error(w.column, "TOO_MANY_ASSIGNMENTS", "more than 16 assignments in one block");
     in.writes[static_cast<size_t>(in.writeCount++)] = {target.process, target.index, v};
     in.conditionSet = true;
     in.condition = v;
@@ -233,16 +244,16 @@ bool BlockDecoder::machineDataAssignment(const Word& w) const {
     const auto& nodes = t_.program.expressions;
     if (w.target < 0 || static_cast<size_t>(w.target) >= nodes.size() ||
         nodes[static_cast<size_t>(w.target)].op != ExprOp::ReadMTD)
-        return error(w, "EXPRESSION_MALFORMED", "MTD assignment without MTD(...)");
+        return error(w.column, "EXPRESSION_MALFORMED", "MTD assignment without MTD(...)");
     BlockInput::MtdWrite write;
     EvaluationError e;
     if (!evaluator_.machineDataAddress(t_.program, nodes[static_cast<size_t>(w.target)],
                                        write.address, e))
-        return error(w, e.code, e.message);
+        return error(w.column, e.code, e.message);
     if (!value(w, write.value)) return false;
     BlockInput& in = t_.input;
     if (in.mtdCount == BlockInput::kMaxMtdWrites)
-        return error(w, "TOO_MANY_ASSIGNMENTS", "more than 4 MTD assignments in one block");
+        return error(w.column, "TOO_MANY_ASSIGNMENTS", "more than 4 MTD assignments in one block");
     write.column = w.column;
     in.mtdWrites[static_cast<size_t>(in.mtdCount++)] = write;
     in.conditionSet = true;
@@ -252,12 +263,12 @@ bool BlockDecoder::machineDataAssignment(const Word& w) const {
 
 bool BlockDecoder::jumpWord(const Word& w, std::uint32_t index) const {
     if (t_.input.jumpWord >= 0)
-        return error(w, "JUMP_TWICE", "only one jump, branch or call per block");
+        return error(w.column, "JUMP_TWICE", "only one jump, branch or call per block");
     t_.input.jumpWord = index;
     if (w.jump != JumpKind::JSR && w.jump != JumpKind::JMP && w.jump != JumpKind::JEV) return true;
     double v = 0;
     int number = 0;
-    if (!value(w, v) || !integer(w, v, number, "program number")) return false;
+    if (!value(w, v) || !integer(w.column, v, number, "program number")) return false;
     t_.input.jumpProgram = number;
     return true;
 }
@@ -272,9 +283,9 @@ bool BlockDecoder::commandWord(const Word& w, std::uint32_t index) const {
     if (text.substr(0, 3) == "AXD" && text.find("P-7-3651") != std::string_view::npos)
         return stallRecording(w);
     if (t_.input.commandCount == BlockInput::kMaxCommands)
-        return error(w, "TOO_MANY_COMMANDS", "more than 4 commands in one block");
+        return error(w.column, "TOO_MANY_COMMANDS", "more than 4 commands in one block");
     if (w.flags & kWordNeedsCompiler)
-        return error(w, "NEEDS_COMPILER",
+        return error(w.column, "NEEDS_COMPILER",
                      "'" + std::string(t_.program.text(w.text)) +
                          "' is an NC compiler function; compile the program before running it");
     t_.input.commands[static_cast<size_t>(t_.input.commandCount++)] = index;
@@ -290,7 +301,7 @@ bool BlockDecoder::stallRecording(const Word& w) const {
     if (args.empty() || args[0] != '(' || colon == std::string::npos ||
         close == std::string::npos || equals == std::string::npos || colon > close ||
         close > equals)
-        return error(w, "AXD_SYNTAX",
+        return error(w.column, "AXD_SYNTAX",
                      "stall torque recording is written AXD(axis:P-7-3651)=period");
     std::string axis = args.substr(1, colon - 1);
     axis.erase(std::remove(axis.begin(), axis.end(), ' '), axis.end());
@@ -302,16 +313,16 @@ bool BlockDecoder::stallRecording(const Word& w) const {
     if (!value.empty() && value[0] == '@') {
         const long n = std::strtol(value.c_str() + 1, &end, 10);
         if (*end != '\0' || n < 0 || n >= kVariableCount)
-            return error(w, "AXD_SYNTAX", "the period must be a number or a variable @n");
+            return error(w.column, "AXD_SYNTAX", "the period must be a number or a variable @n");
         EvaluationError failure;
         if (!evaluator_.readVariable(-1, static_cast<int>(n), period, failure))
-            return error(w, failure.code, failure.message);
+            return error(w.column, failure.code, failure.message);
     } else {
         if (value.empty() || readNumberPrefix(value, period) != value.size())
-            return error(w, "AXD_SYNTAX", "the period must be a number or a variable @n");
+            return error(w.column, "AXD_SYNTAX", "the period must be a number or a variable @n");
     }
     if (axis.empty() || axis.size() > 3)
-        return error(w, "AXD_SYNTAX", "AXD needs an axis designation before ':'");
+        return error(w.column, "AXD_SYNTAX", "AXD needs an axis designation before ':'");
     BlockInput& in = t_.input;
     in.stallRecording = true;
     in.stallAxis.fill('\0');
@@ -323,54 +334,72 @@ bool BlockDecoder::stallRecording(const Word& w) const {
 
 // ------------------------------------------------------------------ error paths
 
-bool BlockDecoder::error(const Word& w, const std::string& code, const std::string& message) const {
-    t_.diagnostics.error(code, blockLocation(t_.program, t_.blockIndex, w.column), message);
+bool BlockDecoder::error(std::uint16_t column, const std::string& code,
+                         const std::string& message) const {
+    t_.diagnostics.error(code, blockLocation(t_.program, t_.blockIndex, column), message);
     return false;
 }
 
-bool BlockDecoder::evaluated(const Word& w, double& out) const {
-    EvaluationError e;
-    if (evaluator_.evaluate(t_.program, w.expr, out, e)) return true;
-    return error(w, e.code, e.message);
+bool BlockDecoder::error(std::uint16_t column, const char* code, const char* message) const {
+    return error(column, std::string(code), std::string(message));
 }
 
-bool BlockDecoder::notInteger(const Word& w, double v, const char* what) const {
-    return error(w, "NOT_AN_INTEGER",
+bool BlockDecoder::evaluated(std::int32_t expr, std::uint16_t column, double& out) const {
+    EvaluationError e;
+    if (evaluator_.evaluate(t_.program, expr, out, e)) return true;
+    return error(column, e.code, e.message);
+}
+
+bool BlockDecoder::notInteger(std::uint16_t column, double v, const char* what) const {
+    return error(column, "NOT_AN_INTEGER",
                  std::string(what) + " needs a whole number >= 0, got " + std::to_string(v));
 }
 
-bool BlockDecoder::twice(const Word& w, const std::string& what) const {
-    return error(w, "WORD_TWICE", what + " programmed twice in one block");
+bool BlockDecoder::twice(std::uint16_t column, std::string_view what) const {
+    return error(column, "WORD_TWICE", std::string(what) + " programmed twice in one block");
 }
 
-bool BlockDecoder::badG(const Word& w, int number, const GCodeInfo& info, int other) const {
+bool BlockDecoder::axisFunctionConflict(std::uint16_t column, int number) const {
+    return error(column, "G_GROUP_CONFLICT",
+                 "G" + std::to_string(t_.input.axisFunction) + " and G" + std::to_string(number) +
+                     " cannot share a block");
+}
+
+bool BlockDecoder::noSpindle(std::uint16_t column, int slot) const {
+    return error(
+        column, "AXIS_UNKNOWN",
+        "S" + std::to_string(slot) + ": this process has no spindle " + std::to_string(slot));
+}
+
+bool BlockDecoder::badG(std::uint16_t column, int number, const GCodeInfo& info, int other) const {
     const std::string name = "G" + std::to_string(number);
-    if (info.kind == GKind::Unknown) return error(w, "UNKNOWN_G", name + " is not a G function");
+    if (info.kind == GKind::Unknown)
+        return error(column, "UNKNOWN_G", name + " is not a G function");
     if (info.kind == GKind::Unsupported)
-        return error(w, "G_NOT_SUPPORTED", name + " is not executed by this simulator");
-    return error(w, "G_GROUP_CONFLICT",
+        return error(column, "G_NOT_SUPPORTED", name + " is not executed by this simulator");
+    return error(column, "G_GROUP_CONFLICT",
                  name + " and G" + std::to_string(other) + " belong to the same group " +
                      std::to_string(info.group));
 }
 
-bool BlockDecoder::badAxis(const Word& w, const AxisLookup& found) const {
+bool BlockDecoder::badAxis(NumberWord w, AxisLookup found) const {
     const std::string written = AxisName{w.letter, w.axisIndex}.toString();
     switch (found.status) {
         case AxisNameStatus::InactiveDesignation2:
-            return error(w, "AXIS_DESIGNATION2_INACTIVE",
+            return error(w.column, "AXIS_DESIGNATION2_INACTIVE",
                          written +
                              " is an axis designation 2; it is valid only while G31 or "
                              "G32 is active");
         case AxisNameStatus::TransformedRotary:
-            return error(w, "AXIS_TRANSFORMED",
+            return error(w.column, "AXIS_TRANSFORMED",
                          written + " spans the transformed plane; use its axis designation 2 " +
                              axes_.axis(found.axis).designation2.toString());
         default:
-            return error(w, "AXIS_UNKNOWN", "this process has no axis " + written);
+            return error(w.column, "AXIS_UNKNOWN", "this process has no axis " + written);
     }
 }
 
-void BlockDecoder::designationOneWarning(const Word& w, const AxisLookup& found) const {
+void BlockDecoder::designationOneWarning(NumberWord w, AxisLookup found) const {
     t_.diagnostics.warning(
         "AXIS_DESIGNATION1_IN_TRANSFORMATION", blockLocation(t_.program, t_.blockIndex, w.column),
         AxisName{w.letter, w.axisIndex}.toString() +

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <string>
+#include <string_view>
 
 #include "cnc_core/interp/BlockInput.h"
 #include "cnc_core/interp/ExpressionEvaluator.h"
@@ -39,27 +40,30 @@ class BlockDecoder {
     bool decode(const Block& block) const;
 
   private:
-    bool word(const Word& w, std::uint32_t index) const;
-    bool value(const Word& w, double& out) const {
+    /// A word the 8-byte form does not hold (expressions, jumps, commands, ...).
+    bool wholeWord(std::uint32_t index) const;
+    bool numberWord(const NumberWord& w) const;
+    bool value(const NumberWord& w, double& out) const {
         if (w.expr < 0) {
             out = w.number;
             return true;
         }
-        return evaluated(w, out);
+        return evaluated(w.expr, w.column, out);
     }
-    bool integer(const Word& w, double v, int& out, const char* what) const {
+    bool value(const Word& w, double& out) const { return value(numberWordOf(w), out); }
+    bool integer(std::uint16_t column, double v, int& out, const char* what) const {
         if (v >= 0 && v <= 1e8 && v == static_cast<double>(static_cast<int>(v))) {
             out = static_cast<int>(v);
             return true;
         }
-        return notInteger(w, v, what);
+        return notInteger(column, v, what);
     }
-    bool gWord(const Word& w) const;
-    bool auxWord(const Word& w) const;
-    bool spindleWord(const Word& w) const;
-    bool scalarWord(const Word& w) const;
-    bool axisWord(const Word& w) const;
-    bool centerWord(const Word& w) const;
+    bool gWord(const NumberWord& w) const;
+    bool auxWord(const NumberWord& w) const;
+    bool spindleWord(const NumberWord& w) const;
+    bool scalarWord(const NumberWord& w) const;
+    bool axisWord(const NumberWord& w) const;
+    bool centerWord(const NumberWord& w) const;
     bool assignment(const Word& w) const;
     bool machineDataAssignment(const Word& w) const;
     bool jumpWord(const Word& w, std::uint32_t index) const;
@@ -68,13 +72,18 @@ class BlockDecoder {
     bool stallRecording(const Word& w) const;
 
     // Error paths (cold).
-    bool evaluated(const Word& w, double& out) const;
-    bool notInteger(const Word& w, double v, const char* what) const;
-    bool badG(const Word& w, int number, const GCodeInfo& info, int other) const;
-    bool badAxis(const Word& w, const AxisLookup& found) const;
-    void designationOneWarning(const Word& w, const AxisLookup& found) const;
-    bool twice(const Word& w, const std::string& what) const;
-    bool error(const Word& w, const std::string& code, const std::string& message) const;
+    bool evaluated(std::int32_t expr, std::uint16_t column, double& out) const;
+    bool notInteger(std::uint16_t column, double v, const char* what) const;
+    bool badG(std::uint16_t column, int number, const GCodeInfo& info, int other) const;
+    // By value: the hot callers keep their word in registers.
+    bool badAxis(NumberWord w, AxisLookup found) const;
+    void designationOneWarning(NumberWord w, AxisLookup found) const;
+    bool twice(std::uint16_t column, std::string_view what) const;
+    bool axisFunctionConflict(std::uint16_t column, int number) const;
+    bool noSpindle(std::uint16_t column, int slot) const;
+    bool error(std::uint16_t column, const std::string& code, const std::string& message) const;
+    /// The same for fixed texts: the hot word handlers build no string.
+    bool error(std::uint16_t column, const char* code, const char* message) const;
 
     const ProcessAxes& axes_;
     const AxisNameTable& names_;

@@ -157,6 +157,10 @@ bool BlockExecutor::transformationOn(const BlockContext& c, const BlockInput& in
 }
 
 void BlockExecutor::explicitGroups(const BlockInput& in, ModalState& next) const {
+    constexpr std::uint32_t kExplicitMask = (1u << kGroupInterpolation) | (1u << kGroupZeroOffset) |
+                                            (1u << kGroupRadiusDiameter) |
+                                            (1u << kGroupSurfaceSpeed);
+    if (!(in.gMask & kExplicitMask)) return;
     for (int group :
          {kGroupInterpolation, kGroupZeroOffset, kGroupRadiusDiameter, kGroupSurfaceSpeed})
         if (in.g[static_cast<size_t>(group)] >= 0)

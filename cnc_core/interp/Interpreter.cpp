@@ -280,7 +280,11 @@ bool Interpreter::checkedBlock(const Program& program, std::uint32_t index,
     planSynced_ = false;
     const BlockDecoder decoder(axes_, names_, evaluator_, {program, index, input_, diagnostics});
     if (!decoder.decode(block_)) return false;
-    afcInvolved_ = adaptiveFeedInvolved();  // the commit asks again: once per block
+    // Asked once per block (the commit asks again); without a control and
+    // its words in the block the answer is no.
+    afcInvolved_ =
+        (afc_ || input_.adaptiveFeed != 0 || input_.idleMeasurement || input_.stallRecording) &&
+        adaptiveFeedInvolved();
     return executor_.plan(context, input_, state_, plan_) && planFlow(context) &&
            (input_.mtdCount == 0 && input_.writeCount == 0 ? true : validateMachineData(context)) &&
            (!afcInvolved_ || planAdaptiveFeed(context)) &&

@@ -4,6 +4,7 @@
 
 #include "cnc_core/afc/AdaptiveFeedControl.h"
 #include "cnc_core/interp/Interpreter.h"
+#include "cnc_core/text/Digits.h"
 
 namespace mtc::core {
 namespace {
@@ -12,14 +13,16 @@ constexpr double kInch = 25.4;
 
 /// Writes `value` with at least four digits at `out` (0..99,999,999); returns the end.
 char* fourDigits(int value, char* out) {
+    if (value < 10000) {
+        writeFourDigits(out, value);
+        return out + 4;
+    }
     char reversed[12];
     int count = 0;
     do {
         reversed[count++] = static_cast<char>('0' + value % 10);
         value /= 10;
     } while (value > 0 && count < 11);
-    for (int pad = count; pad < 4; ++pad)
-        *out++ = '0';
     while (count > 0)
         *out++ = reversed[--count];
     return out;
@@ -33,12 +36,9 @@ void formatBlockId(const Block& block, std::string& out) {
         return;
     }
     if (number < 10000 && block.subNumber < 0) {  // the usual case: write in place
-        out.resize(5);
+        if (out.size() != 5) out.assign(5, 'N');
         out[0] = 'N';
-        out[1] = static_cast<char>('0' + number / 1000);
-        out[2] = static_cast<char>('0' + number / 100 % 10);
-        out[3] = static_cast<char>('0' + number / 10 % 10);
-        out[4] = static_cast<char>('0' + number % 10);
+        writeFourDigits(&out[1], number);
         return;
     }
     char text[32];
@@ -96,7 +96,7 @@ Interpreter::Outcome Interpreter::commit(const Program& program, std::uint32_t i
         state_.lastQ = plan_.lastQ;
     }
     if (transformationChanged) rebuildNames();
-    compensation_.beginOutputs(options_.output.motion);
+    if (compensation_.planned()) compensation_.beginOutputs(options_.output.motion);
     const BlockInput& in = input_;
     if (in.spindleMask != 0 || in.hasTool || in.hasEdge || in.mCount != 0 || in.qCount != 0)
         emitAux(program, index);
@@ -111,7 +111,8 @@ Interpreter::Outcome Interpreter::commit(const Program& program, std::uint32_t i
         plan_.programControl == 0 || (plan_.programControl == 1 && options_.optionalStop);
     // A tool path that turns out to cross an earlier one at a stop: the block
     // is done, the run stops after it (check mode goes on).
-    const bool compensationOk = compensation_.endBlock(stopping, diagnostics);
+    const bool compensationOk =
+        !compensation_.planned() || compensation_.endBlock(stopping, diagnostics);
     switch (plan_.programControl) {
         case 2:
         case 30:
@@ -195,9 +196,11 @@ void Interpreter::emitMotion(const Program& program, std::uint32_t index) {
     m.transformAxis2 =
         state_.modal.transformation.active() ? state_.modal.transformation.planeAxis(1) : -1;
     m.zeroOffset = state_.modal.g[kGroupZeroOffset];
-    const MotionPlanner planner(&axes_, zeroOffsets_.get());
+    // MotionPlanner::offsetOf per axis; G53 (no zero offset) is 0 for every axis.
+    const int offset = m.zeroOffset;
     for (int a = 0; a < m.axisCount && a < kMaxAxes; ++a)
-        m.zeroOffsetValues[static_cast<std::size_t>(a)] = planner.offsetOf(state_.modal, a);
+        m.zeroOffsetValues[static_cast<std::size_t>(a)] =
+            offset == 53 ? 0.0 : zeroOffsets_->value(offset, state_.modal.plane.definitionOf(a));
     m.radialAxis = -1;
     for (int a = 0; a < m.axisCount && m.radialAxis < 0; ++a)
         if (!axes_.axis(a).rotary && state_.modal.plane.definitionOf(a) == AxisDefinition::X)

@@ -7,7 +7,7 @@ namespace mtc::core {
 
 namespace {
 
-GCodeInfo classify(int number) {
+constexpr GCodeInfo classify(int number) {
     switch (number) {
         case 0:
         case 1:
@@ -92,7 +92,8 @@ GCodeInfo classify(int number) {
 }  // namespace
 
 const std::array<GCodeInfo, 100>& gCodeTable() {
-    static const std::array<GCodeInfo, 100> table = [] {
+    // Built at compile time: no initialisation guard on the decoder's path.
+    static constexpr std::array<GCodeInfo, 100> table = [] {
         std::array<GCodeInfo, 100> t{};
         for (int g = 0; g < 100; ++g)
             t[static_cast<std::size_t>(g)] = classify(g);

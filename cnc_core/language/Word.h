@@ -90,4 +90,20 @@ struct Word {
     TextSpan args;           ///< Command: raw arguments without the keyword
 };
 
+/// The part of a Word that a number word (G M Q S T E F D, axis, I J K, RI)
+/// needs: its value is `number`, or the expression `expr` when that is >= 0.
+struct NumberWord {
+    WordKind kind = WordKind::G;
+    char letter = 0;
+    std::uint8_t axisIndex = 0;
+    std::uint16_t column = 0;
+    std::int32_t expr = -1;
+    double number = 0.0;
+};
+
+/// The number part of `word`.
+inline NumberWord numberWordOf(const Word& word) {
+    return {word.kind, word.letter, word.axisIndex, word.column, word.expr, word.number};
+}
+
 }  // namespace mtc::core

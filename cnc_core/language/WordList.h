@@ -59,6 +59,23 @@ class WordList {
         out.flags = 0;
         out.args = {};
     }
+    /// The word at `index` when the 8-byte form holds it (a plain number such
+    /// as G1, X10.5 or F1000: no expression, text or event) into `out`
+    /// (`expr` = -1); false for any other word, which read() gives whole.
+    /// The interpreter decodes through it without building a Word.
+    bool readNumber(std::size_t index, NumberWord& out) const {
+        const Packed& p = packed_[index];
+        if (p.bits & kExtendedBit) return false;
+        out.kind = static_cast<WordKind>(p.kind);
+        out.letter = static_cast<char>(p.letter);
+        out.axisIndex = p.bits & 3u;
+        out.column = p.column;
+        out.expr = -1;
+        const unsigned scale = (p.bits >> 2) & 7u;
+        out.number = scale == 0 ? static_cast<double>(p.payload)
+                                : static_cast<double>(p.payload) / kPow10[scale];
+        return true;
+    }
     const Word back() const { return (*this)[size() - 1]; }
     const Word front() const { return (*this)[0]; }
     const_iterator begin() const;
