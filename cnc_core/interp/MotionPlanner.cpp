@@ -52,6 +52,14 @@ std::string shortNumber(double value) {
          "difference " + format(r2 - r1) + " mm, tolerance " + format(arcTolerance) + " mm"});
 }
 
+/// The path feed in mm/min: F, under G95 F times the reference spindle's
+/// speed. plan() checks it; arc() needs it earlier, for its time bound.
+double pathFeedOf(const ModalState& next) {
+    const double feed = next.feed;
+    if (next.g[kGroupFeedType] != 95) return feed;
+    return feed * next.spindleSpeed[static_cast<size_t>(next.referenceSpindle)];
+}
+
 /// What an arc's axis time is worked out from: start, end and centre (work
 /// coordinates of the plane axes), radii at start and end, the sweep, the
 /// helical axes' time and the plane axes' seconds per unit.
@@ -200,14 +208,11 @@ bool MotionPlanner::plan(const BlockContext& context, const BlockInput& input,
     }
     const bool perRevolution = next.g[kGroupFeedType] == 95;
     if (perRevolution && !feedPerRevolutionAxes(context, input, next, moved)) return false;
-    const double speed = next.spindleSpeed[static_cast<size_t>(next.referenceSpindle)];
-    plan.feedRate = perRevolution ? next.feed * speed : next.feed;
+    plan.feedRate = pathFeedOf(next);
     if (next.feed <= 0.0 || plan.feedRate < kMinimumFeed)
         return feedError(context, g, next.feed, plan.feedRate);
-    if (plan.feedRate != feedCache_.feed) {  // the feed changes far less often than blocks
-        feedCache_.feed = plan.feedRate;
-        feedCache_.secondsPerUnit = 60.0 / plan.feedRate;
-    }
+    if (plan.feedRate != feedCache_.feed)  // the feed changes far less often than blocks
+        feedCache_ = {plan.feedRate, 60.0 / plan.feedRate};
     // No axis moves faster than its max_velocity (MOT-003): F60000 on a
     // 30000 mm/min axis takes the time of 30000 mm/min.
     next.time += std::max(length * feedCache_.secondsPerUnit, axisSeconds);
@@ -327,12 +332,8 @@ bool MotionPlanner::arc(const BlockContext& context, const BlockInput& input,
     length = helix == 0.0 ? r1 * angle : std::sqrt(r1 * angle * r1 * angle + helix);
     // The feed's time as plan() works it out (feedCache_ as there; a feed
     // it refuses gives an error after this, whatever the figure).
-    const double speed = next.spindleSpeed[static_cast<size_t>(next.referenceSpindle)];
-    const double feed = next.g[kGroupFeedType] == 95 ? next.feed * speed : next.feed;
-    if (feed != feedCache_.feed) {
-        feedCache_.feed = feed;
-        feedCache_.secondsPerUnit = 60.0 / feed;
-    }
+    const double feed = pathFeedOf(next);
+    if (feed != feedCache_.feed) feedCache_ = {feed, 60.0 / feed};
     const double signedSweep = plan.motionType == MotionType::ArcCW ? -angle : angle;
     const double perUnit1 = secondsPerPlaneUnit(next, p1), perUnit2 = secondsPerPlaneUnit(next, p2);
     const ArcFigures figures{s1, s2,    e1,          e2,           centre[0], centre[1], r1,
