@@ -8,6 +8,7 @@
 
 #include "cnc_core/geometry/ArcSweep.h"
 #include "cnc_core/language/CheckedNumber.h"
+#include "cnc_core/text/Decimal.h"
 #include "cnc_core/text/Numbers.h"
 
 namespace mtc::core {
@@ -80,8 +81,6 @@ std::size_t wordEnd(const std::string& text, std::size_t begin) {
 /// doubles, so the division rounds as from_chars does. Returns nullptr for
 /// any other text.
 const char* plainDecimal(const char* first, const char* last, double& value) {
-    constexpr double kPowers[] = {1e0, 1e1, 1e2,  1e3,  1e4,  1e5,  1e6,  1e7,
-                                  1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15};
     std::int64_t digits = 0;
     int count = 0, decimals = -1;
     const char* p = first;
@@ -97,7 +96,7 @@ const char* plainDecimal(const char* first, const char* last, double& value) {
         }
     }
     if (count == 0 || count > 15 || (p != last && *p != ' ')) return nullptr;
-    value = static_cast<double>(digits) / kPowers[decimals < 0 ? 0 : decimals];
+    value = exactDecimal(digits, static_cast<unsigned>(decimals < 0 ? 0 : decimals));
     return p;
 }
 

@@ -4,20 +4,15 @@
 #include <cmath>
 #include <string>
 
+#include "cnc_core/text/Decimal.h"
+
 namespace mtc::core {
-
-namespace {
-
-constexpr double kPow10[19] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,  1e8, 1e9,
-                               1e10, 1e11, 1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18};
-
-}  // namespace
 
 double NumberText::value(std::string_view source) const {
     // Exact small cases: mantissa < 2^53 and 10^scale exact -> one correctly
     // rounded division gives the same double as parsing the text.
     if (exact && mantissa < (std::int64_t{1} << 53) && scale < 19)
-        return static_cast<double>(mantissa) / kPow10[scale];
+        return exactDecimal(mantissa, scale);
     double result = 0.0;
     std::string_view digits = source.substr(begin, end - begin);
     // from_chars does not accept a trailing '.', which NC allows ("12.").
