@@ -4,6 +4,7 @@
 // and motion output switched off (the restart computing process, --no-motion).
 #include <benchmark/benchmark.h>
 
+#include <cstdint>
 #include <string>
 
 #include "bench/BenchPrograms.h"
@@ -21,8 +22,60 @@ const Fixture& fixture() {
     return f;
 }
 
+/// Folds every field of every move into one number (FNV-1a): the check
+/// run's moves against the measured path's, without keeping a million.
+class HashSink : public NullSink {
+  public:
+    void motion(const Motion& m) override {
+        add(m.where.program);
+        for (char c : m.where.block)
+            add(c);
+        add(m.where.line, m.type, m.axisCount, m.start, m.end, m.planeAxis1, m.planeAxis2);
+        add(m.center1, m.center2, m.fullCircle, m.feed, m.transformation, m.effectiveRadius);
+        add(m.transformAxis1, m.transformAxis2, m.blockIndex, m.compensated, m.inserted);
+        add(m.programmedEnd, m.toolOffset, m.exactStop, m.blendCorners, m.zeroOffset);
+        add(m.zeroOffsetValues, m.radialAxis, m.diameter);
+    }
+    std::uint64_t hash = 14695981039346656037ull;
+
+  private:
+    template <typename... T>
+    void add(const T&... values) {
+        (bytes(&values, sizeof values), ...);
+    }
+    void bytes(const void* data, std::size_t size) {
+        const auto* p = static_cast<const unsigned char*>(data);
+        for (std::size_t i = 0; i < size; ++i)
+            hash = (hash ^ p[i]) * 1099511628211ull;
+    }
+};
+
+/// One run of the program: its moves' hash and the final modal state (G
+/// groups, positions, feed, time) as text.
+std::string checkRun(const Fixture& f, bool shortcuts) {
+    HashSink sink;
+    Interpreter interpreter(*f.cell.process(0), f.store, sink);
+    interpreter.options().shortcuts = shortcuts;
+    interpreter.select(1);
+    const RunResult result = interpreter.run();
+    const ModalState& m = interpreter.state().modal;
+    std::string text = std::to_string(sink.hash) + " " + std::to_string(result.blocksInterpreted);
+    for (auto g : m.g)
+        text += " " + std::to_string(g);
+    for (int a = 0; a < kMaxAxes; ++a)
+        text += " " + std::to_string(m.work[static_cast<std::size_t>(a)]) + " " +
+                std::to_string(m.machine[static_cast<std::size_t>(a)]);
+    return text + " " + std::to_string(m.feed) + " " + std::to_string(m.time);
+}
+
 void interpret(benchmark::State& state, bool motion) {
     const Fixture& f = fixture();
+    // Once: the measured path (shortcuts of the usual block, I-022) gives
+    // the general path's moves and state on this program.
+    if (checkRun(f, true) != checkRun(f, false)) {
+        state.SkipWithError("the shortcuts change the run");
+        return;
+    }
     NullSink sink;
     Interpreter interpreter(*f.cell.process(0), f.store, sink);
     interpreter.options().output.motion = motion;

@@ -41,12 +41,23 @@ bool BlockExecutor::plan(const BlockContext& c, const BlockInput& in, const Inte
     plan.programControl = -1;
     plan.auxChanged = false;
     ModalState& next = plan.next;
-    if (in.gMask != 0 || in.hasRadius) {
+    // The usual block programs only G0..G3 of the modal groups and only F of
+    // the scalar words: what modalGroups() and scalars() do then, without
+    // the calls (InterpShortcuts.* compare with setup_.shortcuts off).
+    constexpr std::uint32_t kInterpolationOnly = 1u << kGroupInterpolation;
+    const bool shortcuts = setup_.shortcuts;
+    if (shortcuts && in.gMask == kInterpolationOnly && !in.hasRadius) {
+        next.g[kGroupInterpolation] = in.g[kGroupInterpolation];
+    } else if (in.gMask != 0 || in.hasRadius) {
         if (!modalGroups(c, in, state.modal, next, state.reentry.valid)) return false;
     }
-    const bool scalarWords = in.dwell || in.hasFeed || in.hasTool || in.hasEdge ||
-                             in.hasCorrection || in.spindleMask != 0;
-    if (scalarWords && !scalars(c, in, plan)) return false;
+    const bool otherScalars =
+        in.dwell || in.hasTool || in.hasEdge || in.hasCorrection || in.spindleMask != 0;
+    if (shortcuts && !otherScalars && in.hasFeed) {
+        next.feed = in.feed * (next.g[kGroupUnits] == 70 ? kInch : 1.0);
+    } else if ((otherScalars || in.hasFeed) && !scalars(c, in, plan)) {
+        return false;
+    }
     if ((in.mCount != 0 || in.qCount != 0) && !auxiliaries(c, in, state, plan)) return false;
     if (in.axisFunction != 0) return axisFunction(c, in, state, plan);
     if (in.axisMask == 0 || in.g[kGroupPlane] == 20) return true;

@@ -32,6 +32,7 @@ class BlockExecutor {
         const GGroupValues* defaults = nullptr;
         const std::array<std::uint8_t, 1000>* mGroupOf = nullptr;  ///< M number -> group 1..16
         double arcTolerance = 0.002;
+        bool shortcuts = true;  ///< InterpreterOptions::shortcuts
     };
 
     explicit BlockExecutor(const Setup& setup)
@@ -42,8 +43,12 @@ class BlockExecutor {
     /// false when the block must be rejected (errors added through `context`).
     bool plan(const BlockContext& context, const BlockInput& input, const InterpreterState& state,
               BlockPlan& plan) const;
-    /// Sets the arc end-point tolerance in mm.
-    void setArcTolerance(double tolerance) { setup_.arcTolerance = tolerance; }
+    /// Sets the arc end-point tolerance in mm and whether the usual block may
+    /// take the shortcuts (InterpreterOptions::shortcuts).
+    void setOptions(double arcTolerance, bool shortcuts) {
+        setup_.arcTolerance = arcTolerance;
+        setup_.shortcuts = shortcuts;
+    }
 
   private:
     /// G words (and RI): plain groups, G30, plane, G31/G32, explicit groups.

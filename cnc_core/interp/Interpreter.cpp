@@ -219,6 +219,38 @@ RunResult Interpreter::run(std::uint64_t budget) {
     }
 }
 
+bool Interpreter::syntaxError(const BlockContext& context) const {
+    std::vector<std::string> details;
+    const auto line = block_.line;
+    for (const auto& d : context.program.diagnostics.items())
+        if (d.where.line == static_cast<int>(line)) details.push_back(d.message);
+    return context.error("BLOCK_SYNTAX", "the block has syntax errors and cannot be executed", 0,
+                         details);
+}
+
+// Inline in executeNext (one call less per block); the error path is out of line.
+[[gnu::always_inline]] inline bool Interpreter::checkedBlock(const Program& program,
+                                                             std::uint32_t index,
+                                                             DiagnosticList& diagnostics) {
+    const BlockContext context{program, index, diagnostics};
+    if (block_.flags & kBlockHasError) return syntaxError(context);
+    executor_.setOptions(options_.arcTolerance, options_.shortcuts);
+    if (!planSynced_) plan_.next = state_.modal;
+    planSynced_ = false;
+    const BlockDecoder decoder(axes_, names_, evaluator_, {program, index, input_, diagnostics});
+    if (!decoder.decode(block_)) return false;
+    // Asked once per block (the commit asks again); without a control and
+    // its words in the block the answer is no.
+    afcInvolved_ =
+        (afc_ || input_.adaptiveFeed != 0 || input_.idleMeasurement || input_.stallRecording) &&
+        adaptiveFeedInvolved();
+    return executor_.plan(context, input_, state_, plan_) && planFlow(context) &&
+           (input_.mtdCount == 0 && input_.writeCount == 0 ? true : validateMachineData(context)) &&
+           (!afcInvolved_ || planAdaptiveFeed(context)) &&
+           (axisTransfer_ == nullptr || planAxisOwnership(context)) &&
+           (!compensation_.involved(state_.modal, plan_.next) || planCompensation(context));
+}
+
 Interpreter::Outcome Interpreter::executeNext(DiagnosticList& diagnostics,
                                               std::uint64_t& executed) {
     if (!axisWaits_.empty()) {  // a GAX waits for the holder's FAX
@@ -262,34 +294,6 @@ Interpreter::Outcome Interpreter::executeNext(DiagnosticList& diagnostics,
         if (outcome == Outcome::Continue) return Outcome::Stopped;
     }
     return outcome;
-}
-
-bool Interpreter::checkedBlock(const Program& program, std::uint32_t index,
-                               DiagnosticList& diagnostics) {
-    const BlockContext context{program, index, diagnostics};
-    if (block_.flags & kBlockHasError) {
-        std::vector<std::string> details;
-        const auto line = block_.line;
-        for (const auto& d : program.diagnostics.items())
-            if (d.where.line == static_cast<int>(line)) details.push_back(d.message);
-        return context.error("BLOCK_SYNTAX", "the block has syntax errors and cannot be executed",
-                             0, details);
-    }
-    executor_.setArcTolerance(options_.arcTolerance);
-    if (!planSynced_) plan_.next = state_.modal;
-    planSynced_ = false;
-    const BlockDecoder decoder(axes_, names_, evaluator_, {program, index, input_, diagnostics});
-    if (!decoder.decode(block_)) return false;
-    // Asked once per block (the commit asks again); without a control and
-    // its words in the block the answer is no.
-    afcInvolved_ =
-        (afc_ || input_.adaptiveFeed != 0 || input_.idleMeasurement || input_.stallRecording) &&
-        adaptiveFeedInvolved();
-    return executor_.plan(context, input_, state_, plan_) && planFlow(context) &&
-           (input_.mtdCount == 0 && input_.writeCount == 0 ? true : validateMachineData(context)) &&
-           (!afcInvolved_ || planAdaptiveFeed(context)) &&
-           (axisTransfer_ == nullptr || planAxisOwnership(context)) &&
-           (!compensation_.involved(state_.modal, plan_.next) || planCompensation(context));
 }
 
 bool Interpreter::planCompensation(const BlockContext& context) {

@@ -76,6 +76,11 @@ struct InterpreterOptions {
     /// moves nothing): G25 / G26 only switch ModalState::adaptiveFeed, ITM and
     /// AXD P-7-3651 measure nothing, instead of AFC_NOT_AVAILABLE.
     bool logicalAdaptiveFeed = false;
+    /// false: every block takes the general functions, none of the shortcuts
+    /// of the usual block (docs/decisions/interpreter.md I-022). The same run
+    /// either way; the reference the shortcuts are checked against (tests,
+    /// the interpretation benchmark's check run).
+    bool shortcuts = true;
 };
 
 /// Stop BEFORE block `block` (index into Program::blocks) of program
@@ -249,6 +254,8 @@ class Interpreter {
 
     Outcome executeNext(DiagnosticList& diagnostics, std::uint64_t& executed);
     bool checkedBlock(const Program& program, std::uint32_t index, DiagnosticList& diagnostics);
+    /// BLOCK_SYNTAX for a block the parser rejected (cold); returns false.
+    [[gnu::cold]] bool syntaxError(const BlockContext& context) const;
     /// Where the program pointer is (the last block when it is past the end).
     SourceLocation currentLocation() const;
     /// Location of the current block (block_) for the sink, without printf.
@@ -261,6 +268,15 @@ class Interpreter {
     void emitAux(const Program& program, std::uint32_t index);
     void sendAux(AuxOutput& out, char type, int spindle, double value, bool forwarded);
     void emitMotion(const Program& program, std::uint32_t index);
+    /// The modal state's frame G groups, plane and transformation are those the
+    /// frame fields of motion_ were filled from (I-022).
+    bool sameMotionFrame() const;
+    /// The move's fields that follow from the frame (zero offset, plane,
+    /// transformation, block transition, radius / diameter).
+    void fillMotionFrame(Motion& m);
+    /// The zero offset of each axis for m.zeroOffset (read from the table,
+    /// which the operator may change between two blocks).
+    void zeroOffsetValues(Motion& m) const;
     void runCommands(const Program& program, std::uint32_t index);
     Outcome applyFlow(const Program& program, std::uint32_t index, DiagnosticList& diagnostics);
     void programEnd(DiagnosticList* diagnostics = nullptr);
@@ -331,6 +347,14 @@ class Interpreter {
     bool afcInvolved_ = false;  ///< adaptiveFeedInvolved() of the block being executed
     FlowPlan flow_;
     Motion motion_;
+    /// What the frame fields of motion_ were filled from (emitMotion).
+    struct MotionFrame {
+        bool valid = false;
+        std::uint64_t groups = 0;  ///< frameGroups() of the G groups
+        PlaneSelection plane;
+        std::array<std::uint64_t, 2> transformation{};  ///< transformationKey()
+    };
+    MotionFrame motionFrame_;
     ExpressionEvaluator evaluator_;
     BlockExecutor executor_;
     ProgramFlow programFlow_;

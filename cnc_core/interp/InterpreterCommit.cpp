@@ -1,6 +1,7 @@
 // Interpreter, second half: committing a checked block (state, outputs
 // through the sink, program flow) and the program-end / reset rules.
 #include <cmath>
+#include <cstring>
 
 #include "cnc_core/afc/AdaptiveFeedControl.h"
 #include "cnc_core/interp/Interpreter.h"
@@ -28,16 +29,15 @@ char* fourDigits(int value, char* out) {
     return out;
 }
 
-/// "N0012" / "N0012:0001" into `out` without printf (called once per move).
-void formatBlockId(const Block& block, std::string& out) {
+/// formatBlockId() for every case but the usual one.
+[[gnu::noinline]] void formatBlockIdInFull(const Block& block, std::string& out) {
     const int number = block.number;
     if (number < 0) {
         out.clear();
         return;
     }
-    if (number < 10000 && block.subNumber < 0) {  // the usual case: write in place
-        if (out.size() != 5) out.assign(5, 'N');
-        out[0] = 'N';
+    if (number < 10000 && block.subNumber < 0) {
+        out.assign(5, 'N');
         writeFourDigits(&out[1], number);
         return;
     }
@@ -50,6 +50,41 @@ void formatBlockId(const Block& block, std::string& out) {
         end = fourDigits(block.subNumber, end);
     }
     out.assign(text, static_cast<std::size_t>(end - text));
+}
+
+/// "N0012" / "N0012:0001" into `out` without printf (called once per move).
+/// The usual case, a four-digit number over the last one, is written in place.
+inline void formatBlockId(const Block& block, std::string& out) {
+    const int number = block.number;
+    if (number >= 0 && number < 10000 && block.subNumber < 0 && out.size() == 5) {
+        out[0] = 'N';
+        writeFourDigits(&out[1], number);
+        return;
+    }
+    formatBlockIdInFull(block, out);
+}
+
+/// The G groups the frame fields of a move follow (zero offset, radius /
+/// diameter, G6/G7, G8/G9), packed into one number.
+std::uint64_t frameGroups(const GGroupValues& g) {
+    auto bits = [&](int group) {
+        return static_cast<std::uint64_t>(
+            static_cast<std::uint16_t>(g[static_cast<std::size_t>(group)]));
+    };
+    return bits(kGroupZeroOffset) | bits(kGroupRadiusDiameter) << 16 |
+           bits(kGroupAcceleration) << 32 | bits(kGroupExactStop) << 48;
+}
+
+/// What the move's fields take from a transformation: kind, plane axes and
+/// the effective radius's bits, packed.
+std::array<std::uint64_t, 2> transformationKey(const Transformation& t) {
+    std::uint64_t radius = 0;
+    const double r = t.effectiveRadius();
+    std::memcpy(&radius, &r, sizeof radius);
+    const auto small = [](int v) {
+        return static_cast<std::uint64_t>(static_cast<std::uint16_t>(v));
+    };
+    return {radius, small(t.kind()) | small(t.planeAxis(0)) << 16 | small(t.planeAxis(1)) << 32};
 }
 
 /// True when a function of the block may go to the sink (an over-estimate
@@ -170,6 +205,17 @@ void Interpreter::emitAux(const Program& program, std::uint32_t index) {
         sendAux(aux, 'Q', 0, in.q[static_cast<size_t>(i)].value, out.q);
 }
 
+// Inline in emitMotion: asked for every move.
+inline bool Interpreter::sameMotionFrame() const {
+    const ModalState& now = state_.modal;
+    const MotionFrame& f = motionFrame_;
+    // Equal bytes are equal values; unequal bytes (-0.0 and 0.0) only recompute.
+    const std::array<std::uint64_t, 2> transformation = transformationKey(now.transformation);
+    return f.valid && f.groups == frameGroups(now.g) && f.transformation[0] == transformation[0] &&
+           f.transformation[1] == transformation[1] &&
+           std::memcmp(&f.plane, &now.plane, sizeof f.plane) == 0;
+}
+
 void Interpreter::emitMotion(const Program& program, std::uint32_t index) {
     Motion& m = motion_;
     m.blockIndex = index;
@@ -178,7 +224,6 @@ void Interpreter::emitMotion(const Program& program, std::uint32_t index) {
     m.where.line = static_cast<int>(block_.line);
     m.where.column = 0;
     m.type = plan_.motionType;
-    m.axisCount = axes_.count();
     m.end = state_.modal.machine;
     const bool arc = m.type == MotionType::ArcCW || m.type == MotionType::ArcCCW;
     m.planeAxis1 = arc ? plan_.planeAxis1 : -1;
@@ -187,6 +232,24 @@ void Interpreter::emitMotion(const Program& program, std::uint32_t index) {
     m.center2 = arc ? plan_.center2 : 0.0;
     m.fullCircle = arc && plan_.fullCircle;
     m.feed = plan_.feedRate;
+    if (!options_.shortcuts || !sameMotionFrame()) {
+        fillMotionFrame(m);
+    } else if (m.zeroOffset != 53) {  // the table may change between two blocks
+        zeroOffsetValues(m);
+    }
+    m.compensated = false;  // tool compensation marks the moves it changes
+    m.inserted = false;
+    compensation_.motion(m, options_.output.motion);
+}
+
+void Interpreter::fillMotionFrame(Motion& m) {
+    const ModalState& now = state_.modal;
+    MotionFrame& f = motionFrame_;
+    f.groups = frameGroups(now.g);
+    std::memcpy(&f.plane, &now.plane, sizeof f.plane);
+    f.transformation = transformationKey(now.transformation);
+    f.valid = true;
+    m.axisCount = axes_.count();
     m.exactStop = state_.modal.g[kGroupExactStop] == 9;
     m.blendCorners = state_.modal.g[kGroupAcceleration] == 7;
     m.transformation = state_.modal.transformation.kind();
@@ -196,19 +259,20 @@ void Interpreter::emitMotion(const Program& program, std::uint32_t index) {
     m.transformAxis2 =
         state_.modal.transformation.active() ? state_.modal.transformation.planeAxis(1) : -1;
     m.zeroOffset = state_.modal.g[kGroupZeroOffset];
-    // MotionPlanner::offsetOf per axis; G53 (no zero offset) is 0 for every axis.
-    const int offset = m.zeroOffset;
-    for (int a = 0; a < m.axisCount && a < kMaxAxes; ++a)
-        m.zeroOffsetValues[static_cast<std::size_t>(a)] =
-            offset == 53 ? 0.0 : zeroOffsets_->value(offset, state_.modal.plane.definitionOf(a));
+    zeroOffsetValues(m);
     m.radialAxis = -1;
     for (int a = 0; a < m.axisCount && m.radialAxis < 0; ++a)
         if (!axes_.axis(a).rotary && state_.modal.plane.definitionOf(a) == AxisDefinition::X)
             m.radialAxis = a;
     m.diameter = state_.modal.g[kGroupRadiusDiameter] == 16;
-    m.compensated = false;  // tool compensation marks the moves it changes
-    m.inserted = false;
-    compensation_.motion(m, options_.output.motion);
+}
+
+void Interpreter::zeroOffsetValues(Motion& m) const {
+    // MotionPlanner::offsetOf per axis; G53 (no zero offset) is 0 for every axis.
+    const int offset = m.zeroOffset;
+    for (int a = 0; a < m.axisCount && a < kMaxAxes; ++a)
+        m.zeroOffsetValues[static_cast<std::size_t>(a)] =
+            offset == 53 ? 0.0 : zeroOffsets_->value(offset, state_.modal.plane.definitionOf(a));
 }
 
 void Interpreter::runCommands(const Program& program, std::uint32_t index) {

@@ -44,13 +44,113 @@ struct GCodeInfo {
     std::int8_t group = 0;
 };
 
-/// Classification table of G0..G99 (built once; see ModalGroups.cpp).
-const std::array<GCodeInfo, 100>& gCodeTable();
+namespace detail {
+
+constexpr GCodeInfo classify(int number) {
+    switch (number) {
+        case 0:
+        case 1:
+        case 2:
+        case 3:
+            return {GKind::Modal, kGroupInterpolation};
+        case 4:
+            return {GKind::Dwell, 0};
+        case 6:
+        case 7:
+            return {GKind::Modal, kGroupAcceleration};
+        case 8:
+        case 9:
+            return {GKind::Modal, kGroupExactStop};
+        case 15:
+        case 16:
+            return {GKind::Modal, kGroupRadiusDiameter};
+        case 17:
+        case 18:
+        case 19:
+        case 20:
+            return {GKind::Modal, kGroupPlane};
+        case 30:
+        case 31:
+        case 32:
+            return {GKind::Modal, kGroupTransformation};
+        case 40:
+        case 41:
+        case 42:
+            return {GKind::Modal, kGroupToolPath};
+        case 47:
+        case 48:
+            return {GKind::Modal, kGroupToolLength};
+        case 53:
+        case 54:
+        case 55:
+        case 56:
+        case 57:
+        case 58:
+        case 59:
+            return {GKind::Modal, kGroupZeroOffset};
+        case 70:
+        case 71:
+            return {GKind::Modal, kGroupUnits};
+        case 90:
+        case 91:
+            return {GKind::Modal, kGroupDimension};
+        case 92:
+            return {GKind::SpeedLimit, 0};
+        case 74:  // homing
+        case 75:  // driving against hard stop
+        case 77:  // REPOS: back to the re-entry point (seed 000, 2.9 / 7)
+            return {GKind::AxisFunction, 0};
+        case 94:
+        case 95:
+            return {GKind::Modal, kGroupFeedType};
+        case 96:
+        case 97:
+            return {GKind::Modal, kGroupSurfaceSpeed};
+        case 25:
+        case 26:  // adaptive feed control (seed 002)
+            return {GKind::AdaptiveFeed, 0};
+        // Named in the seeds, not executed by this simulator (yet):
+        case 33:
+        case 63:
+        case 64:
+        case 65:  // thread cutting, tapping
+        case 50:
+        case 51:
+        case 52:  // programmable / incremental zero offsets
+        case 72:
+        case 73:
+        case 76:
+        case 78:
+        case 79:
+            return {GKind::Unsupported, 0};
+        default:
+            return {GKind::Unknown, 0};
+    }
+}
+
+/// G0..G99 classified at compile time.
+constexpr std::array<GCodeInfo, 100> buildGCodeTable() {
+    std::array<GCodeInfo, 100> t{};
+    for (int g = 0; g < 100; ++g)
+        t[static_cast<std::size_t>(g)] = classify(g);
+    return t;
+}
+
+}  // namespace detail
+
+/// Classification table of G0..G99: a constant, so that the decoder reads it
+/// without a call (and without an initialisation guard).
+inline constexpr std::array<GCodeInfo, 100> kGCodeTable = detail::buildGCodeTable();
+
+/// The same table (kept for callers that take it by reference).
+inline const std::array<GCodeInfo, 100>& gCodeTable() {
+    return kGCodeTable;
+}
 
 /// Classification of G number `number` (0..99; anything else is Unknown).
 inline GCodeInfo gCodeInfo(int number) {
     if (number < 0 || number > 99) return {};
-    return gCodeTable()[static_cast<std::size_t>(number)];
+    return kGCodeTable[static_cast<std::size_t>(number)];
 }
 
 /// The active G function of every group: index = group number, -1 = unused.

@@ -1,0 +1,184 @@
+// The shortcuts of the usual block (docs/decisions/interpreter.md I-022: the
+// G0..G3-only and F-only words without the general functions, the move's
+// frame fields kept while the frame stays) must give exactly the run of the
+// general path (InterpreterOptions::shortcuts off): every field of every
+// output, the diagnostics and the final state.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <sstream>
+#include <string>
+
+#include "InterpTestSupport.h"
+
+using namespace mtc::core;
+using namespace mtc::test;
+namespace fs = std::filesystem;
+
+namespace {
+
+/// Every field of every output as text ("%.17g": no rounding hides a difference).
+class FullSink : public MachineSink {
+  public:
+    void motion(const Motion& m) override {
+        text += "motion " + place(m.where) + " " + std::to_string(static_cast<int>(m.type)) + " n" +
+                std::to_string(m.axisCount) + " b" + std::to_string(m.blockIndex);
+        values("start", m.start);
+        values("end", m.end);
+        text += " plane " + std::to_string(m.planeAxis1) + "," + std::to_string(m.planeAxis2);
+        numbers({m.center1, m.center2, m.feed, m.effectiveRadius});
+        text += " full" + std::to_string(m.fullCircle) + " t" + std::to_string(m.transformation) +
+                " ta" + std::to_string(m.transformAxis1) + "," + std::to_string(m.transformAxis2) +
+                " comp" + std::to_string(m.compensated) + " ins" + std::to_string(m.inserted);
+        values("programmed", m.programmedEnd);
+        values("offset", m.toolOffset);
+        text += " stop" + std::to_string(m.exactStop) + " blend" + std::to_string(m.blendCorners) +
+                " G" + std::to_string(m.zeroOffset);
+        values("zero", m.zeroOffsetValues);
+        text +=
+            " radial" + std::to_string(m.radialAxis) + " dia" + std::to_string(m.diameter) + "\n";
+    }
+    void auxiliary(const AuxOutput& a) override {
+        text += "aux " + place(a.where) + " " + a.type + std::to_string(a.spindle);
+        numbers({a.value});
+        text += "\n";
+    }
+    void dwell(const SourceLocation& where, double seconds) override {
+        text += "dwell " + place(where);
+        numbers({seconds});
+        text += "\n";
+    }
+    void command(const MachineCommand& c) override {
+        text +=
+            "command " + place(c.where) + " " + std::to_string(static_cast<int>(c.keyword)) + "\n";
+    }
+    std::string text;
+
+  private:
+    static std::string place(const SourceLocation& w) {
+        return "P" + std::to_string(w.program) + " " + w.block + " L" + std::to_string(w.line) +
+               " C" + std::to_string(w.column);
+    }
+    void numbers(std::initializer_list<double> list) {
+        for (double v : list) {
+            char buffer[40];
+            std::snprintf(buffer, sizeof buffer, " %.17g", v);
+            text += buffer;
+        }
+    }
+    void values(const char* name, const std::array<double, kMaxAxes>& v) {
+        text += std::string(" ") + name;
+        for (double x : v) {
+            char buffer[40];
+            std::snprintf(buffer, sizeof buffer, " %.17g", x);
+            text += buffer;
+        }
+    }
+};
+
+/// Runs `source` as program 1 of `process` of the demo cell in check mode
+/// (errors skipped, M00 continued): every output, the diagnostics and the
+/// final state. `between` is called before each block (an operator change).
+template <typename Between>
+std::string runOf(const std::string& source, int process, bool shortcuts, Between between) {
+    const MachineConfig& cell = demoCell();
+    const ProcessConfig& config = *cell.process(process);
+    DiagnosticList ignored;
+    auto offsets = std::make_shared<ZeroOffsetTable>(ZeroOffsetTable::build(config, ignored));
+    ProgramStore store;
+    store.put(process, 1, parse(source, 1));
+    FullSink sink;
+    InterpreterServices services;
+    services.zeroOffsets = offsets;
+    Interpreter interpreter(config, store, sink, services);
+    interpreter.options().continueAfterError = true;
+    interpreter.options().shortcuts = shortcuts;
+    EXPECT_TRUE(interpreter.select(1));
+    std::string text;
+    for (int block = 0; block < 10000; ++block) {
+        between(block, *offsets);
+        const RunResult result = interpreter.step();
+        text += diagnosticsText(result.diagnostics);
+        if (result.status != RunStatus::Running && result.status != RunStatus::Stopped) break;
+    }
+    return sink.text + text + stateText(interpreter);
+}
+
+std::string runOf(const std::string& source, int process, bool shortcuts) {
+    return runOf(source, process, shortcuts, [](int, ZeroOffsetTable&) {});
+}
+
+/// Frame changes between moves: zero offsets, plane, exact stop, G7,
+/// inch, incremental, radius compensation, errors in between.
+const char* const kMillProgram =
+    "N0010 G54 G1 X10 Y5 Z2 F1000\n"
+    "N0020 G2 X20 Y15 I20 J5\n"
+    "N0030 G55 G1 X30 Y20\n"
+    "N0040 G9 G1 X31\n"
+    "N0050 G7 X32 F1500\n"
+    "N0060 G53 G0 X0 Y0\n"
+    "N0070 G18 G1 X5 Z5 F800\n"
+    "N0080 G3 X10 Z10 I5 K10\n"
+    "N0090 G17 G70 G1 X1 Y1 F10\n"
+    "N0100 G71 G91 X1 Y1 F500\n"
+    "N0110 G90 G54 X12 Y12\n"
+    "N0120 G1 X13 Y13 F-5\n"
+    "N0130 G1 X14 F600 S1000 M3\n"
+    "N0140 G41 D1 T1 G1 X20 Y20\n"
+    "N0150 G1 X30 Y20\n"
+    "N0160 G2 X40 Y10 I30 J10\n"
+    "N0170 G40 G1 X50 Y0\n"
+    "N0180 G8 G6 G1 X0 Y0 F0\n"
+    "N0190 G4 F0.5\n"
+    "N0200 G1 G56 X1 Y1 F100\n"
+    "N0210 M30\n";
+
+TEST(InterpShortcuts, MillFrameChangesGiveTheGeneralRun) {
+    const std::string fast = runOf(kMillProgram, 0, true);
+    EXPECT_NE(fast.find("motion P1 N0200"), std::string::npos) << fast;
+    EXPECT_NE(fast.find(" G55 "), std::string::npos) << fast;
+    EXPECT_EQ(fast, runOf(kMillProgram, 0, false));
+}
+
+TEST(InterpShortcuts, ZeroOffsetTableChangedBetweenBlocksIsSeen) {
+    const std::string source =
+        "N0010 G54 G1 X10 Y5 F1000\nN0020 G1 X11\nN0030 G1 X12\nN0040 G53 X13\nN0050 G54 "
+        "X14\nN0060 M30\n";
+    auto change = [](int block, ZeroOffsetTable& table) {
+        if (block == 2) table.set(54, AxisDefinition::X, -7.5);
+        if (block == 4) table.set(54, AxisDefinition::Y, 3.25);
+    };
+    const std::string fast = runOf(source, 0, true, change);
+    EXPECT_NE(fast.find(" -7.5 "), std::string::npos) << fast;
+    EXPECT_EQ(fast, runOf(source, 0, false, change));
+}
+
+std::string readFile(const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::stringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+/// Every golden interpreter program (one program of the process its header
+/// names; calls to its other programs are errors here, the same both ways).
+TEST(InterpShortcuts, GoldenProgramsGiveTheGeneralRun) {
+    int programs = 0;
+    std::error_code ec;
+    const fs::path dir = fs::path(MTC_TEST_DATA_DIR) / "interp";
+    for (const auto& entry : fs::directory_iterator(dir, ec)) {
+        if (entry.path().extension() != ".nc") continue;
+        const std::string source = readFile(entry.path());
+        const int process = source.find("; process: 1") != std::string::npos ? 1 : 0;
+        EXPECT_EQ(runOf(source, process, true), runOf(source, process, false))
+            << entry.path().filename();
+        ++programs;
+    }
+    EXPECT_GE(programs, 10);
+}
+
+}  // namespace
