@@ -15,10 +15,6 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kInch = 25.4;
 
-double distance(double dx, double dy) {
-    return std::sqrt(dx * dx + dy * dy);
-}
-
 std::string format(double value) {
     return formatFixed(value, 4);
 }
@@ -50,14 +46,6 @@ std::string shortNumber(double value) {
         {"radius at the start point " + format(r1) + " mm",
          "radius at the end point " + format(r2) + " mm",
          "difference " + format(r2 - r1) + " mm, tolerance " + format(arcTolerance) + " mm"});
-}
-
-/// The path feed in mm/min: F, under G95 F times the reference spindle's
-/// speed. plan() checks it; arc() needs it earlier, for its time bound.
-double pathFeedOf(const ModalState& next) {
-    const double feed = next.feed;
-    if (next.g[kGroupFeedType] != 95) return feed;
-    return feed * next.spindleSpeed[static_cast<size_t>(next.referenceSpindle)];
 }
 
 /// What an arc's axis time is worked out from: start, end and centre (work
@@ -160,8 +148,9 @@ bool MotionPlanner::travelLimit(const BlockContext& context, const BlockInput& i
                          input.axisColumn[static_cast<size_t>(axis)]);
 }
 
-bool MotionPlanner::plan(const BlockContext& context, const BlockInput& input,
-                         const ModalState& current, BlockPlan& plan, double arcTolerance) const {
+bool MotionPlanner::planGeneral(const BlockContext& context, const BlockInput& input,
+                                const ModalState& current, BlockPlan& plan,
+                                double arcTolerance) const {
     ModalState& next = plan.next;
     const bool incremental = next.g[kGroupDimension] == 91;
     for (int i = 0; i < input.axisCount; ++i) {
@@ -206,17 +195,18 @@ bool MotionPlanner::plan(const BlockContext& context, const BlockInput& input,
         }
         length = std::sqrt(length);
     }
-    const bool perRevolution = next.g[kGroupFeedType] == 95;
-    if (perRevolution && !feedPerRevolutionAxes(context, input, next, moved)) return false;
-    plan.feedRate = pathFeedOf(next);
-    if (next.feed <= 0.0 || plan.feedRate < kMinimumFeed)
-        return feedError(context, g, next.feed, plan.feedRate);
-    if (plan.feedRate != feedCache_.feed)  // the feed changes far less often than blocks
-        feedCache_ = {plan.feedRate, 60.0 / plan.feedRate};
-    // No axis moves faster than its max_velocity (MOT-003): F60000 on a
-    // 30000 mm/min axis takes the time of 30000 mm/min.
-    next.time += std::max(length * feedCache_.secondsPerUnit, axisSeconds);
-    return true;
+    return finishMove(context, input, plan, g, moved, length, axisSeconds);
+}
+
+bool MotionPlanner::radiiRefused(const BlockContext& context, const BlockInput& input,
+                                 const ArcGeometry& geometry, double arcTolerance) {
+    if (geometry.r1 < 1e-9)
+        return context.error("ARC_RADIUS_ZERO", "the circle's start point is its centre");
+    return radiusMismatch(context, input, geometry.r1, geometry.r2, arcTolerance);
+}
+
+bool MotionPlanner::feedRefused(const BlockContext& context, int g, double feed, double feedRate) {
+    return feedError(context, g, feed, feedRate);
 }
 
 double MotionPlanner::secondsPerPlaneUnit(const ModalState& next, int axis) const {
@@ -308,15 +298,30 @@ bool MotionPlanner::arc(const BlockContext& context, const BlockInput& input,
         const double v = programmedValue(next, axis, input.center[static_cast<size_t>(k)]);
         centre[slot] = incremental ? centre[slot] + v : v;
     }
-    const double s1 = current.work[static_cast<size_t>(p1)],
-                 s2 = current.work[static_cast<size_t>(p2)];
-    const double e1 = next.work[static_cast<size_t>(p1)], e2 = next.work[static_cast<size_t>(p2)];
-    const double r1 = distance(s1 - centre[0], s2 - centre[1]);
-    const double r2 = distance(e1 - centre[0], e2 - centre[1]);
-    if (r1 < 1e-9)
-        return context.error("ARC_RADIUS_ZERO", "the circle's start point is its centre");
-    if (std::fabs(r1 - r2) > arcTolerance)
-        return radiusMismatch(context, input, r1, r2, arcTolerance);
+    ArcGeometry geometry{p1,
+                         p2,
+                         current.work[static_cast<size_t>(p1)],
+                         current.work[static_cast<size_t>(p2)],
+                         next.work[static_cast<size_t>(p1)],
+                         next.work[static_cast<size_t>(p2)],
+                         centre[0],
+                         centre[1]};
+    geometry.perUnit1 = secondsPerPlaneUnit(next, p1);
+    geometry.perUnit2 = secondsPerPlaneUnit(next, p2);
+    if (!arcRadii(geometry, arcTolerance))
+        return radiiRefused(context, input, geometry, arcTolerance);
+    arcMove(input, current, plan, geometry, arcTolerance, length, axisSeconds);
+    return true;
+}
+
+void MotionPlanner::arcMove(const BlockInput& input, const ModalState& current, BlockPlan& plan,
+                            const ArcGeometry& geometry, double arcTolerance, double& length,
+                            double& axisSeconds) const {
+    ModalState& next = plan.next;
+    const int p1 = geometry.p1, p2 = geometry.p2;
+    const double s1 = geometry.s1, s2 = geometry.s2, e1 = geometry.e1, e2 = geometry.e2;
+    const double r1 = geometry.r1;
+    const double centre[2] = {geometry.c1, geometry.c2};
     // D-016: an end within the radius tolerance of the start closes the circle.
     const bool full = closesCircle(s1, s2, e1, e2, arcTolerance);
     const double angle = std::fabs(
@@ -335,9 +340,10 @@ bool MotionPlanner::arc(const BlockContext& context, const BlockInput& input,
     const double feed = pathFeedOf(next);
     if (feed != feedCache_.feed) feedCache_ = {feed, 60.0 / feed};
     const double signedSweep = plan.motionType == MotionType::ArcCW ? -angle : angle;
-    const double perUnit1 = secondsPerPlaneUnit(next, p1), perUnit2 = secondsPerPlaneUnit(next, p2);
-    const ArcFigures figures{s1, s2,    e1,          e2,           centre[0], centre[1], r1,
-                             r2, angle, signedSweep, helixSeconds, perUnit1,  perUnit2};
+    const double perUnit1 = geometry.perUnit1, perUnit2 = geometry.perUnit2;
+    const ArcFigures figures{s1,           s2,       e1,          e2,    centre[0],
+                             centre[1],    r1,       geometry.r2, angle, signedSweep,
+                             helixSeconds, perUnit1, perUnit2};
     axisSeconds = arcAxisTime(figures, length * feedCache_.secondsPerUnit);
     plan.planeAxis1 = p1;
     plan.planeAxis2 = p2;
@@ -353,7 +359,6 @@ bool MotionPlanner::arc(const BlockContext& context, const BlockInput& input,
         plan.center1 = c1;
         plan.center2 = c2;
     }
-    return true;
 }
 
 }  // namespace mtc::core

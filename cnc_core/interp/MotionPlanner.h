@@ -1,5 +1,7 @@
 #pragma once
 
+#include <cmath>
+
 #include "cnc_core/interp/BlockContext.h"
 #include "cnc_core/interp/BlockInput.h"
 #include "cnc_core/interp/BlockPlan.h"
@@ -23,6 +25,36 @@ namespace mtc::core {
 /// would give a simulated duration that grows with the programmed number.
 inline constexpr double kMinimumFeed = 0.001;
 
+/// What plan() derives from the axis table, G70/G71, G15/G16 and the axis
+/// allocation, for one such combination without a transformation (MOT-025):
+/// built when one of them changes, read by every block in between.
+struct PlanFrame {
+    // Per machine axis, side by side (one index per axis and block):
+    std::array<double, kMaxAxes> inch{};         ///< 25.4 when G70 converts the axis, else 1
+    std::array<double, kMaxAxes> diameter{};     ///< 0.5 when G16 halves it (definition X), else 1
+    std::array<double, kMaxAxes> low{}, high{};  ///< travel limits +- 1e-9; +-inf if not monitored
+    std::array<double, kMaxAxes> secondsPerUnit{};      ///< rapidSecondsPerUnit
+    std::array<std::uint8_t, kMaxAxes> offsetColumn{};  ///< ZeroOffsetTable::column(definition)
+    std::array<std::uint8_t, kMaxAxes> spindleIndex{};  ///< 1..3 for a spindle (rotaryAxisMode)
+    std::uint16_t spindleMask = 0;
+    bool valid = false;
+    /// The G15/G16 and G70/G71 it was built for, as the two adjacent groups.
+    std::uint32_t radiusUnits = 0;
+    PlaneSelection plane;
+    /// Plane axes of an arc (-1 when the plane cannot carry one: missing or rotary).
+    int p1 = -1, p2 = -1;
+    std::array<std::uint8_t, 3> centreSlot{};  ///< I, J, K: 0 = p1, 1 = p2, 2 = outside
+    std::uint8_t centreInPlane = 0;            ///< bit k: centreSlot[k] < 2
+};
+
+/// The path feed in mm/min: F, under G95 F times the reference spindle's
+/// speed. plan() checks it; an arc needs it earlier, for its time bound.
+inline double pathFeedOf(const ModalState& next) {
+    const double feed = next.feed;
+    if (next.g[kGroupFeedType] != 95) return feed;
+    return feed * next.spindleSpeed[static_cast<size_t>(next.referenceSpindle)];
+}
+
 class MotionPlanner {
   public:
     MotionPlanner(const ProcessAxes* axes, const ZeroOffsetTable* offsets)
@@ -36,11 +68,32 @@ class MotionPlanner {
     /// do not move, their programmed coordinates change.
     void recomputeWork(ModalState& modal) const;
     /// Plans the move of the block's axis words into plan.next / plan. The
-    /// block must not be a G20 block. Returns false on an error.
+    /// block must not be a G20 block. Returns false on an error (plan is
+    /// then unspecified: the interpreter refuses the block and discards it).
     bool plan(const BlockContext& context, const BlockInput& input, const ModalState& current,
               BlockPlan& plan, double arcTolerance) const;
+    /// Off: every block takes the general path (the tests compare both).
+    void setFrameCache(bool on) { frameCache_ = on; }
 
   private:
+    /// The general path: every modal state, every error.
+    bool planGeneral(const BlockContext& context, const BlockInput& input,
+                     const ModalState& current, BlockPlan& plan, double arcTolerance) const;
+    bool frameFits(const ModalState& next) const;
+    void buildFrame(const ModalState& next) const;
+    /// The arc of a framed block whose positions are written: centre, radii,
+    /// sweep, time (MotionPlannerFrame.cpp).
+    bool framedArc(const BlockContext& context, const BlockInput& input, const ModalState& current,
+                   BlockPlan& plan, double arcTolerance) const;
+    /// FEED_MISSING, FEED_PER_REVOLUTION_NO_SPEED or FEED_TOO_SMALL (cold).
+    [[gnu::cold]] static bool feedRefused(const BlockContext& context, int g, double feed,
+                                          double feedRate);
+    /// Feed checks and the move's time, shared by both paths.
+    bool finishMove(const BlockContext& context, const BlockInput& input, BlockPlan& plan, int g,
+                    std::uint32_t moved, double length, double axisSeconds) const;
+    /// finishMove() with every check (G95, a feed it may refuse).
+    bool finishChecked(const BlockContext& context, const BlockInput& input, BlockPlan& plan, int g,
+                       std::uint32_t moved, double length, double axisSeconds) const;
     double programmedValue(const ModalState& next, int axis, double value) const;
     void toMachine(const ModalState& current, ModalState& next, std::uint16_t axisMask) const;
     /// Axes whose position the block changes (G31 couples both plane axes).
@@ -56,6 +109,29 @@ class MotionPlanner {
     /// axis needs for its share of the arc at its max_velocity.
     bool arc(const BlockContext& context, const BlockInput& input, const ModalState& current,
              BlockPlan& plan, double arcTolerance, double& length, double& axisSeconds) const;
+    /// An arc's plane axes, start, end and centre (work coordinates), radii
+    /// and the plane axes' seconds per unit (secondsPerPlaneUnit()).
+    struct ArcGeometry {
+        int p1 = -1, p2 = -1;
+        double s1 = 0.0, s2 = 0.0, e1 = 0.0, e2 = 0.0, c1 = 0.0, c2 = 0.0;
+        double r1 = 0.0, r2 = 0.0;
+        double perUnit1 = 0.0, perUnit2 = 0.0;
+    };
+    /// Sets both radii; false when the block must be refused (ARC_RADIUS_ZERO,
+    /// ARC_RADIUS_MISMATCH).
+    static bool arcRadii(ArcGeometry& a, double arcTolerance) {
+        a.r1 = std::sqrt((a.s1 - a.c1) * (a.s1 - a.c1) + (a.s2 - a.c2) * (a.s2 - a.c2));
+        a.r2 = std::sqrt((a.e1 - a.c1) * (a.e1 - a.c1) + (a.e2 - a.c2) * (a.e2 - a.c2));
+        return !(a.r1 < 1e-9) && !(std::fabs(a.r1 - a.r2) > arcTolerance);
+    }
+    /// ARC_RADIUS_ZERO or ARC_RADIUS_MISMATCH (cold).
+    [[gnu::cold]] static bool radiiRefused(const BlockContext& context, const BlockInput& input,
+                                           const ArcGeometry& geometry, double arcTolerance);
+    /// Sweep, length, axis time and the plan's arc fields of a checked arc
+    /// (both paths).
+    void arcMove(const BlockInput& input, const ModalState& current, BlockPlan& plan,
+                 const ArcGeometry& geometry, double arcTolerance, double& length,
+                 double& axisSeconds) const;
     /// Seconds per unit of the move's plane for `axis` at its max_velocity
     /// (under G32 a rotary plane axis in mm of the developed surface, under
     /// G31 both plane coordinates at the linear plane axis's velocity).
@@ -69,6 +145,8 @@ class MotionPlanner {
         double secondsPerUnit = 0.0;
     };
     mutable FeedCache feedCache_;
+    bool frameCache_ = true;
+    mutable PlanFrame frame_;
 };
 
 }  // namespace mtc::core

@@ -2,6 +2,7 @@
 
 #include <array>
 #include <cstdint>
+#include <cstring>
 #include <string>
 #include <vector>
 
@@ -77,6 +78,12 @@ class PlaneSelection {
     int perpendicularAxis() const { return axisOf(planeDefinitions()[2]); }
     /// True when the allocation differs from the base coordinate system.
     bool isBase(const ProcessAxes& axes) const;
+    /// Same plane and same allocation of every definition (one byte compare:
+    /// the motion planner asks it once per block, MOT-025).
+    bool sameAs(const PlaneSelection& other) const {
+        static_assert(sizeof(PlaneSelection) == kDefinitionCount + kMaxAxes + 1, "no padding");
+        return std::memcmp(this, &other, sizeof(PlaneSelection)) == 0;
+    }
 
   private:
     void assign(int axis, AxisDefinition definition);

@@ -29,7 +29,7 @@ ZeroOffsetTable ZeroOffsetTable::build(const ProcessConfig& config, DiagnosticLi
 
 bool ZeroOffsetTable::set(int code, AxisDefinition definition, double offset) {
     if (code < 54 || code > 59 || definition == AxisDefinition::None) return false;
-    values_[static_cast<size_t>(code - 54)][static_cast<size_t>(definition)] = offset;
+    rows_[static_cast<size_t>(code - 53)][static_cast<size_t>(definition)] = offset;
     return true;
 }
 

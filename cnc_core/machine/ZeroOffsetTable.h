@@ -20,14 +20,24 @@ class ZeroOffsetTable {
 
     /// Offset of G`code` (53..59) for `definition`; 0 for G53 or None.
     double value(int code, AxisDefinition definition) const {
-        if (code < 54 || code > 59 || definition == AxisDefinition::None) return 0.0;
-        return values_[static_cast<size_t>(code - 54)][static_cast<size_t>(definition)];
+        return row(code)[column(definition)];
+    }
+    /// The offsets of G`code` by column(): G53 (and a code outside G54..G59)
+    /// a row of 0. The motion planner reads one row per block (MOT-025).
+    const double* row(int code) const {
+        return rows_[code < 54 || code > 59 ? 0 : static_cast<size_t>(code - 53)].data();
+    }
+    /// Column of `definition` in a row(); None has a column that is always 0.
+    static std::size_t column(AxisDefinition definition) {
+        return definition == AxisDefinition::None ? kDefinitionCount
+                                                  : static_cast<std::size_t>(definition);
     }
     /// Changes one entry (operator input); false for a bad code/definition.
     bool set(int code, AxisDefinition definition, double offset);
 
   private:
-    std::array<std::array<double, kDefinitionCount>, 6> values_{};
+    /// Row 0: G53, rows 1..6: G54..G59; the last column stays 0 (None).
+    std::array<std::array<double, kDefinitionCount + 1>, 7> rows_{};
 };
 
 }  // namespace mtc::core
