@@ -21,10 +21,8 @@
 /// like reading a std::vector (`size()`, `operator[]`, range-for, `back()`),
 /// but elements come back BY VALUE as `const Block` / `const Word`: bind them
 /// with `const Block& b = program.blocks[i]` or `auto b = ...`; to change one,
-/// use `set(i, value)`. Common words (a letter and a decimal of at most
-/// 131071 units of its last digit) take 4 bytes, other plain numeric words
-/// 4 + 8, common blocks 12 bytes plus 12 per 64 blocks; everything else
-/// lives in side tables (docs/decisions/language.md, "Memory").
+/// use `set(i, value)`. Common words (a letter and a short decimal) take 8
+/// bytes, common blocks 20 bytes; everything else lives in side tables.
 namespace mtc::core {
 
 /// Expression node. Children are indices into Program::expressions.
