@@ -32,7 +32,7 @@ std::string formatNumber(double value) {
 }  // namespace
 
 bool BlockExecutor::plan(const BlockContext& c, const BlockInput& in, const InterpreterState& state,
-                         BlockPlan& plan) const {
+                         BlockPlan& plan, const PlanningOptions& options) const {
     if (in.repeatedAxisColumn && in.g[kGroupPlane] != 20)
         return c.error("WORD_TWICE", "an axis is programmed twice in one block",
                        in.repeatedAxisColumn);
@@ -43,9 +43,9 @@ bool BlockExecutor::plan(const BlockContext& c, const BlockInput& in, const Inte
     ModalState& next = plan.next;
     // The usual block programs only G0..G3 of the modal groups and only F of
     // the scalar words: what modalGroups() and scalars() do then, without
-    // the calls (InterpShortcuts.* compare with setup_.shortcuts off).
+    // the calls (InterpShortcuts.* compare with options.shortcuts off).
     constexpr std::uint32_t kInterpolationOnly = 1u << kGroupInterpolation;
-    const bool shortcuts = setup_.shortcuts;
+    const bool shortcuts = options.shortcuts;
     if (shortcuts && in.gMask == kInterpolationOnly && !in.hasRadius) {
         next.g[kGroupInterpolation] = in.g[kGroupInterpolation];
     } else if (in.gMask != 0 || in.hasRadius) {
@@ -59,11 +59,11 @@ bool BlockExecutor::plan(const BlockContext& c, const BlockInput& in, const Inte
         return false;
     }
     if ((in.mCount != 0 || in.qCount != 0) && !auxiliaries(c, in, state, plan)) return false;
-    if (in.axisFunction != 0) return axisFunction(c, in, state, plan);
+    if (in.axisFunction != 0) return axisFunction(c, in, state, plan, options);
     if (in.axisMask == 0 || in.g[kGroupPlane] == 20) return true;
     if (in.dwell)
         return c.error("DWELL_WITH_AXES", "G4 cannot be combined with axis words", in.dwellColumn);
-    return motion_.plan(c, in, state.modal, plan, setup_.arcTolerance);
+    return motion_.plan(c, in, state.modal, plan, options);
 }
 
 bool BlockExecutor::modalGroups(const BlockContext& c, const BlockInput& in,
@@ -298,7 +298,8 @@ bool BlockExecutor::auxiliaries(const BlockContext& c, const BlockInput& in,
 }
 
 bool BlockExecutor::axisFunction(const BlockContext& c, const BlockInput& in,
-                                 const InterpreterState& state, BlockPlan& plan) const {
+                                 const InterpreterState& state, BlockPlan& plan,
+                                 const PlanningOptions& options) const {
     const int g = in.axisFunction;
     const int column = in.axisFunctionColumn;
     const std::string name = "G" + std::to_string(g);
@@ -312,7 +313,7 @@ bool BlockExecutor::axisFunction(const BlockContext& c, const BlockInput& in,
     if (g == 75) {  // the simulated drive meets no stop: it reaches the programmed point
         const auto interpolation = next.g[kGroupInterpolation];
         next.g[kGroupInterpolation] = 1;
-        const bool ok = motion_.plan(c, in, state.modal, plan, setup_.arcTolerance);
+        const bool ok = motion_.plan(c, in, state.modal, plan, options);
         next.g[kGroupInterpolation] = interpolation;
         return ok;
     }

@@ -8,6 +8,7 @@
 #include "cnc_core/interp/BlockPlan.h"
 #include "cnc_core/interp/InterpreterState.h"
 #include "cnc_core/interp/MotionPlanner.h"
+#include "cnc_core/interp/PlanningOptions.h"
 #include "cnc_core/machine/MachineConfig.h"
 #include "cnc_core/machine/ProcessAxes.h"
 #include "cnc_core/machine/ZeroOffsetTable.h"
@@ -31,8 +32,6 @@ class BlockExecutor {
         const ToolList* tools = nullptr;  ///< the process's tool list (T must be in it)
         const GGroupValues* defaults = nullptr;
         const std::array<std::uint8_t, 1000>* mGroupOf = nullptr;  ///< M number -> group 1..16
-        double arcTolerance = 0.002;
-        bool shortcuts = true;  ///< InterpreterOptions::shortcuts
     };
 
     explicit BlockExecutor(const Setup& setup)
@@ -42,13 +41,7 @@ class BlockExecutor {
     /// (the interpreter keeps it so, which saves a copy per block). Returns
     /// false when the block must be rejected (errors added through `context`).
     bool plan(const BlockContext& context, const BlockInput& input, const InterpreterState& state,
-              BlockPlan& plan) const;
-    /// Sets the arc end-point tolerance in mm and whether the usual block may
-    /// take the shortcuts (InterpreterOptions::shortcuts).
-    void setOptions(double arcTolerance, bool shortcuts) {
-        setup_.arcTolerance = arcTolerance;
-        setup_.shortcuts = shortcuts;
-    }
+              BlockPlan& plan, const PlanningOptions& options) const;
 
   private:
     /// G words (and RI): plain groups, G30, plane, G31/G32, explicit groups.
@@ -74,7 +67,7 @@ class BlockExecutor {
     /// G74 (homing: to machine 0 within the travel range), G75 (hard stop: a
     /// G1 move to the programmed point) and G77 (REPOS) of the block.
     bool axisFunction(const BlockContext& c, const BlockInput& in, const InterpreterState& state,
-                      BlockPlan& plan) const;
+                      BlockPlan& plan, const PlanningOptions& options) const;
     /// G77: programmed axes to state.reentry (the axis values are placeholders),
     /// programmed spindles back to spindle mode with their re-entry speed.
     bool reposition(const BlockContext& c, const BlockInput& in, const InterpreterState& state,

@@ -68,8 +68,7 @@ Interpreter::Interpreter(const ProcessConfig& config, const ProgramStore& progra
       axisTransfer_(services.axisTransfer),
       evaluator_(
           {&state_, &input_, machineData_.get(), services.otherProcesses, config.index, nullptr}),
-      executor_(
-          {&config_, &axes_, zeroOffsets_.get(), tools_.get(), &defaults_, &mGroupOf_, 0.002}),
+      executor_({&config_, &axes_, zeroOffsets_.get(), tools_.get(), &defaults_, &mGroupOf_}),
       programFlow_(programs, config.index, events_.get()) {
     compensation_.useTools(tools_.get());  // radius, lengths, edges of the process's tool list
     const int plane = config.defaultPlane();
@@ -234,7 +233,6 @@ bool Interpreter::syntaxError(const BlockContext& context) const {
                                                              DiagnosticList& diagnostics) {
     const BlockContext context{program, index, diagnostics};
     if (block_.flags & kBlockHasError) return syntaxError(context);
-    executor_.setOptions(options_.arcTolerance, options_.shortcuts);
     if (!planSynced_) plan_.next = state_.modal;
     planSynced_ = false;
     const BlockDecoder decoder(axes_, names_, evaluator_, {program, index, input_, diagnostics});
@@ -244,7 +242,7 @@ bool Interpreter::syntaxError(const BlockContext& context) const {
     afcInvolved_ =
         (afc_ || input_.adaptiveFeed != 0 || input_.idleMeasurement || input_.stallRecording) &&
         adaptiveFeedInvolved();
-    return executor_.plan(context, input_, state_, plan_) && planFlow(context) &&
+    return executor_.plan(context, input_, state_, plan_, options_) && planFlow(context) &&
            (input_.mtdCount == 0 && input_.writeCount == 0 ? true : validateMachineData(context)) &&
            (!afcInvolved_ || planAdaptiveFeed(context)) &&
            (axisTransfer_ == nullptr || planAxisOwnership(context)) &&

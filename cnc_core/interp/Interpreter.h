@@ -14,6 +14,7 @@
 #include "cnc_core/interp/ExpressionEvaluator.h"
 #include "cnc_core/interp/InterpreterState.h"
 #include "cnc_core/interp/MachineSink.h"
+#include "cnc_core/interp/PlanningOptions.h"
 #include "cnc_core/interp/ProgramFlow.h"
 #include "cnc_core/interp/VariableAccess.h"
 #include "cnc_core/language/Diagnostic.h"
@@ -66,21 +67,17 @@ struct OutputOptions {
     bool commands = true;  ///< MTP, TCH, AXD, ... to MachineSink::command
 };
 
-struct InterpreterOptions {
+/// Options of a run; the planning ones (arcTolerance, shortcuts) are in the
+/// base, which the interpreter hands to BlockExecutor::plan with each block.
+struct InterpreterOptions : PlanningOptions {
     OutputOptions output;
     bool optionalStop = false;        ///< M01 stops like M00
     bool skipBlocks = false;          ///< '/' blocks are skipped (the skip switch)
     bool continueAfterError = false;  ///< check mode: a rejected block is skipped, the run goes on
-    double arcTolerance = 0.002;      ///< mm, radius difference allowed between start and end
     /// Without an adaptive feed control (the restart computing process, which
     /// moves nothing): G25 / G26 only switch ModalState::adaptiveFeed, ITM and
     /// AXD P-7-3651 measure nothing, instead of AFC_NOT_AVAILABLE.
     bool logicalAdaptiveFeed = false;
-    /// false: every block takes the general functions, none of the shortcuts
-    /// of the usual block (docs/decisions/interpreter.md I-022). The same run
-    /// either way; the reference the shortcuts are checked against (tests,
-    /// the interpretation benchmark's check run).
-    bool shortcuts = true;
 };
 
 /// Stop BEFORE block `block` (index into Program::blocks) of program

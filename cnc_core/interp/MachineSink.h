@@ -16,6 +16,14 @@ namespace mtc::core {
 
 enum class MotionType { Rapid, Linear, ArcCW, ArcCCW };
 
+/// The move type of interpolation G0, G1, G2 or G3 (`g` 0..3).
+constexpr MotionType motionTypeOf(int g) {
+    return g == 0   ? MotionType::Rapid
+           : g == 1 ? MotionType::Linear
+           : g == 2 ? MotionType::ArcCW
+                    : MotionType::ArcCCW;
+}
+
 /// Most axes a process can have (the seeds allow 9 feed axes + 3 spindles).
 inline constexpr int kMaxAxes = 12;
 

@@ -172,10 +172,7 @@ bool MotionPlanner::planGeneral(const BlockContext& context, const BlockInput& i
     }
     const int g = next.g[kGroupInterpolation];
     plan.hasMotion = true;
-    plan.motionType = g == 0   ? MotionType::Rapid
-                      : g == 1 ? MotionType::Linear
-                      : g == 2 ? MotionType::ArcCW
-                               : MotionType::ArcCCW;
+    plan.motionType = motionTypeOf(g);
     if (g == 0) {
         plan.feedRate = 0.0;
         next.time += rapidTime(current, next, moved);
@@ -298,16 +295,8 @@ bool MotionPlanner::arc(const BlockContext& context, const BlockInput& input,
         const double v = programmedValue(next, axis, input.center[static_cast<size_t>(k)]);
         centre[slot] = incremental ? centre[slot] + v : v;
     }
-    ArcGeometry geometry{p1,
-                         p2,
-                         current.work[static_cast<size_t>(p1)],
-                         current.work[static_cast<size_t>(p2)],
-                         next.work[static_cast<size_t>(p1)],
-                         next.work[static_cast<size_t>(p2)],
-                         centre[0],
-                         centre[1]};
-    geometry.perUnit1 = secondsPerPlaneUnit(next, p1);
-    geometry.perUnit2 = secondsPerPlaneUnit(next, p2);
+    ArcGeometry geometry(p1, p2, current, next, centre, secondsPerPlaneUnit(next, p1),
+                         secondsPerPlaneUnit(next, p2));
     if (!arcRadii(geometry, arcTolerance))
         return radiiRefused(context, input, geometry, arcTolerance);
     arcMove(input, current, plan, geometry, arcTolerance, length, axisSeconds);

@@ -6,6 +6,7 @@
 #include "cnc_core/interp/BlockInput.h"
 #include "cnc_core/interp/BlockPlan.h"
 #include "cnc_core/interp/InterpreterState.h"
+#include "cnc_core/interp/PlanningOptions.h"
 #include "cnc_core/machine/ProcessAxes.h"
 #include "cnc_core/machine/ZeroOffsetTable.h"
 
@@ -70,10 +71,10 @@ class MotionPlanner {
     /// Plans the move of the block's axis words into plan.next / plan. The
     /// block must not be a G20 block. Returns false on an error (plan is
     /// then unspecified: the interpreter refuses the block and discards it).
+    /// Without options.shortcuts every block takes the general path (the
+    /// tests compare both).
     bool plan(const BlockContext& context, const BlockInput& input, const ModalState& current,
-              BlockPlan& plan, double arcTolerance) const;
-    /// Off: every block takes the general path (the tests compare both).
-    void setFrameCache(bool on) { frameCache_ = on; }
+              BlockPlan& plan, const PlanningOptions& options) const;
 
   private:
     /// The general path: every modal state, every error.
@@ -112,10 +113,24 @@ class MotionPlanner {
     /// An arc's plane axes, start, end and centre (work coordinates), radii
     /// and the plane axes' seconds per unit (secondsPerPlaneUnit()).
     struct ArcGeometry {
-        int p1 = -1, p2 = -1;
-        double s1 = 0.0, s2 = 0.0, e1 = 0.0, e2 = 0.0, c1 = 0.0, c2 = 0.0;
+        /// From `current`'s to `next`'s work position in plane axes p1, p2
+        /// around `centre`; radii are set by arcRadii().
+        ArcGeometry(int plane1, int plane2, const ModalState& current, const ModalState& next,
+                    const double (&centre)[2], double secondsPerUnit1, double secondsPerUnit2)
+            : p1(plane1),
+              p2(plane2),
+              s1(current.work[static_cast<std::size_t>(plane1)]),
+              s2(current.work[static_cast<std::size_t>(plane2)]),
+              e1(next.work[static_cast<std::size_t>(plane1)]),
+              e2(next.work[static_cast<std::size_t>(plane2)]),
+              c1(centre[0]),
+              c2(centre[1]),
+              perUnit1(secondsPerUnit1),
+              perUnit2(secondsPerUnit2) {}
+        int p1, p2;
+        double s1, s2, e1, e2, c1, c2;
         double r1 = 0.0, r2 = 0.0;
-        double perUnit1 = 0.0, perUnit2 = 0.0;
+        double perUnit1, perUnit2;
     };
     /// Sets both radii; false when the block must be refused (ARC_RADIUS_ZERO,
     /// ARC_RADIUS_MISMATCH).
@@ -145,7 +160,6 @@ class MotionPlanner {
         double secondsPerUnit = 0.0;
     };
     mutable FeedCache feedCache_;
-    bool frameCache_ = true;
     mutable PlanFrame frame_;
 };
 

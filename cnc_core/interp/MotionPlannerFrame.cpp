@@ -31,9 +31,11 @@ std::uint32_t radiusUnitsOf(const ModalState& next) {
 }  // namespace
 
 bool MotionPlanner::plan(const BlockContext& context, const BlockInput& input,
-                         const ModalState& current, BlockPlan& plan, double arcTolerance) const {
+                         const ModalState& current, BlockPlan& plan,
+                         const PlanningOptions& options) const {
+    const double arcTolerance = options.arcTolerance;
     ModalState& next = plan.next;
-    if (!frameCache_ || input.repeatedAxisColumn != 0 || next.transformation.active())
+    if (!options.shortcuts || input.repeatedAxisColumn != 0 || next.transformation.active())
         return planGeneral(context, input, current, plan, arcTolerance);
     if (!frameFits(next)) buildFrame(next);
     const int g = next.g[kGroupInterpolation];
@@ -70,10 +72,7 @@ bool MotionPlanner::plan(const BlockContext& context, const BlockInput& input,
         next.rotaryAxisMode[static_cast<size_t>(
             f.spindleIndex[static_cast<size_t>(__builtin_ctz(rest))])] = 1;
     plan.hasMotion = true;
-    plan.motionType = g == 0   ? MotionType::Rapid
-                      : g == 1 ? MotionType::Linear
-                      : g == 2 ? MotionType::ArcCW
-                               : MotionType::ArcCCW;
+    plan.motionType = motionTypeOf(g);
     if (g == 0) {
         plan.feedRate = 0.0;
         next.time += axisSeconds;
@@ -99,16 +98,9 @@ bool MotionPlanner::framedArc(const BlockContext& context, const BlockInput& inp
             input.center[static_cast<size_t>(k)] * frame_.inch[axis] * frame_.diameter[axis];
         centre[slot] = incremental ? centre[slot] + v : v;
     }
-    ArcGeometry geometry{p1,
-                         p2,
-                         current.work[static_cast<size_t>(p1)],
-                         current.work[static_cast<size_t>(p2)],
-                         next.work[static_cast<size_t>(p1)],
-                         next.work[static_cast<size_t>(p2)],
-                         centre[0],
-                         centre[1]};
-    geometry.perUnit1 = frame_.secondsPerUnit[static_cast<size_t>(p1)];
-    geometry.perUnit2 = frame_.secondsPerUnit[static_cast<size_t>(p2)];
+    ArcGeometry geometry(p1, p2, current, next, centre,
+                         frame_.secondsPerUnit[static_cast<size_t>(p1)],
+                         frame_.secondsPerUnit[static_cast<size_t>(p2)]);
     if (!arcRadii(geometry, arcTolerance))
         return radiiRefused(context, input, geometry, arcTolerance);
     double length = 0.0, axisSeconds = 0.0;
