@@ -45,9 +45,9 @@ bool MotionOutput::adaptedMotion(const core::Motion&) {
 
 void MotionOutput::motion(const core::Motion& motion) {
     ++motions_;
+    if (mode_ == MotionMode::None) return;  // adapted_ and stopped_ are the writers'
     adapted_ = adaptedMotion(motion);
     stopped_ = adapted_ && machine_->lastMoveFraction() < 1.0;
-    if (mode_ == MotionMode::None) return;
     const core::Motion* written = &motion;
     core::Motion reached;
     if (stopped_) {  // AFC-012: the record shows where the axes stopped

@@ -12,6 +12,11 @@ void Station::Output::sent(const SourceLocation& where) {
 
 void Station::Output::motion(const Motion& m) {
     sent(m.where);
+    if (!trace && !cut) {  // the CLI: no view follows the moves
+        machine.motion(m);
+        if (listener) listener->motion(m);
+        return;
+    }
     const std::size_t queued = machine.engine().queuedCount();
     machine.motion(m);
     const bool isQueued = machine.engine().queuedCount() > queued;

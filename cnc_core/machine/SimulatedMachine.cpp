@@ -128,7 +128,10 @@ void SimulatedMachine::motion(const Motion& m) {
     const double planned = motionSeconds(m, config_, length);
     lastAdapted_ = false;
     lastFraction_ = 1.0;
-    lastFeed_ = m.type == MotionType::Rapid && planned > 0 ? length / planned * 60.0 : m.feed;
+    if (m.type == MotionType::Rapid && planned > 0)
+        lastFeed_ = {0.0, length, planned, true};
+    else
+        lastFeed_ = {m.feed, 0.0, 0.0, false};
     for (int i = 0; i < m.axisCount && i < kMaxAxes; ++i)
         lastEnd_[static_cast<std::size_t>(i)] = m.end[static_cast<std::size_t>(i)];
     if (afc_ && afc_->available() && planned > 0) {
@@ -161,7 +164,7 @@ double SimulatedMachine::advance(double seconds) {
     return seconds - left;
 }
 
-void SimulatedMachine::collectReached() {
+void SimulatedMachine::moveReachedAux() {
     for (std::uint32_t tag : engine_.takeReached()) {
         if (tag == 0 || pendingAux_.empty()) continue;  // a command, no auxiliary function
         if (aux_.size() == kAuxKept) aux_.erase(aux_.begin());

@@ -137,7 +137,7 @@ class SimulatedMachine : public MachineSink {
     /// controller of G26 over the feed moves and fills `recorder` (may be null).
     void attachAdaptiveFeed(AdaptiveFeedControl* afc, AfcTrendRecorder* recorder);
     /// Mean path feed of the last move, mm/min (after adaptive feed control).
-    double lastMoveFeed() const { return lastFeed_; }
+    double lastMoveFeed() const { return lastFeed_.value(); }
     /// The last move was slowed down by G26.
     bool lastMoveAdapted() const { return lastAdapted_; }
     /// Share of the last move's path the axes travel (< 1: an error of
@@ -168,7 +168,10 @@ class SimulatedMachine : public MachineSink {
     double referenceSpeedFraction(const Motion& motion, double pathFeed, double length) const;
     double accelerationSeconds(const Motion& motion, double feed) const;
     /// Moves the auxiliary functions the engine reached into recentAux().
-    void collectReached();
+    void collectReached() {
+        if (engine_.reachedActions()) moveReachedAux();  // nearly always none
+    }
+    void moveReachedAux();
     /// Trend clock: the queued work ends `seconds` later, counted from the
     /// end of what was queued or from the machine's busy time when the block
     /// was queued, whichever is later. Under a batch it is counted once the
@@ -192,7 +195,16 @@ class SimulatedMachine : public MachineSink {
     /// (start of the next observed move; adaptive moves start at the exact
     /// end of the queue).
     double afcClock_ = 0.0;
-    double lastFeed_ = 0.0;
+    /// Mean path feed of the last move: a ratio is divided out when it is
+    /// read (the CLI without motion output never reads it, MOT-026), with
+    /// the same operations as when it was worked out on every move.
+    struct MoveFeed {
+        double feed = 0.0;  ///< the feed itself when not `ratio`
+        double length = 0.0, seconds = 0.0;
+        bool ratio = false;  ///< length / seconds * 60
+        double value() const { return ratio ? length / seconds * 60.0 : feed; }
+    };
+    MoveFeed lastFeed_;
     bool lastAdapted_ = false;
     double lastFraction_ = 1.0;
     bool lastReportsAfc_ = false;

@@ -57,6 +57,8 @@ double SimulatedMachine::overrideShare(const Motion& m) const {
         m.type == MotionType::Rapid ? engine_.rapidOverride() : engine_.feedOverride();
     // Below 1 % the axes stand until the operator turns the switch up: the
     // course is worked out at 100 % and waits in the queue (rate 0).
+    // 100 % (the usual switch) is 1 exactly, as 100 / 100 (MOT-026).
+    if (percent == 100.0) return 1.0;
     return percent >= 1.0 ? percent / 100.0 : 1.0;
 }
 
@@ -66,7 +68,7 @@ AfcMoveInput SimulatedMachine::afcInput(const Motion& m, double planned, double 
     const double atOverride = overrideShare(m);
     AfcMoveInput move;
     move.length = length;
-    move.feed = (m.type == MotionType::Rapid ? lastFeed_ : m.feed) * atOverride;
+    move.feed = (m.type == MotionType::Rapid ? lastFeed_.value() : m.feed) * atOverride;
     move.plannedSeconds = planned / atOverride;
     move.speedFraction = referenceSpeedFraction(m, move.feed, move.length);
     move.engagement = cuttingEngagement(config_);
@@ -91,7 +93,7 @@ void SimulatedMachine::adaptiveMove(const Motion& m, double planned, double leng
     const std::array<double, kMaxAxes> reached = motionPointAt(m, result.fraction);
     for (int i = 0; i < m.axisCount && i < kMaxAxes; ++i)
         lastEnd_[static_cast<std::size_t>(i)] = reached[static_cast<std::size_t>(i)];
-    lastFeed_ = result.meanFeed;
+    lastFeed_ = {result.meanFeed, 0.0, 0.0, false};
     lastAdapted_ = result.adapted;
     lastFraction_ = result.fraction;
     afcClock_ = move.startTime + result.seconds;
@@ -104,8 +106,10 @@ void SimulatedMachine::observeMove(const Motion& m, double planned, double lengt
     // A plain move takes its planned time at the override in force whether
     // or not its torque is observed; only the trend recorder (none in the
     // CLI, MOT-019) reads the observation.
-    const double moveSeconds = planned / overrideShare(m);
-    lastFeed_ = length / moveSeconds * 60.0;
+    // x / 1 is x: at 100 % the time is the planned one without a division.
+    const double share = overrideShare(m);
+    const double moveSeconds = share == 1.0 ? planned : planned / share;
+    lastFeed_ = {0.0, length, moveSeconds, true};
     if (!recorder_) return queueClock(moveSeconds);
     catchUp();  // the trend's samples are taken at the machine's time now
     const double startTime = std::max(afcClock_, seconds());

@@ -36,7 +36,10 @@ struct QueueItem {
     PathLimits limits;
     bool rapid = false;
     BlockTransition mode;
-    double feed = 0.0;        ///< programmed path feed, plane units/s (0 for G0)
+    double feed = 0.0;  ///< programmed path feed, plane units/s (0 for G0)
+    /// Cruise velocity at the overrides and hold in force (the engine's
+    /// capOf(), kept up to date by the engine when they change, MOT-026).
+    double cap = 0.0;
     double entryLimit = 0.0;  ///< junction velocity with the move before (0: starts at rest)
     double exitLimit = 0.0;   ///< planned velocity at the end (look-ahead), plane units/s
     /// Batching (MOT-022): the exit velocity planned over the move's own

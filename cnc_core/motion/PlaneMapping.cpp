@@ -58,8 +58,7 @@ double PlaneMapping::developedUnits(int axis, double degreesValue) const {
     return developed(axis) ? degreesValue / kDegPerRad * radius_ : degreesValue;
 }
 
-void PlaneMapping::toPlane(const Position& machine, Position& plane) const {
-    plane = machine;
+void PlaneMapping::transformToPlane(const Position& machine, Position& plane) const {
     if (kind_ == 32) {
         for (int k = 0; k < 2; ++k) {
             const auto a = static_cast<std::size_t>(k == 0 ? axis1_ : axis2_);

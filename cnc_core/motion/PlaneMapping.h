@@ -29,7 +29,10 @@ class PlaneMapping {
     int axis2() const { return axis2_; }
 
     /// Machine positions to plane coordinates (only the two plane axes change).
-    void toPlane(const Position& machine, Position& plane) const;
+    void toPlane(const Position& machine, Position& plane) const {
+        plane = machine;  // inline for the usual case, G30 (MOT-026)
+        if (kind_ != 30) transformToPlane(machine, plane);
+    }
     /// Plane coordinates to machine positions. `machine` holds the previous
     /// machine position on entry: under G31 the angle takes the turn nearest
     /// to it, and keeps it at the rotation centre.
@@ -45,6 +48,8 @@ class PlaneMapping {
     bool developed(int axis) const;
 
   private:
+    /// toPlane()'s plane axes under G31 / G32.
+    void transformToPlane(const Position& machine, Position& plane) const;
     /// planeUnits() under G32.
     double developedUnits(int axis, double degreesValue) const;
 

@@ -33,9 +33,15 @@ double storeUnit(int count, const Component& component, const Store& store) {
     return norm;
 }
 
-/// Zeroes `v` from axis `count` on (what a default geometry holds there).
-void clearFrom(Position& v, int count) {
-    std::fill(v.begin() + std::clamp(count, 0, kMaxAxes), v.end(), 0.0);
+/// Zeroes `v` from axis `count` to `before` (what a default geometry holds
+/// there): the tangents hold 0 from axisCount_ on in every geometry (a
+/// default one, and every describe() since), so only the axes the slot's
+/// former move had beyond this one's need it (MOT-026).
+void clearFrom(Position& v, int count, int before) {
+    const int from = std::clamp(count, 0, kMaxAxes);
+    const int to = std::clamp(before, 0, kMaxAxes);
+    for (int i = from; i < to; ++i)
+        v[static_cast<std::size_t>(i)] = 0.0;
 }
 
 }  // namespace
@@ -61,6 +67,7 @@ SegmentGeometry SegmentGeometry::of(const Motion& m, const MotionLimits& limits)
 // arc's figures of a line): a reused queue slot ends up exactly as of().
 void SegmentGeometry::describe(const Motion& m, const MotionLimits& limits) {
     mapping_.describe(m, limits);
+    const int before = axisCount_;  // the tangents are 0 from here on
     axisCount_ = std::min(m.axisCount, limits.axisCount);
     machineEnd_ = m.end;
     mapping_.toPlane(m.start, start_);
@@ -69,7 +76,7 @@ void SegmentGeometry::describe(const Motion& m, const MotionLimits& limits) {
                      m.planeAxis1 >= 0 && m.planeAxis2 >= 0 && m.planeAxis1 < axisCount_ &&
                      m.planeAxis2 < axisCount_ && m.planeAxis1 != m.planeAxis2;
     if (!arc) {
-        describeLine();
+        describeLine(before);
         return;
     }
     p1_ = m.planeAxis1;
@@ -84,7 +91,7 @@ void SegmentGeometry::describe(const Motion& m, const MotionLimits& limits) {
         c1 = plane[static_cast<std::size_t>(p1_)];
         c2 = plane[static_cast<std::size_t>(p2_)];
     }
-    describeArc(c1, c2, m.type == MotionType::ArcCW, m.fullCircle);
+    describeArc(c1, c2, m.type == MotionType::ArcCW, m.fullCircle, before);
 }
 
 void SegmentGeometry::clearArc() {
@@ -96,11 +103,11 @@ void SegmentGeometry::clearArc() {
     planeShare_ = 0.0;
 }
 
-void SegmentGeometry::describeLine() {
+void SegmentGeometry::describeLine(int before) {
     arc_ = false;
     clearArc();
-    clearFrom(startTangent_, axisCount_);
-    clearFrom(endTangent_, axisCount_);
+    clearFrom(startTangent_, axisCount_, before);
+    clearFrom(endTangent_, axisCount_, before);
     const auto difference = [this](int i) {
         const auto k = static_cast<std::size_t>(i);
         return end_[k] - start_[k];
@@ -114,7 +121,8 @@ void SegmentGeometry::describeLine() {
     });
 }
 
-void SegmentGeometry::describeArc(double c1, double c2, bool clockwise, bool fullCircle) {
+void SegmentGeometry::describeArc(double c1, double c2, bool clockwise, bool fullCircle,
+                                  int before) {
     arc_ = true;
     center1_ = c1;
     center2_ = c2;
@@ -138,6 +146,8 @@ void SegmentGeometry::describeArc(double c1, double c2, bool clockwise, bool ful
     // without four trigonometric calls per arc.
     startPolar_ = polar(start_[k1] - c1, start_[k2] - c2, radius0_, angle0_);
     endPolar_ = polar(end_[k1] - c1, end_[k2] - c2, radius1_, angle0_ + sweep_);
+    clearFrom(startTangent_, axisCount_, before);
+    clearFrom(endTangent_, axisCount_, before);
     arcTangent(startPolar_, radius0_, startTangent_);
     arcTangent(endPolar_, radius1_, endTangent_);
 }
@@ -152,7 +162,6 @@ void SegmentGeometry::arcTangent(Polar at, double radius, Position& tangent) con
     // The plane components once (registers, not stores: storeUnit's reason).
     const double t1 = dr * at.cos - radius * sweep_ * at.sin;
     const double t2 = dr * at.sin + radius * sweep_ * at.cos;
-    clearFrom(tangent, axisCount_);
     storeUnit(
         axisCount_,
         [&](int i) {

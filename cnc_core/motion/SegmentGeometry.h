@@ -47,10 +47,11 @@ class SegmentGeometry {
     double maxTangentComponent(int axis) const;
 
   private:
-    void describeLine();
+    /// `before`: axisCount() before describe() (the tangents are 0 from there on).
+    void describeLine(int before);
     /// The arc's figures of a default geometry (a line has none).
     void clearArc();
-    void describeArc(double c1, double c2, bool clockwise, bool fullCircle);
+    void describeArc(double c1, double c2, bool clockwise, bool fullCircle, int before);
     /// cos and sin of a polar angle around the arc's centre.
     struct Polar {
         double cos = 1.0, sin = 0.0;

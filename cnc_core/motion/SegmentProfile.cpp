@@ -5,23 +5,6 @@
 
 namespace mtc::core::motion {
 
-void SegmentProfile::addPhase(double duration, double acceleration) {
-    if (!(duration > 0.0)) return;
-    Phase& p = phases_[static_cast<std::size_t>(count_)];
-    if (count_ == 0) {
-        p.s = s0_;
-        p.v = v0_;
-    } else {
-        const Phase& q = phases_[static_cast<std::size_t>(count_ - 1)];
-        p.s = q.s + q.v * q.duration + 0.5 * q.acceleration * q.duration * q.duration;
-        p.v = std::max(0.0, q.v + q.acceleration * q.duration);
-    }
-    p.duration = duration;
-    p.acceleration = acceleration;
-    duration_ += duration;
-    ++count_;
-}
-
 void SegmentProfile::finish(double endPosition, double endVelocity, bool reachesEnd) {
     endPosition_ = endPosition;
     endVelocity_ = endVelocity;
@@ -80,16 +63,21 @@ void SegmentProfile::sample(double t, double& s, double& v) const {
         return;
     }
     double start = 0.0;
+    double ps = s0_, pv = v0_;  // where phase i starts
     for (int i = 0; i < count_; ++i) {
         const Phase& p = phases_[static_cast<std::size_t>(i)];
         if (t < start + p.duration || i == count_ - 1) {
             const double dt = std::min(t - start, p.duration);
-            s = p.s + p.v * dt + 0.5 * p.acceleration * dt * dt;
-            v = std::max(0.0, p.v + p.acceleration * dt);
+            s = ps + pv * dt + 0.5 * p.acceleration * dt * dt;
+            v = std::max(0.0, pv + p.acceleration * dt);
             s = std::min(s, endPosition_);
             return;
         }
         start += p.duration;
+        // The next phase starts where this one ends (the same expressions
+        // the plan used to store per phase).
+        ps = ps + pv * p.duration + 0.5 * p.acceleration * p.duration * p.duration;
+        pv = std::max(0.0, pv + p.acceleration * p.duration);
     }
     s = s0_;
     v = v0_;

@@ -33,13 +33,20 @@ class SegmentProfile {
     void sample(double t, double& s, double& v) const;
 
   private:
+    /// A phase of constant acceleration. Where it starts (position and
+    /// velocity) follows from the phases before it and is worked out by
+    /// sample() only: a run that never samples (the CLI's, MOT-026) needs
+    /// the durations alone.
     struct Phase {
         double duration = 0.0;
         double acceleration = 0.0;
-        double s = 0.0;  ///< position at the phase's start
-        double v = 0.0;  ///< velocity at the phase's start
     };
-    void addPhase(double duration, double acceleration);
+    void addPhase(double duration, double acceleration) {
+        if (!(duration > 0.0)) return;
+        phases_[static_cast<std::size_t>(count_)] = {duration, acceleration};
+        duration_ += duration;
+        ++count_;
+    }
     void finish(double endPosition, double endVelocity, bool reachesEnd);
 
     std::array<Phase, 3> phases_{};

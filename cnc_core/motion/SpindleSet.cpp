@@ -13,15 +13,19 @@ void SpindleSet::setSpeed(int spindle, double rpm) {
     double speed = std::isfinite(rpm) ? std::fabs(rpm) : 0.0;
     if (l.maxSpeed > 0.0) speed = std::min(speed, l.maxSpeed);
     state_[static_cast<std::size_t>(spindle)].commanded = speed;
+    ramping_ = true;
 }
 
 void SpindleSet::setRotation(int spindle, Rotation rotation) {
-    if (valid(spindle)) state_[static_cast<std::size_t>(spindle)].rotation = rotation;
+    if (!valid(spindle)) return;
+    state_[static_cast<std::size_t>(spindle)].rotation = rotation;
+    ramping_ = true;
 }
 
 void SpindleSet::stopAll() {
     for (State& s : state_)
         s.rotation = Rotation::Stopped;
+    ramping_ = true;
 }
 
 double SpindleSet::target(int spindle) const {
@@ -37,8 +41,9 @@ double SpindleSet::target(int spindle) const {
     return 0.0;
 }
 
-void SpindleSet::advance(double seconds) {
+void SpindleSet::advanceRamps(double seconds) {
     if (!(seconds > 0.0)) return;
+    bool ramping = false;
     for (int i = 1; i <= 3; ++i) {
         State& s = state_[static_cast<std::size_t>(i)];
         const double goal = target(i);
@@ -48,7 +53,9 @@ void SpindleSet::advance(double seconds) {
         s.actual =
             goal > s.actual ? std::min(goal, s.actual + step) : std::max(goal, s.actual - step);
         if (std::fabs(goal - s.actual) <= 1e-9 * std::max(1.0, std::fabs(goal))) s.actual = goal;
+        ramping = ramping || s.actual != goal;
     }
+    ramping_ = ramping;
 }
 
 double SpindleSet::actualSpeed(int spindle) const {

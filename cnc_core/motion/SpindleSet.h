@@ -22,7 +22,11 @@ class SpindleSet {
     /// Every spindle ramps down to a stop (Control reset).
     void stopAll();
     /// Moves every ramp on by `seconds`.
-    void advance(double seconds);
+    void advance(double seconds) {
+        // Inline for the usual case: the machine calls it for every queue
+        // entry, and the spindles mostly stand or run at speed (MOT-026).
+        if (ramping_) advanceRamps(seconds);
+    }
 
     /// Signed actual speed, rpm (> 0 clockwise).
     double actualSpeed(int spindle) const;
@@ -41,10 +45,14 @@ class SpindleSet {
         Rotation rotation = Rotation::Stopped;
     };
     double target(int spindle) const;
+    void advanceRamps(double seconds);
     bool valid(int spindle) const { return spindle >= 1 && spindle <= 3; }
 
     std::array<SpindleLimit, 4> limits_{};
     std::array<State, 4> state_{};
+    /// False while every spindle is at its target speed (advance() has
+    /// nothing to do); true after any change of a target.
+    bool ramping_ = false;
 };
 
 }  // namespace mtc::core::motion

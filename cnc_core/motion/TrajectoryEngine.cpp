@@ -78,6 +78,7 @@ void TrajectoryEngine::pushMove(const Motion& motion, BlockTransition mode) {
     item.rapid = rapid;
     item.mode = mode;
     item.feed = rapid ? 0.0 : std::max(0.0, motion.feed) / 60.0;
+    item.cap = capOf(item);
     item.entryLimit = entry;
     item.exitLimit = 0.0;
     item.windowClosed = false;
@@ -145,7 +146,7 @@ bool TrajectoryEngine::planBackward(bool early) {
         // min(entry, cap, reach) with reach >= 0 (or NaN): a move that starts
         // at rest (a corner) bounds it to 0 whatever it can reach, and the
         // square root on the chain from move to move is skipped (MOT-023).
-        const double bound = std::min(item.entryLimit, capOf(item));
+        const double bound = std::min(item.entryLimit, item.cap);
         if (bound <= 0.0) {
             following = bound;
             continue;
@@ -162,7 +163,7 @@ void TrajectoryEngine::replanFront() {
     const QueueItem& move = queue_.front();
     const double length = move.geometry.length() - pathS_;
     const double exit = frontExit();
-    profile_.plan(pathS_, velocity_, length, capOf(move), exit, move.limits.acceleration);
+    profile_.plan(pathS_, velocity_, length, move.cap, exit, move.limits.acceleration);
     plannedExit_ = exit;
     profileTime_ = 0.0;
     planned_ = true;
@@ -175,6 +176,10 @@ void TrajectoryEngine::afterPlanChange(bool frontChanged) {
 }
 
 void TrajectoryEngine::replanAll() {
+    for (std::size_t i = 0; i < queue_.size(); ++i) {  // an override or the hold changed
+        QueueItem& item = queue_.at(i);
+        if (item.kind == QueueItem::Kind::Move) item.cap = capOf(item);
+    }
     planBackward(false);
     if (planned_) replanFront();
 }
@@ -416,7 +421,7 @@ double TrajectoryEngine::secondsToDrain() const {
             case QueueItem::Kind::Move: {
                 SegmentProfile profile;
                 const double s = i == 0 ? pathS_ : 0.0;
-                profile.plan(s, v, item.geometry.length() - s, capOf(item), item.exitLimit,
+                profile.plan(s, v, item.geometry.length() - s, item.cap, item.exitLimit,
                              item.limits.acceleration);
                 if (!profile.reachesEnd()) return kForever;
                 total += profile.duration();

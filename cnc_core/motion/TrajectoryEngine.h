@@ -168,12 +168,17 @@ class TrajectoryEngine {
     const MotionLimits& limits() const { return limits_; }
     /// Tags of the actions executed since the last call, oldest first.
     std::vector<std::uint32_t> takeReached();
+    /// An action was executed since the last takeReached().
+    bool reachedActions() const { return !reached_.empty(); }
     const QueueItem* queued(std::size_t i) const {
         return i < queue_.size() ? &queue_.at(i) : nullptr;
     }
     std::size_t queuedCount() const { return queue_.size(); }
 
   private:
+    /// The cruise velocity of `move` now; QueueItem::cap holds it for every
+    /// queued move (worked out when it is queued and on every change of an
+    /// override or of the hold, which all go through replanAll()).
     double capOf(const QueueItem& move) const;
     /// The velocity the front move may leave with: its exitLimit, or under
     /// a batch the one of its own look-ahead window once that is closed.
