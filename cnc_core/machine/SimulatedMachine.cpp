@@ -132,14 +132,14 @@ void SimulatedMachine::motion(const Motion& m) {
         lastFeed_ = {0.0, length, planned, true};
     else
         lastFeed_ = {m.feed, 0.0, 0.0, false};
-    for (int i = 0; i < m.axisCount && i < kMaxAxes; ++i)
+    const int axes = std::min(m.axisCount, kMaxAxes);
+    for (int i = 0; i < axes; ++i)
         lastEnd_[static_cast<std::size_t>(i)] = m.end[static_cast<std::size_t>(i)];
-    if (afc_ && afc_->available() && planned > 0) {
-        // G26 controls and ITM measures: the move's course is theirs.
-        if (afc_->active() || afc_->idleMeasurementRequested())
-            return adaptiveMove(m, planned, length);
-    }
-    if (afc_ && afc_->available() && planned > 0 && m.type != MotionType::Rapid) {
+    const bool afcOn = afc_ && afc_->available() && planned > 0;
+    // G26 controls and ITM measures: the move's course is theirs
+    // (lastReportsAfc_: G26 on or ITM requested, as asked above).
+    if (afcOn && lastReportsAfc_) return adaptiveMove(m, planned, length);
+    if (afcOn && m.type != MotionType::Rapid) {
         observeMove(m, planned, length);  // the trend observes the torque; the move is a plain one
     } else {
         queueClock(planned);  // the end of the queued work

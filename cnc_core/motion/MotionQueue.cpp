@@ -6,6 +6,7 @@ namespace mtc::core::motion {
 
 MotionQueue::MotionQueue(std::size_t capacity)
     : storage_(std::max<std::size_t>(capacity, 1) + 8),
+      slots_(storage_.size()),
       capacity_(std::max<std::size_t>(capacity, 1)) {}
 
 void MotionQueue::grow() {
@@ -21,6 +22,7 @@ void MotionQueue::regrow(std::size_t slots) {
     for (std::size_t i = 0; i < size_; ++i)
         grown[i] = std::move(at(i));
     storage_ = std::move(grown);
+    slots_ = storage_.size();
     head_ = 0;
 }
 

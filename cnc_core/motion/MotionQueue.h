@@ -79,7 +79,7 @@ class MotionQueue {
     /// the storage when it is full): an item can be worked out in place
     /// before it is known whether it is queued at all.
     QueueItem& nextSlot() {
-        if (size_ == storage_.size()) grow();
+        if (size_ == slots_) grow();
         return storage_[slot(size_)];
     }
     void popFront();
@@ -106,10 +106,13 @@ class MotionQueue {
     /// every move).
     std::size_t slot(std::size_t i) const {
         const std::size_t index = head_ + i;
-        return index < storage_.size() ? index : index - storage_.size();
+        return index < slots_ ? index : index - slots_;
     }
 
     std::vector<QueueItem> storage_;
+    /// storage_.size(), kept: the vector's size is a division by the
+    /// item's size, on every slot() (MOT-026).
+    std::size_t slots_ = 0;
     std::size_t capacity_;
     std::size_t head_ = 0, size_ = 0;
     std::uint64_t pushed_ = 0, popped_ = 0;

@@ -186,12 +186,7 @@ void SegmentGeometry::planePoint(double s, Position& plane) const {
     plane[static_cast<std::size_t>(p2_)] = center2_ + r * std::sin(angle);
 }
 
-void SegmentGeometry::machinePoint(double s, Position& machine) const {
-    if (s >= length_) {
-        for (int i = 0; i < axisCount_; ++i)
-            machine[static_cast<std::size_t>(i)] = machineEnd_[static_cast<std::size_t>(i)];
-        return;
-    }
+void SegmentGeometry::machinePointOnPath(double s, Position& machine) const {
     Position plane = machine;
     planePoint(s, plane);
     if (mapping_.identity()) {

@@ -42,11 +42,18 @@ class SegmentGeometry {
     /// Machine position at path distance `s`; `machine` holds the previous
     /// machine position on entry (G31 angle continuity). s >= length gives
     /// exactly the end.
-    void machinePoint(double s, Position& machine) const;
+    void machinePoint(double s, Position& machine) const {
+        if (!(s >= length_)) return machinePointOnPath(s, machine);
+        // Inline for the end, where every move that runs to it arrives (MOT-026).
+        for (int i = 0; i < axisCount_; ++i)
+            machine[static_cast<std::size_t>(i)] = machineEnd_[static_cast<std::size_t>(i)];
+    }
     /// Largest |tangent component| of `axis` anywhere along the path.
     double maxTangentComponent(int axis) const;
 
   private:
+    /// machinePoint() short of the end.
+    void machinePointOnPath(double s, Position& machine) const;
     /// `before`: axisCount() before describe() (the tangents are 0 from there on).
     void describeLine(int before);
     /// The arc's figures of a default geometry (a line has none).

@@ -128,13 +128,13 @@ bool TrajectoryEngine::planBackward(bool early) {
         QueueItem& item = queue_.at(i);
         if (blockStops_ && i + 1 < queue_.size() && !sameBlock(item.where, queue_.at(i + 1).where))
             following = 0.0;  // single block: at rest where the next block begins
-        if (item.kind == QueueItem::Kind::Dwell || item.kind == QueueItem::Kind::Timed ||
-            (item.kind == QueueItem::Kind::Action && item.action.stopsPath)) {
-            following = 0.0;
-            last = false;
+        if (item.kind != QueueItem::Kind::Move) {  // the usual kind tested once (MOT-026)
+            if (item.kind != QueueItem::Kind::Action || item.action.stopsPath) {
+                following = 0.0;  // a dwell, a timed move or an action the path stops at
+                last = false;
+            }
             continue;
         }
-        if (item.kind != QueueItem::Kind::Move) continue;
         const bool unchanged = item.exitLimit == following;
         if (early && unchanged && !last) break;  // everything before stays as planned
         last = false;
