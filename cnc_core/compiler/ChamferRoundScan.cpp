@@ -159,7 +159,7 @@ struct ScanState {
     }
 };
 
-std::string wordName(const Word& word) {
+std::string wordName(const NumberWord& word) {
     std::string name(1, word.letter);
     if (word.axisIndex > 0) name += static_cast<char>('0' + word.axisIndex);
     return name;
@@ -172,6 +172,41 @@ void setIllegal(ScannedBlock& out, const char* why, bool isG, int g) {
     out.illegalG = g;
 }
 
+/// The words readWords takes whole: a jump ends the corner chain, a CF or
+/// RD command gives the block's corner.
+void readOtherWord(const Program& program, const Word& word, std::size_t prefixSize,
+                   ScannedBlock& out) {
+    const std::size_t begin = word.column > prefixSize ? word.column - 1 - prefixSize : 0;
+    switch (word.kind) {
+        case WordKind::Jump:
+            setIllegal(out, "a jump instruction", false, 0);
+            break;
+        case WordKind::Command: {
+            const std::string_view raw = program.text(word.text);
+            if (raw.substr(0, 3) == "BRJ" &&
+                (raw.size() == 3 || !isalnum(static_cast<unsigned char>(raw[3]))))
+                setIllegal(out, "a jump instruction (BRJ)", false, 0);
+            if (raw.size() >= 2 && (raw.substr(0, 2) == "CF" || raw.substr(0, 2) == "RD") &&
+                (raw.size() == 2 || !isalpha(static_cast<unsigned char>(raw[2])) ||
+                 raw[2] == '=')) {
+                ++out.cornerCount;
+                out.kind = raw[0] == 'C' ? CornerKind::Chamfer : CornerKind::Rounding;
+                out.cornerBegin = begin;
+                out.cornerEnd = begin + raw.size();
+                if (!cornerValue(program.text(word.args), out.size))
+                    out.sizeProblem = "the value must be a number (no variable)";
+                else if (out.size < 0.0)
+                    out.sizeProblem = "the value must not be negative";
+                else if (out.size > kMaxCornerSize)
+                    out.sizeProblem = "the value must be at most 99999.9999 mm";
+            }
+            break;
+        }
+        default:
+            break;
+    }
+}
+
 /// Reads the words of one parsed block into `out` (its axis and centre
 /// words into the pools of `result`), updating the G state.
 void readWords(const Program& program, const Block& block, std::size_t prefixSize,
@@ -181,7 +216,16 @@ void readWords(const Program& program, const Block& block, std::size_t prefixSiz
     out.centres.begin = out.centres.end = static_cast<std::uint32_t>(result.centreWords.size());
     bool g20 = false;
     for (std::uint32_t w = block.firstWord; w < block.firstWord + block.wordCount; ++w) {
-        const Word word = program.words[w];
+        // Number words (G, axes, centres: nearly all) without building a Word.
+        NumberWord word;
+        if (!program.words.readNumber(w, word)) {
+            const Word whole = program.words[w];
+            if (whole.kind == WordKind::Jump || whole.kind == WordKind::Command) {
+                readOtherWord(program, whole, prefixSize, out);
+                continue;
+            }
+            word = numberWordOf(whole);
+        }
         const std::size_t begin = word.column > prefixSize ? word.column - 1 - prefixSize : 0;
         switch (word.kind) {
             case WordKind::G: {
@@ -212,30 +256,6 @@ void readWords(const Program& program, const Block& block, std::size_t prefixSiz
                     .push_back(
                         {wordName(word), word.number, word.expr >= 0, begin, wordEnd(text, begin)});
                 ++(axis ? out.axes : out.centres).end;
-                break;
-            }
-            case WordKind::Jump:
-                setIllegal(out, "a jump instruction", false, 0);
-                break;
-            case WordKind::Command: {
-                const std::string_view raw = program.text(word.text);
-                if (raw.substr(0, 3) == "BRJ" &&
-                    (raw.size() == 3 || !isalnum(static_cast<unsigned char>(raw[3]))))
-                    setIllegal(out, "a jump instruction (BRJ)", false, 0);
-                if (raw.size() >= 2 && (raw.substr(0, 2) == "CF" || raw.substr(0, 2) == "RD") &&
-                    (raw.size() == 2 || !isalpha(static_cast<unsigned char>(raw[2])) ||
-                     raw[2] == '=')) {
-                    ++out.cornerCount;
-                    out.kind = raw[0] == 'C' ? CornerKind::Chamfer : CornerKind::Rounding;
-                    out.cornerBegin = begin;
-                    out.cornerEnd = begin + raw.size();
-                    if (!cornerValue(program.text(word.args), out.size))
-                        out.sizeProblem = "the value must be a number (no variable)";
-                    else if (out.size < 0.0)
-                        out.sizeProblem = "the value must not be negative";
-                    else if (out.size > kMaxCornerSize)
-                        out.sizeProblem = "the value must be at most 99999.9999 mm";
-                }
                 break;
             }
             default:

@@ -400,48 +400,62 @@ std::uint32_t BlockParser::scanPlainWords(std::uint32_t pos, const std::uint32_t
     // no scan below passes a byte of these, so only axisIndexAt needs `end`.
     const char* const base = text_.data();
     const auto* text = reinterpret_cast<const unsigned char*>(base);
-    const std::uint32_t lastColumn = lineBegin + WordList::kMaxPackedColumn - 1;
     // Words go straight into the list's free slots (all in locals: a store
     // through a member would make the compiler reload every member).
     WordList& words = program_.words;
     WordList::Packed* out = words.spareBegin();
     WordList::Packed* outEnd = words.spareEnd();
-    // The block has no words yet: the fast path takes kMaxWords at most and
-    // leaves the rest to the general path (PARSE_TOO_MANY_WORDS).
-    for (std::uint32_t budget = kMaxWords;; --budget) {
+    std::uint8_t* columns = words.spareColumns();
+    // The block has no words yet, and a word takes two bytes at least: up to
+    // the last column the packed forms hold, the fast path takes fewer than
+    // kMaxWords words (the general path reports PARSE_TOO_MANY_WORDS).
+    static_assert(WordList::kMaxPackedColumn / 2 < kMaxWords);
+    for (;;) {
         unsigned c = text[pos];
         while (c == ' ' || c == '\t')
             c = text[++pos];
         const std::uint8_t address = kAddressTable.entry[c];
-        if (!(address & kAddress) || budget == 0 || pos > lastColumn) break;
+        const std::uint32_t column = pos - lineBegin + 1;
+        if (!(address & kAddress) || column > WordList::kMaxPackedColumn) break;
         std::uint32_t value = pos + 1;
         if ((address & kIndexed) && axisIndexAt(base, value, end) != 0) break;
         const bool negative = text[value] == '-';
         value += negative || text[value] == '+';
         std::uint32_t after = value;
         const PlainNumber number = scanDigits(text, after);
-        const WordStart word{static_cast<WordKind>(address & kKindBits), static_cast<char>(c),
-                             address, negative, pos - lineBegin + 1};
         // Up to nine digits, seven decimals, no sign or decimals on a whole-
-        // number word: nothing to normalise, the packed form holds it.
+        // number word: nothing to normalise; below 2^26, the narrow form
+        // holds it once the list has a code for its letter and scale.
         if (number.digits - 1 < 9 && number.scale < 8 && text[after] != '.' &&
-            !((address & kWhole) && (negative || number.scale != 0))) {
-            if (out == outEnd) {
-                words.endAt(out);
-                words.makeSpare();
-                out = words.spareBegin();
-                outEnd = words.spareEnd();
+            !((address & kWhole) && (negative || number.scale != 0)) &&
+            number.mantissa < WordList::kNarrowLimit) {
+            WordList::Packed code = words.plainCodeAt(WordList::codeKey(c, number.scale));
+            if (code == WordList::kWideCode)
+                code = words.plainCode(static_cast<WordKind>(address & kKindBits),
+                                       static_cast<char>(c), number.scale);
+            if (code != WordList::kWideCode) {
+                if (out == outEnd) {
+                    words.endAt(out);
+                    words.makeSpare();
+                    out = words.spareBegin();
+                    outEnd = words.spareEnd();
+                    columns = words.spareColumns();
+                }
+                const auto mantissa = static_cast<std::int32_t>(number.mantissa);
+                *out++ = WordList::narrowSlot(code, negative ? -mantissa : mantissa);
+                *columns++ = static_cast<std::uint8_t>(column);
+                pos = after;
+                continue;
             }
-            const auto mantissa = static_cast<std::int32_t>(number.mantissa);
-            *out++ = WordList::smallNumber(word.kind, word.letter, word.column,
-                                           negative ? -mantissa : mantissa, number.scale);
-        } else {
-            words.endAt(out);
-            const bool taken = takeNumber(words, base, value, end, word, after);
-            out = words.spareBegin();
-            outEnd = words.spareEnd();
-            if (!taken) break;
         }
+        words.endAt(out);
+        const WordStart word{static_cast<WordKind>(address & kKindBits), static_cast<char>(c),
+                             address, negative, column};
+        const bool taken = takeNumber(words, base, value, end, word, after);
+        out = words.spareBegin();
+        outEnd = words.spareEnd();
+        columns = words.spareColumns();
+        if (!taken) break;
         pos = after;
     }
     words.endAt(out);

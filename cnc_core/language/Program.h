@@ -21,8 +21,11 @@
 /// like reading a std::vector (`size()`, `operator[]`, range-for, `back()`),
 /// but elements come back BY VALUE as `const Block` / `const Word`: bind them
 /// with `const Block& b = program.blocks[i]` or `auto b = ...`; to change one,
-/// use `set(i, value)`. Common words (a letter and a short decimal) take 8
-/// bytes, common blocks 20 bytes; everything else lives in side tables.
+/// use `set(i, value)`. Common words (a letter and a decimal of less than
+/// 2^26 units of its last digit, 67,108.864 at three decimals) take 5 bytes
+/// (a slot and a column byte), other plain numeric words 5 + 8, common
+/// blocks 12 bytes plus 12 per 64 blocks; everything else
+/// lives in side tables (docs/decisions/language.md, "Memory").
 namespace mtc::core {
 
 /// Expression node. Children are indices into Program::expressions.

@@ -5,6 +5,8 @@
 // program; a few tests check the values themselves.
 #include <gtest/gtest.h>
 
+#include <cstdint>
+#include <cstdlib>
 #include <string>
 #include <vector>
 
@@ -67,6 +69,12 @@ const std::vector<std::string> kNumbers = {
     "N0006 X1E5 Y1e5 Z1.5E-3\n",
     "N0007 X- Y+ Z. A.. B1..2 C1.2.3 U-+1 V+-1\n",
     "N0008 F99999999 F999999999 F9999999999 S12.3456789\n",
+    // around the narrow form's 27-bit mantissa (|m| < 2^26 = 67108864)
+    "N0009 X67108863 Y-67108863 Z67108864 A-67108864 B67108.863 C-67108.864 U.67108863\n",
+    "N0010 F67108863 F67108864 S67108863 S-1 I-6710.8863 J67108864.0 K0.67108864 T67108864\n",
+    "N0011 X64986.000 Y-9999.999 Z33554.432 A-33554.431 B6710.8864 C9999.9999 U99999.999\n",
+    // and the old 18-bit one (|m| <= 131071)
+    "N0012 X131071 Y-131071 Z131072 A-131072 B13.1071 C-1.31072 U.0131071 V1310.710\n",
 };
 
 TEST(ParserWholeLine, LineShapesParseAsOnTheGeneralPath) {
@@ -86,6 +94,28 @@ TEST(ParserWholeLine, NumbersParseAsOnTheGeneralPath) {
         EXPECT_EQ(differenceBetweenPaths(crlf), "") << crlf;
         EXPECT_EQ(differenceBetweenPaths(text.substr(0, text.size() - 1)), "") << text;
     }
+}
+
+TEST(ParserWholeLine, MoreHeadsThanTheNarrowFormCodes) {
+    // 14 letters with 8 scales each: 112 heads, beyond the word list's 30
+    // codes; the words after the 30th head are stored in the wide form.
+    const std::string letters = "XYZABCUVWIJKFS";
+    std::string text;
+    int block = 0;
+    for (unsigned scale = 0; scale < 8; ++scale) {
+        for (int round = 0; round < 2; ++round) {
+            text += "N" + std::to_string(1000 + block++);
+            for (char letter : letters)
+                text += std::string(" ") + letter + "1" +
+                        (scale == 0 ? "" : "." + std::string(scale - 1, '0') + "5");
+            text += "\n";
+        }
+    }
+    EXPECT_EQ(differenceBetweenPaths(text), "");
+    const Program program = parseWith(text, true);
+    ASSERT_EQ(program.words.size(), 16 * letters.size());
+    EXPECT_EQ(program.words[0].number, 1.0);
+    EXPECT_EQ(program.words[program.words.size() - 1].number, 1.0000005);
 }
 
 TEST(ParserWholeLine, LongLinesParseAsOnTheGeneralPath) {
@@ -221,6 +251,60 @@ TEST(ParserWholeLine, AFullWordListGrowsInPlace) {
         text += "G1\tX1\tY2\tZ3\tF4\n";
     const Program program = parseWith(text, true);
     EXPECT_EQ(program.words.size(), 10000u);
+    EXPECT_EQ(differenceBetweenPaths(text), "");
+}
+
+TEST(ParserWholeLine, LargeProgramsKeepEveryValue) {
+    // 20,000 lines of numbers of every size (narrow and wide words), with
+    // now and then a comment, a label, a blank line or a long line: every
+    // value, column, block field and group of 64 blocks read back.
+    std::uint32_t seed = 12345;
+    const auto next = [&seed] {
+        seed = seed * 1103515245u + 12345u;
+        return seed >> 8;
+    };
+    std::string text;
+    std::vector<std::string> numbers;
+    std::vector<std::uint16_t> columns;
+    for (int line = 0; line < 20000; ++line) {
+        if (line % 97 == 5) text += "\n";  // a line without a block
+        std::string block = "N" + std::to_string(1000 + line % 9000);
+        if (line % 211 == 7) block += " .L" + std::to_string(line);
+        const int count = 1 + static_cast<int>(next() % 6);
+        for (int w = 0; w < count; ++w) {
+            const std::uint32_t digits = 1 + next() % 9, decimals = next() % (digits + 1);
+            std::string number;
+            for (std::uint32_t d = 0; d < digits; ++d) {
+                if (d == digits - decimals) number += '.';
+                number += static_cast<char>('0' + next() % 10);
+            }
+            if (next() % 3 == 0) number = "-" + number;
+            block += " ";
+            columns.push_back(static_cast<std::uint16_t>(block.size() + 1));
+            block += "XYZUVW"[w];
+            block += number;
+            numbers.push_back(number);
+        }
+        if (line % 389 == 11) block += std::string(300, ' ') + ";";
+        text += block + "\n";
+    }
+    const Program program = parseWith(text, true);
+    ASSERT_TRUE(program.diagnostics.empty());
+    ASSERT_EQ(program.words.size(), numbers.size());
+    for (std::size_t i = 0; i < numbers.size(); ++i) {
+        const Word word = program.words[i];
+        ASSERT_EQ(word.number, std::strtod(numbers[i].c_str(), nullptr)) << i << " " << numbers[i];
+        ASSERT_EQ(word.column, columns[i]) << i;
+    }
+    ASSERT_EQ(program.blocks.size(), 20000u);
+    std::uint32_t firstWord = 0;
+    for (std::size_t i = 0; i < program.blocks.size(); ++i) {
+        const Block block = program.blocks[i];
+        ASSERT_EQ(block.firstWord, firstWord) << i;
+        ASSERT_EQ(block.number, static_cast<std::int32_t>(1000 + i % 9000)) << i;
+        ASSERT_EQ(text.compare(block.sourceText.offset, 1, "N"), 0) << i;
+        firstWord += block.wordCount;
+    }
     EXPECT_EQ(differenceBetweenPaths(text), "");
 }
 
