@@ -39,8 +39,7 @@ void OutputQueue::clear() {
     used_ = 0;
 }
 
-void OutputQueue::motion(const Motion& motion) {
-    if (!holding_) return downstream_.motion(motion);
+void OutputQueue::queueMotion(const Motion& motion) {
     push(Kind::Motion).motion = motion;
 }
 

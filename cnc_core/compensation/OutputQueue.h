@@ -27,7 +27,11 @@ class OutputQueue : public MachineSink {
     void clear();
     MachineSink& downstream() { return downstream_; }
 
-    void motion(const Motion& motion) override;
+    /// Inline: a move that passes is one virtual call of the downstream sink.
+    void motion(const Motion& motion) override {
+        if (!holding_) return downstream_.motion(motion);
+        queueMotion(motion);
+    }
     void auxiliary(const AuxOutput& output) override;
     void dwell(const SourceLocation& where, double seconds) override;
     void command(const MachineCommand& command) override;
@@ -43,6 +47,7 @@ class OutputQueue : public MachineSink {
         MachineCommand command;
     };
     Item& push(Kind kind);
+    void queueMotion(const Motion& motion);
 
     MachineSink& downstream_;
     bool holding_ = false;

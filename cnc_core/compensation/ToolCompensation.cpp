@@ -275,12 +275,7 @@ void ToolCompensation::beginOutputs(bool output) {
     engine_ = planned_.engine;
 }
 
-void ToolCompensation::motion(Motion& m, bool output) {
-    if (!planned_.valid) {  // not tracking: the move goes as programmed
-        ++released_;
-        if (output) queue_.motion(m);
-        return;
-    }
+void ToolCompensation::plannedMotion(Motion& m, bool output) {
     output_ = output;
     const Planned& p = planned_;
     m.compensated = true;

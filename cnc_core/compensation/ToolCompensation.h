@@ -77,8 +77,13 @@ class ToolCompensation {
     /// `output` false: positions are followed, nothing is sent.
     void beginOutputs(bool output);
     /// Commit stage: the block's move (programmed positions in `motion`).
-    /// `output` false: positions are followed, nothing is sent.
-    void motion(Motion& motion, bool output);
+    /// `output` false: positions are followed, nothing is sent. Inline: the
+    /// usual move (the stage not tracking) passes with no call of its own.
+    void motion(Motion& motion, bool output) {
+        if (planned_.valid) return plannedMotion(motion, output);
+        ++released_;  // not tracking: the move goes as programmed
+        if (output) queue_.motion(motion);
+    }
     /// Commit stage, after the block's outputs: look-ahead count; a
     /// programmed stop (`stopping`) ends the held move at its perpendicular.
     /// False (diagnostic) when that tool path crosses an earlier one.
@@ -136,6 +141,8 @@ class ToolCompensation {
         std::array<double, kMaxAxes> reentryLengths{};  ///< its G48 offsets
     };
 
+    /// motion() of a block plan() accepted.
+    void plannedMotion(Motion& motion, bool output);
     bool report(const BlockContext& context, const comp::Problem& problem) const;
     SourceLocation locationOf(int id, const BlockContext& context) const;
     /// A change of plane axes, transformation or tool, or a machine move:

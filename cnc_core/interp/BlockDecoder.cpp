@@ -21,7 +21,10 @@ SourceLocation blockLocation(const Program& program, std::uint32_t blockIndex, i
 }
 
 bool BlockDecoder::decode(const Block& block) const {
-    t_.input.clear();
+    if (t_.shortcuts && !t_.input.special)
+        t_.input.clearUsual();
+    else
+        t_.input.clear();
     const WordList& words = t_.program.words;
     const std::size_t end =
         std::min<std::size_t>(std::size_t{block.firstWord} + block.wordCount, words.size());
@@ -46,6 +49,7 @@ bool BlockDecoder::decode(const Block& block) const {
 }
 
 bool BlockDecoder::wholeWord(std::uint32_t index) const {
+    t_.input.special = true;
     Word w;
     t_.program.words.read(index, w);
     switch (w.kind) {
@@ -100,6 +104,7 @@ inline bool BlockDecoder::gWord(const NumberWord& w) const {
         in.gMask |= 1u << info.group;
         return true;
     }
+    in.special = true;
     if (info.kind == GKind::Dwell) {
         in.dwell = true;
         in.dwellColumn = w.column;
@@ -128,10 +133,9 @@ inline bool BlockDecoder::gWord(const NumberWord& w) const {
 
 inline bool BlockDecoder::axisWord(const NumberWord& w) const {
     const AxisLookup found = names_.find(w.letter, w.axisIndex);
-    if (found.status != AxisNameStatus::Ok) {
-        if (found.status != AxisNameStatus::TransformedLinear) return badAxis(w, found);
-        designationOneWarning(w, found);
-    }
+    // The lookup is not handed to the cold path (it looks again): passing
+    // it kept the 8-byte pair packed on the stack for every axis word.
+    if (found.status != AxisNameStatus::Ok && !unusualAxisName(w)) return false;
     double v = 0;
     if (!value(w, v)) return false;
     BlockInput& in = t_.input;
@@ -171,6 +175,7 @@ inline bool BlockDecoder::centerWord(const NumberWord& w) const {
 
 inline bool BlockDecoder::auxWord(const NumberWord& w) const {
     const bool isM = w.kind == WordKind::M;
+    t_.input.special = true;
     double v = 0;
     int number = 0;
     if (!value(w, v) || !integer(w.column, v, number, isM ? "M" : "Q")) return false;
@@ -182,6 +187,7 @@ inline bool BlockDecoder::auxWord(const NumberWord& w) const {
 }
 
 inline bool BlockDecoder::spindleWord(const NumberWord& w) const {
+    t_.input.special = true;
     double v = 0;
     if (!value(w, v)) return false;
     const int slot = w.axisIndex;  // 0 = S without index (reference spindle)
@@ -199,6 +205,7 @@ inline bool BlockDecoder::scalarWord(const NumberWord& w) const {
     double v = 0;
     if (!value(w, v)) return false;
     BlockInput& in = t_.input;
+    if (w.kind != WordKind::F) in.special = true;  // F alone keeps a block usual
     switch (w.kind) {
         case WordKind::T:
             if (in.hasTool) return twice(w.column, "T");
@@ -390,6 +397,13 @@ bool BlockDecoder::badG(std::uint16_t column, int number, const GCodeInfo& info,
     return error(column, "G_GROUP_CONFLICT",
                  name + " and G" + std::to_string(other) + " belong to the same group " +
                      std::to_string(info.group));
+}
+
+bool BlockDecoder::unusualAxisName(NumberWord w) const {
+    const AxisLookup found = names_.find(w.letter, w.axisIndex);
+    if (found.status != AxisNameStatus::TransformedLinear) return badAxis(w, found);
+    designationOneWarning(w, found);
+    return true;
 }
 
 bool BlockDecoder::badAxis(NumberWord w, AxisLookup found) const {

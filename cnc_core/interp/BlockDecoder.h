@@ -29,6 +29,8 @@ class BlockDecoder {
         std::uint32_t blockIndex;
         BlockInput& input;
         DiagnosticList& diagnostics;
+        /// InterpreterOptions::shortcuts: after a usual block only its fields are cleared.
+        bool shortcuts = false;
     };
 
     BlockDecoder(const ProcessAxes& axes, const AxisNameTable& names,
@@ -75,6 +77,9 @@ class BlockDecoder {
     bool evaluated(std::int32_t expr, std::uint16_t column, double& out) const;
     bool notInteger(std::uint16_t column, double v, const char* what) const;
     bool badG(std::uint16_t column, int number, const GCodeInfo& info, int other) const;
+    /// An axis name that is not plainly this process's: true (with the
+    /// warning) for designation 1 of a transformed linear axis, else the error.
+    [[gnu::cold, gnu::noinline]] bool unusualAxisName(NumberWord w) const;
     // By value: the hot callers keep their word in registers.
     bool badAxis(NumberWord w, AxisLookup found) const;
     void designationOneWarning(NumberWord w, AxisLookup found) const;

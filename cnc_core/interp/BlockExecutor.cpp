@@ -46,6 +46,15 @@ bool BlockExecutor::plan(const BlockContext& c, const BlockInput& in, const Inte
     // the calls (InterpShortcuts.* compare with options.shortcuts off).
     constexpr std::uint32_t kInterpolationOnly = 1u << kGroupInterpolation;
     const bool shortcuts = options.shortcuts;
+    if (shortcuts && !in.special) {  // only modal G, axis, I/J/K and F words (I-023)
+        if (in.gMask == kInterpolationOnly)
+            next.g[kGroupInterpolation] = in.g[kGroupInterpolation];
+        else if (in.gMask != 0 && !modalGroups(c, in, state.modal, next, state.reentry.valid))
+            return false;
+        if (in.hasFeed) next.feed = in.feed * (next.g[kGroupUnits] == 70 ? kInch : 1.0);
+        if (in.axisMask == 0 || in.g[kGroupPlane] == 20) return true;
+        return motion_.plan(c, in, state.modal, plan, options);
+    }
     if (shortcuts && in.gMask == kInterpolationOnly && !in.hasRadius) {
         next.g[kGroupInterpolation] = in.g[kGroupInterpolation];
     } else if (in.gMask != 0 || in.hasRadius) {

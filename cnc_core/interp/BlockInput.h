@@ -95,6 +95,13 @@ struct BlockInput {
     std::array<std::uint32_t, kMaxCommands> commands{};  ///< word indices of commands
     int commandCount = 0;
 
+    /// False: the block holds only modal G words, axis words, I/J/K and F
+    /// (the usual block); what the decoder wrote is then g, gMask, gColumn
+    /// and the axis, centre and feed fields. Set by every other word (and
+    /// every word in its whole form), so that the flags and counters of all
+    /// the other fields are as clear() left them (I-023).
+    bool special = true;
+
     /// Forgets the previous block (cheap: only flags and counters).
     void clear() {
         g.fill(-1);
@@ -112,6 +119,18 @@ struct BlockInput {
         mCount = qCount = writeCount = mtdCount = commandCount = 0;
         conditionSet = false;
         jumpWord = -1;
+        special = false;
+    }
+    /// clear() after a block that was not special: only what such a block
+    /// writes (InterpreterOptions::shortcuts; the general path calls clear()).
+    void clearUsual() {
+        g.fill(-1);
+        gMask = 0;
+        axisMask = 0;
+        axisCount = 0;
+        repeatedAxisColumn = 0;
+        centerMask = 0;
+        hasFeed = false;
     }
 };
 

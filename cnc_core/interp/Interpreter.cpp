@@ -235,7 +235,8 @@ bool Interpreter::syntaxError(const BlockContext& context) const {
     if (block_.flags & kBlockHasError) return syntaxError(context);
     if (!planSynced_) plan_.next = state_.modal;
     planSynced_ = false;
-    const BlockDecoder decoder(axes_, names_, evaluator_, {program, index, input_, diagnostics});
+    const BlockDecoder decoder(axes_, names_, evaluator_,
+                               {program, index, input_, diagnostics, options_.shortcuts});
     if (!decoder.decode(block_)) return false;
     // Asked once per block (the commit asks again); without a control and
     // its words in the block the answer is no.

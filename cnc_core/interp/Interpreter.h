@@ -258,6 +258,8 @@ class Interpreter {
     /// Location of the current block (block_) for the sink, without printf.
     SourceLocation sinkLocation(const Program& program, std::uint32_t index) const;
     Outcome commit(const Program& program, std::uint32_t index, DiagnosticList& diagnostics);
+    /// commit() of a usual block (I-023).
+    Outcome commitUsual(const Program& program, std::uint32_t index);
     bool planFlow(const BlockContext& context);
     /// Tool radius and length compensation of the block (last plan step).
     bool planCompensation(const BlockContext& context);

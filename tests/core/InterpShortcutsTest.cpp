@@ -157,6 +157,56 @@ TEST(InterpShortcuts, ZeroOffsetTableChangedBetweenBlocksIsSeen) {
     EXPECT_EQ(fast, runOf(source, 0, false, change));
 }
 
+/// Every kind of word that makes a block special (BlockInput::special,
+/// I-023), each followed by two usual blocks: the first is decoded after a
+/// full clear, the second after the partial one; a field a special word
+/// left behind would repeat its output or its check in them.
+const char* const kSpecialWordsProgram =
+    "N0010 G54 G1 X10 Y5 F1000\n"
+    "N0020 G1 X11 M3 S500\n"
+    "N0030 G1 X12\n"
+    "N0040 G2 X22 Y15 I17 J10\n"
+    "N0050 T1 E1 D1\n"
+    "N0060 G1 X23 Y16\n"
+    "N0070 G1 X24\n"
+    "N0080 Q17 M108\n"
+    "N0090 G1 X25 F900\n"
+    "N0100 G1 X26\n"
+    "N0110 G4 F0.25\n"
+    "N0120 G1 X27\n"
+    "N0130 G1 X28\n"
+    "N0140 @1=@1+1 G1 X29\n"
+    "N0150 G1 X30\n"
+    "N0160 G1 X@1\n"
+    "N0170 G1 X31\n"
+    "N0180 G92 S2000\n"
+    "N0190 G1 X32\n"
+    "N0200 G1 X33\n"
+    "N0210 G1 X34 S2=100\n"
+    "N0220 G1 X35\n"
+    "N0230 G1 X36 M00\n"
+    "N0240 G1 X37\n"
+    "N0250 G1 X38 MTD(1,0,0,1)=1\n"
+    "N0260 G1 X39\n"
+    "N0270 G90 G1 X40 Y20 F700\n"
+    "N0280 G91 X1\n"
+    "N0290 G90 G17 X41\n"
+    "N0300 G1 X42 Y21 W5\n"
+    "N0310 G1 X43\n"
+    "N0320 G74 X0\n"
+    "N0330 G1 X44\n"
+    "N0340 BST\n";
+
+TEST(InterpShortcuts, SpecialWordsBetweenUsualBlocksGiveTheGeneralRun) {
+    const std::string fast = runOf(kSpecialWordsProgram, 0, true);
+    EXPECT_NE(fast.find("motion P1 N0330"), std::string::npos) << fast;
+    EXPECT_NE(fast.find("aux P1 N0020"), std::string::npos) << fast;
+    EXPECT_EQ(fast.find("aux P1 N0030"), std::string::npos) << fast;
+    EXPECT_EQ(fast, runOf(kSpecialWordsProgram, 0, false));
+    const std::string lathe = runOf(kSpecialWordsProgram, 1, true);
+    EXPECT_EQ(lathe, runOf(kSpecialWordsProgram, 1, false));
+}
+
 std::string readFile(const fs::path& path) {
     std::ifstream in(path, std::ios::binary);
     std::stringstream text;
