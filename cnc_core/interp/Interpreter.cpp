@@ -238,6 +238,14 @@ bool Interpreter::syntaxError(const BlockContext& context) const {
     const BlockDecoder decoder(axes_, names_, evaluator_,
                                {program, index, input_, diagnostics, options_.shortcuts});
     if (!decoder.decode(block_)) return false;
+    if (options_.shortcuts && !input_.special) {  // I-023: no jump, MTD, variable or AFC word
+        afcInvolved_ = afc_ && adaptiveFeedInvolved();
+        flow_.kind = FlowPlan::Kind::Next;
+        return executor_.plan(context, input_, state_, plan_, options_) &&
+               (!afcInvolved_ || planAdaptiveFeed(context)) &&
+               (axisTransfer_ == nullptr || planAxisOwnership(context)) &&
+               (!compensation_.involved(state_.modal, plan_.next) || planCompensation(context));
+    }
     // Asked once per block (the commit asks again); without a control and
     // its words in the block the answer is no.
     afcInvolved_ =
