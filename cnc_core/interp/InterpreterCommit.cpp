@@ -108,7 +108,8 @@ SourceLocation Interpreter::sinkLocation(const Program& program, std::uint32_t /
 // adaptive feed control in the block: commit() without what such a block
 // cannot have (variables, MTD, aux functions, dwell, commands, program
 // control, a jump; I-023). InterpShortcuts.* compare it with commit().
-inline Interpreter::Outcome Interpreter::commitUsual(const Program& program, std::uint32_t index) {
+[[gnu::noinline]] Interpreter::Outcome Interpreter::commitUsual(const Program& program,
+                                                                std::uint32_t index) {
     const bool transformationChanged =
         plan_.next.transformation.kind() != state_.modal.transformation.kind();
     const bool motion = plan_.hasMotion && options_.output.motion;
@@ -123,9 +124,6 @@ inline Interpreter::Outcome Interpreter::commitUsual(const Program& program, std
 
 Interpreter::Outcome Interpreter::commit(const Program& program, std::uint32_t index,
                                          DiagnosticList& diagnostics) {
-    if (options_.shortcuts && !input_.special && !compensation_.planned() && !afcInvolved_ &&
-        flow_.kind == FlowPlan::Kind::Next)
-        return commitUsual(program, index);
     const bool transformationChanged =
         plan_.next.transformation.kind() != state_.modal.transformation.kind();
     // Moves go to tool compensation also when they are not sent: it follows the axes.
