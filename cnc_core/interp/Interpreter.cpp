@@ -238,21 +238,19 @@ bool Interpreter::syntaxError(const BlockContext& context) const {
     const BlockDecoder decoder(axes_, names_, evaluator_,
                                {program, index, input_, diagnostics, options_.shortcuts});
     if (!decoder.decode(block_)) return false;
-    if (options_.shortcuts && !input_.special) {  // I-023: no jump, MTD, variable or AFC word
-        afcInvolved_ = afc_ && adaptiveFeedInvolved();
-        flow_.kind = FlowPlan::Kind::Next;
-        return executor_.plan(context, input_, state_, plan_, options_) &&
-               (!afcInvolved_ || planAdaptiveFeed(context)) &&
-               (axisTransfer_ == nullptr || planAxisOwnership(context)) &&
-               (!compensation_.involved(state_.modal, plan_.next) || planCompensation(context));
-    }
+    // I-023: a usual block has no jump, MTD, variable or AFC word, so the
+    // tests of those words are skipped (they would find nothing).
+    const bool usual = options_.shortcuts && !input_.special;
     // Asked once per block (the commit asks again); without a control and
     // its words in the block the answer is no.
-    afcInvolved_ =
-        (afc_ || input_.adaptiveFeed != 0 || input_.idleMeasurement || input_.stallRecording) &&
-        adaptiveFeedInvolved();
-    return executor_.plan(context, input_, state_, plan_, options_) && planFlow(context) &&
-           (input_.mtdCount == 0 && input_.writeCount == 0 ? true : validateMachineData(context)) &&
+    afcInvolved_ = (afc_ || (!usual && (input_.adaptiveFeed != 0 || input_.idleMeasurement ||
+                                        input_.stallRecording))) &&
+                   adaptiveFeedInvolved();
+    if (usual) flow_.kind = FlowPlan::Kind::Next;
+    return executor_.plan(context, input_, state_, plan_, options_) &&
+           (usual || planFlow(context)) &&
+           (usual || (input_.mtdCount == 0 && input_.writeCount == 0) ||
+            validateMachineData(context)) &&
            (!afcInvolved_ || planAdaptiveFeed(context)) &&
            (axisTransfer_ == nullptr || planAxisOwnership(context)) &&
            (!compensation_.involved(state_.modal, plan_.next) || planCompensation(context));
