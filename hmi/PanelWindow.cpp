@@ -3,6 +3,7 @@
 #include <QCloseEvent>
 #include <QHBoxLayout>
 #include <QMessageBox>
+#include <QScreen>
 #include <QSettings>
 #include <QShortcut>
 #include <QStackedWidget>
@@ -224,12 +225,22 @@ void PanelWindow::onMachineKey(mtc::core::ControlKey key) {
 
 void PanelWindow::restoreSettings() {
     QSettings settings;
-    restoreGeometry(settings.value("window/geometry").toByteArray());
+    if (!restoreGeometry(settings.value("window/geometry").toByteArray())) fitIntoScreen();
     for (int slot = 0; slot < screens_.size(); ++slot) {
         const QString name = settings.value(QString("station%1/screen").arg(slot)).toString();
         if (screens_[slot].contains(name)) currentScreen_[slot] = name;
     }
     showStation(settings.value("window/station", 0).toInt());
+}
+
+void PanelWindow::fitIntoScreen() {
+    // The default size is in logical pixels: at 144 dpi the panel scales by
+    // 1.5, so 1024 x 720 would open as 1536 x 1080 and hang off a 1280 x 1024
+    // screen with the machine keys and soft keys cut off. The window never
+    // goes below what its contents need (Qt keeps the minimum size).
+    const QScreen* where = QWidget::screen();  // not the panel's Screen lookup
+    if (!where) return;
+    resize(size().boundedTo(where->availableGeometry().size()).expandedTo(minimumSizeHint()));
 }
 
 void PanelWindow::saveSettings() const {

@@ -38,7 +38,8 @@ class PanelWindow : public QMainWindow {
     Screen* screen(int slot, const QString& name) const;
     SoftKeyBar* softKeyBar() const { return softKeys_; }
 
-    /// Restores geometry, station and last screens from QSettings.
+    /// Restores geometry, station and last screens from QSettings; without
+    /// a saved geometry, the window is fitted into its screen's free area.
     void restoreSettings();
     /// Writes geometry, station and last screens to QSettings.
     void saveSettings() const;
@@ -50,6 +51,9 @@ class PanelWindow : public QMainWindow {
     void buildStations();
     void installShortcuts();
     void refresh();
+    /// Shrinks the window to its screen's available area, not below its
+    /// minimum size.
+    void fitIntoScreen();
     void onMachineKey(mtc::core::ControlKey key);
     /// An override switch of the shown station one position up or down.
     void stepOverride(bool rapid, int direction);

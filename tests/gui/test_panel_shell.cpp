@@ -2,6 +2,7 @@
 #include <QFile>
 #include <QLabel>
 #include <QPushButton>
+#include <QScreen>
 #include <QSettings>
 #include <QStackedWidget>
 #include <QTemporaryDir>
@@ -181,6 +182,23 @@ class PanelShellTest : public QObject {
         QTRY_VERIFY(!mill.programActive());
         QVERIFY(!mill.alarm().empty());
         QVERIFY2(QString::fromStdString(mill.alarm()).contains("N0002"), mill.alarm().c_str());
+    }
+
+    void withoutSavedGeometryTheWindowShrinksToItsScreen() {
+        QSettings().remove("window/geometry");
+        PanelFixture panel;
+        const QSize room = panel.window->QWidget::screen()->availableGeometry().size();
+        const QSize needed = panel.window->minimumSizeHint();
+        const QSize opened = panel.window->size();
+        // The offscreen screen (800 x 600) is smaller than the default size,
+        // as a 1280 x 1024 screen is at 144 dpi (scale 1.5).
+        if (room.width() >= opened.width() && room.height() >= opened.height())
+            QSKIP("the default window size already fits this screen");
+        panel.window->restoreSettings();
+        // As small as the screen's free area, but never below what the
+        // contents need (then, as offscreen, the screen is too small anyway).
+        QCOMPARE(panel.window->size(), room.expandedTo(needed).boundedTo(opened));
+        QVERIFY(panel.window->width() < opened.width() || panel.window->height() < opened.height());
     }
 
     void settingsKeepScreensStationAndGeometry() {
