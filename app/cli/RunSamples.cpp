@@ -1,5 +1,7 @@
 #include "cli/RunSamples.h"
 
+#include <utility>
+
 #include "cnc_core/cell/Station.h"
 
 namespace mtc::cli {
@@ -42,8 +44,9 @@ void RunSamples::record(const core::Station& station) {
     const core::SimulatedMachine& machine = station.machine();
     Sample sample;
     sample.t = machine.seconds();
-    sample.program = machine.currentLocation().program;
-    sample.block = machine.currentLocation().block;
+    core::SourceLocation at = machine.currentLocation();
+    sample.program = at.program;
+    sample.block = std::move(at.block);
     for (std::size_t axis = 0; axis < names_.size(); ++axis)
         sample.position.push_back(machine.position(static_cast<int>(axis)));
     sample.feed = machine.actualFeed();

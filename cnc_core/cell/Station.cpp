@@ -498,10 +498,12 @@ void Station::recordQueuedBlock(const ProgramPtr& program, std::uint32_t index, 
 void Station::showCurrentBlock() {
     queued_.follow(machine_.itemsDone(), machine_.atBlockStop(), machine_.idle());
     // The block the machine executes; while it stands, the one interpreted last.
-    if (!machine_.idle() && !machine_.currentLocation().block.empty()) {
-        if (control_.currentBlock() != machine_.currentLocation().block)
-            control_.setCurrentBlock(machine_.currentLocation().block);
-        return;
+    if (!machine_.idle()) {
+        const SourceLocation at = machine_.currentLocation();
+        if (!at.block.empty()) {
+            if (control_.currentBlock() != at.block) control_.setCurrentBlock(at.block);
+            return;
+        }
     }
     control_.setCurrentBlock(lastProgram_ ? lastProgram_->blockId(lastBlock_) : std::string());
 }

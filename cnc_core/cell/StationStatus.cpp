@@ -74,7 +74,7 @@ ShownBlock shownBlock(const Station& station) {
         return shown;
     }
     const SimulatedMachine& machine = station.machine();
-    const SourceLocation& at = machine.currentLocation();
+    const SourceLocation at = machine.currentLocation();
     if (!machine.idle() && at.line > 0) {
         shown.program = runProgram(station, at.program);
         if (shown.program) shown.index = blockIndexAtLine(*shown.program, at.line);

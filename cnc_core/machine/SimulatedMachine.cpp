@@ -150,18 +150,17 @@ void SimulatedMachine::motion(const Motion& m) {
 double SimulatedMachine::advance(double seconds) {
     if (!(seconds > 0.0)) return 0.0;
     // The station filled the queue as far as it could: with room left it
-    // has nothing to give until the queue runs empty.
+    // has nothing to give until the queue runs empty. Without room: on
+    // until the look-ahead of the next move is no longer full (with a batch
+    // many entries, else one).
     const bool hadRoom = engine_.wantsMore();
-    double left = seconds;
-    while (left > 0.0) {
-        const double used = engine_.advance(left);
-        left = used >= left ? 0.0 : left - used;
-        collectReached();
-        applyClockSteps();
-        // With a batch: on until the look-ahead of the next move is no longer full.
-        if (engine_.idle() || (!hadRoom && !engine_.lookAheadFull())) break;
-    }
-    return seconds - left;
+    const std::uint64_t doneBefore = engine_.itemsDone();
+    finishedAt_.clear();
+    const double used =
+        engine_.advanceOver(seconds, hadRoom ? 0 : engine_.lookAhead(), finishedAt_);
+    collectReached();
+    applyClockStepsAfter(doneBefore);
+    return used;
 }
 
 void SimulatedMachine::moveReachedAux() {

@@ -114,7 +114,7 @@ class SimulatedMachine : public MachineSink {
     double actualFeed() const { return engine_.velocity() * 60.0; }
     /// Program, block and line of the output being worked off (the last one
     /// when idle; empty before the first).
-    const SourceLocation& currentLocation() const { return engine_.currentLocation(); }
+    SourceLocation currentLocation() const { return engine_.currentLocation(); }
     /// The spindles S1..S3 (actual speeds ramp in time).
     const motion::SpindleSet& spindles() const { return engine_.spindles(); }
     /// Spindle `spindle` (1..3) is configured (in spindle mode).
@@ -177,9 +177,13 @@ class SimulatedMachine : public MachineSink {
     /// was queued, whichever is later. Under a batch it is counted once the
     /// machine is where it would stand without the batch (MOT-022).
     void queueClock(double seconds);
-    void stepClock(double seconds);
-    /// The clock steps whose moment the machine has reached.
+    void stepClock(double seconds, double busy);
+    /// The clock steps whose moment the machine has reached, at its busy time now.
     void applyClockSteps();
+    /// The same after advance() let the engine run on from `doneBefore`
+    /// items done: each step at the busy time the machine had when it was
+    /// due (finishedAt_).
+    void applyClockStepsAfter(std::uint64_t doneBefore);
     void dropTakenClockSteps();
     /// Batching: works the queue off to where the machine would stand now
     /// without a batch (before anything reads the machine's time).
@@ -220,6 +224,8 @@ class SimulatedMachine : public MachineSink {
     };
     std::vector<ClockStep> clockSteps_;  ///< in queue order, from clockStepsDone_ on
     std::size_t clockStepsDone_ = 0;
+    /// The busy time at the end of each entry the last advance() finished.
+    std::vector<double> finishedAt_;
     /// Batching: itemsDone() when the block being interpreted would have been
     /// queued without a batch (0 without a batch: now).
     std::uint64_t blockDue_ = 0;

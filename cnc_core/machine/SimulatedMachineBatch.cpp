@@ -41,11 +41,11 @@ void SimulatedMachine::queueClock(double seconds) {
         return;
     }
     applyClockSteps();
-    stepClock(seconds);
+    stepClock(seconds, this->seconds());
 }
 
-void SimulatedMachine::stepClock(double seconds) {
-    afcClock_ = std::max(afcClock_, this->seconds()) + seconds;
+void SimulatedMachine::stepClock(double seconds, double busy) {
+    afcClock_ = std::max(afcClock_, busy) + seconds;
     if (afc_) afc_->setClock(afcClock_);
 }
 
@@ -53,9 +53,24 @@ void SimulatedMachine::applyClockSteps() {
     for (; clockStepsDone_ < clockSteps_.size(); ++clockStepsDone_) {
         const ClockStep& step = clockSteps_[clockStepsDone_];
         if (step.itemsDone > engine_.itemsDone()) return dropTakenClockSteps();
-        stepClock(step.seconds);
+        stepClock(step.seconds, seconds());
     }
     clockSteps_.clear();  // all taken: the storage is used again from its start
+    clockStepsDone_ = 0;
+}
+
+void SimulatedMachine::applyClockStepsAfter(std::uint64_t doneBefore) {
+    // A driver returning after every entry took each step at the busy time
+    // of the first return with the step's items done: the end of item
+    // `itemsDone`, or (a step due before the call) the first return's.
+    const std::uint64_t done = engine_.itemsDone();
+    for (; clockStepsDone_ < clockSteps_.size(); ++clockStepsDone_) {
+        const ClockStep& step = clockSteps_[clockStepsDone_];
+        if (step.itemsDone > done) return dropTakenClockSteps();
+        const std::uint64_t at = step.itemsDone > doneBefore ? step.itemsDone - doneBefore : 1;
+        stepClock(step.seconds, at <= finishedAt_.size() ? finishedAt_[at - 1] : seconds());
+    }
+    clockSteps_.clear();
     clockStepsDone_ = 0;
 }
 

@@ -6,6 +6,7 @@
 
 #include "cnc_core/motion/JunctionRule.h"
 #include "cnc_core/motion/PathLimits.h"
+#include "cnc_core/motion/QueuedLocation.h"
 #include "cnc_core/motion/TimedCourse.h"
 
 namespace mtc::core::motion {
@@ -30,7 +31,7 @@ struct QueueItem {
     /// constant velocity when it has none.
     enum class Kind : std::uint8_t { Move, Dwell, Action, Timed };
     Kind kind = Kind::Move;
-    SourceLocation where;
+    QueuedLocation where;  ///< no string per entry (MOT-027)
     std::uint32_t blockIndex = 0;
     // Move:
     PathLimits limits;

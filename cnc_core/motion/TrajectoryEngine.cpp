@@ -12,8 +12,8 @@ constexpr double kForever = std::numeric_limits<double>::infinity();
 
 /// Two queue entries come from the same block (a block may queue several:
 /// an inserted corner arc and its line, an M function and a move).
-bool sameBlock(const SourceLocation& a, const SourceLocation& b) {
-    return a.program == b.program && a.line == b.line;
+bool sameBlock(const QueuedLocation& a, const QueuedLocation& b) {
+    return a.sameBlock(b);
 }
 }  // namespace
 
@@ -72,7 +72,7 @@ void TrajectoryEngine::pushMove(const Motion& motion, BlockTransition mode) {
                                  {&geometry, rapid, mode}, limits_);
     QueueItem& item = queue_.pushBack();  // the slot that holds `geometry`
     item.kind = QueueItem::Kind::Move;
-    item.where = motion.where;
+    item.where.assign(motion.where);
     item.blockIndex = motion.blockIndex;
     item.limits = pathLimits(item.geometry, limits_);
     item.rapid = rapid;
@@ -88,14 +88,14 @@ void TrajectoryEngine::pushMove(const Motion& motion, BlockTransition mode) {
 void TrajectoryEngine::pushDwell(const SourceLocation& where, double seconds) {
     QueueItem& item = queue_.pushBack();
     item.kind = QueueItem::Kind::Dwell;
-    item.where = where;
+    item.where.assign(where);
     item.seconds = std::isfinite(seconds) ? std::max(0.0, seconds) : 0.0;
 }
 
 void TrajectoryEngine::pushAction(const SourceLocation& where, const MachineAction& action) {
     QueueItem& item = queue_.pushBack();
     item.kind = QueueItem::Kind::Action;
-    item.where = where;
+    item.where.assign(where);
     item.action = action;
 }
 
@@ -103,7 +103,7 @@ void TrajectoryEngine::pushTimedMove(const Motion& motion, double seconds, doubl
                                      std::shared_ptr<const TimedCourse> course) {
     QueueItem& item = queue_.pushBack();
     item.kind = QueueItem::Kind::Timed;
-    item.where = motion.where;
+    item.where.assign(motion.where);
     item.blockIndex = motion.blockIndex;
     item.geometry.describe(motion, limits_);
     item.rapid = motion.type == MotionType::Rapid;
@@ -192,8 +192,7 @@ void TrajectoryEngine::spend(double seconds, double busy) {
     spindles_.advance(seconds);
 }
 
-double TrajectoryEngine::advance(double seconds) {
-    if (!(seconds > 0.0) || !std::isfinite(seconds)) return 0.0;
+[[gnu::always_inline]] inline double TrajectoryEngine::runFor(double seconds, bool& finished) {
     double remaining = seconds;
     while (remaining > 0.0) {
         if (queue_.empty()) {
@@ -205,7 +204,6 @@ double TrajectoryEngine::advance(double seconds) {
             return seconds;
         }
         QueueItem& item = queue_.front();
-        bool finished = false;
         double used = 0.0;
         switch (item.kind) {
             case QueueItem::Kind::Move:
@@ -230,7 +228,29 @@ double TrajectoryEngine::advance(double seconds) {
     return seconds;
 }
 
-double TrajectoryEngine::runMove(QueueItem& move, double room, bool& finished) {
+double TrajectoryEngine::advance(double seconds) {
+    if (!(seconds > 0.0) || !std::isfinite(seconds)) return 0.0;
+    bool finished = false;
+    return runFor(seconds, finished);
+}
+
+double TrajectoryEngine::advanceOver(double seconds, std::size_t keep,
+                                     std::vector<double>& finishedAt) {
+    // The driver's loop: left = what advance(left) left over, after each call.
+    double left = seconds;
+    while (left > 0.0) {
+        bool finished = false;
+        const double used = std::isfinite(left) ? runFor(left, finished) : 0.0;
+        left = used >= left ? 0.0 : left - used;
+        if (finished) finishedAt.push_back(busy_);
+        if (queue_.size() < keep || queue_.empty()) break;
+    }
+    return seconds - left;
+}
+
+// Inline in runFor(), which advance() and advanceOver() both inline (MOT-027).
+[[gnu::always_inline]] inline double TrajectoryEngine::runMove(QueueItem& move, double room,
+                                                               bool& finished) {
     if (!planned_) replanFront();
     const double left = profile_.reachesEnd() ? profile_.duration() - profileTime_ : kForever;
     if (left <= room) {
@@ -319,9 +339,9 @@ double TrajectoryEngine::runTimed(QueueItem& timed, double room, bool& finished)
     return room;
 }
 
-void TrajectoryEngine::finishFront() {
+[[gnu::always_inline]] inline void TrajectoryEngine::finishFront() {
     QueueItem& item = queue_.front();
-    lastWhere_ = std::move(item.where);  // the slot is reused: its text may go
+    lastWhere_ = item.where;
     lastBlock_ = item.blockIndex;
     if (item.kind == QueueItem::Kind::Action) reached_.push_back(item.action.tag);
     if (item.kind == QueueItem::Kind::Timed && item.fraction < 1.0)
@@ -485,9 +505,9 @@ double TrajectoryEngine::distanceToGo(int axis) const {
     return move->geometry.machineEnd()[k] - position_[k];
 }
 
-const SourceLocation& TrajectoryEngine::currentLocation() const {
+SourceLocation TrajectoryEngine::currentLocation() const {
     // At a single-block stop the block just finished is the one shown.
-    return queue_.empty() || atBlockStop_ ? lastWhere_ : queue_.front().where;
+    return (queue_.empty() || atBlockStop_ ? lastWhere_ : queue_.front().where).location();
 }
 
 std::uint32_t TrajectoryEngine::currentBlockIndex() const {

@@ -83,6 +83,14 @@ class TrajectoryEngine {
     /// returns early (less than `seconds`) when a queue entry is finished, so
     /// the driver can refill the queue before the planning goes on.
     double advance(double seconds);
+    /// advance() called again after every entry it finishes, as a driver
+    /// that queues nothing in between calls it (the simulated machine's
+    /// loop; one call instead of one per entry, MOT-027): on until the time
+    /// is used, the queue is empty or fewer than `keep` entries are queued
+    /// (0: until empty). The busy time at the end of each entry it finishes
+    /// is appended to `finishedAt`, oldest first. Returns the time used, to
+    /// the bit what the driver's loop counts.
+    double advanceOver(double seconds, std::size_t keep, std::vector<double>& finishedAt);
 
     // --- the operator ---
     /// Feed override of G1/G2/G3, 0 .. feedOverrideMax %.
@@ -145,9 +153,10 @@ class TrajectoryEngine {
     /// moves). After a move adaptive feed control stopped on its path (509,
     /// 510) and until anything else is queued: what is left of it.
     double distanceToGo(int axis) const;
-    /// The entry being executed, or the last one executed when idle or at a
-    /// single-block stop.
-    const SourceLocation& currentLocation() const;
+    /// Where the entry being executed comes from, or the last one executed
+    /// when idle or at a single-block stop (built when asked: the queue keeps
+    /// no string per entry, MOT-027).
+    SourceLocation currentLocation() const;
     /// Forgets the last executed entry (a new run: nothing executed yet).
     void clearLocation() {
         lastWhere_ = {};
@@ -196,6 +205,9 @@ class TrajectoryEngine {
     void replanAll();
     /// Time passes; `busy` of it counts as busy time.
     void spend(double seconds, double busy);
+    /// advance() without its check of `seconds`; `finished`: it returned
+    /// because an entry was finished.
+    double runFor(double seconds, bool& finished);
     double runMove(QueueItem& move, double room, bool& finished);
     double runDwell(QueueItem& dwell, double room, bool& finished);
     double runAction(QueueItem& action, double room, bool& finished);
@@ -228,7 +240,7 @@ class TrajectoryEngine {
     bool held_ = false;
     bool blockStops_ = false;   ///< single block: rest at each block's end
     bool atBlockStop_ = false;  ///< waiting there for continueAfterBlockStop()
-    SourceLocation lastWhere_;
+    QueuedLocation lastWhere_;
     std::uint32_t lastBlock_ = 0;
     std::vector<std::uint32_t> reached_;
     std::size_t batch_ = 0;              ///< entries beyond the look-ahead depth (setBatch)
