@@ -13,7 +13,7 @@ bool movesAxis(const Program& program, std::int32_t parsedIndex) {
     if (parsedIndex < 0) return false;
     const Block block = program.blocks[static_cast<std::size_t>(parsedIndex)];
     for (std::uint32_t w = block.firstWord; w < block.firstWord + block.wordCount; ++w)
-        if (program.words[w].kind == WordKind::Axis) return true;
+        if (program.words.kindAt(w) == WordKind::Axis) return true;
     return false;
 }
 

@@ -117,6 +117,13 @@ WordList::Wide& WordList::wideAt(std::size_t index, Packed slot) {
     return findOverflow(overflow_, index)->second;
 }
 
+WordKind WordList::wholeKind(std::size_t index, Packed slot) const {
+    if ((slot & kCodeMask) == kExtendedCode) return extended_[slot >> kWideShift].kind;
+    const Wide& p = wideAt(index, slot);
+    if (p.bits & kExtendedBit) return extended_[static_cast<std::size_t>(p.payload)].kind;
+    return static_cast<WordKind>(p.kind);
+}
+
 void WordList::readWide(std::size_t index, Packed slot, Word& out) const {
     if ((slot & kCodeMask) == kExtendedCode) {
         out = extended_[slot >> kWideShift];

@@ -98,6 +98,14 @@ class WordList {
         setNumber(out, wideHead(wide), wide.column, wide.payload);
         return true;
     }
+    /// The kind of the word at `index` alone, without its value or column:
+    /// whole-program scans (restart, compiler) that look for a few kinds read
+    /// every other word through it. Precondition: index < size().
+    WordKind kindAt(std::size_t index) const {
+        const Packed slot = slots_[index];
+        const Packed code = slot & kCodeMask;
+        return code < kExtendedCode ? heads_[code].kind : wholeKind(index, slot);
+    }
     const Word back() const { return (*this)[size() - 1]; }
     const Word front() const { return (*this)[0]; }
     const_iterator begin() const;
@@ -241,6 +249,8 @@ class WordList {
     const Wide& wideAt(std::size_t index, Packed slot) const;
     Wide& wideAt(std::size_t index, Packed slot);
     void readWide(std::size_t index, Packed slot, Word& out) const;
+    /// kindAt() of a wide or extended slot.
+    WordKind wholeKind(std::size_t index, Packed slot) const;
     /// The head (as setNumber() takes it) of a plain wide form.
     static std::uint32_t wideHead(const Wide& wide) {
         return wide.kind | (std::uint32_t{wide.letter} << 8) |

@@ -47,6 +47,9 @@ int LevelReach::successors(std::uint32_t block, std::uint32_t next[2]) const {
     Flow flow = Flow::Next;
     long label = -1;
     for (std::uint32_t w = b.firstWord; w < b.firstWord + b.wordCount && w < p.words.size(); ++w) {
+        // Only M and jump words change the flow: the others are not read whole.
+        const WordKind kind = p.words.kindAt(w);
+        if (kind != WordKind::M && kind != WordKind::Jump) continue;
         const Word word = p.words[w];
         if (word.kind == WordKind::M && word.expr < 0 && (word.number == 2 || word.number == 30))
             ends = true;  // M02 / M30 end the program before any jump
@@ -106,10 +109,9 @@ std::optional<LevelReach::Subroutine> LevelReach::subroutineOf(std::uint32_t blo
     for (std::uint32_t b = 0; b < p.blocks.size(); ++b) {
         const Block blk = p.blocks[b];
         for (std::uint32_t w = blk.firstWord; w < blk.firstWord + blk.wordCount; ++w) {
+            if (p.words.kindAt(w) != WordKind::Jump) continue;
             const Word word = p.words[w];
-            if (word.kind != WordKind::Jump ||
-                (word.jump != JumpKind::BSR && word.jump != JumpKind::BEV))
-                continue;
+            if (word.jump != JumpKind::BSR && word.jump != JumpKind::BEV) continue;
             const long label = p.findLabel(p.text(word.text));
             if (label >= 0) calls.emplace(label, b);
         }

@@ -287,15 +287,16 @@ std::optional<std::uint32_t> ProgramScan::lastPrimaryIn(std::uint32_t first,
 long ProgramScan::jumpWordOf(std::uint32_t block) const {
     const Block b = program_->blocks[block];
     for (std::uint32_t w = b.firstWord; w < b.firstWord + b.wordCount; ++w)
-        if (program_->words[w].kind == WordKind::Jump) return static_cast<long>(w);
+        if (program_->words.kindAt(w) == WordKind::Jump) return static_cast<long>(w);
     return -1;
 }
 
 bool ProgramScan::hasG(std::uint32_t block, int g) const {
     const Block b = program_->blocks[block];
     for (std::uint32_t w = b.firstWord; w < b.firstWord + b.wordCount; ++w) {
+        if (program_->words.kindAt(w) != WordKind::G) continue;
         const Word word = program_->words[w];
-        if (word.kind == WordKind::G && word.expr < 0 && word.number == g) return true;
+        if (word.expr < 0 && word.number == g) return true;
     }
     return false;
 }
@@ -331,6 +332,9 @@ bool ProgramScan::stopsStraightFlow(std::uint32_t block, bool& isReturn) const {
     isReturn = false;
     const Block b = program_->blocks[block];
     for (std::uint32_t w = b.firstWord; w < b.firstWord + b.wordCount; ++w) {
+        // Only M and jump words stop the flow: the others are not read whole.
+        const WordKind kind = program_->words.kindAt(w);
+        if (kind != WordKind::M && kind != WordKind::Jump) continue;
         const Word word = program_->words[w];
         if (word.kind == WordKind::M && word.expr < 0 && (word.number == 2 || word.number == 30))
             return true;

@@ -281,10 +281,8 @@ std::optional<Word> jumpWordOf(const Program& program, std::uint32_t block) {
     if (block >= program.blocks.size()) return std::nullopt;
     const Block b = program.blocks[block];
     for (std::uint32_t w = b.firstWord; w < b.firstWord + b.wordCount && w < program.words.size();
-         ++w) {
-        const Word word = program.words[w];
-        if (word.kind == WordKind::Jump) return word;
-    }
+         ++w)
+        if (program.words.kindAt(w) == WordKind::Jump) return program.words[w];
     return std::nullopt;
 }
 

@@ -162,6 +162,8 @@ TEST(ParserStorage, NumberWordsOfEveryForm) {
         EXPECT_EQ(w.column, whole.column);
         EXPECT_EQ(w.letter, whole.letter);
     }
+    for (std::size_t i = 0; i < list.size(); ++i)  // narrow, wide and extended
+        EXPECT_EQ(list.kindAt(i), list[i].kind) << i;
     list.clear();  // forgets the heads and the parser's codes
     EXPECT_EQ(list.plainCodeAt(WordList::codeKey('G', 0)), WordList::kWideCode);
     ASSERT_TRUE(list.tryPushNumber(WordKind::M, 'M', 0, 1, 30, 0));
@@ -219,6 +221,7 @@ TEST(ParserStorage, SetReplacesWords) {
     w.column = 7;  // a narrow word's column byte changes too
     list.set(1, w);
     EXPECT_EQ(list[0].kind, WordKind::Command);
+    EXPECT_EQ(list.kindAt(0), WordKind::Command);
     EXPECT_EQ(list[1].number, 3);
     EXPECT_EQ(list[1].column, 7);
     w.column = 300;  // beyond the column byte: the whole word is kept
@@ -228,6 +231,8 @@ TEST(ParserStorage, SetReplacesWords) {
     w.column = 1;
     list.set(0, w);  // extended slot reused
     EXPECT_EQ(list[0].kind, WordKind::G);
+    EXPECT_EQ(list.kindAt(0), WordKind::G);
+    EXPECT_EQ(list.kindAt(1), WordKind::G);
     EXPECT_EQ(list[0].number, 3);
     int count = 0;
     for (const Word& each : list)
