@@ -108,5 +108,12 @@ TEST(PodArray, ArraysPastTheLargeArraySizeKeepTheirContentsThroughGrowth) {
     EXPECT_TRUE(holdsCountingUpTo(copy, count));
 }
 
+TEST(PodArray, LargeArraysStartOnAHugePageBoundary) {
+    // Only the last partial 2 MiB stretch of a large array takes small pages.
+    PodArray<Pair> array;
+    array.reserve(kLargeArrayBytes / sizeof(Pair));
+    EXPECT_EQ(reinterpret_cast<std::uintptr_t>(array.data()) % (std::uintptr_t{2} << 20), 0u);
+}
+
 }  // namespace
 }  // namespace mtc::core
