@@ -1,5 +1,6 @@
 #include "cnc_core/restart/LevelReach.h"
 
+#include <algorithm>
 #include <map>
 
 namespace mtc::core {
@@ -36,6 +37,22 @@ Flow flowOf(JumpKind kind) {
     return Flow::End;
 }
 
+/// Marks the blocks of next[0, n) not seen yet as seen: the first of them is
+/// returned (to be walked at once), the others wait in `open`; -1 for none.
+long markNew(const std::uint32_t* next, int n, std::vector<bool>& seen,
+             std::vector<std::uint32_t>& open) {
+    long first = -1;
+    for (int i = 0; i < n; ++i) {
+        if (seen[next[i]]) continue;
+        seen[next[i]] = true;
+        if (first < 0)
+            first = next[i];
+        else
+            open.push_back(next[i]);
+    }
+    return first;
+}
+
 }  // namespace
 
 int LevelReach::successors(std::uint32_t block, std::uint32_t next[2]) const {
@@ -46,7 +63,9 @@ int LevelReach::successors(std::uint32_t block, std::uint32_t next[2]) const {
     bool ends = false;
     Flow flow = Flow::Next;
     long label = -1;
-    for (std::uint32_t w = b.firstWord; w < b.firstWord + b.wordCount && w < p.words.size(); ++w) {
+    const std::size_t end =
+        std::min<std::size_t>(std::size_t{b.firstWord} + b.wordCount, p.words.size());
+    for (std::size_t w = b.firstWord; w < end; ++w) {
         // Only M and jump words change the flow: the others are not read whole.
         const WordKind kind = p.words.kindAt(w);
         if (kind != WordKind::M && kind != WordKind::Jump) continue;
@@ -77,16 +96,16 @@ bool LevelReach::walk(const std::vector<std::uint32_t>& entries, std::vector<boo
             open.push_back(e);
         }
     while (!open.empty()) {
-        const std::uint32_t b = open.back();
+        long b = open.back();
         open.pop_back();
-        if (b == stopAt) return true;
-        std::uint32_t next[2];
-        const int n = successors(b, next);
-        for (int i = 0; i < n; ++i)
-            if (!seen[next[i]]) {
-                seen[next[i]] = true;
-                open.push_back(next[i]);
-            }
+        // Straight on while the flow finds new blocks (the blocks seen are
+        // the same in any order).
+        while (b >= 0) {
+            if (static_cast<std::uint32_t>(b) == stopAt) return true;
+            std::uint32_t next[2];
+            const int n = successors(static_cast<std::uint32_t>(b), next);
+            b = markNew(next, n, seen, open);
+        }
     }
     return false;
 }
