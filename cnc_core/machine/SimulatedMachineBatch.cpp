@@ -15,6 +15,11 @@ namespace {
 constexpr double kCatchUpSeconds = 1e9;
 /// Taken clock steps kept before they are dropped (dropTakenClockSteps()).
 constexpr std::size_t kClockStepsKept = 256;
+
+/// The trend clock after a step of `seconds` taken at busy time `busy`.
+double clockAfter(double clock, double busy, double seconds) {
+    return std::max(clock, busy) + seconds;
+}
 }  // namespace
 
 void SimulatedMachine::setBatch(std::size_t entries) {
@@ -45,7 +50,7 @@ void SimulatedMachine::queueClock(double seconds) {
 }
 
 void SimulatedMachine::stepClock(double seconds, double busy) {
-    afcClock_ = std::max(afcClock_, busy) + seconds;
+    afcClock_ = clockAfter(afcClock_, busy, seconds);
     if (afc_) afc_->setClock(afcClock_);
 }
 
@@ -64,12 +69,18 @@ void SimulatedMachine::applyClockStepsAfter(std::uint64_t doneBefore) {
     // of the first return with the step's items done: the end of item
     // `itemsDone`, or (a step due before the call) the first return's.
     const std::uint64_t done = engine_.itemsDone();
+    const std::size_t first = clockStepsDone_;
     for (; clockStepsDone_ < clockSteps_.size(); ++clockStepsDone_) {
         const ClockStep& step = clockSteps_[clockStepsDone_];
-        if (step.itemsDone > done) return dropTakenClockSteps();
+        if (step.itemsDone > done) break;
         const std::uint64_t at = step.itemsDone > doneBefore ? step.itemsDone - doneBefore : 1;
-        stepClock(step.seconds, at <= finishedAt_.size() ? finishedAt_[at - 1] : seconds());
+        const double busy = at <= finishedAt_.size() ? finishedAt_[at - 1] : seconds();
+        afcClock_ = clockAfter(afcClock_, busy, step.seconds);
     }
+    // Adaptive feed control reads its clock after this call, not between
+    // the steps: the last one's is the one to give it.
+    if (afc_ && clockStepsDone_ != first) afc_->setClock(afcClock_);
+    if (clockStepsDone_ < clockSteps_.size()) return dropTakenClockSteps();
     clockSteps_.clear();
     clockStepsDone_ = 0;
 }

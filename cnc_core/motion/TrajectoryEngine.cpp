@@ -341,7 +341,9 @@ double TrajectoryEngine::runTimed(QueueItem& timed, double room, bool& finished)
 
 [[gnu::always_inline]] inline void TrajectoryEngine::finishFront() {
     QueueItem& item = queue_.front();
-    lastWhere_ = item.where;
+    // lastWhere_ is read only while nothing is queued or at a single-block
+    // stop, and by the single-block test below: kept for those (MOT-027).
+    if (blockStops_ || queue_.size() == 1) lastWhere_ = item.where;
     lastBlock_ = item.blockIndex;
     if (item.kind == QueueItem::Kind::Action) reached_.push_back(item.action.tag);
     if (item.kind == QueueItem::Kind::Timed && item.fraction < 1.0)

@@ -32,6 +32,20 @@ struct QueueFiller {
     explicit QueueFiller(unsigned seed) : random(seed) {}
 
     void push(TrajectoryEngine& engine) {
+        const std::uint64_t before = engine.itemsQueued();
+        pushOne(engine);
+        if (engine.itemsQueued() > before) queuedBlocks.push_back("N" + std::to_string(entries));
+    }
+
+    /// The block the engine shows (currentLocation): the entry being
+    /// executed, or the last one finished while it stands or waits.
+    std::string shownBlock(const TrajectoryEngine& engine) const {
+        const std::uint64_t done = engine.itemsDone();
+        if (!engine.idle() && !engine.atBlockStop()) return queuedBlocks[done];
+        return done > 0 ? queuedBlocks[done - 1] : std::string();
+    }
+
+    void pushOne(TrajectoryEngine& engine) {
         ++entries;
         const int kind = static_cast<int>(random() % 10);
         SourceLocation where{1, "N" + std::to_string(entries), entries, 0};
@@ -60,6 +74,7 @@ struct QueueFiller {
 
     std::mt19937 random;
     int entries = 0;
+    std::vector<std::string> queuedBlocks;  ///< by queue item number
     double x0 = 0.0, y0 = 0.0;
 };
 
@@ -141,6 +156,7 @@ TEST(MotionAdvanceOver, GivesTheDriversLoopBitForBit) {
             const Seen got = overEntries(b, tick, keep);
             ASSERT_TRUE(expected == got) << "seed " << seed << " call " << call;
             ASSERT_EQ(a.currentLocation().block, b.currentLocation().block);
+            ASSERT_EQ(b.currentLocation().block, fillB.shownBlock(b)) << seed << " " << call;
             finished += got.finishedAt.size();
             callsOverSeveral += got.finishedAt.size() > 1;
             if (a.idle() && fillA.entries >= 300) break;
