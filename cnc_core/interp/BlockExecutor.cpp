@@ -31,15 +31,13 @@ std::string formatNumber(double value) {
 
 }  // namespace
 
-bool BlockExecutor::plan(const BlockContext& c, const BlockInput& in, const InterpreterState& state,
-                         BlockPlan& plan, const PlanningOptions& options) const {
+bool BlockExecutor::planGeneral(const BlockContext& c, const BlockInput& in,
+                                const InterpreterState& state, BlockPlan& plan,
+                                const PlanningOptions& options) const {
     if (in.repeatedAxisColumn && in.g[kGroupPlane] != 20)
         return c.error("WORD_TWICE", "an axis is programmed twice in one block",
                        in.repeatedAxisColumn);
-    plan.hasMotion = false;
-    plan.dwellSeconds = -1.0;
-    plan.programControl = -1;
-    plan.auxChanged = false;
+    clearPlan(plan);
     ModalState& next = plan.next;
     // The usual block programs only G0..G3 of the modal groups and only F of
     // the scalar words: what modalGroups() and scalars() do then, without

@@ -40,10 +40,36 @@ class BlockExecutor {
     /// Fills `plan` for `input`. Precondition: plan.next equals state.modal
     /// (the interpreter keeps it so, which saves a copy per block). Returns
     /// false when the block must be rejected (errors added through `context`).
+    /// Inline for the usual block (I-023) with no G word but G0..G3 and no
+    /// axis written twice: what planGeneral() does for it, without a call of
+    /// its own (InterpShortcuts.* compare with options.shortcuts off).
     bool plan(const BlockContext& context, const BlockInput& input, const InterpreterState& state,
-              BlockPlan& plan, const PlanningOptions& options) const;
+              BlockPlan& plan, const PlanningOptions& options) const {
+        constexpr std::uint32_t kOtherGroups = ~(1u << kGroupInterpolation);
+        if (!options.shortcuts || input.special || input.repeatedAxisColumn != 0 ||
+            (input.gMask & kOtherGroups) != 0)
+            return planGeneral(context, input, state, plan, options);
+        clearPlan(plan);
+        ModalState& next = plan.next;
+        if (input.gMask != 0) next.g[kGroupInterpolation] = input.g[kGroupInterpolation];
+        if (input.hasFeed) next.feed = input.feed * (next.g[kGroupUnits] == 70 ? kMmPerInch : 1.0);
+        if (input.axisMask == 0) return true;  // (no G20: only group 1 is programmed)
+        return motion_.plan(context, input, state.modal, plan, options);
+    }
 
   private:
+    static constexpr double kMmPerInch = 25.4;  ///< F under G70
+    /// plan() of every block.
+    bool planGeneral(const BlockContext& context, const BlockInput& input,
+                     const InterpreterState& state, BlockPlan& plan,
+                     const PlanningOptions& options) const;
+    /// What a block without motion, dwell, program control or aux functions plans.
+    static void clearPlan(BlockPlan& plan) {
+        plan.hasMotion = false;
+        plan.dwellSeconds = -1.0;
+        plan.programControl = -1;
+        plan.auxChanged = false;
+    }
     /// G words (and RI): plain groups, G30, plane, G31/G32, explicit groups.
     /// `restoring`: a re-entry point is set (ADJUST / REPOS), G32 may omit RI.
     bool modalGroups(const BlockContext& c, const BlockInput& in, const ModalState& current,

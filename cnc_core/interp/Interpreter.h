@@ -260,6 +260,16 @@ class Interpreter {
     Outcome commit(const Program& program, std::uint32_t index, DiagnosticList& diagnostics);
     /// commit() of a usual block (I-023).
     Outcome commitUsual(const Program& program, std::uint32_t index);
+    /// The first step of both commits: the move's start (when `motion`) and
+    /// the planned modal state. True when the transformation changed.
+    bool commitModalState(bool motion) {
+        const bool transformationChanged =
+            plan_.next.transformation.kind() != state_.modal.transformation.kind();
+        if (motion) motion_.start = state_.modal.machine;
+        assignModalState(state_.modal, plan_.next);
+        planSynced_ = true;
+        return transformationChanged;
+    }
     bool planFlow(const BlockContext& context);
     /// Tool radius and length compensation of the block (last plan step).
     bool planCompensation(const BlockContext& context);

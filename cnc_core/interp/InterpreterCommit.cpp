@@ -110,13 +110,8 @@ SourceLocation Interpreter::sinkLocation(const Program& program, std::uint32_t /
 // control, a jump; I-023). InterpShortcuts.* compare it with commit().
 [[gnu::noinline]] Interpreter::Outcome Interpreter::commitUsual(const Program& program,
                                                                 std::uint32_t index) {
-    const bool transformationChanged =
-        plan_.next.transformation.kind() != state_.modal.transformation.kind();
     const bool motion = plan_.hasMotion && options_.output.motion;
-    if (motion) motion_.start = state_.modal.machine;
-    assignModalState(state_.modal, plan_.next);
-    planSynced_ = true;
-    if (transformationChanged) rebuildNames();
+    if (commitModalState(motion)) rebuildNames();
     if (motion) emitMotion(program, index);
     ++state_.block;
     return Outcome::Continue;
@@ -124,13 +119,9 @@ SourceLocation Interpreter::sinkLocation(const Program& program, std::uint32_t /
 
 Interpreter::Outcome Interpreter::commit(const Program& program, std::uint32_t index,
                                          DiagnosticList& diagnostics) {
-    const bool transformationChanged =
-        plan_.next.transformation.kind() != state_.modal.transformation.kind();
     // Moves go to tool compensation also when they are not sent: it follows the axes.
     const bool motion = plan_.hasMotion && (options_.output.motion || compensation_.planned());
-    if (motion) motion_.start = state_.modal.machine;
-    assignModalState(state_.modal, plan_.next);
-    planSynced_ = true;
+    const bool transformationChanged = commitModalState(motion);
     for (int i = 0; i < input_.writeCount; ++i) {
         const auto& w = input_.writes[static_cast<size_t>(i)];
         if (w.process >= 0 && w.process != config_.index) {

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 
 #include "cnc_core/interp/BlockContext.h"
@@ -89,9 +90,23 @@ class MotionPlanner {
     /// FEED_MISSING, FEED_PER_REVOLUTION_NO_SPEED or FEED_TOO_SMALL (cold).
     [[gnu::cold]] static bool feedRefused(const BlockContext& context, int g, double feed,
                                           double feedRate);
-    /// Feed checks and the move's time, shared by both paths.
+    /// Feed checks and the move's time, shared by both paths. Inline: every
+    /// G1/G2/G3 block passes here, and its usual case is a few instructions.
     bool finishMove(const BlockContext& context, const BlockInput& input, BlockPlan& plan, int g,
-                    std::uint32_t moved, double length, double axisSeconds) const;
+                    std::uint32_t moved, double length, double axisSeconds) const {
+        ModalState& next = plan.next;
+        // G94 with a feed it accepts: no check left that could refuse the block
+        // (the calls of the others would cost every block their registers).
+        if (next.g[kGroupFeedType] == 95 || !(next.feed >= kMinimumFeed))
+            return finishChecked(context, input, plan, g, moved, length, axisSeconds);
+        plan.feedRate = next.feed;
+        if (plan.feedRate != feedCache_.feed)  // the feed changes far less often than blocks
+            feedCache_ = {plan.feedRate, 60.0 / plan.feedRate};
+        // No axis moves faster than its max_velocity (MOT-003): F60000 on a
+        // 30000 mm/min axis takes the time of 30000 mm/min.
+        next.time += std::max(length * feedCache_.secondsPerUnit, axisSeconds);
+        return true;
+    }
     /// finishMove() with every check (G95, a feed it may refuse).
     bool finishChecked(const BlockContext& context, const BlockInput& input, BlockPlan& plan, int g,
                        std::uint32_t moved, double length, double axisSeconds) const;

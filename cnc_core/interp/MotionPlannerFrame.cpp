@@ -151,23 +151,6 @@ void MotionPlanner::buildFrame(const ModalState& next) const {
     f.valid = true;
 }
 
-bool MotionPlanner::finishMove(const BlockContext& context, const BlockInput& input,
-                               BlockPlan& plan, int g, std::uint32_t moved, double length,
-                               double axisSeconds) const {
-    ModalState& next = plan.next;
-    // G94 with a feed it accepts: no check left that could refuse the block
-    // (the calls of the others would cost every block their registers).
-    if (next.g[kGroupFeedType] == 95 || !(next.feed >= kMinimumFeed))
-        return finishChecked(context, input, plan, g, moved, length, axisSeconds);
-    plan.feedRate = next.feed;
-    if (plan.feedRate != feedCache_.feed)  // the feed changes far less often than blocks
-        feedCache_ = {plan.feedRate, 60.0 / plan.feedRate};
-    // No axis moves faster than its max_velocity (MOT-003): F60000 on a
-    // 30000 mm/min axis takes the time of 30000 mm/min.
-    next.time += std::max(length * feedCache_.secondsPerUnit, axisSeconds);
-    return true;
-}
-
 bool MotionPlanner::finishChecked(const BlockContext& context, const BlockInput& input,
                                   BlockPlan& plan, int g, std::uint32_t moved, double length,
                                   double axisSeconds) const {
