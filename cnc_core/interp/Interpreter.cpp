@@ -256,6 +256,20 @@ bool Interpreter::syntaxError(const BlockContext& context) const {
            (!compensation_.involved(state_.modal, plan_.next) || planCompensation(context));
 }
 
+// A usual block (BlockInput::special false) without tool compensation or
+// adaptive feed control in the block: commit() without what such a block
+// cannot have (variables, MTD, aux functions, dwell, commands, program
+// control, a jump; I-023). InterpShortcuts.* compare it with commit().
+// Inline in executeNext: one call and one frame less per block.
+[[gnu::always_inline]] inline Interpreter::Outcome Interpreter::commitUsual(const Program& program,
+                                                                            std::uint32_t index) {
+    const bool motion = plan_.hasMotion && options_.output.motion;
+    if (commitModalState(motion)) rebuildNames();
+    if (motion) emitMotion(program, index);
+    ++state_.block;
+    return Outcome::Continue;
+}
+
 // Inline in run() and step(): one call and one frame less per block (I-023).
 [[gnu::always_inline]] inline Interpreter::Outcome Interpreter::executeNext(
     DiagnosticList& diagnostics, std::uint64_t& executed) {
@@ -294,7 +308,7 @@ bool Interpreter::syntaxError(const BlockContext& context) const {
         ++state_.block;
         return Outcome::Continue;
     }
-    // The usual block's commit has a function of its own: commit()'s frame is large.
+    // The usual block's commit is inline; commit() (its frame is large) is a call.
     const bool usual = options_.shortcuts && !input_.special && !compensation_.planned() &&
                        !afcInvolved_ && flow_.kind == FlowPlan::Kind::Next;
     const Outcome outcome =

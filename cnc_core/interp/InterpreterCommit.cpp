@@ -104,19 +104,6 @@ SourceLocation Interpreter::sinkLocation(const Program& program, std::uint32_t /
     return where;
 }
 
-// A usual block (BlockInput::special false) without tool compensation or
-// adaptive feed control in the block: commit() without what such a block
-// cannot have (variables, MTD, aux functions, dwell, commands, program
-// control, a jump; I-023). InterpShortcuts.* compare it with commit().
-[[gnu::noinline]] Interpreter::Outcome Interpreter::commitUsual(const Program& program,
-                                                                std::uint32_t index) {
-    const bool motion = plan_.hasMotion && options_.output.motion;
-    if (commitModalState(motion)) rebuildNames();
-    if (motion) emitMotion(program, index);
-    ++state_.block;
-    return Outcome::Continue;
-}
-
 Interpreter::Outcome Interpreter::commit(const Program& program, std::uint32_t index,
                                          DiagnosticList& diagnostics) {
     // Moves go to tool compensation also when they are not sent: it follows the axes.

@@ -262,50 +262,10 @@ double MotionPlanner::rapidTime(const ModalState& current, const ModalState& nex
     return seconds;
 }
 
-bool MotionPlanner::arc(const BlockContext& context, const BlockInput& input,
-                        const ModalState& current, BlockPlan& plan, double arcTolerance,
-                        double& length, double& axisSeconds) const {
-    ModalState& next = plan.next;
-    const int p1 = next.plane.firstAxis(), p2 = next.plane.secondAxis();
-    if (p1 < 0 || p2 < 0)
-        return context.error("ARC_PLANE", "the working plane is not spanned by two axes");
-    const Transformation& transformation = next.transformation;
-    for (int p : {p1, p2})
-        if (axes_->axis(p).rotary && !transformation.transforms(p))
-            return context.error("ARC_ROTARY_AXIS",
-                                 "a circle with the rotary axis " + axes_->axis(p).displayName() +
-                                     " in the plane needs G31 or G32 first (seed 003, 4.2)");
-    if (input.centerMask == 0)
-        return context.error("ARC_CENTER_MISSING", "a circle needs its centre (I, J or K)");
-    const bool incremental = next.g[kGroupDimension] == 91;
-    double centre[2] = {current.work[static_cast<size_t>(p1)],
-                        current.work[static_cast<size_t>(p2)]};
-    static constexpr AxisDefinition kDefinition[3] = {AxisDefinition::X, AxisDefinition::Y,
-                                                      AxisDefinition::Z};
-    static constexpr char kLetter[3] = {'I', 'J', 'K'};
-    for (int k = 0; k < 3; ++k) {
-        if (!((input.centerMask >> k) & 1u)) continue;
-        const int axis = next.plane.axisOf(kDefinition[k]);
-        if (axis != p1 && axis != p2)
-            return context.error(
-                "ARC_CENTER_NOT_IN_PLANE",
-                std::string(1, kLetter[k]) + " belongs to an axis outside the working plane",
-                input.centerColumn);
-        const int slot = axis == p1 ? 0 : 1;
-        const double v = programmedValue(next, axis, input.center[static_cast<size_t>(k)]);
-        centre[slot] = incremental ? centre[slot] + v : v;
-    }
-    ArcGeometry geometry(p1, p2, current, next, centre, secondsPerPlaneUnit(next, p1),
-                         secondsPerPlaneUnit(next, p2));
-    if (!arcRadii(geometry, arcTolerance))
-        return radiiRefused(context, input, geometry, arcTolerance);
-    arcMove(input, current, plan, geometry, arcTolerance, length, axisSeconds);
-    return true;
-}
-
-void MotionPlanner::arcMove(const BlockInput& input, const ModalState& current, BlockPlan& plan,
-                            const ArcGeometry& geometry, double arcTolerance, double& length,
-                            double& axisSeconds) const {
+// Inline in both arcs (arc() and framedArc()): one call and frame less per arc.
+[[gnu::always_inline]] inline void MotionPlanner::arcMove(
+    const BlockInput& input, const ModalState& current, BlockPlan& plan,
+    const ArcGeometry& geometry, double arcTolerance, double& length, double& axisSeconds) const {
     ModalState& next = plan.next;
     const int p1 = geometry.p1, p2 = geometry.p2;
     const double s1 = geometry.s1, s2 = geometry.s2, e1 = geometry.e1, e2 = geometry.e2;
@@ -348,6 +308,75 @@ void MotionPlanner::arcMove(const BlockInput& input, const ModalState& current, 
         plan.center1 = c1;
         plan.center2 = c2;
     }
+}
+
+bool MotionPlanner::arc(const BlockContext& context, const BlockInput& input,
+                        const ModalState& current, BlockPlan& plan, double arcTolerance,
+                        double& length, double& axisSeconds) const {
+    ModalState& next = plan.next;
+    const int p1 = next.plane.firstAxis(), p2 = next.plane.secondAxis();
+    if (p1 < 0 || p2 < 0)
+        return context.error("ARC_PLANE", "the working plane is not spanned by two axes");
+    const Transformation& transformation = next.transformation;
+    for (int p : {p1, p2})
+        if (axes_->axis(p).rotary && !transformation.transforms(p))
+            return context.error("ARC_ROTARY_AXIS",
+                                 "a circle with the rotary axis " + axes_->axis(p).displayName() +
+                                     " in the plane needs G31 or G32 first (seed 003, 4.2)");
+    if (input.centerMask == 0)
+        return context.error("ARC_CENTER_MISSING", "a circle needs its centre (I, J or K)");
+    const bool incremental = next.g[kGroupDimension] == 91;
+    double centre[2] = {current.work[static_cast<size_t>(p1)],
+                        current.work[static_cast<size_t>(p2)]};
+    static constexpr AxisDefinition kDefinition[3] = {AxisDefinition::X, AxisDefinition::Y,
+                                                      AxisDefinition::Z};
+    static constexpr char kLetter[3] = {'I', 'J', 'K'};
+    for (int k = 0; k < 3; ++k) {
+        if (!((input.centerMask >> k) & 1u)) continue;
+        const int axis = next.plane.axisOf(kDefinition[k]);
+        if (axis != p1 && axis != p2)
+            return context.error(
+                "ARC_CENTER_NOT_IN_PLANE",
+                std::string(1, kLetter[k]) + " belongs to an axis outside the working plane",
+                input.centerColumn);
+        const int slot = axis == p1 ? 0 : 1;
+        const double v = programmedValue(next, axis, input.center[static_cast<size_t>(k)]);
+        centre[slot] = incremental ? centre[slot] + v : v;
+    }
+    ArcGeometry geometry(p1, p2, current, next, centre, secondsPerPlaneUnit(next, p1),
+                         secondsPerPlaneUnit(next, p2));
+    if (!arcRadii(geometry, arcTolerance))
+        return radiiRefused(context, input, geometry, arcTolerance);
+    arcMove(input, current, plan, geometry, arcTolerance, length, axisSeconds);
+    return true;
+}
+
+// The frame path's arc (MotionPlannerFrame.cpp): here beside arcMove(), which it inlines.
+bool MotionPlanner::framedArc(const BlockContext& context, const BlockInput& input,
+                              const ModalState& current, BlockPlan& plan,
+                              double arcTolerance) const {
+    const ModalState& next = plan.next;
+    const int p1 = frame_.p1, p2 = frame_.p2;
+    const bool incremental = next.g[kGroupDimension] == 91;
+    double centre[2] = {current.work[static_cast<size_t>(p1)],
+                        current.work[static_cast<size_t>(p2)]};
+    for (int k = 0; k < 3; ++k) {
+        if (!((input.centerMask >> k) & 1u)) continue;
+        const int slot = frame_.centreSlot[static_cast<size_t>(k)];
+        const auto axis = static_cast<size_t>(slot == 0 ? p1 : p2);
+        const double v =
+            input.center[static_cast<size_t>(k)] * frame_.inch[axis] * frame_.diameter[axis];
+        centre[slot] = incremental ? centre[slot] + v : v;
+    }
+    ArcGeometry geometry(p1, p2, current, next, centre,
+                         frame_.secondsPerUnit[static_cast<size_t>(p1)],
+                         frame_.secondsPerUnit[static_cast<size_t>(p2)]);
+    if (!arcRadii(geometry, arcTolerance))
+        return radiiRefused(context, input, geometry, arcTolerance);
+    double length = 0.0, axisSeconds = 0.0;
+    arcMove(input, current, plan, geometry, arcTolerance, length, axisSeconds);
+    return finishMove(context, input, plan, next.g[kGroupInterpolation], input.axisMask, length,
+                      axisSeconds);
 }
 
 }  // namespace mtc::core

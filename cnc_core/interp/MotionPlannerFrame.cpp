@@ -6,6 +6,7 @@
 // (MotionPlanner.cpp), the same diagnostics from the same functions. A
 // block that only the general path can plan (a transformation, a repeated
 // axis, an arc outside the frame's plane) goes there before anything is written.
+// The frame path's arc, framedArc(), is in MotionPlanner.cpp beside arcMove().
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -80,33 +81,6 @@ bool MotionPlanner::plan(const BlockContext& context, const BlockInput& input,
     }
     if (g >= 2) return framedArc(context, input, current, plan, arcTolerance);
     return finishMove(context, input, plan, g, mask, std::sqrt(squares), axisSeconds);
-}
-
-bool MotionPlanner::framedArc(const BlockContext& context, const BlockInput& input,
-                              const ModalState& current, BlockPlan& plan,
-                              double arcTolerance) const {
-    const ModalState& next = plan.next;
-    const int p1 = frame_.p1, p2 = frame_.p2;
-    const bool incremental = next.g[kGroupDimension] == 91;
-    double centre[2] = {current.work[static_cast<size_t>(p1)],
-                        current.work[static_cast<size_t>(p2)]};
-    for (int k = 0; k < 3; ++k) {
-        if (!((input.centerMask >> k) & 1u)) continue;
-        const int slot = frame_.centreSlot[static_cast<size_t>(k)];
-        const auto axis = static_cast<size_t>(slot == 0 ? p1 : p2);
-        const double v =
-            input.center[static_cast<size_t>(k)] * frame_.inch[axis] * frame_.diameter[axis];
-        centre[slot] = incremental ? centre[slot] + v : v;
-    }
-    ArcGeometry geometry(p1, p2, current, next, centre,
-                         frame_.secondsPerUnit[static_cast<size_t>(p1)],
-                         frame_.secondsPerUnit[static_cast<size_t>(p2)]);
-    if (!arcRadii(geometry, arcTolerance))
-        return radiiRefused(context, input, geometry, arcTolerance);
-    double length = 0.0, axisSeconds = 0.0;
-    arcMove(input, current, plan, geometry, arcTolerance, length, axisSeconds);
-    return finishMove(context, input, plan, next.g[kGroupInterpolation], input.axisMask, length,
-                      axisSeconds);
 }
 
 bool MotionPlanner::frameFits(const ModalState& next) const {
