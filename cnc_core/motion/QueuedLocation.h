@@ -33,7 +33,9 @@ class QueuedLocation {
     SourceLocation location() const;
     int program() const { return program_; }
     int line() const { return line_; }
-    /// Same program and line: the same block (single block tells blocks apart by them).
+    /// Same program and line: the same block (a block may queue several
+    /// entries: an inserted corner arc and its line, an M function and a
+    /// move; single block tells blocks apart by them).
     bool sameBlock(const QueuedLocation& other) const {
         return program_ == other.program_ && line_ == other.line_;
     }

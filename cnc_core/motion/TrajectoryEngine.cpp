@@ -10,11 +10,6 @@ namespace mtc::core::motion {
 namespace {
 constexpr double kForever = std::numeric_limits<double>::infinity();
 
-/// Two queue entries come from the same block (a block may queue several:
-/// an inserted corner arc and its line, an M function and a move).
-bool sameBlock(const QueuedLocation& a, const QueuedLocation& b) {
-    return a.sameBlock(b);
-}
 }  // namespace
 
 TrajectoryEngine::TrajectoryEngine(const MotionLimits& limits, std::size_t lookAhead)
@@ -126,7 +121,7 @@ bool TrajectoryEngine::planBackward(bool early) {
     bool last = true;
     for (std::size_t i = queue_.size(); i-- > 0;) {
         QueueItem& item = queue_.at(i);
-        if (blockStops_ && i + 1 < queue_.size() && !sameBlock(item.where, queue_.at(i + 1).where))
+        if (blockStops_ && i + 1 < queue_.size() && !item.where.sameBlock(queue_.at(i + 1).where))
             following = 0.0;  // single block: at rest where the next block begins
         if (item.kind != QueueItem::Kind::Move) {  // the usual kind tested once (MOT-026)
             if (item.kind != QueueItem::Kind::Action || item.action.stopsPath) {
@@ -366,7 +361,7 @@ double TrajectoryEngine::runTimed(QueueItem& timed, double room, bool& finished)
     if (!flowsOut || !flowsOn) velocity_ = 0.0;
     // Single block: wait before the next block when the axes are at rest
     // (switched on too late to brake, they go on to the next block's end).
-    if (blockStops_ && !queue_.empty() && !sameBlock(lastWhere_, queue_.front().where) &&
+    if (blockStops_ && !queue_.empty() && !lastWhere_.sameBlock(queue_.front().where) &&
         std::abs(velocity_) < 1e-9) {
         velocity_ = 0.0;
         atBlockStop_ = true;
