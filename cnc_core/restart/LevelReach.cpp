@@ -37,23 +37,96 @@ Flow flowOf(JumpKind kind) {
     return Flow::End;
 }
 
-/// Marks the blocks of next[0, n) not seen yet as seen: the first of them is
-/// returned (to be walked at once), the others wait in `open`; -1 for none.
-long markNew(const std::uint32_t* next, int n, std::vector<bool>& seen,
-             std::vector<std::uint32_t>& open) {
-    long first = -1;
-    for (int i = 0; i < n; ++i) {
-        if (seen[next[i]]) continue;
-        seen[next[i]] = true;
-        if (first < 0)
-            first = next[i];
-        else
-            open.push_back(next[i]);
+/// True for the words that can turn the flow: a jump word, M02 or M30.
+bool turnsFlow(const WordList& words, std::size_t index) {
+    const WordKind kind = words.kindAt(index);
+    if (kind == WordKind::Jump) return true;
+    if (kind != WordKind::M) return false;
+    NumberWord m;
+    if (!words.readNumber(index, m)) {
+        const Word whole = words[index];
+        m.expr = whole.expr;
+        m.number = whole.number;
     }
-    return first;
+    return m.expr < 0 && (m.number == 2 || m.number == 30);
+}
+
+/// The block holding word `index` (blocks hold consecutive words in order);
+/// blocks.size() when none does.
+std::uint32_t blockOfWord(const BlockList& blocks, std::uint32_t index) {
+    std::size_t low = 0, high = blocks.size();  // first block with firstWord > index
+    while (low < high) {
+        const std::size_t mid = low + (high - low) / 2;
+        if (blocks[mid].firstWord <= index)
+            low = mid + 1;
+        else
+            high = mid;
+    }
+    if (low == 0) return static_cast<std::uint32_t>(blocks.size());
+    const Block b = blocks[low - 1];
+    return index < std::size_t{b.firstWord} + b.wordCount
+               ? static_cast<std::uint32_t>(low - 1)
+               : static_cast<std::uint32_t>(blocks.size());
 }
 
 }  // namespace
+
+/// One bit per block, with the range operations of the straight walk.
+class LevelReach::BlockBits {
+  public:
+    explicit BlockBits(std::size_t size) : size_(size), bits_((size + 63) / 64, 0) {}
+    bool test(std::size_t i) const { return (bits_[i / 64] >> (i % 64)) & 1u; }
+    void set(std::size_t i) { bits_[i / 64] |= std::uint64_t{1} << (i % 64); }
+    /// Sets [first, last).
+    void setRange(std::size_t first, std::size_t last) {
+        for (; first < last && first % 64; ++first)
+            set(first);
+        for (; first + 64 <= last; first += 64)
+            bits_[first / 64] = ~std::uint64_t{0};
+        for (; first < last; ++first)
+            set(first);
+    }
+    /// The first set bit in [first, last); `last` when none.
+    std::size_t findSet(std::size_t first, std::size_t last) const {
+        while (first < last) {
+            const std::uint64_t word = bits_[first / 64] >> (first % 64);
+            if (word)
+                return std::min(last, first + static_cast<std::size_t>(__builtin_ctzll(word)));
+            first = (first / 64 + 1) * 64;
+        }
+        return last;
+    }
+    std::vector<bool> toVector() const {
+        std::vector<bool> out(size_);
+        for (std::size_t i = 0; i < size_; ++i)
+            out[i] = test(i);
+        return out;
+    }
+
+  private:
+    std::size_t size_;
+    std::vector<std::uint64_t> bits_;
+};
+
+LevelReach::LevelReach(ProgramPtr program) : program_(std::move(program)) {
+    const Program& p = *program_;
+    const auto wordCount = static_cast<std::uint32_t>(p.words.size());
+    for (std::uint32_t w = 0; w < wordCount; ++w) {
+        if (!turnsFlow(p.words, w)) continue;
+        const std::uint32_t block = blockOfWord(p.blocks, w);
+        if (block < p.blocks.size() && (turning_.empty() || turning_.back() != block))
+            turning_.push_back(block);
+    }
+    // Words follow their blocks' order in a parsed program; kept sorted and
+    // unique for any other (nextTurning searches it).
+    std::sort(turning_.begin(), turning_.end());
+    turning_.erase(std::unique(turning_.begin(), turning_.end()), turning_.end());
+}
+
+std::uint32_t LevelReach::nextTurning(std::uint32_t block) const {
+    const auto it = std::lower_bound(turning_.begin(), turning_.end(), block);
+    return it == turning_.end() ? static_cast<std::uint32_t>(program_->blocks.size()) : *it;
+}
 
 int LevelReach::successors(std::uint32_t block, std::uint32_t next[2]) const {
     const Program& p = *program_;
@@ -85,26 +158,42 @@ int LevelReach::successors(std::uint32_t block, std::uint32_t next[2]) const {
     return count;
 }
 
-bool LevelReach::walk(const std::vector<std::uint32_t>& entries, std::vector<bool>& seen,
+bool LevelReach::walk(const std::vector<std::uint32_t>& entries, BlockBits& seen,
                       std::uint32_t stopAt) const {
     const std::size_t size = program_->blocks.size();
-    seen.assign(size, false);
     std::vector<std::uint32_t> open;
     for (std::uint32_t e : entries)
-        if (e < size && !seen[e]) {
-            seen[e] = true;
+        if (e < size && !seen.test(e)) {
+            seen.set(e);
             open.push_back(e);
         }
     while (!open.empty()) {
-        long b = open.back();
+        std::uint32_t from = open.back();
         open.pop_back();
-        // Straight on while the flow finds new blocks (the blocks seen are
-        // the same in any order).
-        while (b >= 0) {
-            if (static_cast<std::uint32_t>(b) == stopAt) return true;
+        for (;;) {
+            // Straight on from `from` (seen) over the blocks that only go on
+            // to the next, up to the next turning block or to a block seen
+            // before (the blocks from there on are walked already or waiting
+            // in `open`: the set is the same in any order).
+            const std::uint32_t turn = nextTurning(from);
+            const std::size_t last = std::min<std::size_t>(turn, size - 1);
+            const std::size_t stop = seen.findSet(std::size_t{from} + 1, last + 1);
+            seen.setRange(from, stop);
+            if (stopAt >= from && stopAt < stop) return true;
+            if (stop <= last || turn >= size) break;  // met a seen block, or ran off the end
             std::uint32_t next[2];
-            const int n = successors(static_cast<std::uint32_t>(b), next);
-            b = markNew(next, n, seen, open);
+            const int n = successors(turn, next);
+            long first = -1;
+            for (int i = 0; i < n; ++i) {
+                if (seen.test(next[i])) continue;
+                seen.set(next[i]);
+                if (first < 0)
+                    first = next[i];
+                else
+                    open.push_back(next[i]);
+            }
+            if (first < 0) break;
+            from = static_cast<std::uint32_t>(first);
         }
     }
     return false;
@@ -112,20 +201,20 @@ bool LevelReach::walk(const std::vector<std::uint32_t>& entries, std::vector<boo
 
 bool LevelReach::reaches(const std::vector<std::uint32_t>& entries, std::uint32_t block) const {
     if (block >= program_->blocks.size()) return false;
-    std::vector<bool> seen;
+    BlockBits seen(program_->blocks.size());
     return walk(entries, seen, block);
 }
 
 std::vector<bool> LevelReach::reachable(const std::vector<std::uint32_t>& entries) const {
-    std::vector<bool> seen;
+    BlockBits seen(program_->blocks.size());
     walk(entries, seen, ~std::uint32_t{0});
-    return seen;
+    return seen.toVector();
 }
 
 std::optional<LevelReach::Subroutine> LevelReach::subroutineOf(std::uint32_t block) const {
     const Program& p = *program_;
     std::map<long, std::uint32_t> calls;  // label block -> first calling block
-    for (std::uint32_t b = 0; b < p.blocks.size(); ++b) {
+    for (std::uint32_t b : turning_) {    // every block with a jump word
         const Block blk = p.blocks[b];
         for (std::uint32_t w = blk.firstWord; w < blk.firstWord + blk.wordCount; ++w) {
             if (p.words.kindAt(w) != WordKind::Jump) continue;

@@ -17,10 +17,16 @@ namespace mtc::core {
 /// JMP, M02, M30 and PROGRAMMENDE end the level. A skip block or a block with
 /// errors may also fall through. This over-approximates what a run can do,
 /// so a block it does not reach is never reached on that level: it belongs
-/// to a subroutine (or is dead code). O(blocks) per query.
+/// to a subroutine (or is dead code).
+///
+/// Only the turning blocks (a jump word, M02 or M30) can lead anywhere but to
+/// the next block; the constructor lists them with one pass over the word
+/// kinds, and a query runs straight from one turning block to the next over a
+/// bit set (O(words) once, then O(turning blocks + blocks / 64) per query;
+/// docs/decisions/restart.md R-034).
 class LevelReach {
   public:
-    explicit LevelReach(ProgramPtr program) : program_(std::move(program)) {}
+    explicit LevelReach(ProgramPtr program);
 
     /// True when the flow entered at one of `entries` can arrive at `block`.
     bool reaches(const std::vector<std::uint32_t>& entries, std::uint32_t block) const;
@@ -37,13 +43,20 @@ class LevelReach {
     std::optional<Subroutine> subroutineOf(std::uint32_t block) const;
 
   private:
-    /// Walks from `entries`; stops early when `stopAt` is reached. Returns `seen`.
-    bool walk(const std::vector<std::uint32_t>& entries, std::vector<bool>& seen,
+    class BlockBits;
+    /// Walks from `entries`; stops early when `stopAt` is reached. Fills `seen`.
+    bool walk(const std::vector<std::uint32_t>& entries, BlockBits& seen,
               std::uint32_t stopAt) const;
     /// Blocks the flow may continue with after `block` (up to two).
     int successors(std::uint32_t block, std::uint32_t next[2]) const;
+    /// The first turning block at or after `block`; blocks.size() when none.
+    std::uint32_t nextTurning(std::uint32_t block) const;
 
     ProgramPtr program_;
+    /// Blocks with a jump word or an M02 / M30, ascending: every other block
+    /// goes on to the next one (and a PROGRAMMENDE block, always the last and
+    /// without words, to none).
+    std::vector<std::uint32_t> turning_;
 };
 
 }  // namespace mtc::core

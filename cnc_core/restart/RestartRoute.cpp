@@ -210,8 +210,11 @@ class RoutePlanner {
 
     bool reachedOnLevel(const ProgramPtr& program, const std::vector<std::uint32_t>& entries,
                         std::uint32_t block, bool isTarget, bool programStart) {
-        const LevelReach reach(program);
-        if (cache_ ? cache_->reaches(program, entries, block) : reach.reaches(entries, block))
+        // The reach's constructor lists the program's turning blocks: one
+        // pass over its words, so it is built only when needed.
+        std::optional<LevelReach> reach;
+        if (cache_ ? cache_->reaches(program, entries, block)
+                   : reach.emplace(program).reaches(entries, block))
             return true;
         if (programStart) {  // seed 000, 2.4: a subroutine at the start needs the start block
             std::optional<ProgramScan> own;
@@ -224,7 +227,7 @@ class RoutePlanner {
                                 " without a call): the computing process would end there; "
                                 "select 'restart from last primary block' (seed 000, 2.4)");
         }
-        const auto sub = reach.subroutineOf(block);
+        const auto sub = (reach ? *reach : reach.emplace(program)).subroutineOf(block);
         // Reached by no flow at all (dead code after M30): the computing process
         // answers "target block cannot be found" as seed 000, 2.7 says.
         if (!sub) return true;
