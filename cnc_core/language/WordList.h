@@ -106,6 +106,31 @@ class WordList {
         const Packed code = slot & kCodeMask;
         return code < kExtendedCode ? heads_[code].kind : wholeKind(index, slot);
     }
+    /// Calls `visit(index)` for every word whose kind is in `kinds` (bit
+    /// 1 << kind), in index order: whole-program scans that look for a rare
+    /// kind (the restart's turning blocks) test each slot's head code
+    /// against a mask made once, instead of reading every word's kind.
+    template <class Visit>
+    void forEachOfKinds(std::uint32_t kinds, Visit&& visit) const {
+        Packed codes = Packed{3} << kExtendedCode;  // wide / extended: kind asked one by one
+        for (unsigned code = 0; code < headCount_; ++code)
+            if ((kinds >> static_cast<unsigned>(heads_[code].kind)) & 1u)
+                codes |= Packed{1} << code;
+        const std::size_t count = slots_.size();
+        const Packed* packed = count ? &slots_[0] : nullptr;
+        for (std::size_t i = 0;; ++i) {
+            // A tight loop without calls to the next candidate: most words are
+            // not looked for.
+            while (i < count && !((codes >> (packed[i] & kCodeMask)) & 1u))
+                ++i;
+            if (i == count) return;
+            const Packed slot = packed[i];
+            if ((slot & kCodeMask) >= kExtendedCode &&
+                !((kinds >> static_cast<unsigned>(wholeKind(i, slot))) & 1u))
+                continue;
+            visit(i);
+        }
+    }
     const Word back() const { return (*this)[size() - 1]; }
     const Word front() const { return (*this)[0]; }
     const_iterator begin() const;

@@ -37,11 +37,9 @@ Flow flowOf(JumpKind kind) {
     return Flow::End;
 }
 
-/// True for the words that can turn the flow: a jump word, M02 or M30.
+/// True for the jump and M words that can turn the flow: a jump word, M02 or M30.
 bool turnsFlow(const WordList& words, std::size_t index) {
-    const WordKind kind = words.kindAt(index);
-    if (kind == WordKind::Jump) return true;
-    if (kind != WordKind::M) return false;
+    if (words.kindAt(index) == WordKind::Jump) return true;
     NumberWord m;
     if (!words.readNumber(index, m)) {
         const Word whole = words[index];
@@ -110,13 +108,14 @@ class LevelReach::BlockBits {
 
 LevelReach::LevelReach(ProgramPtr program) : program_(std::move(program)) {
     const Program& p = *program_;
-    const auto wordCount = static_cast<std::uint32_t>(p.words.size());
-    for (std::uint32_t w = 0; w < wordCount; ++w) {
-        if (!turnsFlow(p.words, w)) continue;
-        const std::uint32_t block = blockOfWord(p.blocks, w);
+    constexpr std::uint32_t kJumpOrM =
+        1u << static_cast<unsigned>(WordKind::Jump) | 1u << static_cast<unsigned>(WordKind::M);
+    p.words.forEachOfKinds(kJumpOrM, [&](std::size_t w) {
+        if (!turnsFlow(p.words, w)) return;
+        const std::uint32_t block = blockOfWord(p.blocks, static_cast<std::uint32_t>(w));
         if (block < p.blocks.size() && (turning_.empty() || turning_.back() != block))
             turning_.push_back(block);
-    }
+    });
     // Words follow their blocks' order in a parsed program; kept sorted and
     // unique for any other (nextTurning searches it).
     std::sort(turning_.begin(), turning_.end());

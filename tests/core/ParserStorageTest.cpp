@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "ParserTestSupport.h"
 
@@ -164,6 +165,14 @@ TEST(ParserStorage, NumberWordsOfEveryForm) {
     }
     for (std::size_t i = 0; i < list.size(); ++i)  // narrow, wide and extended
         EXPECT_EQ(list.kindAt(i), list[i].kind) << i;
+    for (WordKind kind : {WordKind::Axis, WordKind::F, WordKind::G, WordKind::M}) {
+        std::vector<std::size_t> found, expected;
+        list.forEachOfKinds(1u << static_cast<unsigned>(kind),
+                            [&](std::size_t i) { found.push_back(i); });
+        for (std::size_t i = 0; i < list.size(); ++i)
+            if (list.kindAt(i) == kind) expected.push_back(i);
+        EXPECT_EQ(found, expected) << static_cast<int>(kind);
+    }
     list.clear();  // forgets the heads and the parser's codes
     EXPECT_EQ(list.plainCodeAt(WordList::codeKey('G', 0)), WordList::kWideCode);
     ASSERT_TRUE(list.tryPushNumber(WordKind::M, 'M', 0, 1, 30, 0));
