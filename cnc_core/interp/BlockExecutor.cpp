@@ -13,8 +13,6 @@
 namespace mtc::core {
 namespace {
 
-constexpr double kInch = 25.4;
-
 /// Groups without side effects: the programmed value simply becomes active.
 constexpr int kPlainGroups[] = {kGroupToolPath,     kGroupFeedType,  kGroupDimension, kGroupUnits,
                                 kGroupAcceleration, kGroupExactStop, kGroupToolLength};
@@ -39,17 +37,17 @@ bool BlockExecutor::planGeneral(const BlockContext& c, const BlockInput& in,
                        in.repeatedAxisColumn);
     clearPlan(plan);
     ModalState& next = plan.next;
-    // The usual block programs only G0..G3 of the modal groups and only F of
-    // the scalar words: what modalGroups() and scalars() do then, without
-    // the calls (InterpShortcuts.* compare with options.shortcuts off).
+    // Only modal G, axis, I/J/K and F words (I-023): a usual block that
+    // plan() did not take itself programs a modal group beside G0..G3 (or
+    // an axis twice under G20), so modalGroups() runs; F needs no scalars().
+    // The block with more takes the shortcuts below where it can
+    // (InterpShortcuts.* compare with options.shortcuts off).
     constexpr std::uint32_t kInterpolationOnly = 1u << kGroupInterpolation;
     const bool shortcuts = options.shortcuts;
-    if (shortcuts && !in.special) {  // only modal G, axis, I/J/K and F words (I-023)
-        if (in.gMask == kInterpolationOnly)
-            next.g[kGroupInterpolation] = in.g[kGroupInterpolation];
-        else if (in.gMask != 0 && !modalGroups(c, in, state.modal, next, state.reentry.valid))
+    if (shortcuts && !in.special) {
+        if (in.gMask != 0 && !modalGroups(c, in, state.modal, next, state.reentry.valid))
             return false;
-        if (in.hasFeed) next.feed = in.feed * (next.g[kGroupUnits] == 70 ? kInch : 1.0);
+        if (in.hasFeed) next.feed = in.feed * millimetresPerUnit(next);
         if (in.axisMask == 0 || in.g[kGroupPlane] == 20) return true;
         return motion_.plan(c, in, state.modal, plan, options);
     }
@@ -61,7 +59,7 @@ bool BlockExecutor::planGeneral(const BlockContext& c, const BlockInput& in,
     const bool otherScalars =
         in.dwell || in.hasTool || in.hasEdge || in.hasCorrection || in.spindleMask != 0;
     if (shortcuts && !otherScalars && in.hasFeed) {
-        next.feed = in.feed * (next.g[kGroupUnits] == 70 ? kInch : 1.0);
+        next.feed = in.feed * millimetresPerUnit(next);
     } else if ((otherScalars || in.hasFeed) && !scalars(c, in, plan)) {
         return false;
     }
@@ -159,7 +157,7 @@ bool BlockExecutor::transformationOn(const BlockContext& c, const BlockInput& in
     const bool reuseRadius = restoring && !in.hasRadius && next.lastEffectiveRadius > 0.0;
     // RI is a length: in inch under G70 like the positions (seed 003, 4.2 "[mm]
     // or [inch]"); the transformation works in mm.
-    const double unit = next.g[kGroupUnits] == 70 ? kInch : 1.0;
+    const double unit = millimetresPerUnit(next);
     const double radius = reuseRadius ? next.lastEffectiveRadius : in.radius * unit;
     std::vector<PlaneProblem> problems =
         wanted == 32 ? next.transformation.selectCylinder(*setup_.axes, next.plane,
@@ -191,7 +189,7 @@ constexpr double kMaxDwellSeconds = 99999.999;
 
 bool BlockExecutor::scalars(const BlockContext& c, const BlockInput& in, BlockPlan& plan) const {
     ModalState& next = plan.next;
-    const double unit = next.g[kGroupUnits] == 70 ? kInch : 1.0;
+    const double unit = millimetresPerUnit(next);
     if (in.dwell) {
         if (!in.hasFeed)
             return c.error("DWELL_TIME_MISSING", "G4 needs the dwell time in F (seconds)",
@@ -356,7 +354,7 @@ bool BlockExecutor::reposition(const BlockContext& c, const BlockInput& in,
         next.spindleSpeed[j] = r.spindleSpeed[j];
         next.rotaryAxisMode[j] = 0;
     }
-    const double unit = next.g[kGroupUnits] == 70 ? kInch : 1.0;
+    const double unit = millimetresPerUnit(next);
     const double feed = in.hasFeed ? in.feed * unit : state.modal.feed;
     next.feed = state.modal.feed;  // F of a G77 block is the repositioning feed only
     for (int a = 0; in.axisMask >> a; ++a) {

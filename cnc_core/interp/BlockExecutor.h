@@ -52,13 +52,12 @@ class BlockExecutor {
         clearPlan(plan);
         ModalState& next = plan.next;
         if (input.gMask != 0) next.g[kGroupInterpolation] = input.g[kGroupInterpolation];
-        if (input.hasFeed) next.feed = input.feed * (next.g[kGroupUnits] == 70 ? kMmPerInch : 1.0);
+        if (input.hasFeed) next.feed = input.feed * millimetresPerUnit(next);
         if (input.axisMask == 0) return true;  // (no G20: only group 1 is programmed)
         return motion_.plan(context, input, state.modal, plan, options);
     }
 
   private:
-    static constexpr double kMmPerInch = 25.4;  ///< F under G70
     /// plan() of every block.
     bool planGeneral(const BlockContext& context, const BlockInput& input,
                      const InterpreterState& state, BlockPlan& plan,

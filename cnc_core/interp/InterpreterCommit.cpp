@@ -10,8 +10,6 @@
 namespace mtc::core {
 namespace {
 
-constexpr double kInch = 25.4;
-
 /// Writes `value` with at least four digits at `out` (0..99,999,999); returns the end.
 char* fourDigits(int value, char* out) {
     if (value < 10000) {
@@ -413,7 +411,7 @@ double programUnits(const ModalState& m, const AxisModel& model, int axis, doubl
     if (model.rotary && !m.transformation.transforms(axis)) return v;
     if (m.g[kGroupRadiusDiameter] == 16 && m.plane.definitionOf(axis) == AxisDefinition::X)
         v *= 2.0;
-    if (m.g[kGroupUnits] == 70) v /= kInch;
+    v /= millimetresPerUnit(m);
     return v;
 }
 

@@ -48,6 +48,13 @@ struct ModalState {
     double lastEffectiveRadius = 0.0;  ///< RI of the last G32 (kept after G30)
 };
 
+inline constexpr double kMmPerInch = 25.4;
+/// Millimetres per programmed length unit under `modal`: 25.4 under G70
+/// (inch), 1 under G71. Programmed lengths and feeds are multiplied by it.
+inline double millimetresPerUnit(const ModalState& modal) {
+    return modal.g[kGroupUnits] == 70 ? kMmPerInch : 1.0;
+}
+
 /// `to = from` in 16-byte steps. The interpreter commits one modal state
 /// per block; for a plain assignment of its ~400 bytes GCC emits `rep movsq`,
 /// whose start-up cost was 8 % of an NC program restart's computing process.

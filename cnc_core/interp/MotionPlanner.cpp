@@ -13,7 +13,6 @@ namespace mtc::core {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-constexpr double kInch = 25.4;
 
 std::string format(double value) {
     return formatFixed(value, 4);
@@ -113,7 +112,7 @@ double MotionPlanner::programmedValue(const ModalState& next, int axis, double v
     const AxisModel& model = axes_->axis(axis);
     const bool lengthUnit = !model.rotary || next.transformation.transforms(axis);
     if (!lengthUnit) return value;
-    if (next.g[kGroupUnits] == 70) value *= kInch;
+    value *= millimetresPerUnit(next);
     if (next.g[kGroupRadiusDiameter] == 16 && next.plane.definitionOf(axis) == AxisDefinition::X)
         value *= 0.5;
     return value;

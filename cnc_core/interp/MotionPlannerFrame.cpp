@@ -17,7 +17,6 @@
 namespace mtc::core {
 namespace {
 
-constexpr double kInch = 25.4;
 constexpr AxisDefinition kCentreDefinition[3] = {AxisDefinition::X, AxisDefinition::Y,
                                                  AxisDefinition::Z};
 
@@ -100,7 +99,7 @@ void MotionPlanner::buildFrame(const ModalState& next) const {
         const auto i = static_cast<size_t>(a);
         const AxisDefinition definition = next.plane.definitionOf(a);
         const bool lengthUnit = !m.rotary;  // no transformation in a frame
-        f.inch[i] = lengthUnit && next.g[kGroupUnits] == 70 ? kInch : 1.0;
+        f.inch[i] = lengthUnit ? millimetresPerUnit(next) : 1.0;
         f.diameter[i] =
             lengthUnit && next.g[kGroupRadiusDiameter] == 16 && definition == AxisDefinition::X
                 ? 0.5
