@@ -97,8 +97,13 @@ bool ComputingProcess::begin(const RestartSelection& selection, const Interprete
                         ", this is process " + std::to_string(config_.index));
     } else if (!parametersAllowRestart(selection.mainProgram, local)) {
         // refused: Bxx.033 / Bxx.036 (seed 000, 2.1)
-    } else if (planRestartRoute(selection, programs_, route, local, routeCache_)) {
-        addStartWarnings(route, local, routeCache_);
+    } else {
+        // The route and its warnings read the same analyses of the programs
+        // (the main program's LevelReach is one pass over its words).
+        RestartRouteCache once;
+        RestartRouteCache& cache = routeCache_ ? *routeCache_ : once;
+        if (planRestartRoute(selection, programs_, route, local, &cache))
+            addStartWarnings(route, local, &cache);
     }
     for (const auto& [variable, value] : selection.variableChanges)
         if (variable < 0 || variable >= kVariableCount)

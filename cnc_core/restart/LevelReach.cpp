@@ -69,42 +69,23 @@ std::uint32_t blockOfWord(const BlockList& blocks, std::uint32_t index) {
 
 }  // namespace
 
-/// One bit per block, with the range operations of the straight walk.
-class LevelReach::BlockBits {
-  public:
-    explicit BlockBits(std::size_t size) : size_(size), bits_((size + 63) / 64, 0) {}
-    bool test(std::size_t i) const { return (bits_[i / 64] >> (i % 64)) & 1u; }
-    void set(std::size_t i) { bits_[i / 64] |= std::uint64_t{1} << (i % 64); }
-    /// Sets [first, last).
-    void setRange(std::size_t first, std::size_t last) {
-        for (; first < last && first % 64; ++first)
-            set(first);
-        for (; first + 64 <= last; first += 64)
-            bits_[first / 64] = ~std::uint64_t{0};
-        for (; first < last; ++first)
-            set(first);
-    }
-    /// The first set bit in [first, last); `last` when none.
-    std::size_t findSet(std::size_t first, std::size_t last) const {
-        while (first < last) {
-            const std::uint64_t word = bits_[first / 64] >> (first % 64);
-            if (word)
-                return std::min(last, first + static_cast<std::size_t>(__builtin_ctzll(word)));
-            first = (first / 64 + 1) * 64;
-        }
-        return last;
-    }
-    std::vector<bool> toVector() const {
-        std::vector<bool> out(size_);
-        for (std::size_t i = 0; i < size_; ++i)
-            out[i] = test(i);
-        return out;
-    }
+void LevelReach::BlockSet::setRange(std::size_t first, std::size_t last) {
+    for (; first < last && first % 64; ++first)
+        set(first);
+    for (; first + 64 <= last; first += 64)
+        bits_[first / 64] = ~std::uint64_t{0};
+    for (; first < last; ++first)
+        set(first);
+}
 
-  private:
-    std::size_t size_;
-    std::vector<std::uint64_t> bits_;
-};
+std::size_t LevelReach::BlockSet::findSet(std::size_t first, std::size_t last) const {
+    while (first < last) {
+        const std::uint64_t word = bits_[first / 64] >> (first % 64);
+        if (word) return std::min(last, first + static_cast<std::size_t>(__builtin_ctzll(word)));
+        first = (first / 64 + 1) * 64;
+    }
+    return last;
+}
 
 LevelReach::LevelReach(ProgramPtr program) : program_(std::move(program)) {
     const Program& p = *program_;
@@ -157,7 +138,7 @@ int LevelReach::successors(std::uint32_t block, std::uint32_t next[2]) const {
     return count;
 }
 
-bool LevelReach::walk(const std::vector<std::uint32_t>& entries, BlockBits& seen,
+bool LevelReach::walk(const std::vector<std::uint32_t>& entries, BlockSet& seen,
                       std::uint32_t stopAt) const {
     const std::size_t size = program_->blocks.size();
     std::vector<std::uint32_t> open;
@@ -200,14 +181,38 @@ bool LevelReach::walk(const std::vector<std::uint32_t>& entries, BlockBits& seen
 
 bool LevelReach::reaches(const std::vector<std::uint32_t>& entries, std::uint32_t block) const {
     if (block >= program_->blocks.size()) return false;
-    BlockBits seen(program_->blocks.size());
+    BlockSet seen(program_->blocks.size());
     return walk(entries, seen, block);
 }
 
-std::vector<bool> LevelReach::reachable(const std::vector<std::uint32_t>& entries) const {
-    BlockBits seen(program_->blocks.size());
+LevelReach::BlockSet LevelReach::reachable(const std::vector<std::uint32_t>& entries) const {
+    BlockSet seen(program_->blocks.size());
     walk(entries, seen, ~std::uint32_t{0});
-    return seen.toVector();
+    return seen;
+}
+
+std::optional<std::uint32_t> LevelReach::returnWithoutCall() const {
+    // Blocks that are not turning blocks go on to the next one, and the
+    // PROGRAMMENDE block ends the flow without an RTS.
+    const Program& p = *program_;
+    for (std::uint32_t b : turning_) {
+        const Block blk = p.blocks[b];
+        bool jumped = false;  // a second jump word is an error (JUMP_TWICE) and never runs
+        for (std::uint32_t w = blk.firstWord; w < blk.firstWord + blk.wordCount; ++w) {
+            const WordKind kind = p.words.kindAt(w);
+            if (kind != WordKind::M && (kind != WordKind::Jump || jumped)) continue;
+            const Word word = p.words[w];
+            if (kind == WordKind::M) {
+                if (word.expr < 0 && (word.number == 2 || word.number == 30)) return std::nullopt;
+                continue;
+            }
+            jumped = true;
+            const Flow flow = flowOf(word.jump);
+            if (flow == Flow::Branch || flow == Flow::End)
+                return word.jump == JumpKind::RTS ? std::optional<std::uint32_t>(b) : std::nullopt;
+        }
+    }
+    return std::nullopt;
 }
 
 std::optional<LevelReach::Subroutine> LevelReach::subroutineOf(std::uint32_t block) const {

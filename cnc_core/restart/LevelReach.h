@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -26,12 +27,36 @@ namespace mtc::core {
 /// docs/decisions/restart.md R-034).
 class LevelReach {
   public:
+    /// One bit per block, with the range operations of the straight walk.
+    class BlockSet {
+      public:
+        explicit BlockSet(std::size_t size) : size_(size), bits_((size + 63) / 64, 0) {}
+        std::size_t size() const { return size_; }
+        bool test(std::size_t i) const { return (bits_[i / 64] >> (i % 64)) & 1u; }
+        void set(std::size_t i) { bits_[i / 64] |= std::uint64_t{1} << (i % 64); }
+        /// Sets [first, last).
+        void setRange(std::size_t first, std::size_t last);
+        /// The first set bit in [first, last); `last` when none.
+        std::size_t findSet(std::size_t first, std::size_t last) const;
+
+      private:
+        std::size_t size_;
+        std::vector<std::uint64_t> bits_;
+    };
+
     explicit LevelReach(ProgramPtr program);
 
     /// True when the flow entered at one of `entries` can arrive at `block`.
     bool reaches(const std::vector<std::uint32_t>& entries, std::uint32_t block) const;
-    /// Every block the flow entered at `entries` can arrive at (one bit per block).
-    std::vector<bool> reachable(const std::vector<std::uint32_t>& entries) const;
+    /// Every block the flow entered at `entries` can arrive at.
+    BlockSet reachable(const std::vector<std::uint32_t>& entries) const;
+    /// The first RTS the program runs into when started at N0000 without a
+    /// call: the straight flow from block 0 up to the first unconditional
+    /// change of flow (BRA, JMP, BST, RET, RTS, M02, M30; within a block the
+    /// first such word counts, and only a block's first jump word: a second
+    /// is the error JUMP_TWICE). That RTS means a subroutine sits at the start
+    /// of the program (seed 000, 2.4). Reads the turning blocks only.
+    std::optional<std::uint32_t> returnWithoutCall() const;
     /// The subroutine of this program that runs through `block`: the label of a
     /// BSR / BEV of this program whose level reaches it, and the first block
     /// calling it. std::nullopt when no call of this program reaches it.
@@ -43,9 +68,8 @@ class LevelReach {
     std::optional<Subroutine> subroutineOf(std::uint32_t block) const;
 
   private:
-    class BlockBits;
     /// Walks from `entries`; stops early when `stopAt` is reached. Fills `seen`.
-    bool walk(const std::vector<std::uint32_t>& entries, BlockBits& seen,
+    bool walk(const std::vector<std::uint32_t>& entries, BlockSet& seen,
               std::uint32_t stopAt) const;
     /// Blocks the flow may continue with after `block` (up to two).
     int successors(std::uint32_t block, std::uint32_t next[2]) const;

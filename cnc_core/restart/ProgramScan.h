@@ -44,11 +44,6 @@ class ProgramScan {
     /// `on` (e.g. G91 still active against G90). Scans the source text
     /// backwards from the block and checks each hit against the block's words.
     bool modalActiveBefore(std::uint32_t block, int on, int off) const;
-    /// The first RTS the program runs into when started at N0000 without a
-    /// call: straight-line flow from block 0 up to the first unconditional
-    /// change of flow (BRA, JMP, BST, RET, M02, M30). That RTS means a
-    /// subroutine sits at the start of the program (seed 000, 2.4). Cached.
-    std::optional<std::uint32_t> returnWithoutCall() const;
 
     /// Index of the first jump word (WordKind::Jump) of `block`, or -1.
     long jumpWordOf(std::uint32_t block) const;
@@ -70,12 +65,9 @@ class ProgramScan {
     static constexpr std::size_t kSplitSearchBytes = std::size_t{4} << 20;
 
   private:
-    bool stopsStraightFlow(std::uint32_t block, bool& isReturn) const;
-
     ProgramPtr program_;
     mutable std::vector<std::uint32_t> primaries_;
     mutable bool primariesBuilt_ = false;
-    mutable std::optional<std::optional<std::uint32_t>> returnWithoutCall_;
 };
 
 }  // namespace mtc::core

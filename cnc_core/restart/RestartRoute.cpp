@@ -17,7 +17,7 @@ std::string refText(const BlockRef& ref) {
 class RoutePlanner {
   public:
     RoutePlanner(const RestartSelection& s, const ProgramStore& store, RestartRoute& route,
-                 DiagnosticList& diagnostics, RestartRouteCache* cache)
+                 DiagnosticList& diagnostics, RestartRouteCache& cache)
         : s_(s), store_(store), route_(route), d_(diagnostics), cache_(cache) {}
 
     bool plan() {
@@ -210,16 +210,10 @@ class RoutePlanner {
 
     bool reachedOnLevel(const ProgramPtr& program, const std::vector<std::uint32_t>& entries,
                         std::uint32_t block, bool isTarget, bool programStart) {
-        // The reach's constructor lists the program's turning blocks: one
-        // pass over its words, so it is built only when needed.
-        std::optional<LevelReach> reach;
-        if (cache_ ? cache_->reaches(program, entries, block)
-                   : reach.emplace(program).reaches(entries, block))
-            return true;
+        if (cache_.reaches(program, entries, block)) return true;
+        const LevelReach& reach = cache_.reach(program);
         if (programStart) {  // seed 000, 2.4: a subroutine at the start needs the start block
-            std::optional<ProgramScan> own;
-            const ProgramScan& scan = cache_ ? cache_->scan(program) : own.emplace(program);
-            const std::optional<std::uint32_t> rts = scan.returnWithoutCall();
+            const std::optional<std::uint32_t> rts = reach.returnWithoutCall();
             if (rts && *rts < block)
                 return fail("RESTART_START_BLOCK_NEEDED", locationOf(*program, *rts),
                             "the program starts with a subroutine (RTS in " +
@@ -227,7 +221,7 @@ class RoutePlanner {
                                 " without a call): the computing process would end there; "
                                 "select 'restart from last primary block' (seed 000, 2.4)");
         }
-        const auto sub = (reach ? *reach : reach.emplace(program)).subroutineOf(block);
+        const auto sub = reach.subroutineOf(block);
         // Reached by no flow at all (dead code after M30): the computing process
         // answers "target block cannot be found" as seed 000, 2.7 says.
         if (!sub) return true;
@@ -245,7 +239,7 @@ class RoutePlanner {
     const ProgramStore& store_;
     RestartRoute& route_;
     DiagnosticList& d_;
-    RestartRouteCache* cache_;
+    RestartRouteCache& cache_;
     std::vector<LevelSegment> segments_;
     ProgramPtr current_;  ///< program the path is in after the steps so far
 };
@@ -301,7 +295,8 @@ SourceLocation locationOf(const Program& program, std::uint32_t block) {
 
 bool planRestartRoute(const RestartSelection& selection, const ProgramStore& store,
                       RestartRoute& route, DiagnosticList& diagnostics, RestartRouteCache* cache) {
-    return RoutePlanner(selection, store, route, diagnostics, cache).plan();
+    RestartRouteCache own;
+    return RoutePlanner(selection, store, route, diagnostics, cache ? *cache : own).plan();
 }
 
 bool callStackMatches(const std::vector<CallFrame>& stack, const std::vector<RouteFrame>& chain) {
@@ -327,12 +322,19 @@ RestartRouteCache::~RestartRouteCache() = default;
 bool RestartRouteCache::reaches(const ProgramPtr& program,
                                 const std::vector<std::uint32_t>& entries, std::uint32_t block) {
     auto key = std::make_pair(program.get(), entries);
-    auto found = reach_.find(key);
-    if (found == reach_.end()) {
+    auto found = reachable_.find(key);
+    if (found == reachable_.end())
+        found = reachable_.emplace(std::move(key), reach(program).reachable(entries)).first;
+    return block < found->second.size() && found->second.test(block);
+}
+
+const LevelReach& RestartRouteCache::reach(const ProgramPtr& program) {
+    std::unique_ptr<LevelReach>& slot = reaches_[program.get()];
+    if (!slot) {
         keep_.push_back(program);
-        found = reach_.emplace(std::move(key), LevelReach(program).reachable(entries)).first;
+        slot = std::make_unique<LevelReach>(program);
     }
-    return block < found->second.size() && found->second[block];
+    return *slot;
 }
 
 const ProgramScan& RestartRouteCache::scan(const ProgramPtr& program) {
@@ -359,9 +361,9 @@ void addStartWarnings(const RestartRoute& route, DiagnosticList& diagnostics,
             passed = first.jumpBlock;
         else if (!jumped && first.levels.size() == 1 && route.targetProgram == route.main)
             passed = route.targetBlock;
-        std::optional<ProgramScan> own;
-        const ProgramScan& scan = cache ? cache->scan(route.main) : own.emplace(route.main);
-        const auto rts = scan.returnWithoutCall();
+        std::optional<LevelReach> own;
+        const LevelReach& reach = cache ? cache->reach(route.main) : own.emplace(route.main);
+        const auto rts = reach.returnWithoutCall();
         if (rts && passed && *rts < *passed)
             diagnostics.warning(
                 "RESTART_START_BLOCK_NEEDED", locationOf(*route.main, *rts),

@@ -10,6 +10,7 @@
 #include "cnc_core/language/Diagnostic.h"
 #include "cnc_core/language/Program.h"
 #include "cnc_core/program/ProgramStore.h"
+#include "cnc_core/restart/LevelReach.h"
 #include "cnc_core/restart/RestartSelection.h"
 #include "cnc_core/restart/StartBlockSearch.h"
 
@@ -58,23 +59,28 @@ struct RestartRoute {
 
 class ProgramScan;
 
-/// What planRestartRoute and addStartWarnings work out about a program again
-/// for every selection (which blocks a level reaches, the text scans of
-/// ProgramScan). Optional: the restart verifier keeps one for all its
-/// targets. Programs must not change while they are in it (a ProgramPtr is
-/// immutable). Not thread-safe.
+/// What planRestartRoute and addStartWarnings work out about a program (its
+/// LevelReach and which blocks a level reaches, the text scans of
+/// ProgramScan), built on first use and kept: one start of the computing
+/// process shares them between the route and its warnings, and the restart
+/// verifier keeps one for all its targets. Programs must not change while
+/// they are in it (a ProgramPtr is immutable). Not thread-safe.
 class RestartRouteCache {
   public:
     RestartRouteCache();
     ~RestartRouteCache();
-    /// LevelReach::reaches, from a kept bit set per program and entries.
+    /// LevelReach::reaches, from a kept block set per program and entries.
     bool reaches(const ProgramPtr& program, const std::vector<std::uint32_t>& entries,
                  std::uint32_t block);
+    /// The kept LevelReach of `program`.
+    const LevelReach& reach(const ProgramPtr& program);
     /// The kept ProgramScan of `program`.
     const ProgramScan& scan(const ProgramPtr& program);
 
   private:
-    std::map<std::pair<const Program*, std::vector<std::uint32_t>>, std::vector<bool>> reach_;
+    std::map<std::pair<const Program*, std::vector<std::uint32_t>>, LevelReach::BlockSet>
+        reachable_;
+    std::map<const Program*, std::unique_ptr<LevelReach>> reaches_;
     std::map<const Program*, std::unique_ptr<ProgramScan>> scans_;
     std::vector<ProgramPtr> keep_;  ///< the addresses above stay valid
 };
@@ -87,6 +93,7 @@ class RestartRouteCache {
 /// Fails (false, RESTART_* errors in `diagnostics`) on any problem; a
 /// restart from the last primary block without one is a warning
 /// (RESTART_NO_PRIMARY_BLOCK) and starts at the beginning of the program.
+/// Without `cache`, one is made for this call.
 bool planRestartRoute(const RestartSelection& selection, const ProgramStore& store,
                       RestartRoute& route, DiagnosticList& diagnostics,
                       RestartRouteCache* cache = nullptr);

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <memory>
+#include <optional>
 #include <random>
 #include <string>
 #include <vector>
@@ -42,10 +43,17 @@ std::string programOf(int count, const std::vector<std::pair<int, std::string>>&
 }
 
 std::vector<std::uint32_t> reachedBlocks(const LevelReach& reach, std::uint32_t entry) {
-    const std::vector<bool> bits = reach.reachable({entry});
+    const LevelReach::BlockSet bits = reach.reachable({entry});
     std::vector<std::uint32_t> out;
     for (std::uint32_t i = 0; i < bits.size(); ++i)
-        if (bits[i]) out.push_back(i);
+        if (bits.test(i)) out.push_back(i);
+    return out;
+}
+
+std::vector<bool> asVector(const LevelReach::BlockSet& bits) {
+    std::vector<bool> out(bits.size());
+    for (std::size_t i = 0; i < bits.size(); ++i)
+        out[i] = bits.test(i);
     return out;
 }
 
@@ -134,6 +142,29 @@ std::vector<bool> referenceReach(const Program& p, std::uint32_t entry) {
     return seen;
 }
 
+/// Seed 000, 2.4 block by block: the straight flow from block 0 up to the
+/// first word that stops it; an RTS there is a return without a call.
+std::optional<std::uint32_t> referenceReturnWithoutCall(const Program& p) {
+    for (std::uint32_t b = 0; b < p.blocks.size(); ++b) {
+        const Block block = p.blocks[b];
+        bool jumped = false;
+        for (std::uint32_t w = block.firstWord; w < block.firstWord + block.wordCount; ++w) {
+            const Word word = p.words[w];
+            if (word.kind == WordKind::M && word.expr < 0 &&
+                (word.number == 2 || word.number == 30))
+                return std::nullopt;
+            if (word.kind != WordKind::Jump || jumped) continue;
+            jumped = true;
+            if (word.jump == JumpKind::RTS) return b;
+            if (word.jump == JumpKind::BRA || word.jump == JumpKind::RET ||
+                word.jump == JumpKind::BST || word.jump == JumpKind::JMP)
+                return std::nullopt;
+        }
+        if (block.flags & kBlockProgramEnd) return std::nullopt;
+    }
+    return std::nullopt;
+}
+
 std::string randomProgram(std::mt19937& random, int count) {
     const char* branches[] = {"BRA", "BEQ", "BNE", "BPL", "BMI"};
     std::string text;
@@ -151,7 +182,7 @@ std::string randomProgram(std::mt19937& random, int count) {
                 body = "BSR .L" + std::to_string(label);
                 break;
             case 3:
-                body = "RTS";
+                body = random() % 4 ? "RTS" : "BNE .L" + std::to_string(label) + " RTS";
                 break;
             case 4:
                 body = "M3 M8 G1 X1";
@@ -176,12 +207,46 @@ TEST(LevelReach, RandomProgramsReachWhatTheBlockByBlockRuleReaches) {
         for (int probe = 0; probe < 6; ++probe) {
             const auto entry = static_cast<std::uint32_t>(random() % count);
             const std::vector<bool> expected = referenceReach(*p, entry);
-            ASSERT_EQ(reach.reachable({entry}), expected)
+            ASSERT_EQ(asVector(reach.reachable({entry})), expected)
                 << "round " << round << " entry " << entry;
             const auto target = static_cast<std::uint32_t>(random() % count);
             EXPECT_EQ(reach.reaches({entry}, target), bool(expected[target]));
         }
     }
+}
+
+TEST(LevelReach, AReturnBeforeAnyStopOfTheStraightFlowIsAReturnWithoutCall) {
+    const auto rts = [](const std::vector<std::pair<int, std::string>>& special) {
+        return LevelReach(parsed(programOf(200, special))).returnWithoutCall();
+    };
+    EXPECT_EQ(rts({{140, "RTS"}, {150, "M30"}}), std::optional<std::uint32_t>(140));
+    EXPECT_EQ(rts({{10, "BSR .S"}, {11, "BEQ .S"}, {140, "RTS"}, {150, ".S M30"}}),
+              std::optional<std::uint32_t>(140))
+        << "calls and conditional branches do not stop the straight flow";
+    EXPECT_EQ(rts({{70, "M30"}, {140, "RTS"}}), std::nullopt) << "M30 ends the program first";
+    EXPECT_EQ(rts({{70, "BRA .E"}, {140, "RTS"}, {150, ".E M30"}}), std::nullopt);
+    EXPECT_EQ(rts({{70, "JMP 2"}, {140, "RTS"}}), std::nullopt);
+    EXPECT_EQ(rts({{90, "M30 RTS"}}), std::nullopt) << "the first stopping word of a block counts";
+    EXPECT_EQ(rts({{90, "/RTS"}, {100, "M30"}}), std::optional<std::uint32_t>(90))
+        << "a skip block's RTS counts (the operator may not skip)";
+    EXPECT_EQ(rts({}), std::nullopt) << "no RTS: the flow reaches PROGRAMMENDE";
+    EXPECT_EQ(rts({{90, "BEQ .S RTS"}, {100, ".S M30"}}), std::nullopt)
+        << "a second jump word in a block is an error, not a return";
+    EXPECT_EQ(rts({{90, "BEQ .S M30"}, {100, ".S RTS"}}), std::nullopt)
+        << "an M30 after a conditional branch still ends the straight flow";
+}
+
+TEST(LevelReach, RandomProgramsFindTheReturnWithoutCallOfTheBlockByBlockRule) {
+    std::mt19937 random(2407);
+    int returns = 0;
+    for (int round = 0; round < 200; ++round) {
+        const int count = 2 + static_cast<int>(random() % 60);
+        const ProgramPtr p = parsed(randomProgram(random, count));
+        const std::optional<std::uint32_t> expected = referenceReturnWithoutCall(*p);
+        ASSERT_EQ(LevelReach(p).returnWithoutCall(), expected) << "round " << round;
+        returns += expected.has_value();
+    }
+    EXPECT_GT(returns, 20) << "the random programs must also start with subroutines";
 }
 
 }  // namespace
