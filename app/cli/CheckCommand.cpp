@@ -66,6 +66,7 @@ CheckedProgram checkOne(const std::string& argument, const CommandSetup& setup,
     checked.blocks = program->blocks.size();
     found.append(core::checkProgram(*program, checkOptions(setup, request)));
     found.append(checkProgramReferences(*program, store, request.process));
+    reportChangedFile(program, found);
     countSeverities(found, checked);
     all.append(found);
     return checked;

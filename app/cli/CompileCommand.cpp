@@ -127,6 +127,7 @@ int runCompileCommand(const CliOptions& options) {
         return reportSetupFailure(diagnostics, options.json);
     }
     diagnostics.append(core::compilerDiagnostics(outcome.result.errors));
+    reportChangedFile(request.program, diagnostics);
     if (options.json)
         writeJson(outcome, diagnostics);
     else

@@ -10,6 +10,7 @@
 
 #include "cnc_core/program/DatFile.h"
 #include "cnc_core/program/DatFileName.h"
+#include "cnc_core/program/FileBackedText.h"
 #include "cnc_core/program/FileText.h"
 #include "cnc_core/program/ProgramLoader.h"
 #include "resources/EmbeddedResources.h"
@@ -53,7 +54,7 @@ bool resolveNumber(const std::string& argument, const ProgramMemory& memory,
 
 }  // namespace
 
-bool readTextFile(const std::string& path, std::string& text, std::string& error) {
+bool openProgramFile(const std::string& path, core::SourceText& text, std::string& error) {
     const std::string why = core::whyNotARegularFile(path);
     if (why == "does not exist") {
         error = "cannot read '" + path + "': no such file";
@@ -64,11 +65,18 @@ bool readTextFile(const std::string& path, std::string& text, std::string& error
         return false;
     }
     std::string reason;
-    if (!core::readFileText(path, text, reason)) {
+    std::shared_ptr<core::FileBackedText> file = core::FileBackedText::open(path, reason);
+    if (!file) {
         error = "cannot read " + reason;
         return false;
     }
+    text = core::SourceText(std::move(file));
     return true;
+}
+
+void reportChangedFile(const core::ProgramPtr& program, core::DiagnosticList& diagnostics) {
+    const core::ChunkedText* file = program ? program->source.file() : nullptr;
+    if (file && file->changed()) diagnostics.error("CLI_FILE_CHANGED", {}, file->changeMessage());
 }
 
 bool loadProgramMemory(const std::string& directory, ProgramMemory& memory,
@@ -102,8 +110,9 @@ bool resolveProgram(const std::string& argument, const ProgramMemory& memory, in
     request.process = process;
     if (argument.size() <= 3 && allDigits(argument))
         return resolveNumber(argument, memory, request, diagnostics);
-    std::string text, error;
-    if (!readTextFile(argument, text, error)) {
+    core::SourceText text;
+    std::string error;
+    if (!openProgramFile(argument, text, error)) {
         diagnostics.error("CLI_FILE_UNREADABLE", {}, error);
         return false;
     }

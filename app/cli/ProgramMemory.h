@@ -4,13 +4,19 @@
 #include <vector>
 
 #include "cnc_core/language/Diagnostic.h"
+#include "cnc_core/language/SourceText.h"
 #include "cnc_core/program/ProgramStore.h"
 
 namespace mtc::cli {
 
-/// Reads a whole file. Fails (false, `error` set) when the path does not name
-/// a readable regular file.
-bool readTextFile(const std::string& path, std::string& text, std::string& error);
+/// Opens a program file as a file-backed text (read by the parse chunk by
+/// chunk and again where needed; PROC-003). Fails (false, `error` set) when
+/// the path does not name a readable regular file.
+bool openProgramFile(const std::string& path, core::SourceText& text, std::string& error);
+
+/// Adds CLI_FILE_CHANGED when the program's file changed on disk after the
+/// parse and a part of its text had to be read again (it reads as blanks).
+void reportChangedFile(const core::ProgramPtr& program, core::DiagnosticList& diagnostics);
 
 /// The program memory of a command: every program of the program directory
 /// (--programs DIR) or of the demo programs built into the binary, parsed,

@@ -242,6 +242,7 @@ int runRestartCommand(const CliOptions& options) {
     RestartReport report;
     if (!driver.run(report)) return reportSetupFailure(report.diagnostics, options.json);
     driver.saveData(report.diagnostics);
+    reportChangedFile(prepared.request.program, report.diagnostics);
     if (options.json) {
         JsonWriter json(stdout);
         writeRestartJson(json, report);

@@ -331,6 +331,7 @@ int runRunCommand(const CliOptions& options) {
         outcome = execute(station, run, samples, diagnostics);
     if (mode == MotionMode::Json) json.endArray();
     station.setOutputListener(nullptr);
+    reportChangedFile(run.request.program, diagnostics);
 
     cell.save(diagnostics);
     writeReport(cell, station, sink, outcome, diagnostics, samples, options.json ? &json : nullptr);

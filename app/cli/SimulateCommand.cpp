@@ -174,6 +174,7 @@ int runSimulateCommand(const CliOptions& options) {
         report.diagnostics.warning("SIMULATE_NO_STL", {report.request.program->number, "", 0, 0},
                                    "no STL written: the program has errors");
     }
+    reportChangedFile(report.request.program, report.diagnostics);
     if (options.json)
         writeJson(report);
     else

@@ -163,6 +163,7 @@ int runVerifyRestartCommand(const CliOptions& options) {
         verifier.advance(kArrivalsPerSlice);
     core::VerifyReport report = verifier.report();
     report.diagnostics.append(diagnostics);
+    reportChangedFile(request.program, report.diagnostics);
     if (options.json)
         writeJson(report, options, request.number);
     else

@@ -104,7 +104,7 @@ void Cell::reparseNaming(const std::vector<std::string>& names) {
         // (No structured binding: clang's C++17 cannot capture one in a lambda.)
         const ProgramPtr& program = entry.second;
         const bool names_one = std::any_of(names.begin(), names.end(), [&](const std::string& n) {
-            return program->source.find(n) != std::string::npos;
+            return program->source.view().find(n) != std::string_view::npos;
         });
         if (names_one) affected.emplace_back(entry.first, program);
     }

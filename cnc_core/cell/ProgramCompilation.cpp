@@ -469,7 +469,7 @@ void ProgramCompilation::invalidate(const std::vector<int>& numbers) {
 int ProgramCompilation::sourceLineOf(int number, const std::string& block) const {
     const auto program = cell_.program(slot_, number);
     if (!program || block.empty()) return 0;
-    const std::string& text = program->source;
+    const std::string_view text = program->source.view();
     int line = 1;
     for (std::size_t start = 0; start < text.size(); ++line) {
         const std::size_t at = text.find_first_not_of(" /:", start);

@@ -146,7 +146,7 @@ void checkObject(ObjectText& object, const std::set<std::string>& handled,
     Program program =
         parseProgram(std::move(object.text), {options.programNumber, options.programName, {}});
     reportObjectProblems(program, object, handled, reported, context);
-    object.text = std::move(program.source);
+    object.text = std::move(program.source).take();
 }
 
 }  // namespace

@@ -34,7 +34,7 @@ std::string describeChar(int c) {
 BlockParser::BlockParser(ParseContext& context)
     : context_(context),
       program_(context.program()),
-      text_(context.program().source),
+      text_(context.source()),
       lexer_(text_, 0, 0),
       plainFastPath_(context.plainBlockFastPath()) {}
 

@@ -21,7 +21,24 @@ class ParseContext {
         : program_(program), plainBlockFastPath_(plainBlockFastPath) {}
 
     Program& program() { return program_; }
-    std::string_view source() const { return program_.source; }
+    /// The text being parsed, followed by a '\0'. Through a file's window
+    /// (ChunkedText) only the lines readyLinesFrom() made ready may be read.
+    std::string_view source() const { return text_; }
+    /// Parses `text`; `window` (or nullptr) is the ChunkedText it lies in.
+    void useText(std::string_view text, ChunkedText* window) {
+        text_ = text;
+        window_ = window;
+    }
+    /// Makes the lines from `pos` on readable; returns the offset below
+    /// which every line start has its whole line ready (ChunkedText::
+    /// kWholeText for an owned text).
+    std::uint32_t readyLinesFrom(std::uint32_t pos) {
+        return window_ ? window_->fillLinesFrom(pos) : ChunkedText::kWholeText;
+    }
+    /// The text before `pos` will not be read again by the parse.
+    void doneBefore(std::uint32_t pos) {
+        if (window_) window_->releaseBefore(pos);
+    }
 
     /// Records a diagnostic at `line`:`column` of block `block` ("N0012" or
     /// ""). After kMaxDiagnostics it records one PARSE_TOO_MANY_DIAGNOSTICS
@@ -48,6 +65,8 @@ class ParseContext {
 
   private:
     Program& program_;
+    std::string_view text_;
+    ChunkedText* window_ = nullptr;
     bool plainBlockFastPath_ = true;
     std::size_t reported_ = 0;
     bool findMacro(std::string_view name) const;

@@ -28,7 +28,7 @@ class LineScanner {
   public:
     LineScanner(ParseContext& context, const SourceLayout& layout)
         : context_(context),
-          text_(context.program().source),
+          text_(context.source()),
           layout_(layout),
           blocks_(context),
           wholeLines_(context.plainBlockFastPath() && !layout.dat) {}
@@ -36,6 +36,12 @@ class LineScanner {
     void run();
 
   private:
+    /// Makes the line at `pos` ready (a file's window: fills ahead, and
+    /// releases what no pending block needs).
+    void advanceWindow(std::uint32_t pos) {
+        context_.doneBefore(open_ ? std::min(pending_.begin, pos) : pos);
+        ready_ = context_.readyLinesFrom(pos);
+    }
     enum class LineKind { Blank, CommentOnly, Continuation, BlockStart };
     /// The fast path for the line at `pos`: true when it took the whole
     /// line (then `pos` and `line` are those of the next line).
@@ -57,6 +63,8 @@ class LineScanner {
     /// Whether lines may take BlockParser::parseLine.
     const bool wholeLines_;
     std::uint32_t lastLine_ = 0;
+    /// Line starts below it have their whole line ready in text_.
+    std::uint32_t ready_ = 0;
 };
 
 void LineScanner::run() {
@@ -67,6 +75,7 @@ void LineScanner::run() {
     lastLine_ =
         std::max<std::uint32_t>(line, 2) - 1;  // the header's last line when no block follows
     while (pos < size) {
+        if (pos >= ready_) advanceWindow(pos);
         if (takeWholeLine(pos, line)) continue;
         const void* newline = std::memchr(data + pos, '\n', size - pos);
         std::uint32_t next =
@@ -177,42 +186,31 @@ void LineScanner::afterEnd(std::uint32_t begin, std::uint32_t end, std::uint32_t
     }
 }
 
-/// Counts '\n' and ' ' in chunks of 255 bytes with 8-bit counters, which
-/// the compiler turns into byte-wise vector compares.
-void countLinesAndBlanks(std::string_view text, std::size_t& lines, std::size_t& blanks) {
-    const char* p = text.data();
-    std::size_t left = text.size();
-    while (left > 0) {
-        std::size_t chunk = left < 255 ? left : 255;
-        std::uint8_t newlines = 0, spaces = 0;
-        for (std::size_t i = 0; i < chunk; ++i) {
-            newlines = static_cast<std::uint8_t>(newlines + (p[i] == '\n'));
-            spaces = static_cast<std::uint8_t>(spaces + (p[i] == ' '));
-        }
-        lines += newlines;
-        blanks += spaces;
-        p += chunk;
-        left -= chunk;
-    }
-}
-
 /// Reserves the packed vectors from cheap counts so that parsing does not
 /// reallocate (and peak memory stays near the final size).
-void reserveFor(Program& program) {
+void reserveFor(Program& program, std::string_view text, const ChunkedText* window) {
     std::size_t lines = 1, blanks = 0;
-    countLinesAndBlanks(program.source, lines, blanks);
+    if (window)
+        window->countLinesAndBlanks(lines, blanks);
+    else
+        countLinesAndBlanks(text, lines, blanks);
     program.blocks.reserve(lines);
     program.words.reserve(blanks + lines / 8);
 }
 
 }  // namespace
 
-Program parseProgram(std::string source, const ParseOptions& options) {
+Program parseProgram(SourceText source, const ParseOptions& options) {
     Program program;
     program.number = options.programNumber;
     program.name = options.name;
     program.source = std::move(source);
     ParseContext context(program, options.plainBlockFastPath);
+    ChunkedText* const file = program.source.file();
+    ChunkedText* const window = file && file->takeParseWindow() ? file : nullptr;
+    const std::string_view text =
+        window ? std::string_view(window->parseBytes(), window->size()) : program.source.view();
+    context.useText(text, window);
     for (const std::string& name : options.macroNames)
         context.addMacro(name);
     if (program.source.size() >= std::numeric_limits<std::uint32_t>::max() - 1) {
@@ -220,11 +218,12 @@ Program parseProgram(std::string source, const ParseOptions& options) {
                        "program text larger than 4 GiB is not supported");
         return program;
     }
-    reserveFor(program);
+    reserveFor(program, text, window);
     const SourceLayout layout = options.fileLayout ? readSourceLayout(context) : SourceLayout{};
     program.hasDatHeader = layout.dat;
     if (program.name.empty()) program.name = program.title;
     LineScanner(context, layout).run();
+    if (window) window->endParse();
     program.blocks.shrink_to_fit();
     program.words.shrink_to_fit();
     program.expressions.shrink_to_fit();

@@ -28,6 +28,8 @@ struct ParseOptions {
 /// blocks, PROGRAMMENDE) or a loose file of blocks. Never throws and never
 /// crashes: every problem becomes a diagnostic in Program::diagnostics with
 /// program, block, line and column; parsing recovers at the next block.
-Program parseProgram(std::string source, const ParseOptions& options = {});
+/// A file-backed `source` (SourceText over a ChunkedText) is parsed through
+/// its window the first time: its text is not all in memory at once.
+Program parseProgram(SourceText source, const ParseOptions& options = {});
 
 }  // namespace mtc::core

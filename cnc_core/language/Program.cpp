@@ -23,12 +23,12 @@ long Program::findLabel(std::string_view name) const {
 }
 
 std::uint32_t Program::lineOf(std::uint32_t offset) const {
-    std::size_t end = std::min<std::size_t>(offset, source.size());
-    return 1 + static_cast<std::uint32_t>(std::count(source.begin(), source.begin() + end, '\n'));
+    const std::string_view before = source.span(0, offset);
+    return 1 + static_cast<std::uint32_t>(std::count(before.begin(), before.end(), '\n'));
 }
 
 std::size_t Program::memoryBytes() const {
-    std::size_t bytes = sizeof(Program) + source.capacity() + name.capacity() +
+    std::size_t bytes = sizeof(Program) + source.memoryBytes() + name.capacity() +
                         identification.capacity() + header.capacity() + title.capacity() +
                         cycleCall.capacity();
     bytes += blocks.memoryBytes() + words.memoryBytes();

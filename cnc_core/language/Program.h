@@ -9,6 +9,7 @@
 
 #include "cnc_core/language/BlockList.h"
 #include "cnc_core/language/Diagnostic.h"
+#include "cnc_core/language/SourceText.h"
 #include "cnc_core/language/WordList.h"
 
 /// The parsed form of an NC program. Compact and flat on purpose: a program of
@@ -75,7 +76,7 @@ struct Program {
     std::string name;            ///< file name or title
     std::string identification;  ///< .DAT first line, if any
     std::string header;          ///< %NPG..%NPG header lines, if any
-    std::string source;          ///< the text all spans refer to
+    SourceText source;           ///< the text all spans refer to
     BlockList blocks;
     WordList words;
     std::vector<ExprNode> expressions;
@@ -90,9 +91,7 @@ struct Program {
     std::vector<CycleParameter> cycleParameters;  ///< %V% declarations of a cycle
     std::string cycleCall;  ///< %N% line of a cycle ("BSR .*WSTCH ;cycle call")
 
-    std::string_view text(TextSpan span) const {
-        return std::string_view(source).substr(span.offset, span.length);
-    }
+    std::string_view text(TextSpan span) const { return source.span(span.offset, span.length); }
     /// "N0012" (or "N0012:0001" for compiled blocks) or "" for a block without number.
     std::string blockId(std::size_t blockIndex) const;
     /// Index of the block with label `name`, or -1.

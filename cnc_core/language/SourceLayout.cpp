@@ -17,11 +17,13 @@ struct Line {
 
 class LineReader {
   public:
-    LineReader(std::string_view text, std::uint32_t begin) : text_(text), pos_(begin) {}
+    LineReader(ParseContext& context, std::uint32_t begin)
+        : context_(context), text_(context.source()), pos_(begin) {}
     /// Number of the last line read (0 before the first).
     std::uint32_t lastNumber() const { return number_; }
     bool next(Line& line) {
         if (pos_ >= text_.size()) return false;
+        if (pos_ >= ready_) ready_ = context_.readyLinesFrom(pos_);
         std::size_t nl = text_.find('\n', pos_);
         std::uint32_t end = nl == std::string_view::npos ? static_cast<std::uint32_t>(text_.size())
                                                          : static_cast<std::uint32_t>(nl);
@@ -35,9 +37,11 @@ class LineReader {
     }
 
   private:
+    ParseContext& context_;
     std::string_view text_;
     std::uint32_t pos_;
     std::uint32_t number_ = 0;
+    std::uint32_t ready_ = 0;  ///< line starts below it are ready
 };
 
 std::string_view trimmed(std::string_view s) {
@@ -111,7 +115,7 @@ bool parseCycleParameter(std::string_view text, CycleParameter& parameter) {
 class LayoutReader {
   public:
     explicit LayoutReader(ParseContext& context)
-        : context_(context), program_(context.program()), text_(context.program().source) {}
+        : context_(context), program_(context.program()), text_(context.source()) {}
 
     SourceLayout read();
 
@@ -132,9 +136,10 @@ class LayoutReader {
 
 SourceLayout LayoutReader::read() {
     SourceLayout layout;
+    context_.readyLinesFrom(0);
     std::uint32_t start = startsWith(text_, "\xEF\xBB\xBF") ? 3 : 0;  // UTF-8 byte order mark
     layout.blocksBegin = start;
-    LineReader lines(text_, start);
+    LineReader lines(context_, start);
     Line first, second;
     if (!lines.next(first)) return layout;
     Line open;

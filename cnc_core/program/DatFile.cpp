@@ -49,7 +49,7 @@ void checkNameAgainstHeader(Program& program, const DatFileName& name) {
 
 }  // namespace
 
-Program DatFile::parse(std::string text, const std::string& fileName, ParseOptions options) {
+Program DatFile::parse(SourceText text, const std::string& fileName, ParseOptions options) {
     std::optional<DatFileName> name = parseDatFileName(fileName);
     if (options.programNumber == 0 && name) options.programNumber = name->number;
     if (options.name.empty()) options.name = baseName(fileName);
@@ -74,14 +74,14 @@ Program DatFile::read(const std::string& path, ParseOptions options) {
 }
 
 std::string DatFile::format(const Program& program, const DatFileName& name) {
-    if (program.hasDatHeader) return program.source;
+    if (program.hasDatHeader) return program.source.str();
     std::string fileName = formatDatFileName(name);
     std::string text =
         "iMTc/mtc200-panel/" + std::to_string(program.source.size()) + "/" + fileName + "\n";
     text += headerOpenLine(name, program.isCycle) + "\n";
     text += "*" + (program.title.empty() ? program.name : program.title) + "\n";
     text += program.isCycle ? "%MAC\n" : "%NPG\n";
-    text += program.source;
+    text += program.source.view();
     if (!text.empty() && text.back() != '\n') text += '\n';
     bool hasEnd = !program.blocks.empty() && (program.blocks.back().flags & kBlockProgramEnd);
     if (!hasEnd) {

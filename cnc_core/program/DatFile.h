@@ -22,7 +22,7 @@ class DatFile {
 
     /// Parses `text` as the content of a file called `fileName` (same rules
     /// as read(), without the file system).
-    static Program parse(std::string text, const std::string& fileName, ParseOptions options = {});
+    static Program parse(SourceText text, const std::string& fileName, ParseOptions options = {});
 
     /// The file text for `program`: a program read from a .DAT file is
     /// written back exactly as read (round trip); a loose program gets an

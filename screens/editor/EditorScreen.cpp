@@ -81,7 +81,7 @@ void EditorScreen::open(int number) {
     if (!program) return;
     QElapsedTimer timer;
     timer.start();
-    edit_->load(program->source);
+    edit_->load(program->source.str());
     lastOpenMs_ = timer.elapsed();
     program_ = number;
     loadedSource_ = program;

@@ -111,7 +111,7 @@ void GneScreen::activated() {
         return;
     }
     if (wanted != program_ || line != openedLine_ || program.get() != openedSource_)
-        openOn(wanted, program->source, line);
+        openOn(wanted, program->source.str(), line);
     openedSource_ = program.get();
     rows_->setFocus();
 }

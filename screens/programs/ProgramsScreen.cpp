@@ -65,7 +65,7 @@ void ProgramsScreen::showListing() {
     const auto program = context().session->program(context().process, number);
     if (program == shownProgram_ && program) return;
     shownProgram_ = program;
-    listing_->load(program ? program->source : std::string());
+    listing_->load(program ? program->source.str() : std::string());
 }
 
 int ProgramsScreen::currentNumber() const {

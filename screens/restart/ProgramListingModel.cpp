@@ -52,7 +52,7 @@ QString ProgramListingModel::lineText(int row) const {
     if (!scan_ || row < 0 || row >= rows_) return {};
     const std::uint32_t line = firstLine_ + static_cast<std::uint32_t>(row);
     const auto block = program_->blocks[scan_->blockAtLine(line)];
-    const std::string& source = program_->source;
+    const std::string_view source = program_->source.view();
     // From the start of the block's first line, skip to the wanted line.
     std::size_t at = std::min<std::size_t>(block.sourceText.offset, source.size());
     while (at > 0 && source[at - 1] != '\n')

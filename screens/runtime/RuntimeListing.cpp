@@ -69,7 +69,7 @@ RuntimeListing buildSourceListing(const mtc::core::Program& program,
                                   const std::vector<mtc::core::InsertedBlock>& inserted) {
     RuntimeListing listing;
     const QHash<int, QStringList> byLine = insertionsByLine(program, inserted);
-    const QStringList lines = QString::fromStdString(program.source).split('\n');
+    const QStringList lines = QString::fromStdString(program.source.str()).split('\n');
     // A block's text ends where the next block starts (continuation lines).
     QVector<int> blockEnd(lines.size() + 2, 0);  ///< source line -> line after which arrows go
     for (std::size_t b = 0; b < program.blocks.size(); ++b) {

@@ -64,7 +64,7 @@ void RuntimeScreen::showProgram() {
                           .arg(program_, 3, 10, QChar('0'))
                           .arg(program ? QString::fromStdString(program->name) : tr("(none)"))
                           .arg(QChar(mtc::core::statusLetter(status))));
-    source_->load(program ? program->source : std::string());
+    source_->load(program ? program->source.str() : std::string());
     showSegment(segment_);
     listing_ = {};
     const mtc::core::ProgramPtr runtime = runtimeProgram(program, result.get(), status);
@@ -83,7 +83,7 @@ void RuntimeScreen::showProgram() {
                        arrows);
     } else if (status == mtc::core::CompileStatus::NotNeeded && program) {
         if (inserted.empty()) {
-            compiled_->load(program->source);
+            compiled_->load(program->source.str());
         } else {
             listing_ = buildSourceListing(*program, inserted);
             compiled_->load(listing_.text);

@@ -60,7 +60,7 @@ TEST_F(ProgramCompilationTest, StartCompilesOnDemandAndRunsTheObject) {
     const auto runtime = cell.store().findRuntime(mill.process(), 7);
     ASSERT_NE(runtime, nullptr) << "the object runs, not the source";
     EXPECT_EQ(runtime->source, compilation.running(7)->objectText);
-    EXPECT_EQ(runtime->source.find("RD"), std::string::npos);
+    EXPECT_EQ(runtime->source.view().find("RD"), std::string::npos);
 }
 
 TEST_F(ProgramCompilationTest, ErrorsRefuseStartAndSurviveTheSession) {

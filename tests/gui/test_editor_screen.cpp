@@ -146,7 +146,7 @@ class EditorScreenTest : public QObject {
         QVERIFY(QFile::exists(QDir(dir_.path()).filePath("N1010005.NCO")));
         QVERIFY(!QFile::exists(QDir(dir_.path()).filePath("N1010005.ERR")));
         const auto program = panel.session->program(0, 5);
-        QVERIFY(program->source.find("DEFINE BAD AS") != std::string::npos);
+        QVERIFY(program->source.view().find("DEFINE BAD AS") != std::string::npos);
         QCOMPARE(list->count(), 0);  // the compiler's messages of program 5 are gone
     }
 

@@ -259,12 +259,12 @@ class GneScreenTest : public QObject {
                  qPrintable(text));  // the rounding as an arc, numbered (GS-007)
         compileAndRun(panel, 8);
         // Plain NC blocks need no compiler: the source runs as it is.
-        runProgram(panel, 8, panel.session->program(0, 8)->source, 12);
+        runProgram(panel, 8, panel.session->program(0, 8)->source.str(), 12);
     }
 
     void keywordDialogKeywordRoundTrip() {
         PanelFixture panel(options());
-        const QString before = QString::fromStdString(panel.session->program(0, 9)->source);
+        const QString before = QString::fromStdString(panel.session->program(0, 9)->source.str());
         editAt(panel, 9, 14);  // on START
         panel.press(Qt::Key_F4);
         auto* screen = gneScreen(panel);
@@ -276,7 +276,7 @@ class GneScreenTest : public QObject {
         QCOMPARE(rows->item(3)->text(), QString("  CCW Z-10 X20 R8"));
         panel.press(Qt::Key_F8);
         chooseByKeys(panel, "Save as function call (keywords with parameters)");
-        QCOMPARE(QString::fromStdString(panel.session->program(0, 9)->source), before);
+        QCOMPARE(QString::fromStdString(panel.session->program(0, 9)->source.str()), before);
         // And the model alone: text -> rows -> text for every kind of item.
         const std::string section =
             "WINDOW_01 (-60, 2, 25, 0)\nCONT (2, RAW)\nSTART Z0 X0\nLINE Z0 X12 A90\nCF 1\n"
@@ -291,12 +291,12 @@ class GneScreenTest : public QObject {
 
     void numbersOfTheSourceAreKeptAndInsertedLinesNumbered() {
         PanelFixture panel(options());
-        const QString before = QString::fromStdString(panel.session->program(0, 10)->source);
+        const QString before = QString::fromStdString(panel.session->program(0, 10)->source.str());
         editAt(panel, 10, 15);  // on N0004 LINE
         panel.press(Qt::Key_F4);
         panel.press(Qt::Key_F8);  // exit unchanged: the lines stay exactly as they were
         chooseByKeys(panel, "Save as function call (keywords with parameters)");
-        QCOMPARE(QString::fromStdString(panel.session->program(0, 10)->source), before);
+        QCOMPARE(QString::fromStdString(panel.session->program(0, 10)->source.str()), before);
         panel.press(Qt::Key_F4);  // again, now on the section's first line
         auto* rows = child<QListWidget>(panel, "gne", "gneRows");
         panel.press(Qt::Key_Down);
@@ -307,7 +307,7 @@ class GneScreenTest : public QObject {
         enterValues(panel, {"-10", "10"});
         panel.press(Qt::Key_F8);
         chooseByKeys(panel, "Save as function call (keywords with parameters)");
-        const QString text = QString::fromStdString(panel.session->program(0, 10)->source);
+        const QString text = QString::fromStdString(panel.session->program(0, 10)->source.str());
         QVERIFY2(text.contains("N0001 WINDOW_01 (-40, 5, 30, 0)\nN0002 CONT (3, FINAL) ;shaft\n"
                                "N0003 START Z0 X10\nN0003:0001 LINE Z-10 X10\n"
                                "N0004 LINE Z-20 X10\nN0005 LINE Z-20 X25\nN0006 END_CONT\n"
@@ -328,7 +328,7 @@ class GneScreenTest : public QObject {
         panel.press(Qt::Key_F4);
         panel.press(Qt::Key_F8);
         chooseByKeys(panel, "Save as NC blocks (expanded)");
-        const QString text = QString::fromStdString(panel.session->program(0, 10)->source);
+        const QString text = QString::fromStdString(panel.session->program(0, 10)->source.str());
         QVERIFY2(text.contains("N0002 ; GNE CONT (3, FINAL) ;shaft\nN0003 ; GNE START Z0 X10\n"),
                  qPrintable(text));
         QVERIFY2(text.contains("N0007 ; GNE CYCLE_10 (3, 1, 0.2) expanded\n"
@@ -362,7 +362,8 @@ class GneScreenTest : public QObject {
         QCOMPARE(panel.window->currentScreenName(), QString("gne"));
         auto* rows = child<QListWidget>(panel, "gne", "gneRows");
         QCOMPARE(rows->currentItem()->text(), QString("  START Z0 X205"));
-        QVERIFY(panel.session->program(0, 9)->source.find("START Z0 X205") != std::string::npos);
+        QVERIFY(panel.session->program(0, 9)->source.view().find("START Z0 X205") !=
+                std::string::npos);
     }
 
     void randomKeysNeverBreakTheDialog() {
