@@ -5,6 +5,10 @@
 #include <cstring>
 #include <iterator>
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 namespace mtc::core {
 
 namespace {
@@ -35,6 +39,32 @@ bool WordList::packable(const Word& word, std::int32_t& mantissa, unsigned& scal
         }
     }
     return false;
+}
+
+std::uint64_t WordList::codesIn64(const Packed* slots, Packed codes) {
+    std::uint64_t hits = 0;
+#if defined(__SSE2__)
+    // 1 << code for four slots at once: SSE2 has no shift by a different count
+    // per lane, so the bit comes from the float 2^code (exponent code + 127)
+    // converted back to an integer; 2^31 converts to 0x80000000, which is
+    // 1 << 31 as well.
+    const __m128i codeMask = _mm_set1_epi32(static_cast<int>(kCodeMask));
+    const __m128i bias = _mm_set1_epi32(127);
+    const __m128i wanted = _mm_set1_epi32(static_cast<int>(codes));
+    for (unsigned i = 0; i < 64; i += 4) {
+        const __m128i code =
+            _mm_and_si128(_mm_loadu_si128(reinterpret_cast<const __m128i*>(slots + i)), codeMask);
+        const __m128i power = _mm_slli_epi32(_mm_add_epi32(code, bias), 23);
+        const __m128i bit = _mm_and_si128(_mm_cvttps_epi32(_mm_castsi128_ps(power)), wanted);
+        const int missed =
+            _mm_movemask_ps(_mm_castsi128_ps(_mm_cmpeq_epi32(bit, _mm_setzero_si128())));
+        hits |= std::uint64_t{static_cast<unsigned>(missed) ^ 0xfu} << i;
+    }
+#else
+    for (unsigned i = 0; i < 64; ++i)
+        hits |= std::uint64_t{(codes >> (slots[i] & kCodeMask)) & 1u} << i;
+#endif
+    return hits;
 }
 
 void WordList::forgetHeads() {

@@ -118,17 +118,19 @@ class WordList {
                 codes |= Packed{1} << code;
         const std::size_t count = slots_.size();
         const Packed* packed = count ? &slots_[0] : nullptr;
-        for (std::size_t i = 0;; ++i) {
-            // A tight loop without calls to the next candidate: most words are
-            // not looked for.
-            while (i < count && !((codes >> (packed[i] & kCodeMask)) & 1u))
-                ++i;
-            if (i == count) return;
-            const Packed slot = packed[i];
-            if ((slot & kCodeMask) >= kExtendedCode &&
-                !((kinds >> static_cast<unsigned>(wholeKind(i, slot))) & 1u))
-                continue;
-            visit(i);
+        for (std::size_t first = 0; first < count; first += 64) {
+            std::uint64_t hits = first + 64 <= count ? codesIn64(packed + first, codes) : 0;
+            if (first + 64 > count)  // the last, partial round
+                for (std::size_t i = first; i < count; ++i)
+                    hits |= std::uint64_t{(codes >> (packed[i] & kCodeMask)) & 1u} << (i - first);
+            for (; hits; hits &= hits - 1) {
+                const std::size_t i = first + static_cast<std::size_t>(__builtin_ctzll(hits));
+                const Packed slot = packed[i];
+                if ((slot & kCodeMask) >= kExtendedCode &&
+                    !((kinds >> static_cast<unsigned>(wholeKind(i, slot))) & 1u))
+                    continue;
+                visit(i);
+            }
         }
     }
     const Word back() const { return (*this)[size() - 1]; }
@@ -218,6 +220,9 @@ class WordList {
         std::int32_t payload;  ///< mantissa, or index into extended_
     };
     static constexpr Packed kCodeMask = 31;
+    /// Bit i set when the code of slots[i] is in `codes` (bit 1 << code),
+    /// for i < 64: forEachOfKinds' scan, four slots at a time.
+    static std::uint64_t codesIn64(const Packed* slots, Packed codes);
     static constexpr unsigned kMantissaShift = 5;
     static constexpr unsigned kMantissaBits = 32 - kMantissaShift;
     static constexpr std::uint32_t kMantissaLimit = std::uint32_t{1} << (kMantissaBits - 1);

@@ -1,6 +1,8 @@
 // The packed block and word lists behind Program::blocks / Program::words.
 #include <gtest/gtest.h>
 
+#include <random>
+
 #include <cmath>
 #include <string>
 #include <vector>
@@ -177,6 +179,51 @@ TEST(ParserStorage, NumberWordsOfEveryForm) {
     EXPECT_EQ(list.plainCodeAt(WordList::codeKey('G', 0)), WordList::kWideCode);
     ASSERT_TRUE(list.tryPushNumber(WordKind::M, 'M', 0, 1, 30, 0));
     EXPECT_EQ(list[0].kind, WordKind::M);
+}
+
+TEST(ParserStorage, TheScanForKindsFindsEveryWordOfThemInLongLists) {
+    // Lists longer than one scan round, with the wanted words at every
+    // position of a round, in narrow, wide and extended slots.
+    std::mt19937 random(4711);
+    const WordKind kinds[] = {WordKind::Axis, WordKind::F, WordKind::G, WordKind::M,
+                              WordKind::Jump};
+    const char letters[] = {'X', 'F', 'G', 'M', 'B'};
+    for (int round = 0; round < 20; ++round) {
+        WordList list;
+        const std::size_t size = 1 + random() % 300;
+        for (std::size_t i = 0; i < size; ++i) {
+            const unsigned pick = random() % (round % 4 == 0 ? 5 : 40) % 5;  // rare kinds too
+            const WordKind kind = kinds[pick];
+            if (kind == WordKind::Jump || random() % 16 == 0) {
+                Word word;  // kept whole
+                word.kind = kind;
+                word.letter = letters[pick];
+                word.column = 3;
+                word.expr = kind == WordKind::Jump ? -1 : 2;
+                list.push_back(word);
+                continue;
+            }
+            const std::int64_t mantissa = random() % 8 == 0 ? 3'000'000'000LL : random() % 900;
+            if (!list.tryPushNumber(kind, letters[pick], 0, 1 + random() % 200, mantissa,
+                                    random() % 3)) {
+                Word word;
+                word.kind = kind;
+                word.letter = letters[pick];
+                word.number = static_cast<double>(mantissa);
+                list.push_back(word);
+            }
+        }
+        for (std::uint32_t mask = 1; mask < 32; ++mask) {
+            std::uint32_t wanted = 0;
+            for (unsigned k = 0; k < 5; ++k)
+                if ((mask >> k) & 1u) wanted |= 1u << static_cast<unsigned>(kinds[k]);
+            std::vector<std::size_t> found, expected;
+            list.forEachOfKinds(wanted, [&](std::size_t i) { found.push_back(i); });
+            for (std::size_t i = 0; i < list.size(); ++i)
+                if ((wanted >> static_cast<unsigned>(list.kindAt(i))) & 1u) expected.push_back(i);
+            ASSERT_EQ(found, expected) << "round " << round << " mask " << mask;
+        }
+    }
 }
 
 TEST(ParserStorage, WordsKeptWholeBesideNumbers) {
