@@ -262,10 +262,12 @@ class Interpreter {
     Outcome commitUsual(const Program& program, std::uint32_t index);
     /// The first step of both commits: the move's start (when `motion`) and
     /// the planned modal state. True when the transformation changed.
-    bool commitModalState(bool motion) {
+    [[gnu::always_inline]] bool commitModalState(bool motion) {
         const bool transformationChanged =
             plan_.next.transformation.kind() != state_.modal.transformation.kind();
-        if (motion) motion_.start = state_.modal.machine;
+        if (motion)  // not `rep movs` (a plain assignment in this place)
+            copyInSteps<16, sizeof motion_.start>(motion_.start.data(),
+                                                  state_.modal.machine.data());
         assignModalState(state_.modal, plan_.next);
         planSynced_ = true;
         return transformationChanged;

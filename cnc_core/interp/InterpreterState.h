@@ -2,6 +2,7 @@
 
 #include <array>
 #include <bitset>
+#include <cstddef>
 #include <cstdint>
 #include <cstring>
 #include <type_traits>
@@ -23,6 +24,8 @@ inline constexpr int kMaxCallLevels = 10;    ///< main program + 9 nested calls 
 /// Everything a block may change except variables, aux groups and program
 /// flow. Plain data: the interpreter copies it to validate a block and
 /// assigns it back to commit, so a rejected block changes nothing.
+/// Member order: see assignModalState() (work and machine on 16-byte
+/// boundaries, feed and time last).
 struct ModalState {
     GGroupValues g{};
     PlaneSelection plane;
@@ -30,11 +33,10 @@ struct ModalState {
     /// Programmed (workpiece) coordinates per machine axis in mm (degrees for
     /// rotary axes outside a transformation; plane coordinates in mm for the
     /// axes a transformation maps).
-    std::array<double, kMaxAxes> work{};
+    alignas(16) std::array<double, kMaxAxes> work{};
     /// Commanded machine positions (zero offsets applied, transformation
     /// applied): mm for linear axes, degrees for rotary axes.
-    std::array<double, kMaxAxes> machine{};
-    double feed = 0.0;  ///< F in mm/min (G94) or mm/rev (G95), metric
+    alignas(16) std::array<double, kMaxAxes> machine{};
     std::array<double, kSpindleSlots> spindleSpeed{};         ///< last S per spindle
     std::array<double, kSpindleSlots> spindleLimit{};         ///< G92 S limits
     std::array<std::int8_t, kSpindleSlots> rotaryAxisMode{};  ///< page 60 el. 1..3
@@ -44,8 +46,9 @@ struct ModalState {
     int correction = 0;                                       ///< D
     int referenceSpindle = 1;                                 ///< SPC
     bool adaptiveFeed = false;         ///< G26 on (G25 off): adaptive feed control switched on
-    double time = 0.0;                 ///< simulated seconds (moves and dwells)
     double lastEffectiveRadius = 0.0;  ///< RI of the last G32 (kept after G30)
+    double feed = 0.0;                 ///< F in mm/min (G94) or mm/rev (G95), metric
+    double time = 0.0;                 ///< simulated seconds (moves and dwells)
 };
 
 inline constexpr double kMmPerInch = 25.4;
@@ -55,20 +58,59 @@ inline double millimetresPerUnit(const ModalState& modal) {
     return modal.g[kGroupUnits] == 70 ? kMmPerInch : 1.0;
 }
 
-/// `to = from` in 16-byte steps. The interpreter commits one modal state
-/// per block; for a plain assignment of its ~400 bytes GCC emits `rep movsq`,
-/// whose start-up cost was 8 % of an NC program restart's computing process.
-inline void assignModalState(ModalState& to, const ModalState& from) {
-    static_assert(std::is_trivially_copyable_v<ModalState>);
+/// Copies `Size` bytes from `from` to `to` in unrolled `Step`-byte moves: for
+/// a plain assignment of a few hundred bytes GCC emits `rep movs`, whose
+/// start-up cost was 8 % of an NC program restart's computing process.
+template <std::size_t Step, std::size_t Size>
+[[gnu::always_inline]] inline void copyInSteps(void* to, const void* from) {
+    static_assert(Size % Step == 0, "whole steps");
+    auto* out = static_cast<unsigned char*>(to);
+    const auto* in = static_cast<const unsigned char*>(from);
+#pragma GCC unroll 32
+    for (std::size_t i = 0; i < Size / Step; ++i)
+        std::memcpy(out + i * Step, in + i * Step, Step);
+}
+
+/// Copies `Size` bytes from `from` to `to` in 8-byte moves, each through a
+/// general register: the compiler would otherwise join two of them into one
+/// 16-byte move (which assignModalState() must not have).
+template <std::size_t Size>
+[[gnu::always_inline]] inline void copyInEightByteMoves(void* to, const void* from) {
+    static_assert(Size % 8 == 0, "whole moves");
+    auto* out = static_cast<unsigned char*>(to);
+    const auto* in = static_cast<const unsigned char*>(from);
+    for (std::size_t i = 0; i < Size / 8; ++i) {
+        std::uint64_t word = 0;
+        std::memcpy(&word, in + i * 8, 8);
+        asm("" : "+r"(word));  // no code: keeps the move 8 bytes wide
+        std::memcpy(out + i * 8, &word, 8);
+    }
+}
+
+/// `to = from` (the per-block commit), laid out for the CPU's store
+/// forwarding: a load is served by a store still on its way to the cache
+/// only when that one store covers it; a 16-byte load over a fresh 8-byte
+/// store (or over two 16-byte stores) waits until the stores have reached
+/// the cache (I-026).
+///  - 16-byte moves up to `feed`; `work` and `machine` lie on 16-byte
+///    boundaries, so that a copy of the committed machine positions (the
+///    move's end) reads each 16 bytes from one store of this copy;
+///  - `feed` and `time` last, in 8-byte moves: the planner writes them
+///    (8-byte stores) just before the commit copies the state.
+[[gnu::always_inline]] inline void assignModalState(ModalState& to, const ModalState& from) {
+    static_assert(std::is_trivially_copyable_v<ModalState> &&
+                  std::is_standard_layout_v<ModalState>);
     constexpr std::size_t kSize = sizeof(ModalState);
-    constexpr std::size_t kStep = 16;
+    static_assert(
+        offsetof(ModalState, time) == kSize - 8 && offsetof(ModalState, feed) == kSize - 16,
+        "feed and time are the last members");
+    static_assert(offsetof(ModalState, work) % 16 == 0 && offsetof(ModalState, machine) % 16 == 0,
+                  "positions on 16-byte boundaries");
+    constexpr std::size_t kSixteens = offsetof(ModalState, feed) / 16 * 16;
     auto* out = reinterpret_cast<unsigned char*>(&to);
     const auto* in = reinterpret_cast<const unsigned char*>(&from);
-#pragma GCC unroll 32
-    for (std::size_t i = 0; i < kSize / kStep; ++i)
-        std::memcpy(out + i * kStep, in + i * kStep, kStep);
-    if constexpr (kSize % kStep != 0)
-        std::memcpy(out + kSize - kSize % kStep, in + kSize - kSize % kStep, kSize % kStep);
+    copyInSteps<16, kSixteens>(out, in);
+    copyInEightByteMoves<kSize - kSixteens>(out + kSixteens, in + kSixteens);
 }
 
 /// One saved return point of BSR / JSR / BEV / JEV.
