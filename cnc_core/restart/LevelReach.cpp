@@ -37,6 +37,11 @@ Flow flowOf(JumpKind kind) {
     return Flow::End;
 }
 
+/// M02 or M30 with a constant number: the end of the program, before any jump.
+bool endsProgram(long expr, double number) {
+    return expr < 0 && (number == 2 || number == 30);
+}
+
 /// True for the jump and M words that can turn the flow: a jump word, M02 or M30.
 bool turnsFlow(const WordList& words, std::size_t index) {
     if (words.kindAt(index) == WordKind::Jump) return true;
@@ -46,7 +51,7 @@ bool turnsFlow(const WordList& words, std::size_t index) {
         m.expr = whole.expr;
         m.number = whole.number;
     }
-    return m.expr < 0 && (m.number == 2 || m.number == 30);
+    return endsProgram(m.expr, m.number);
 }
 
 /// The block holding word `index` (blocks hold consecutive words in order);
@@ -123,7 +128,7 @@ int LevelReach::successors(std::uint32_t block, std::uint32_t next[2]) const {
         const WordKind kind = p.words.kindAt(w);
         if (kind != WordKind::M && kind != WordKind::Jump) continue;
         const Word word = p.words[w];
-        if (word.kind == WordKind::M && word.expr < 0 && (word.number == 2 || word.number == 30))
+        if (word.kind == WordKind::M && endsProgram(word.expr, word.number))
             ends = true;  // M02 / M30 end the program before any jump
         if (word.kind != WordKind::Jump) continue;
         flow = flowOf(word.jump);
@@ -203,7 +208,7 @@ std::optional<std::uint32_t> LevelReach::returnWithoutCall() const {
             if (kind != WordKind::M && (kind != WordKind::Jump || jumped)) continue;
             const Word word = p.words[w];
             if (kind == WordKind::M) {
-                if (word.expr < 0 && (word.number == 2 || word.number == 30)) return std::nullopt;
+                if (endsProgram(word.expr, word.number)) return std::nullopt;
                 continue;
             }
             jumped = true;
