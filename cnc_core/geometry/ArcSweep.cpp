@@ -8,11 +8,6 @@ namespace {
 constexpr double kTwoPi = 2.0 * 3.14159265358979323846;
 }
 
-bool closesCircle(double s1, double s2, double e1, double e2, double chord) {
-    const double d1 = e1 - s1, d2 = e2 - s2;
-    return d1 * d1 + d2 * d2 <= chord * chord;
-}
-
 double arcSweep(double s1, double s2, double e1, double e2, double c1, double c2, bool clockwise,
                 bool fullCircle) {
     const double sign = clockwise ? -1.0 : 1.0;

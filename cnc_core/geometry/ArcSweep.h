@@ -19,8 +19,13 @@ inline constexpr double kFullCircleChord = 0.002;
 inline constexpr double kSameDirection = 1e-12;
 
 /// The full-circle decision of a programmed arc: start (s1, s2) and end
-/// (e1, e2) in the plane are at most `chord` apart.
-bool closesCircle(double s1, double s2, double e1, double e2, double chord = kFullCircleChord);
+/// (e1, e2) in the plane are at most `chord` apart. Inline: the interpreter
+/// asks it for every arc, and a call there costs its registers.
+inline bool closesCircle(double s1, double s2, double e1, double e2,
+                         double chord = kFullCircleChord) {
+    const double d1 = e1 - s1, d2 = e2 - s2;
+    return d1 * d1 + d2 * d2 <= chord * chord;
+}
 
 /// Signed angle (radians; positive counter-clockwise) an arc turns from start
 /// (s1, s2) to end (e1, e2) around the centre (c1, c2) in the (1, 2) plane:

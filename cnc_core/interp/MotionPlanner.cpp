@@ -47,6 +47,15 @@ std::string shortNumber(double value) {
          "difference " + format(r2 - r1) + " mm, tolerance " + format(arcTolerance) + " mm"});
 }
 
+/// ARC_RADIUS_ZERO or ARC_RADIUS_MISMATCH. The radii by value: the frame
+/// path's arc calls it directly, so that its geometry is never needed in memory.
+[[gnu::cold]] bool radiiError(const BlockContext& context, const BlockInput& input, double r1,
+                              double r2, double arcTolerance) {
+    if (r1 < 1e-9)
+        return context.error("ARC_RADIUS_ZERO", "the circle's start point is its centre");
+    return radiusMismatch(context, input, r1, r2, arcTolerance);
+}
+
 /// What an arc's axis time is worked out from: start, end and centre (work
 /// coordinates of the plane axes), radii at start and end, the sweep, the
 /// helical axes' time and the plane axes' seconds per unit.
@@ -57,8 +66,9 @@ struct ArcFigures {
 };
 
 /// The time the slowest axis needs for its share of the arc at its
-/// max_velocity, the plane axes at the peak of their tangent share.
-double arcAxisSeconds(const ArcFigures& t) {
+/// max_velocity, the plane axes at the peak of their tangent share. Out of
+/// line: arcMove() asks it only when arcAxisBound() does not decide.
+[[gnu::noinline]] double arcAxisSeconds(const ArcFigures& t) {
     // The plane axes' shares of the tangent peak where the circle runs
     // along them (motion::arcTangentExtreme).
     const double a0 = std::atan2(t.s2 - t.c2, t.s1 - t.c1);
@@ -74,17 +84,17 @@ double arcAxisSeconds(const ArcFigures& t) {
              t.secondsPerUnit2});
 }
 
-/// arcAxisSeconds() where it can decide the move's time, else an upper bound
-/// of it below `feedSeconds` (MOT-024): the plane axes' shares of the unit
-/// tangent are at most 1 (to a few ulps; the margin covers them), so each
-/// plane term is at most the arc's length times the axis's seconds per unit.
-/// max(feedSeconds, either) is the same then; NaN takes the exact path.
-double arcAxisTime(const ArcFigures& t, double feedSeconds) {
+/// An upper bound of arcAxisSeconds() (MOT-024): the plane axes' shares of
+/// the unit tangent are at most 1 (to a few ulps; the margin covers them), so
+/// each plane term is at most the arc's length `path` (r1 x angle) times the
+/// axis's seconds per unit. Below the feed's time it is the move's axis time
+/// (max(feedSeconds, either) is the same then); NaN takes the exact path.
+/// From scalars: arcMove() builds the ArcFigures only when this does not decide.
+double arcAxisBound(double path, double helixSeconds, double secondsPerUnit1,
+                    double secondsPerUnit2) {
     constexpr double kMargin = 1.0 + 1e-9;
-    const double path = t.r1 * t.angle;
-    const double bound = std::max(
-        {t.helixSeconds, path * t.secondsPerUnit1 * kMargin, path * t.secondsPerUnit2 * kMargin});
-    return bound < feedSeconds ? bound : arcAxisSeconds(t);
+    return std::max(
+        {helixSeconds, path * secondsPerUnit1 * kMargin, path * secondsPerUnit2 * kMargin});
 }
 
 }  // namespace
@@ -196,9 +206,7 @@ bool MotionPlanner::planGeneral(const BlockContext& context, const BlockInput& i
 
 bool MotionPlanner::radiiRefused(const BlockContext& context, const BlockInput& input,
                                  const ArcGeometry& geometry, double arcTolerance) {
-    if (geometry.r1 < 1e-9)
-        return context.error("ARC_RADIUS_ZERO", "the circle's start point is its centre");
-    return radiusMismatch(context, input, geometry.r1, geometry.r2, arcTolerance);
+    return radiiError(context, input, geometry.r1, geometry.r2, arcTolerance);
 }
 
 bool MotionPlanner::feedRefused(const BlockContext& context, int g, double feed, double feedRate) {
@@ -287,12 +295,15 @@ double MotionPlanner::rapidTime(const ModalState& current, const ModalState& nex
     // it refuses gives an error after this, whatever the figure).
     const double feed = pathFeedOf(next);
     if (feed != feedCache_.feed) feedCache_ = {feed, 60.0 / feed};
-    const double signedSweep = plan.motionType == MotionType::ArcCW ? -angle : angle;
     const double perUnit1 = geometry.perUnit1, perUnit2 = geometry.perUnit2;
-    const ArcFigures figures{s1,           s2,       e1,          e2,    centre[0],
-                             centre[1],    r1,       geometry.r2, angle, signedSweep,
-                             helixSeconds, perUnit1, perUnit2};
-    axisSeconds = arcAxisTime(figures, length * feedCache_.secondsPerUnit);
+    const double bound = arcAxisBound(r1 * angle, helixSeconds, perUnit1, perUnit2);
+    if (bound < length * feedCache_.secondsPerUnit) {
+        axisSeconds = bound;
+    } else {
+        const double signedSweep = plan.motionType == MotionType::ArcCW ? -angle : angle;
+        axisSeconds = arcAxisSeconds({s1, s2, e1, e2, centre[0], centre[1], r1, geometry.r2, angle,
+                                      signedSweep, helixSeconds, perUnit1, perUnit2});
+    }
     plan.planeAxis1 = p1;
     plan.planeAxis2 = p2;
     const Transformation& t = next.transformation;
@@ -357,21 +368,26 @@ bool MotionPlanner::framedArc(const BlockContext& context, const BlockInput& inp
     const ModalState& next = plan.next;
     const int p1 = frame_.p1, p2 = frame_.p2;
     const bool incremental = next.g[kGroupDimension] == 91;
-    double centre[2] = {current.work[static_cast<size_t>(p1)],
-                        current.work[static_cast<size_t>(p2)]};
+    // The centre's two coordinates by name, not by a computed index: an
+    // array indexed by the slot would live on the stack.
+    double c1 = current.work[static_cast<size_t>(p1)], c2 = current.work[static_cast<size_t>(p2)];
     for (int k = 0; k < 3; ++k) {
         if (!((input.centerMask >> k) & 1u)) continue;
-        const int slot = frame_.centreSlot[static_cast<size_t>(k)];
-        const auto axis = static_cast<size_t>(slot == 0 ? p1 : p2);
+        const bool first = frame_.centreSlot[static_cast<size_t>(k)] == 0;
+        const auto axis = static_cast<size_t>(first ? p1 : p2);
         const double v =
             input.center[static_cast<size_t>(k)] * frame_.inch[axis] * frame_.diameter[axis];
-        centre[slot] = incremental ? centre[slot] + v : v;
+        if (first)
+            c1 = incremental ? c1 + v : v;
+        else
+            c2 = incremental ? c2 + v : v;
     }
+    const double centre[2] = {c1, c2};
     ArcGeometry geometry(p1, p2, current, next, centre,
                          frame_.secondsPerUnit[static_cast<size_t>(p1)],
                          frame_.secondsPerUnit[static_cast<size_t>(p2)]);
     if (!arcRadii(geometry, arcTolerance))
-        return radiiRefused(context, input, geometry, arcTolerance);
+        return radiiError(context, input, geometry.r1, geometry.r2, arcTolerance);
     double length = 0.0, axisSeconds = 0.0;
     arcMove(input, current, plan, geometry, arcTolerance, length, axisSeconds);
     return finishMove(context, input, plan, next.g[kGroupInterpolation], input.axisMask, length,
