@@ -276,16 +276,18 @@ bool BlockExecutor::auxiliaries(const BlockContext& c, const BlockInput& in,
     plan.auxChanged = true;
     plan.mGroups = state.mGroups;
     plan.lastQ = state.lastQ;
-    std::array<int, 17> seen{};
+    std::uint32_t seen = 0;  // bit g: an M of group g (1..15) in the block
     for (int i = 0; i < in.mCount; ++i) {
         const int m = in.m[static_cast<size_t>(i)].value;
         const int column = in.m[static_cast<size_t>(i)].column;
         if (m > 999) return c.error("M_RANGE", "M functions are M0..M999", column);
         const int group = (*setup_.mGroupOf)[static_cast<size_t>(m)];
-        if (group < 16 && seen[static_cast<size_t>(group)]++)
+        const std::uint32_t bit = group < 16 ? 1u << group : 0u;
+        if (seen & bit)
             return c.error("M_GROUP_CONFLICT",
                            "two M functions of group " + std::to_string(group) + " in one block",
                            column);
+        seen |= bit;
         plan.mGroups[static_cast<size_t>(group)] = m;
         if (AuxFunctionGroups::isProgramControl(m)) {
             if (plan.programControl >= 0)

@@ -181,7 +181,7 @@ void Interpreter::emitAux(const Program& program, std::uint32_t index) {
     // string per block.
     AuxOutput aux;
     if (auxForwarded(in, out)) aux.where = sinkLocation(program, index);
-    if (!in.speedLimit)
+    if (in.spindleMask != 0 && !in.speedLimit)  // most blocks with aux functions have no S
         for (int slot = 0; slot < kSpindleSlots; ++slot)
             if ((in.spindleMask >> slot) & 1u) {
                 const int spindle = slot == 0 ? state_.modal.referenceSpindle : slot;

@@ -25,7 +25,7 @@ class FunctionBuffer {
             return;
         }
         ring_[static_cast<std::size_t>(first_)] = value;
-        first_ = (first_ + 1) % kLength;
+        first_ = first_ + 1 == kLength ? 0 : first_ + 1;  // once full, every push comes here
     }
     /// Number of stored entries (0..40).
     int size() const { return count_; }

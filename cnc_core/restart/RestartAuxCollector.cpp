@@ -2,10 +2,10 @@
 
 namespace mtc::core {
 
-RestartAuxCollector::RestartAuxCollector(const ProcessConfig& config) : groups_(config) {}
-
-bool RestartAuxCollector::storesInM16(int m) const {
-    return groups_.storedInBuffer(m);
+RestartAuxCollector::RestartAuxCollector(const ProcessConfig& config) {
+    const AuxFunctionGroups groups(config);
+    for (int m = 0; m < AuxFunctionGroups::kFunctions; ++m)
+        storedInM16_[static_cast<std::size_t>(m)] = groups.storedInBuffer(m);
 }
 
 void RestartAuxCollector::clear() {
@@ -17,10 +17,13 @@ void RestartAuxCollector::clear() {
 
 void RestartAuxCollector::auxiliary(const AuxOutput& output, bool forwarded) {
     ++seen_;
-    if (forwarded) ++forwarded_;
-    const int value = static_cast<int>(output.value);
-    if (output.type == 'M' && storesInM16(value)) m16_.push(value);
-    if (output.type == 'Q') q_.push(value);
+    forwarded_ += forwarded ? 1 : 0;
+    if (output.type == 'Q') {
+        q_.push(static_cast<int>(output.value));
+    } else if (output.type == 'M') {
+        const int m = static_cast<int>(output.value);
+        if (storesInM16(m)) m16_.push(m);
+    }
 }
 
 }  // namespace mtc::core

@@ -37,11 +37,19 @@ class RestartAuxCollector : public AuxObserver {
     std::uint64_t seen() const { return seen_; }
     std::uint64_t forwarded() const { return forwarded_; }
 
-    /// True when M function `m` belongs in the M(16) buffer of this process.
-    bool storesInM16(int m) const;
+    /// True when M function `m` belongs in the M(16) buffer of this process
+    /// (AuxFunctionGroups::storedInBuffer(); outside M0..M999 the group is 16).
+    bool storesInM16(int m) const {
+        if (m >= 0 && m < AuxFunctionGroups::kFunctions)
+            return storedInM16_[static_cast<std::size_t>(m)];
+        return !AuxFunctionGroups::isProgramControl(m) &&
+               !AuxFunctionGroups::isSpindleOrientation(m);
+    }
 
   private:
-    AuxFunctionGroups groups_;
+    /// AuxFunctionGroups::storedInBuffer() of every M0..M999, worked out
+    /// once: the collector sees every M of the computing process.
+    std::array<bool, AuxFunctionGroups::kFunctions> storedInM16_{};
     FunctionBuffer m16_;
     FunctionBuffer q_;
     std::uint64_t seen_ = 0;

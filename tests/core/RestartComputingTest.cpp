@@ -445,6 +445,21 @@ TEST(RestartComputing, FunctionBufferDropsTheOldest) {
     buffer.push(9);
     EXPECT_EQ(buffer.elements()[0], 9);
     EXPECT_EQ(buffer.elements()[1], 0);
+    for (int i = 1; i <= 130; ++i)  // round the ring more than three times
+        buffer.push(i);
+    const auto wrapped = buffer.elements();
+    for (int i = 0; i < FunctionBuffer::kLength; ++i)
+        EXPECT_EQ(wrapped[static_cast<std::size_t>(i)], 91 + i) << i;
+}
+
+TEST(RestartComputing, CollectorKeepsWhatTheGroupRuleStores) {
+    for (int process : {0, 1}) {  // the collector's table against the rule, every M and beyond
+        const ProcessConfig& config = *demoCell().process(process);
+        const AuxFunctionGroups groups(config);
+        const RestartAuxCollector collector(config);
+        for (int m = -120; m <= 1120; ++m)
+            EXPECT_EQ(collector.storesInM16(m), groups.storedInBuffer(m)) << process << " M" << m;
+    }
 }
 
 }  // namespace
