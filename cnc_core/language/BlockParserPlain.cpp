@@ -68,6 +68,19 @@ constexpr AddressTable makeAddressTable() {
 }
 
 constexpr AddressTable kAddressTable = makeAddressTable();
+
+/// True when 'M' is the only letter of an M word: the fast path asks the
+/// letter alone whether a word may end the program (WordList::numberTurnsFlow).
+constexpr bool onlyLetterOfM() {
+    for (int c = 0; c < 256; ++c) {
+        const std::uint8_t entry = kAddressTable.entry[c];
+        if ((entry & kAddress) && (entry & kKindBits) == static_cast<std::uint8_t>(WordKind::M) &&
+            c != 'M')
+            return false;
+    }
+    return true;
+}
+static_assert(onlyLetterOfM());
 static_assert(static_cast<std::uint8_t>(WordKind::Command) <= kKindBits);
 
 /// The value of a digit character, or more than 9 for any other byte.
@@ -441,8 +454,13 @@ std::uint32_t BlockParser::scanPlainWords(std::uint32_t pos, const std::uint32_t
                     outEnd = words.spareEnd();
                     columns = words.spareColumns();
                 }
-                const auto mantissa = static_cast<std::int32_t>(number.mantissa);
-                *out++ = WordList::narrowSlot(code, negative ? -mantissa : mantissa);
+                const auto unsignedMantissa = static_cast<std::int32_t>(number.mantissa);
+                const std::int32_t mantissa = negative ? -unsignedMantissa : unsignedMantissa;
+                // M02 / M30 (a jump word is never a plain number); the
+                // letter first: one compare per word of the hot loop.
+                if (c == 'M' && WordList::numberTurnsFlow(WordKind::M, mantissa, number.scale))
+                    words.noteFlowTurning(out);
+                *out++ = WordList::narrowSlot(code, mantissa);
                 *columns++ = static_cast<std::uint8_t>(column);
                 pos = after;
                 continue;

@@ -106,4 +106,18 @@ inline NumberWord numberWordOf(const Word& word) {
     return {word.kind, word.letter, word.axisIndex, word.column, word.expr, word.number};
 }
 
+/// M02 or M30 with a constant number: the program ends at this word, before
+/// any jump of its block (seed 000, 2.4).
+inline bool endsProgram(WordKind kind, std::int32_t expr, double number) {
+    return kind == WordKind::M && expr < 0 && (number == 2 || number == 30);
+}
+
+/// A word after which the flow may leave the straight run from block to
+/// block: a jump word, or endsProgram(). WordList keeps the indices of such
+/// words (WordList::flowTurningWords), the restart's flow analysis reads
+/// only their blocks.
+inline bool turnsFlow(WordKind kind, std::int32_t expr, double number) {
+    return kind == WordKind::Jump || endsProgram(kind, expr, number);
+}
+
 }  // namespace mtc::core

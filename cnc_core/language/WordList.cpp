@@ -5,10 +5,6 @@
 #include <cstring>
 #include <iterator>
 
-#if defined(__SSE2__)
-#include <emmintrin.h>
-#endif
-
 namespace mtc::core {
 
 namespace {
@@ -39,32 +35,6 @@ bool WordList::packable(const Word& word, std::int32_t& mantissa, unsigned& scal
         }
     }
     return false;
-}
-
-std::uint64_t WordList::codesIn64(const Packed* slots, Packed codes) {
-    std::uint64_t hits = 0;
-#if defined(__SSE2__)
-    // 1 << code for four slots at once: SSE2 has no shift by a different count
-    // per lane, so the bit comes from the float 2^code (exponent code + 127)
-    // converted back to an integer; 2^31 converts to 0x80000000, which is
-    // 1 << 31 as well.
-    const __m128i codeMask = _mm_set1_epi32(static_cast<int>(kCodeMask));
-    const __m128i bias = _mm_set1_epi32(127);
-    const __m128i wanted = _mm_set1_epi32(static_cast<int>(codes));
-    for (unsigned i = 0; i < 64; i += 4) {
-        const __m128i code =
-            _mm_and_si128(_mm_loadu_si128(reinterpret_cast<const __m128i*>(slots + i)), codeMask);
-        const __m128i power = _mm_slli_epi32(_mm_add_epi32(code, bias), 23);
-        const __m128i bit = _mm_and_si128(_mm_cvttps_epi32(_mm_castsi128_ps(power)), wanted);
-        const int missed =
-            _mm_movemask_ps(_mm_castsi128_ps(_mm_cmpeq_epi32(bit, _mm_setzero_si128())));
-        hits |= std::uint64_t{static_cast<unsigned>(missed) ^ 0xfu} << i;
-    }
-#else
-    for (unsigned i = 0; i < 64; ++i)
-        hits |= std::uint64_t{(codes >> (slots[i] & kCodeMask)) & 1u} << i;
-#endif
-    return hits;
 }
 
 void WordList::forgetHeads() {
@@ -177,12 +147,15 @@ std::uint8_t WordList::columnByte(const Word& word) {
 }
 
 void WordList::push_back(const Word& word) {
+    if (turnsFlow(word.kind, word.expr, word.number))
+        turning_.push_back(static_cast<std::uint32_t>(slots_.size()));
     const Packed slot = pack(word, slots_.size());
     slots_.push_back(slot);
     columns_.push_back(columnByte(word));
 }
 
 void WordList::set(std::size_t index, const Word& word) {
+    noteTurning(index, turnsFlow(word.kind, word.expr, word.number));
     columns_[index] = columnByte(word);
     const Packed slot = slots_[index];
     if ((slot & kCodeMask) == kExtendedCode) {  // keep the side-table slot, as below
@@ -229,6 +202,22 @@ void WordList::truncate(std::size_t count) {
     }
     slots_.endAt(slots_.data() + count);  // count <= size(): nothing to allocate
     columns_.endAt(columns_.data() + count);
+    while (!turning_.empty() && turning_.back() >= count)
+        turning_.pop_back();
+}
+
+// Out of line and cold: the parser's hot loop keeps only the call.
+__attribute__((noinline, cold)) void WordList::noteFlowTurning(const Packed* slot) {
+    turning_.push_back(static_cast<std::uint32_t>(slot - slots_.data()));
+}
+
+void WordList::noteTurning(std::size_t index, bool turns) {
+    const auto at = std::lower_bound(turning_.begin(), turning_.end(), index);
+    const bool listed = at != turning_.end() && *at == index;
+    if (turns && !listed)
+        turning_.insert(at, static_cast<std::uint32_t>(index));
+    else if (!turns && listed)
+        turning_.erase(at);
 }
 
 void WordList::shrink_to_fit() {
@@ -238,6 +227,7 @@ void WordList::shrink_to_fit() {
     }
     if (wide_.capacity() > wide_.size() + wide_.size() / 16) wide_.shrink_to_fit();
     if (extended_.capacity() > extended_.size() + extended_.size() / 16) extended_.shrink_to_fit();
+    turning_.shrink_to_fit();
 }
 
 void WordList::clear() {
@@ -246,13 +236,14 @@ void WordList::clear() {
     wide_.clear();
     overflow_.clear();
     extended_.clear();
+    turning_.clear();
     forgetHeads();
 }
 
 std::size_t WordList::memoryBytes() const {
     return slots_.capacity() * sizeof(Packed) + columns_.capacity() +
            wide_.capacity() * sizeof(Wide) + overflow_.capacity() * sizeof(overflow_.front()) +
-           extended_.capacity() * sizeof(Word);
+           extended_.capacity() * sizeof(Word) + turning_.capacity() * sizeof(std::uint32_t);
 }
 
 }  // namespace mtc::core

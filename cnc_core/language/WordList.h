@@ -106,32 +106,17 @@ class WordList {
         const Packed code = slot & kCodeMask;
         return code < kExtendedCode ? heads_[code].kind : wholeKind(index, slot);
     }
-    /// Calls `visit(index)` for every word whose kind is in `kinds` (bit
-    /// 1 << kind), in index order: whole-program scans that look for a rare
-    /// kind (the restart's turning blocks) test each slot's head code
-    /// against a mask made once, instead of reading every word's kind.
-    template <class Visit>
-    void forEachOfKinds(std::uint32_t kinds, Visit&& visit) const {
-        Packed codes = Packed{3} << kExtendedCode;  // wide / extended: kind asked one by one
-        for (unsigned code = 0; code < headCount_; ++code)
-            if ((kinds >> static_cast<unsigned>(heads_[code].kind)) & 1u)
-                codes |= Packed{1} << code;
-        const std::size_t count = slots_.size();
-        const Packed* packed = count ? &slots_[0] : nullptr;
-        for (std::size_t first = 0; first < count; first += 64) {
-            std::uint64_t hits = first + 64 <= count ? codesIn64(packed + first, codes) : 0;
-            if (first + 64 > count)  // the last, partial round
-                for (std::size_t i = first; i < count; ++i)
-                    hits |= std::uint64_t{(codes >> (packed[i] & kCodeMask)) & 1u} << (i - first);
-            for (; hits; hits &= hits - 1) {
-                const std::size_t i = first + static_cast<std::size_t>(__builtin_ctzll(hits));
-                const Packed slot = packed[i];
-                if ((slot & kCodeMask) >= kExtendedCode &&
-                    !((kinds >> static_cast<unsigned>(wholeKind(i, slot))) & 1u))
-                    continue;
-                visit(i);
-            }
-        }
+    /// The index of every word for which turnsFlow() holds, ascending: every
+    /// change of the list keeps it (the parser's fast path through
+    /// noteFlowTurning()). The restart's flow analysis reads the turning
+    /// blocks from it instead of scanning every word (restart.md R-037).
+    const std::vector<std::uint32_t>& flowTurningWords() const { return turning_; }
+    /// turnsFlow() of the plain number mantissa / 10^scale (no expression);
+    /// cheap for the parser's fast path, which asks it of every word.
+    static bool numberTurnsFlow(WordKind kind, std::int32_t mantissa, unsigned scale) {
+        if (kind != WordKind::M) return kind == WordKind::Jump;
+        return scale == 0 ? mantissa == 2 || mantissa == 30
+                          : endsProgram(kind, -1, valueOf(mantissa, scale));
     }
     const Word back() const { return (*this)[size() - 1]; }
     const Word front() const { return (*this)[0]; }
@@ -168,6 +153,8 @@ class WordList {
     /// write slots of narrowSlot() and their columns (1..kMaxPackedColumn)
     /// there, then endAt(the slot after the last one written). makeSpare()
     /// makes room for one more word when there is none, as push_back would.
+    /// A slot whose word numberTurnsFlow() must be noted with
+    /// noteFlowTurning(slot) before endAt().
     Packed* spareBegin() { return slots_.spareBegin(); }
     Packed* spareEnd() { return slots_.data() + std::min(slots_.capacity(), columns_.capacity()); }
     std::uint8_t* spareColumns() { return columns_.spareBegin(); }
@@ -179,6 +166,7 @@ class WordList {
         slots_.makeSpare();
         columns_.reserve(slots_.capacity());
     }
+    void noteFlowTurning(const Packed* slot);
     /// Drops the words from `count` on. Precondition: count <= size(), and
     /// every word dropped was appended by tryPushNumber or as a narrowSlot().
     void truncate(std::size_t count);
@@ -220,9 +208,6 @@ class WordList {
         std::int32_t payload;  ///< mantissa, or index into extended_
     };
     static constexpr Packed kCodeMask = 31;
-    /// Bit i set when the code of slots[i] is in `codes` (bit 1 << code),
-    /// for i < 64: forEachOfKinds' scan, four slots at a time.
-    static std::uint64_t codesIn64(const Packed* slots, Packed codes);
     static constexpr unsigned kMantissaShift = 5;
     static constexpr unsigned kMantissaBits = 32 - kMantissaShift;
     static constexpr std::uint32_t kMantissaLimit = std::uint32_t{1} << (kMantissaBits - 1);
@@ -279,6 +264,8 @@ class WordList {
     const Wide& wideAt(std::size_t index, Packed slot) const;
     Wide& wideAt(std::size_t index, Packed slot);
     void readWide(std::size_t index, Packed slot, Word& out) const;
+    /// Lists or unlists word `index` in turning_ (set()).
+    void noteTurning(std::size_t index, bool turns);
     /// kindAt() of a wide or extended slot.
     WordKind wholeKind(std::size_t index, Packed slot) const;
     /// The head (as setNumber() takes it) of a plain wide form.
@@ -301,6 +288,7 @@ class WordList {
     std::vector<Wide> wide_;
     std::vector<std::pair<std::uint32_t, Wide>> overflow_;  ///< by word index, sorted
     std::vector<Word> extended_;
+    std::vector<std::uint32_t> turning_;  ///< see flowTurningWords()
     unsigned headCount_ = 0;
     std::uint8_t codeCache_[32 * 8] = {};  ///< code by letter and scale (a hint)
     Packed plainCodes_[32 * 8] = {};       ///< see plainCodeAt()
@@ -314,6 +302,8 @@ inline bool WordList::tryPushNumber(WordKind kind, char letter, std::uint8_t axi
     const std::size_t index = slots_.size();
     const Packed slot = packNumber(kind, letter, axisIndex, column,
                                    static_cast<std::int32_t>(mantissa), scale, index);
+    if (numberTurnsFlow(kind, static_cast<std::int32_t>(mantissa), scale))
+        turning_.push_back(static_cast<std::uint32_t>(index));
     slots_.push_back(slot);
     columns_.push_back(static_cast<std::uint8_t>(column));
     return true;

@@ -37,23 +37,6 @@ Flow flowOf(JumpKind kind) {
     return Flow::End;
 }
 
-/// M02 or M30 with a constant number: the end of the program, before any jump.
-bool endsProgram(long expr, double number) {
-    return expr < 0 && (number == 2 || number == 30);
-}
-
-/// True for the jump and M words that can turn the flow: a jump word, M02 or M30.
-bool turnsFlow(const WordList& words, std::size_t index) {
-    if (words.kindAt(index) == WordKind::Jump) return true;
-    NumberWord m;
-    if (!words.readNumber(index, m)) {
-        const Word whole = words[index];
-        m.expr = whole.expr;
-        m.number = whole.number;
-    }
-    return endsProgram(m.expr, m.number);
-}
-
 /// The block holding word `index` (blocks hold consecutive words in order);
 /// blocks.size() when none does.
 std::uint32_t blockOfWord(const BlockList& blocks, std::uint32_t index) {
@@ -94,14 +77,11 @@ std::size_t LevelReach::BlockSet::findSet(std::size_t first, std::size_t last) c
 
 LevelReach::LevelReach(ProgramPtr program) : program_(std::move(program)) {
     const Program& p = *program_;
-    constexpr std::uint32_t kJumpOrM =
-        1u << static_cast<unsigned>(WordKind::Jump) | 1u << static_cast<unsigned>(WordKind::M);
-    p.words.forEachOfKinds(kJumpOrM, [&](std::size_t w) {
-        if (!turnsFlow(p.words, w)) return;
-        const std::uint32_t block = blockOfWord(p.blocks, static_cast<std::uint32_t>(w));
+    for (const std::uint32_t w : p.words.flowTurningWords()) {
+        const std::uint32_t block = blockOfWord(p.blocks, w);
         if (block < p.blocks.size() && (turning_.empty() || turning_.back() != block))
             turning_.push_back(block);
-    });
+    }
     // Words follow their blocks' order in a parsed program; kept sorted and
     // unique for any other (nextTurning searches it).
     std::sort(turning_.begin(), turning_.end());
@@ -128,7 +108,7 @@ int LevelReach::successors(std::uint32_t block, std::uint32_t next[2]) const {
         const WordKind kind = p.words.kindAt(w);
         if (kind != WordKind::M && kind != WordKind::Jump) continue;
         const Word word = p.words[w];
-        if (word.kind == WordKind::M && endsProgram(word.expr, word.number))
+        if (endsProgram(word.kind, word.expr, word.number))
             ends = true;  // M02 / M30 end the program before any jump
         if (word.kind != WordKind::Jump) continue;
         flow = flowOf(word.jump);
@@ -208,7 +188,7 @@ std::optional<std::uint32_t> LevelReach::returnWithoutCall() const {
             if (kind != WordKind::M && (kind != WordKind::Jump || jumped)) continue;
             const Word word = p.words[w];
             if (kind == WordKind::M) {
-                if (endsProgram(word.expr, word.number)) return std::nullopt;
+                if (endsProgram(word.kind, word.expr, word.number)) return std::nullopt;
                 continue;
             }
             jumped = true;

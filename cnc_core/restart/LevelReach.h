@@ -20,11 +20,12 @@ namespace mtc::core {
 /// so a block it does not reach is never reached on that level: it belongs
 /// to a subroutine (or is dead code).
 ///
-/// Only the turning blocks (a jump word, M02 or M30) can lead anywhere but to
-/// the next block; the constructor lists them with one pass over the word
-/// kinds, and a query runs straight from one turning block to the next over a
-/// bit set (O(words) once, then O(turning blocks + blocks / 64) per query;
-/// docs/decisions/restart.md R-034).
+/// Only the turning blocks (a jump word, M02 or M30: turnsFlow() in Word.h)
+/// can lead anywhere but to the next block; the constructor takes them from
+/// the words the program's WordList keeps as turning, and a query
+/// runs straight from one turning block to the next over a bit set
+/// (O(turning words * log blocks) once, then O(turning blocks + blocks / 64)
+/// per query; docs/decisions/restart.md ).
 class LevelReach {
   public:
     /// One bit per block, with the range operations of the straight walk.

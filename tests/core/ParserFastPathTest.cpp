@@ -96,6 +96,14 @@ const std::vector<std::string> kEdgeBlocks = {
     "N0042:0001",
     "N0043:000",
     "N0044" + std::string(260, ' ') + "X1 Y2",
+    // words that turn the flow (WordList::flowTurningWords), also on a
+    // line the fast path gives back (a continuation follows)
+    "N0045 M02 M30 M2.0 M-2 M+30 M030 M3 M20 M300",
+    "N0046 .L3 M30",
+    "N0047 BSR .L3 M2",
+    "N0048 M2\n      X1",
+    "N0049 M30 ;end",
+    "N0050 X1 M2 Y2 M30",
 };
 
 TEST(ParserFastPath, EdgeBlocksParseAsOnTheGeneralPath) {

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "ParserTestSupport.h"
+#include "tests/support/ProgramDifference.h"
 
 using namespace mtc::core;
 using namespace mtc::core::testing;
@@ -167,63 +168,70 @@ TEST(ParserStorage, NumberWordsOfEveryForm) {
     }
     for (std::size_t i = 0; i < list.size(); ++i)  // narrow, wide and extended
         EXPECT_EQ(list.kindAt(i), list[i].kind) << i;
-    for (WordKind kind : {WordKind::Axis, WordKind::F, WordKind::G, WordKind::M}) {
-        std::vector<std::size_t> found, expected;
-        list.forEachOfKinds(1u << static_cast<unsigned>(kind),
-                            [&](std::size_t i) { found.push_back(i); });
-        for (std::size_t i = 0; i < list.size(); ++i)
-            if (list.kindAt(i) == kind) expected.push_back(i);
-        EXPECT_EQ(found, expected) << static_cast<int>(kind);
-    }
     list.clear();  // forgets the heads and the parser's codes
     EXPECT_EQ(list.plainCodeAt(WordList::codeKey('G', 0)), WordList::kWideCode);
     ASSERT_TRUE(list.tryPushNumber(WordKind::M, 'M', 0, 1, 30, 0));
     EXPECT_EQ(list[0].kind, WordKind::M);
 }
 
-TEST(ParserStorage, TheScanForKindsFindsEveryWordOfThemInLongLists) {
-    // Lists longer than one scan round, with the wanted words at every
-    // position of a round, in narrow, wide and extended slots.
+TEST(ParserStorage, TheListKeepsEveryWordThatTurnsTheFlow) {
+    // M02 / M30 and jumps among other words, in narrow, wide and extended
+    // slots; the list must stay what reading every word finds through
+    // appends, replacements and truncation.
     std::mt19937 random(4711);
     const WordKind kinds[] = {WordKind::Axis, WordKind::F, WordKind::G, WordKind::M,
                               WordKind::Jump};
     const char letters[] = {'X', 'F', 'G', 'M', 'B'};
-    for (int round = 0; round < 20; ++round) {
+    const std::int64_t mValues[] = {2, 30, 20, 300, 3, -2, -30, 3'000'000'000LL};
+    const auto randomWord = [&](Word& word, std::int64_t& mantissa, unsigned& scale) {
+        const unsigned pick = random() % 5;
+        word = Word{};
+        word.kind = kinds[pick];
+        word.letter = letters[pick];
+        word.column = static_cast<std::uint16_t>(1 + random() % 300);
+        scale = random() % 3;
+        mantissa = word.kind == WordKind::M ? mValues[random() % 8] : random() % 900;
+        if (word.kind == WordKind::M && mantissa == 20) scale = 1;  // M2.0
+        word.number = static_cast<double>(mantissa) / std::pow(10.0, scale);
+        if (word.kind != WordKind::Jump && random() % 8 == 0) word.expr = 2;  // M=@1: no end
+    };
+    int turningSeen = 0;
+    for (int round = 0; round < 40; ++round) {
         WordList list;
         const std::size_t size = 1 + random() % 300;
         for (std::size_t i = 0; i < size; ++i) {
-            const unsigned pick = random() % (round % 4 == 0 ? 5 : 40) % 5;  // rare kinds too
-            const WordKind kind = kinds[pick];
-            if (kind == WordKind::Jump || random() % 16 == 0) {
-                Word word;  // kept whole
-                word.kind = kind;
-                word.letter = letters[pick];
-                word.column = 3;
-                word.expr = kind == WordKind::Jump ? -1 : 2;
+            Word word;
+            std::int64_t mantissa = 0;
+            unsigned scale = 0;
+            randomWord(word, mantissa, scale);
+            if (word.kind == WordKind::Jump || word.expr >= 0 || random() % 4 == 0 ||
+                !list.tryPushNumber(word.kind, word.letter, 0, word.column, mantissa, scale))
                 list.push_back(word);
-                continue;
-            }
-            const std::int64_t mantissa = random() % 8 == 0 ? 3'000'000'000LL : random() % 900;
-            if (!list.tryPushNumber(kind, letters[pick], 0, 1 + random() % 200, mantissa,
-                                    random() % 3)) {
-                Word word;
-                word.kind = kind;
-                word.letter = letters[pick];
-                word.number = static_cast<double>(mantissa);
-                list.push_back(word);
-            }
         }
-        for (std::uint32_t mask = 1; mask < 32; ++mask) {
-            std::uint32_t wanted = 0;
-            for (unsigned k = 0; k < 5; ++k)
-                if ((mask >> k) & 1u) wanted |= 1u << static_cast<unsigned>(kinds[k]);
-            std::vector<std::size_t> found, expected;
-            list.forEachOfKinds(wanted, [&](std::size_t i) { found.push_back(i); });
-            for (std::size_t i = 0; i < list.size(); ++i)
-                if ((wanted >> static_cast<unsigned>(list.kindAt(i))) & 1u) expected.push_back(i);
-            ASSERT_EQ(found, expected) << "round " << round << " mask " << mask;
+        ASSERT_EQ(list.flowTurningWords(), flowTurningWordsReadOneByOne(list)) << round;
+        for (int change = 0; change < 20; ++change) {
+            Word word;
+            std::int64_t mantissa = 0;
+            unsigned scale = 0;
+            randomWord(word, mantissa, scale);
+            list.set(random() % list.size(), word);
+            ASSERT_EQ(list.flowTurningWords(), flowTurningWordsReadOneByOne(list)) << round;
         }
+        turningSeen += static_cast<int>(list.flowTurningWords().size());
+        std::size_t keep = random() % (list.size() + 1);
+        while (keep < list.size() && (list[keep].kind == WordKind::Jump || list[keep].expr >= 0))
+            ++keep;  // truncate() drops appended numbers only
+        bool numbersOnly = true;
+        for (std::size_t i = keep; i < list.size(); ++i)
+            numbersOnly = numbersOnly && list[i].kind != WordKind::Jump && list[i].expr < 0;
+        if (numbersOnly) {
+            list.truncate(keep);
+            ASSERT_EQ(list.flowTurningWords(), flowTurningWordsReadOneByOne(list)) << round;
+        }
+        list.clear();
+        EXPECT_TRUE(list.flowTurningWords().empty());
     }
+    EXPECT_GT(turningSeen, 100);  // the rounds did meet turning words
 }
 
 TEST(ParserStorage, WordsKeptWholeBesideNumbers) {

@@ -44,9 +44,26 @@ inline std::string describeDiagnosticFields(const Diagnostic& d) {
            std::to_string(d.where.line) + ":" + std::to_string(d.where.column) + " " + d.message;
 }
 
+/// The indices of the words that turnsFlow(), read word by word: what
+/// WordList::flowTurningWords() must list.
+inline std::vector<std::uint32_t> flowTurningWordsReadOneByOne(const WordList& words) {
+    std::vector<std::uint32_t> turning;
+    for (std::size_t i = 0; i < words.size(); ++i) {
+        const Word word = words[i];
+        if (turnsFlow(word.kind, word.expr, word.number))
+            turning.push_back(static_cast<std::uint32_t>(i));
+    }
+    return turning;
+}
+
 /// The first difference between `a` and `b` (blocks, words, expressions,
-/// labels, diagnostics), or an empty string when they are the same.
+/// labels, diagnostics), or an empty string when they are the same. Also
+/// checks that each lists its turning words as reading every word finds them.
 inline std::string programDifference(const Program& a, const Program& b) {
+    if (a.words.flowTurningWords() != flowTurningWordsReadOneByOne(a.words))
+        return "turning words of the first";
+    if (b.words.flowTurningWords() != flowTurningWordsReadOneByOne(b.words))
+        return "turning words of the second";
     if (a.blocks.size() != b.blocks.size()) return "block count";
     for (std::size_t i = 0; i < a.blocks.size(); ++i) {
         std::string x = describeBlockFields(a.blocks[i]), y = describeBlockFields(b.blocks[i]);
