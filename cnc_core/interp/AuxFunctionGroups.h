@@ -35,8 +35,10 @@ class AuxFunctionGroups {
         return m >= 0 && m < kFunctions ? table_[static_cast<std::size_t>(m)] : 16;
     }
     /// True when `m` goes into the page 61 M(16) buffer.
-    bool storedInBuffer(int m) const {
-        return groupOf(m) == 16 && !isProgramControl(m) && !isSpindleOrientation(m);
+    bool storedInBuffer(int m) const { return storedInBuffer(m, groupOf(m)); }
+    /// The same for `m` of group `group` (the rule, in one place).
+    static bool storedInBuffer(int m, int group) {
+        return group == 16 && !isProgramControl(m) && !isSpindleOrientation(m);
     }
     /// M number -> group, for the interpreter's per-block look-up.
     const std::array<std::uint8_t, kFunctions>& table() const { return table_; }

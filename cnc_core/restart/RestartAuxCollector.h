@@ -42,8 +42,7 @@ class RestartAuxCollector : public AuxObserver {
     bool storesInM16(int m) const {
         if (m >= 0 && m < AuxFunctionGroups::kFunctions)
             return storedInM16_[static_cast<std::size_t>(m)];
-        return !AuxFunctionGroups::isProgramControl(m) &&
-               !AuxFunctionGroups::isSpindleOrientation(m);
+        return AuxFunctionGroups::storedInBuffer(m, 16);
     }
 
   private:
