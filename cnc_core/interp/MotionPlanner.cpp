@@ -204,11 +204,6 @@ bool MotionPlanner::planGeneral(const BlockContext& context, const BlockInput& i
     return finishMove(context, input, plan, g, moved, length, axisSeconds);
 }
 
-bool MotionPlanner::radiiRefused(const BlockContext& context, const BlockInput& input,
-                                 const ArcGeometry& geometry, double arcTolerance) {
-    return radiiError(context, input, geometry.r1, geometry.r2, arcTolerance);
-}
-
 bool MotionPlanner::feedRefused(const BlockContext& context, int g, double feed, double feedRate) {
     return feedError(context, g, feed, feedRate);
 }
@@ -356,7 +351,7 @@ bool MotionPlanner::arc(const BlockContext& context, const BlockInput& input,
     ArcGeometry geometry(p1, p2, current, next, centre, secondsPerPlaneUnit(next, p1),
                          secondsPerPlaneUnit(next, p2));
     if (!arcRadii(geometry, arcTolerance))
-        return radiiRefused(context, input, geometry, arcTolerance);
+        return radiiError(context, input, geometry.r1, geometry.r2, arcTolerance);
     arcMove(input, current, plan, geometry, arcTolerance, length, axisSeconds);
     return true;
 }

@@ -154,9 +154,6 @@ class MotionPlanner {
         a.r2 = std::sqrt((a.e1 - a.c1) * (a.e1 - a.c1) + (a.e2 - a.c2) * (a.e2 - a.c2));
         return !(a.r1 < 1e-9) && !(std::fabs(a.r1 - a.r2) > arcTolerance);
     }
-    /// ARC_RADIUS_ZERO or ARC_RADIUS_MISMATCH (cold).
-    [[gnu::cold]] static bool radiiRefused(const BlockContext& context, const BlockInput& input,
-                                           const ArcGeometry& geometry, double arcTolerance);
     /// Sweep, length, axis time and the plan's arc fields of a checked arc
     /// (both paths).
     void arcMove(const BlockInput& input, const ModalState& current, BlockPlan& plan,

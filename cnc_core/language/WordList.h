@@ -112,11 +112,10 @@ class WordList {
     /// blocks from it instead of scanning every word (restart.md R-037).
     const std::vector<std::uint32_t>& flowTurningWords() const { return turning_; }
     /// turnsFlow() of the plain number mantissa / 10^scale (no expression);
-    /// cheap for the parser's fast path, which asks it of every word.
+    /// the value is worked out for an M word only (the only kind it decides).
     static bool numberTurnsFlow(WordKind kind, std::int32_t mantissa, unsigned scale) {
-        if (kind != WordKind::M) return kind == WordKind::Jump;
-        return scale == 0 ? mantissa == 2 || mantissa == 30
-                          : endsProgram(kind, -1, valueOf(mantissa, scale));
+        if (kind != WordKind::M) return turnsFlow(kind, -1, 0.0);
+        return endsProgram(kind, -1, valueOf(mantissa, scale));
     }
     const Word back() const { return (*this)[size() - 1]; }
     const Word front() const { return (*this)[0]; }
