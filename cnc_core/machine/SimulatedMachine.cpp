@@ -87,13 +87,9 @@ double pathLength(const Motion& m, const motion::SegmentGeometry& g) {
     return std::sqrt(length * length + other);
 }
 
-}  // namespace
-
-double motionSeconds(const Motion& motion, const ProcessConfig& config) {
-    return motionSeconds(motion, config, motionPathLength(motion));
-}
-
-double motionSeconds(const Motion& motion, const ProcessConfig& config, double length) {
+/// motionSeconds() of a rapid move, or of a feed move under G32.
+[[gnu::noinline]] double rareMotionSeconds(const Motion& motion, const ProcessConfig& config,
+                                           double length) {
     if (motion.type == MotionType::Rapid) {
         double slowest = 0.0;
         const int count = std::min<int>(motion.axisCount, static_cast<int>(config.axes.size()));
@@ -106,8 +102,23 @@ double motionSeconds(const Motion& motion, const ProcessConfig& config, double l
         return slowest;
     }
     if (motion.feed <= 0) return 0.0;
-    if (motion.transformation == 32 && motion.effectiveRadius > 0)
+    if (motion.effectiveRadius > 0)  // under G32 (the caller's test)
         return motionPathLength(onDevelopedSurface(motion, config)) / motion.feed * 60.0;
+    return length / motion.feed * 60.0;
+}
+
+}  // namespace
+
+double motionSeconds(const Motion& motion, const ProcessConfig& config) {
+    return motionSeconds(motion, config, motionPathLength(motion));
+}
+
+double motionSeconds(const Motion& motion, const ProcessConfig& config, double length) {
+    // The feed move without transformation (nearly every move) in line, the
+    // rest out of line: the machine asks this for every move (MOT-028).
+    if (motion.type == MotionType::Rapid || motion.transformation == 32)
+        return rareMotionSeconds(motion, config, length);
+    if (motion.feed <= 0) return 0.0;
     return length / motion.feed * 60.0;
 }
 

@@ -63,8 +63,9 @@ SegmentGeometry SegmentGeometry::of(const Motion& m, const MotionLimits& limits)
     return g;
 }
 
-// Every member is written here (also the tangents past axisCount_ and the
-// arc's figures of a line): a reused queue slot ends up exactly as of().
+// Every member ends up as of() leaves it: a reused queue slot is exactly a
+// fresh one (the tangents past axisCount_ and the arc's figures of a line
+// are cleared where the slot's former move left others).
 void SegmentGeometry::describe(const Motion& m, const MotionLimits& limits) {
     mapping_.describe(m, limits);
     const int before = axisCount_;  // the tangents are 0 from here on
@@ -104,8 +105,10 @@ void SegmentGeometry::clearArc() {
 }
 
 void SegmentGeometry::describeLine(int before) {
+    // A line leaves the arc's figures as a default geometry holds them, so
+    // only a slot whose former move was an arc needs them cleared (MOT-028).
+    if (arc_) clearArc();
     arc_ = false;
-    clearArc();
     clearFrom(startTangent_, axisCount_, before);
     clearFrom(endTangent_, axisCount_, before);
     const auto difference = [this](int i) {
@@ -200,7 +203,9 @@ void SegmentGeometry::machinePointOnPath(double s, Position& machine) const {
 double SegmentGeometry::maxTangentComponent(int axis) const {
     if (axis < 0 || axis >= axisCount_) return 0.0;
     const auto k = static_cast<std::size_t>(axis);
-    if (!arc_ || (axis != p1_ && axis != p2_))
+    // A line's two tangents are one value (describeLine() stores it twice).
+    if (!arc_) return std::fabs(startTangent_[k]);
+    if (axis != p1_ && axis != p2_)
         return std::max(std::fabs(startTangent_[k]), std::fabs(endTangent_[k]));
     // In-plane share of the tangent times the largest |sin| (axis 1) or |cos| (axis 2).
     const bool second = axis == p2_;

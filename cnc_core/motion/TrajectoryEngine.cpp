@@ -153,7 +153,8 @@ bool TrajectoryEngine::planBackward(bool early) {
     return frontChanged;
 }
 
-void TrajectoryEngine::replanFront() {
+// Inline where it is called: runMove() plans every move once (MOT-028).
+[[gnu::always_inline]] inline void TrajectoryEngine::replanFront() {
     if (queue_.empty() || queue_.front().kind != QueueItem::Kind::Move) return;
     const QueueItem& move = queue_.front();
     const double length = move.geometry.length() - pathS_;
