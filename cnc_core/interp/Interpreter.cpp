@@ -49,6 +49,37 @@ std::shared_ptr<const ZeroOffsetTable> offsetsFor(const InterpreterServices& ser
     return services.zeroOffsets ? services.zeroOffsets : own;
 }
 
+/// A usual block (BlockInput::special false) with no G word but G0..G3, no
+/// axis written twice and no transformation in force: BlockExecutor::plan
+/// plans it itself, and it can change nothing of the modal state but what
+/// assignUsualBlock() copies (I-028).
+bool changesOnlyMotionFields(const BlockInput& in, const ModalState& next) {
+    constexpr std::uint32_t kOtherGroups = ~(1u << kGroupInterpolation);
+    return !in.special && in.repeatedAxisColumn == 0 && (in.gMask & kOtherGroups) == 0 &&
+           !next.transformation.active();
+}
+
+/// `to = from` for such a block, whose plan wrote into `from` only: the
+/// interpolation group, F, the programmed axes' work and machine positions
+/// (MotionPlanner: no transformation, so no other axis), the rotary axis
+/// modes (a spindle moved as an axis) and the simulated time. Each axis pair
+/// is copied as the 16-byte unit of assignModalState(), so that the move's
+/// `end`, copied next, reads every 16 bytes from one store (I-026).
+/// InterpShortcuts.* compare every field with the general path, which copies all.
+[[gnu::always_inline]] inline void assignUsualBlock(ModalState& to, const ModalState& from,
+                                                    std::uint32_t axisMask) {
+    to.g[kGroupInterpolation] = from.g[kGroupInterpolation];
+    for (std::uint32_t rest = axisMask; rest != 0;) {
+        const auto pair = static_cast<std::size_t>(__builtin_ctz(rest)) & ~std::size_t{1};
+        std::memcpy(&to.work[pair], &from.work[pair], 16);
+        std::memcpy(&to.machine[pair], &from.machine[pair], 16);
+        rest &= ~(3u << pair);
+    }
+    to.rotaryAxisMode = from.rotaryAxisMode;
+    static_assert(offsetof(ModalState, time) == offsetof(ModalState, feed) + 8, "feed, time");
+    copyInEightByteMoves<16>(&to.feed, &from.feed);
+}
+
 }  // namespace
 
 Interpreter::Interpreter(const ProcessConfig& config, const ProgramStore& programs,
@@ -264,7 +295,15 @@ bool Interpreter::syntaxError(const BlockContext& context) const {
 [[gnu::always_inline]] inline Interpreter::Outcome Interpreter::commitUsual(const Program& program,
                                                                             std::uint32_t index) {
     const bool motion = plan_.hasMotion && options_.output.motion;
-    if (commitModalState(motion)) rebuildNames();
+    if (changesOnlyMotionFields(input_, plan_.next)) {
+        if (motion)  // the move's start, as commitModalState() copies it
+            copyInSteps<16, sizeof motion_.start>(motion_.start.data(),
+                                                  state_.modal.machine.data());
+        assignUsualBlock(state_.modal, plan_.next, input_.axisMask);
+        planSynced_ = true;
+    } else if (commitModalState(motion)) {
+        rebuildNames();
+    }
     if (motion) emitMotion(program, index);
     ++state_.block;
     return Outcome::Continue;

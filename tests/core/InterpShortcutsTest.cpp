@@ -80,6 +80,40 @@ class FullSink : public MachineSink {
     }
 };
 
+/// Every field of the modal state: the usual block's commit copies only what
+/// such a block changes (I-028), the general path copies all.
+std::string modalText(const ModalState& m) {
+    char buffer[40];
+    const auto number = [&](double v) {
+        std::snprintf(buffer, sizeof buffer, " %.17g", v);
+        return std::string(buffer);
+    };
+    std::string text = "modal g";
+    for (auto g : m.g)
+        text += " " + std::to_string(g);
+    text += " plane " + std::to_string(m.plane.plane());
+    for (int a = 0; a < kMaxAxes; ++a)
+        text += " " + std::to_string(static_cast<int>(m.plane.definitionOf(a)));
+    text += " t" + std::to_string(m.transformation.kind()) + "," +
+            std::to_string(m.transformation.planeAxis(0)) + "," +
+            std::to_string(m.transformation.planeAxis(1)) +
+            number(m.transformation.effectiveRadius());
+    for (int a = 0; a < kMaxAxes; ++a)
+        text += number(m.work[static_cast<std::size_t>(a)]) +
+                number(m.machine[static_cast<std::size_t>(a)]);
+    for (int j = 0; j < kSpindleSlots; ++j)
+        text += number(m.spindleSpeed[static_cast<std::size_t>(j)]) +
+                number(m.spindleLimit[static_cast<std::size_t>(j)]) + " r" +
+                std::to_string(m.rotaryAxisMode[static_cast<std::size_t>(j)]);
+    for (int s : m.toolSpindle)
+        text += " ts" + std::to_string(s);
+    text += " " + std::to_string(m.tool) + " " + std::to_string(m.edge) + " " +
+            std::to_string(m.correction) + " " + std::to_string(m.referenceSpindle) + " " +
+            std::to_string(m.adaptiveFeed) + number(m.lastEffectiveRadius) + number(m.feed) +
+            number(m.time) + "\n";
+    return text;
+}
+
 /// Runs `source` as program 1 of `process` of the demo cell in check mode
 /// (errors skipped, M00 continued): every output, the diagnostics and the
 /// final state. `between` is called before each block (an operator change).
@@ -102,7 +136,7 @@ std::string runOf(const std::string& source, int process, bool shortcuts, Betwee
     for (int block = 0; block < 10000; ++block) {
         between(block, *offsets);
         const RunResult result = interpreter.step();
-        text += diagnosticsText(result.diagnostics);
+        text += diagnosticsText(result.diagnostics) + modalText(interpreter.state().modal);
         if (result.status != RunStatus::Running && result.status != RunStatus::Stopped) break;
     }
     return sink.text + text + stateText(interpreter);
@@ -205,6 +239,17 @@ TEST(InterpShortcuts, SpecialWordsBetweenUsualBlocksGiveTheGeneralRun) {
     EXPECT_EQ(fast, runOf(kSpecialWordsProgram, 0, false));
     const std::string lathe = runOf(kSpecialWordsProgram, 1, true);
     EXPECT_EQ(lathe, runOf(kSpecialWordsProgram, 1, false));
+}
+
+/// The lathe's spindle S1 moved as its rotary axis C in usual blocks (the
+/// rotary axis mode changes without a special word), between spindle words.
+TEST(InterpShortcuts, SpindleMovedAsAnAxisGivesTheGeneralRun) {
+    const std::string program = std::string("N0010 G1 X10 Z5 F500\nN0020 G1 C90\n") +
+                                "N0030 G1 X12 C180\nN0040 M3 S500\nN0050 G1 X14\n" +
+                                "N0060 G1 C45 F200\nN0070 G0 Z20 C0\nN0080 M30\n";
+    const std::string fast = runOf(program, 1, true);
+    EXPECT_NE(fast.find(" r1"), std::string::npos) << fast;  // S1 in rotary axis mode
+    EXPECT_EQ(fast, runOf(program, 1, false));
 }
 
 std::string readFile(const fs::path& path) {
