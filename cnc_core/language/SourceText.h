@@ -50,10 +50,9 @@ class ChunkedText {
     /// Releases the memory of the whole chunks before `pos`; the parse does
     /// not read them again.
     virtual void releaseBefore(std::uint32_t pos) = 0;
-    /// Reads the whole text in (before the parse, when words and blocks do
-    /// not yet take memory; the parse releases it behind its scanner) and
-    /// counts its '\n' and ' ' into `lines` and `blanks` (for the parse's
-    /// reservations).
+    /// Counts the text's '\n' and ' ' into `lines` and `blanks` (for the
+    /// parse's reservations) without keeping it in memory: the parse reads
+    /// it in just ahead of its scanner (fillLinesFrom).
     virtual void countLinesAndBlanks(std::size_t& lines, std::size_t& blanks) const = 0;
     /// The parse is over: releases what the window still holds.
     virtual void endParse() = 0;

@@ -242,14 +242,19 @@ void FileBackedText::endParse() {
 }
 
 void FileBackedText::countLinesAndBlanks(std::size_t& lines, std::size_t& blanks) const {
-    // Before the parse the whole text may be in memory (words and blocks
-    // are not yet): each chunk is read, hashed and counted while it is in
-    // the cache, and the parse reads it from memory.
+    // The counts only size the parse's reservations, so they are taken from
+    // a read of each chunk into one small buffer that stays in the cache;
+    // the text itself is read into the reservation just ahead of the parse
+    // (fillLinesFrom), which then finds it in the cache too. Reading the
+    // whole text in here instead made the parse read it back from memory
+    // (docs/decisions/process.md, PROC-004). A file that changes between
+    // the two reads only gives counts that do not fit: the parse grows its
+    // lists then; the text the spans refer to is the one the parse read.
+    std::vector<char> buffer(kChunkBytes);
     for (std::uint32_t chunk = 0; chunk < chunkCount(); ++chunk) {
-        refill(chunk);
-        const std::size_t offset = std::size_t{chunk} * kChunkBytes;
-        mtc::core::countLinesAndBlanks(std::string_view(bytes_ + offset, chunkLength(chunk)), lines,
-                                       blanks);
+        const std::size_t got = readAt(descriptor_, buffer.data(), chunkLength(chunk),
+                                       std::uint64_t{chunk} * kChunkBytes);
+        mtc::core::countLinesAndBlanks(std::string_view(buffer.data(), got), lines, blanks);
     }
 }
 

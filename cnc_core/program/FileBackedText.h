@@ -15,9 +15,10 @@ namespace mtc::core {
 /// A program file's text kept out of memory where nobody reads it
 /// (docs/decisions/process.md, PROC-003). The text lives in an anonymous
 /// reservation of the file's size, filled by pread in chunks of kChunkBytes:
-/// read in whole before the parse (for its counts), released behind the
-/// parse's line scanner (so a large program's text is not resident when its
-/// words and blocks are); afterwards a chunk is read again on first use and
+/// read just ahead of the parse's line scanner (the counts before the parse
+/// read the file through a small buffer), released behind it (so a large
+/// program's text is not resident when its words and blocks are);
+/// afterwards a chunk is read again on first use and
 /// then stays, so a view into it stays valid as long as the text lives. The
 /// file stays open. Each chunk's hash is taken when it is first read; a
 /// chunk read again with another hash, or cut short, becomes blanks and

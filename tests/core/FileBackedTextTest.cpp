@@ -96,6 +96,22 @@ TEST_F(FileBackedTextTest, ParsesLikeTheWholeText) {
     EXPECT_FALSE(file_->changed());
 }
 
+TEST_F(FileBackedTextTest, TheCountsBeforeTheParseLeaveTheTextOnDisk) {
+    // PROC-004: the counts come from a small buffer; the text is read into
+    // memory only ahead of the parse's scanner.
+    const std::string text = mixedProgram(3u << 20);
+    path_ = dir_.file("counted.nc");
+    writeFile(path_, text);
+    file_ = openText(path_);
+    std::size_t lines = 1, blanks = 0, expectedLines = 1, expectedBlanks = 0;
+    file_->countLinesAndBlanks(lines, blanks);
+    countLinesAndBlanks(text, expectedLines, expectedBlanks);
+    EXPECT_EQ(lines, expectedLines);
+    EXPECT_EQ(blanks, expectedBlanks);
+    EXPECT_EQ(file_->residentBytes(), 0u);
+    EXPECT_FALSE(file_->changed());
+}
+
 TEST_F(FileBackedTextTest, TextIsNotResidentAfterTheParse) {
     parseBoth(mixedProgram(6u << 20));
     EXPECT_EQ(file_->residentBytes(), 0u);
