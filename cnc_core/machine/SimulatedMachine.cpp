@@ -87,24 +87,21 @@ double pathLength(const Motion& m, const motion::SegmentGeometry& g) {
     return std::sqrt(length * length + other);
 }
 
-/// motionSeconds() of a rapid move, or of a feed move under G32.
-[[gnu::noinline]] double rareMotionSeconds(const Motion& motion, const ProcessConfig& config,
-                                           double length) {
-    if (motion.type == MotionType::Rapid) {
-        double slowest = 0.0;
-        const int count = std::min<int>(motion.axisCount, static_cast<int>(config.axes.size()));
-        for (int i = 0; i < count; ++i) {
-            const double velocity = config.axes[static_cast<size_t>(i)].maxVelocity;
-            if (velocity > 0)
-                slowest =
-                    std::max(slowest, std::abs(motion.end[i] - motion.start[i]) / velocity * 60.0);
-        }
-        return slowest;
+/// motionSeconds() of a rapid move: as long as its slowest axis needs.
+[[gnu::noinline]] double rapidSeconds(const Motion& motion, const ProcessConfig& config) {
+    double slowest = 0.0;
+    const int count = std::min<int>(motion.axisCount, static_cast<int>(config.axes.size()));
+    for (int i = 0; i < count; ++i) {
+        const double velocity = config.axes[static_cast<size_t>(i)].maxVelocity;
+        if (velocity > 0)
+            slowest = std::max(slowest, std::abs(motion.end[i] - motion.start[i]) / velocity * 60.0);
     }
-    if (motion.feed <= 0) return 0.0;
-    if (motion.effectiveRadius > 0)  // under G32 (the caller's test)
-        return motionPathLength(onDevelopedSurface(motion, config)) / motion.feed * 60.0;
-    return length / motion.feed * 60.0;
+    return slowest;
+}
+
+/// motionSeconds() of a feed move under G32: its path on the developed surface.
+[[gnu::noinline]] double developedSeconds(const Motion& motion, const ProcessConfig& config) {
+    return motionPathLength(onDevelopedSurface(motion, config)) / motion.feed * 60.0;
 }
 
 }  // namespace
@@ -114,11 +111,12 @@ double motionSeconds(const Motion& motion, const ProcessConfig& config) {
 }
 
 double motionSeconds(const Motion& motion, const ProcessConfig& config, double length) {
-    // The feed move without transformation (nearly every move) in line, the
-    // rest out of line: the machine asks this for every move (MOT-028).
-    if (motion.type == MotionType::Rapid || motion.transformation == 32)
-        return rareMotionSeconds(motion, config, length);
+    // The usual feed move in line, the rare kinds out of line: the machine
+    // asks this for every move (MOT-028).
+    if (motion.type == MotionType::Rapid) return rapidSeconds(motion, config);
     if (motion.feed <= 0) return 0.0;
+    if (motion.transformation == 32 && motion.effectiveRadius > 0)
+        return developedSeconds(motion, config);
     return length / motion.feed * 60.0;
 }
 
