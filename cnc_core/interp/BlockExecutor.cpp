@@ -27,14 +27,27 @@ std::string formatNumber(double value) {
     return formatGeneral(value, 10);
 }
 
+/// BlockContext::error() out of line, for the functions every block with
+/// aux words passes through: its strings and details list, built in place,
+/// gave them large frames and six saved registers per call.
+[[gnu::cold, gnu::noinline]] bool refuse(const BlockContext& c, const char* code,
+                                         const char* message, int column) {
+    return c.error(code, message, column);
+}
+
+[[gnu::cold, gnu::noinline]] bool twoOfOneMGroup(const BlockContext& c, int group, int column) {
+    return c.error("M_GROUP_CONFLICT",
+                   "two M functions of group " + std::to_string(group) + " in one block", column);
+}
+
 }  // namespace
 
 bool BlockExecutor::planGeneral(const BlockContext& c, const BlockInput& in,
                                 const InterpreterState& state, BlockPlan& plan,
                                 const PlanningOptions& options) const {
     if (in.repeatedAxisColumn && in.g[kGroupPlane] != 20)
-        return c.error("WORD_TWICE", "an axis is programmed twice in one block",
-                       in.repeatedAxisColumn);
+        return refuse(c, "WORD_TWICE", "an axis is programmed twice in one block",
+                      in.repeatedAxisColumn);
     clearPlan(plan);
     ModalState& next = plan.next;
     // Only modal G, axis, I/J/K and F words (I-023): a usual block that
@@ -67,7 +80,8 @@ bool BlockExecutor::planGeneral(const BlockContext& c, const BlockInput& in,
     if (in.axisFunction != 0) return axisFunction(c, in, state, plan, options);
     if (in.axisMask == 0 || in.g[kGroupPlane] == 20) return true;
     if (in.dwell)
-        return c.error("DWELL_WITH_AXES", "G4 cannot be combined with axis words", in.dwellColumn);
+        return refuse(c, "DWELL_WITH_AXES", "G4 cannot be combined with axis words",
+                      in.dwellColumn);
     return motion_.plan(c, in, state.modal, plan, options);
 }
 
@@ -271,8 +285,11 @@ double BlockExecutor::maxSpindleSpeed(int spindle) const {
     return setup_.config->axes[static_cast<std::size_t>(axis)].maxSpeed;
 }
 
-bool BlockExecutor::auxiliaries(const BlockContext& c, const BlockInput& in,
-                                const InterpreterState& state, BlockPlan& plan) const {
+// Inline in planGeneral, its only caller: one call and frame less per block with M or Q.
+[[gnu::always_inline]] inline bool BlockExecutor::auxiliaries(const BlockContext& c,
+                                                              const BlockInput& in,
+                                                              const InterpreterState& state,
+                                                              BlockPlan& plan) const {
     plan.auxChanged = true;
     plan.mGroups = state.mGroups;
     plan.lastQ = state.lastQ;
@@ -280,19 +297,16 @@ bool BlockExecutor::auxiliaries(const BlockContext& c, const BlockInput& in,
     for (int i = 0; i < in.mCount; ++i) {
         const int m = in.m[static_cast<size_t>(i)].value;
         const int column = in.m[static_cast<size_t>(i)].column;
-        if (m > 999) return c.error("M_RANGE", "M functions are M0..M999", column);
+        if (m > 999) return refuse(c, "M_RANGE", "M functions are M0..M999", column);
         const int group = (*setup_.mGroupOf)[static_cast<size_t>(m)];
         const std::uint32_t bit = group < 16 ? 1u << group : 0u;
-        if (seen & bit)
-            return c.error("M_GROUP_CONFLICT",
-                           "two M functions of group " + std::to_string(group) + " in one block",
-                           column);
+        if (seen & bit) return twoOfOneMGroup(c, group, column);
         seen |= bit;
         plan.mGroups[static_cast<size_t>(group)] = m;
         if (AuxFunctionGroups::isProgramControl(m)) {
             if (plan.programControl >= 0)
-                return c.error("M_GROUP_CONFLICT", "two program control functions in one block",
-                               column);
+                return refuse(c, "M_GROUP_CONFLICT", "two program control functions in one block",
+                              column);
             plan.programControl = m;
         }
         const int spindle = m / 100 == 0 ? 1 : m / 100;

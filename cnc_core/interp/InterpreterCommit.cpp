@@ -172,7 +172,9 @@ void Interpreter::sendAux(AuxOutput& out, char type, int spindle, double value, 
     if (observer_) observer_->auxiliary(out, forwarded);
 }
 
-void Interpreter::emitAux(const Program& program, std::uint32_t index) {
+// Inline in commit(), its only caller: one call and frame less per block with aux functions.
+[[gnu::always_inline]] inline void Interpreter::emitAux(const Program& program,
+                                                        std::uint32_t index) {
     const BlockInput& in = input_;
     const OutputOptions& out = options_.output;
     // One location for all functions of the block, and only when one goes to
