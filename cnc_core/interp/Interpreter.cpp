@@ -180,7 +180,13 @@ bool Interpreter::writeVariable(int index, double value) {
 
 RunResult Interpreter::step() {
     RunResult result;
-    if (configDiagnostics_.hasErrors() || !state_.program) return run(0);
+    // One object returned on every path: the caller's result is built in
+    // place (returning run(0) directly would cost a move and a destructor
+    // of `result` on every block).
+    if (configDiagnostics_.hasErrors() || !state_.program) {
+        result = run(0);
+        return result;
+    }
     const std::uint64_t released = compensation_.released();
     Outcome outcome = executeNext(result.diagnostics, result.blocksInterpreted);
     // A held move (radius compensation) goes out with the next block that
@@ -296,9 +302,7 @@ bool Interpreter::syntaxError(const BlockContext& context) const {
                                                                             std::uint32_t index) {
     const bool motion = plan_.hasMotion && options_.output.motion;
     if (changesOnlyMotionFields(input_, plan_.next)) {
-        if (motion)  // the move's start, as commitModalState() copies it
-            copyInSteps<16, sizeof motion_.start>(motion_.start.data(),
-                                                  state_.modal.machine.data());
+        copyMoveStart(motion);
         assignUsualBlock(state_.modal, plan_.next, input_.axisMask);
         planSynced_ = true;
     } else if (commitModalState(motion)) {

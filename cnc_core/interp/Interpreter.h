@@ -265,12 +265,17 @@ class Interpreter {
     [[gnu::always_inline]] bool commitModalState(bool motion) {
         const bool transformationChanged =
             plan_.next.transformation.kind() != state_.modal.transformation.kind();
+        copyMoveStart(motion);
+        assignModalState(state_.modal, plan_.next);
+        planSynced_ = true;
+        motionFrameCurrent_ = false;  // the frame's groups, plane or transformation may change
+        return transformationChanged;
+    }
+    /// The move's start (when `motion`): the machine position before the commit.
+    [[gnu::always_inline]] void copyMoveStart(bool motion) {
         if (motion)  // not `rep movs` (a plain assignment in this place)
             copyInSteps<16, sizeof motion_.start>(motion_.start.data(),
                                                   state_.modal.machine.data());
-        assignModalState(state_.modal, plan_.next);
-        planSynced_ = true;
-        return transformationChanged;
     }
     bool planFlow(const BlockContext& context);
     /// Tool radius and length compensation of the block (last plan step).
@@ -315,7 +320,10 @@ class Interpreter {
     void resetModal();
     void rebuildNames() { names_ = AxisNameTable::build(axes_, state_.modal.transformation); }
     /// Call after changing state_.modal outside commit(): plan_.next is stale.
-    void modalChanged() { planSynced_ = false; }
+    void modalChanged() {
+        planSynced_ = false;
+        motionFrameCurrent_ = false;
+    }
 
     const ProcessConfig& config_;
     const ProgramStore& programs_;
@@ -366,6 +374,11 @@ class Interpreter {
         std::array<std::uint64_t, 2> transformation{};  ///< transformationKey()
     };
     MotionFrame motionFrame_;
+    /// The frame fields of motion_ were filled from, or found equal to, the
+    /// modal state as it is now: set by emitMotion(); only a usual block's
+    /// commit (assignUsualBlock, which writes no frame field) keeps it, every
+    /// other change of the modal state clears it (saves sameMotionFrame()).
+    bool motionFrameCurrent_ = false;
     ExpressionEvaluator evaluator_;
     BlockExecutor executor_;
     ProgramFlow programFlow_;

@@ -228,11 +228,12 @@ void Interpreter::emitMotion(const Program& program, std::uint32_t index) {
     m.center2 = arc ? plan_.center2 : 0.0;
     m.fullCircle = arc && plan_.fullCircle;
     m.feed = plan_.feedRate;
-    if (!options_.shortcuts || !sameMotionFrame()) {
+    if (!options_.shortcuts || (!motionFrameCurrent_ && !sameMotionFrame())) {
         fillMotionFrame(m);
     } else if (m.zeroOffset != 53) {  // the table may change between two blocks
         zeroOffsetValues(m);
     }
+    motionFrameCurrent_ = true;
     m.compensated = false;  // tool compensation marks the moves it changes
     m.inserted = false;
     compensation_.motion(m, options_.output.motion);
