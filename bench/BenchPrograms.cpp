@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "cnc_core/language/Parser.h"
+#include "cnc_core/machine/InMemoryMachineData.h"
 #include "cnc_core/machine/MachineConfigReader.h"
 #include "resources/EmbeddedResources.h"
 
@@ -53,6 +54,30 @@ BenchProgramFixture::BenchProgramFixture(int blocks, GeneratedProgramOptions opt
     parsed->number = 1;
     program = parsed;
     store.put(0, 1, program);
+}
+
+namespace {
+
+InterpreterServices computingServices(const BenchProgramFixture& fixture) {
+    InterpreterServices services;
+    services.machineData = std::make_shared<InMemoryMachineData>(fixture.cell);
+    services.events = std::make_shared<EventTable>();
+    return services;
+}
+
+}  // namespace
+
+ComputingProcessRun::ComputingProcessRun(const BenchProgramFixture& fixture)
+    : services(computingServices(fixture)),
+      live(*fixture.cell.process(0), fixture.store, sps, services),
+      computing(*fixture.cell.process(0), fixture.store, sps, services) {
+    selection.mainProgram = 1;
+    selection.target = {1, static_cast<std::uint32_t>(fixture.program->blocks.size() - 2)};
+}
+
+bool ComputingProcessRun::begin(DiagnosticList& diagnostics) {
+    return computing.begin(selection, live.state(), live.options(), kDefaultBlockBudget,
+                           diagnostics);
 }
 
 }  // namespace mtc::bench

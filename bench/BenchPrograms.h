@@ -5,8 +5,11 @@
 
 #include <string>
 
+#include "cnc_core/interp/Interpreter.h"
+#include "cnc_core/language/Diagnostic.h"
 #include "cnc_core/machine/MachineConfig.h"
 #include "cnc_core/program/ProgramStore.h"
+#include "cnc_core/restart/ComputingProcess.h"
 
 namespace mtc::bench {
 
@@ -29,6 +32,19 @@ struct BenchProgramFixture {
     mtc::core::MachineConfig cell;
     mtc::core::ProgramStore store;
     mtc::core::ProgramPtr program;
+};
+
+/// The restart computing process of process 0 on a fixture's program, to
+/// its last block but the M30 (BM_RestartComputingProcess*, mtc_one_run).
+struct ComputingProcessRun {
+    explicit ComputingProcessRun(const BenchProgramFixture& fixture);
+    /// ComputingProcess::begin for the selection; false on an error.
+    bool begin(mtc::core::DiagnosticList& diagnostics);
+    mtc::core::NullSink sps;
+    mtc::core::InterpreterServices services;
+    mtc::core::Interpreter live;  ///< the interrupted run whose state the restart starts from
+    mtc::core::ComputingProcess computing;
+    mtc::core::RestartSelection selection;
 };
 
 }  // namespace mtc::bench

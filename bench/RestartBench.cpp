@@ -11,7 +11,6 @@
 
 #include "bench/BenchPrograms.h"
 #include "cnc_core/interp/Interpreter.h"
-#include "cnc_core/machine/InMemoryMachineData.h"
 #include "cnc_core/restart/ComputingProcess.h"
 
 namespace {
@@ -31,26 +30,16 @@ const Fixture& fixture(bool mixed) {
 }
 
 void computingProcess(benchmark::State& state, bool mixed) {
-    const Fixture& f = fixture(mixed);
-    const ProcessConfig& config = *f.cell.process(0);
-    NullSink sps;
-    InterpreterServices services;
-    services.machineData = std::make_shared<InMemoryMachineData>(f.cell);
-    services.events = std::make_shared<EventTable>();
-    Interpreter live(config, f.store, sps, services);
-    ComputingProcess computing(config, f.store, sps, services);
-    RestartSelection selection;
-    selection.mainProgram = 1;
-    selection.target = {1, static_cast<std::uint32_t>(f.program->blocks.size() - 2)};
+    mtc::bench::ComputingProcessRun run(fixture(mixed));
     std::uint64_t blocks = 0;
     std::string status;
     for (auto _ : state) {
         DiagnosticList d;
-        if (!computing.begin(selection, live.state(), live.options(), kDefaultBlockBudget, d)) {
+        if (!run.begin(d)) {
             state.SkipWithError("begin() failed");
             return;
         }
-        const ComputingProgress p = computing.advance(kDefaultBlockBudget);
+        const ComputingProgress p = run.computing.advance(kDefaultBlockBudget);
         blocks += p.blocksInterpreted;
         status = computingStatusName(p.status);
     }

@@ -13,16 +13,12 @@
 #include <cstdint>
 #include <cstdio>
 #include <fstream>
-#include <memory>
 #include <sstream>
 #include <string>
 #include <string_view>
 
 #include "bench/BenchPrograms.h"
-#include "cnc_core/interp/Interpreter.h"
 #include "cnc_core/language/Parser.h"
-#include "cnc_core/machine/InMemoryMachineData.h"
-#include "cnc_core/restart/ComputingProcess.h"
 
 namespace {
 
@@ -54,21 +50,9 @@ std::uint64_t interpretation(bool motion) {
 
 std::uint64_t computingProcess(bool mixed) {
     const Fixture f(kBlocks, {mixed, true});  // as bench/RestartBench.cpp
-    const ProcessConfig& config = *f.cell.process(0);
-    NullSink sps;
-    InterpreterServices services;
-    services.machineData = std::make_shared<InMemoryMachineData>(f.cell);
-    services.events = std::make_shared<EventTable>();
-    Interpreter live(config, f.store, sps, services);
-    ComputingProcess computing(config, f.store, sps, services);
-    RestartSelection selection;
-    selection.mainProgram = 1;
-    selection.target = {1, static_cast<std::uint32_t>(f.program->blocks.size() - 2)};
+    mtc::bench::ComputingProcessRun run(f);
     DiagnosticList diagnostics;
-    if (!computing.begin(selection, live.state(), live.options(), kDefaultBlockBudget,
-                         diagnostics))
-        return 0;
-    return measuredComputingProcess(computing);
+    return run.begin(diagnostics) ? measuredComputingProcess(run.computing) : 0;
 }
 
 std::uint64_t parse(const char* file) {
