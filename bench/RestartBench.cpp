@@ -33,7 +33,7 @@ void computingProcess(benchmark::State& state, bool mixed) {
     mtc::bench::ComputingProcessRun run(fixture(mixed));
     std::uint64_t blocks = 0;
     std::string status;
-    for (auto _ : state) {
+    for (auto _ : state) {  // NOLINT(clang-analyzer-deadcode.DeadStores)
         DiagnosticList d;
         if (!run.begin(d)) {
             state.SkipWithError("begin() failed");
@@ -61,7 +61,7 @@ void BM_RestartReferenceInterpreterMixed(benchmark::State& state) {
     Interpreter interpreter(*f.cell.process(0), f.store, sink);
     interpreter.options().output.motion = false;
     std::uint64_t blocks = 0;
-    for (auto _ : state) {
+    for (auto _ : state) {  // NOLINT(clang-analyzer-deadcode.DeadStores)
         interpreter.select(1);
         blocks += interpreter.run().blocksInterpreted;
     }
