@@ -9,21 +9,20 @@ namespace {
 
 constexpr int kMaxDepth = 64;
 
-bool fail(EvaluationError& error, const char* code, std::string message) {
+// Every error is out of line: built in place, their strings gave the hot
+// functions (a tree walk, a variable read, an operator) large frames and six
+// saved registers per call. A fixed text is passed as it is, so that the
+// caller builds no string either.
+[[gnu::cold, gnu::noinline]] bool fail(EvaluationError& error, const char* code,
+                                       std::string message) {
     error.code = code;
     error.message = std::move(message);
     return false;
 }
 
-// The errors of the paths every expression takes (a tree walk, a variable
-// read, an operator), out of line: built in place, their strings gave the
-// hot functions large frames and six saved registers per call.
-[[gnu::cold, gnu::noinline]] bool missingNode(EvaluationError& error) {
-    return fail(error, "EXPRESSION_MALFORMED", "expression refers to a missing node");
-}
-
-[[gnu::cold, gnu::noinline]] bool tooDeep(EvaluationError& error) {
-    return fail(error, "EXPRESSION_TOO_DEEP", "expression nested deeper than 64 levels");
+[[gnu::cold, gnu::noinline]] bool fail(EvaluationError& error, const char* code,
+                                       const char* message) {
+    return fail(error, code, std::string(message));
 }
 
 [[gnu::cold, gnu::noinline]] bool noSuchVariable(EvaluationError& error, int index) {
@@ -36,14 +35,6 @@ bool fail(EvaluationError& error, const char* code, std::string message) {
     return fail(error, "VARIABLE_PROCESS",
                 "variable @" + std::to_string(process) + ":" + std::to_string(index) +
                     " cannot be read: no such process");
-}
-
-[[gnu::cold, gnu::noinline]] bool divisionByZero(EvaluationError& error) {
-    return fail(error, "DIVISION_BY_ZERO", "division by zero");
-}
-
-[[gnu::cold, gnu::noinline]] bool notFinite(EvaluationError& error) {
-    return fail(error, "ARITHMETIC_OVERFLOW", "arithmetic result is not a finite number");
 }
 
 bool isGroupUsed(int group) {
@@ -85,8 +76,9 @@ bool ExpressionEvaluator::readVariable(int process, int index, double& value,
 bool ExpressionEvaluator::eval(const Program& program, std::int32_t node, int depth, double& value,
                                EvaluationError& error) const {
     if (node < 0 || static_cast<size_t>(node) >= program.expressions.size())
-        return missingNode(error);
-    if (depth > kMaxDepth) return tooDeep(error);
+        return fail(error, "EXPRESSION_MALFORMED", "expression refers to a missing node");
+    if (depth > kMaxDepth)
+        return fail(error, "EXPRESSION_TOO_DEEP", "expression nested deeper than 64 levels");
     const ExprNode& n = program.expressions[static_cast<size_t>(node)];
     switch (n.op) {
         case ExprOp::Constant:
@@ -124,11 +116,12 @@ bool ExpressionEvaluator::evalBinary(const Program& program, const ExprNode& n, 
             value = left * right;
             break;
         default:
-            if (right == 0.0) return divisionByZero(error);
+            if (right == 0.0) return fail(error, "DIVISION_BY_ZERO", "division by zero");
             value = left / right;
             break;
     }
-    if (!std::isfinite(value)) return notFinite(error);
+    if (!std::isfinite(value))
+        return fail(error, "ARITHMETIC_OVERFLOW", "arithmetic result is not a finite number");
     return true;
 }
 
